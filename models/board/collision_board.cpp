@@ -1,0 +1,158 @@
+#include "models/board/collision_board.h"
+
+#include <cstring>
+#include <string>
+
+namespace cdvp {
+
+using namespace sc_core;
+
+CollisionBoard::CollisionBoard(const sc_module_name& name, const BoardConfig& config, uint32_t capacity)
+    : sc_module(name),
+      socket("socket"),
+      irq("irq"),
+      core_(config, capacity),
+      period_(1.0 / config.clock_mhz, SC_US) {
+    socket.register_b_transport(this, &CollisionBoard::b_transport);
+    socket.register_transport_dbg(this, &CollisionBoard::transport_dbg);
+    SC_METHOD(clock_edge);
+    sensitive << wake_;
+    dont_initialize();
+    SC_METHOD(clock_fall);
+    sensitive << fall_;
+    dont_initialize();
+    SC_METHOD(drive_irq);
+    sensitive << irq_changed_;
+    waves_.address.assign(2 * config.m, 0);
+}
+
+void CollisionBoard::trace(sc_trace_file* file) {
+    tracing_ = true;
+    const std::string p = std::string(name()) + ".";
+    sc_trace(file, waves_.clk, p + "clk");
+    sc_trace(file, waves_.state, p + "state", 2);
+    for (size_t port = 0; port < waves_.address.size(); ++port) {
+        sc_trace(file, waves_.address[port], p + "address_" + std::to_string(port));
+    }
+    const int lanes = static_cast<int>(core_.config().lanes());
+    sc_trace(file, waves_.lane_valid, p + "lane_valid", lanes);
+    sc_trace(file, waves_.lane_hit, p + "lane_hit", lanes);
+    sc_trace(file, waves_.fifo_level, p + "fifo_level");
+    sc_trace(file, waves_.stall, p + "stall");
+    sc_trace(file, waves_.done, p + "done");
+    sc_trace(file, waves_.pair_count, p + "pair_count");
+}
+
+void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& /*delay*/) {
+    // Host accesses take no board time here; the bus in front of the board
+    // annotates its own timing.
+    if (payload.get_byte_enable_ptr() != nullptr) {
+        payload.set_response_status(tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE);
+        return;
+    }
+    payload.set_response_status(
+        access(payload.get_command(), payload.get_address(), payload.get_data_ptr(), payload.get_data_length()));
+    if (payload.get_command() == tlm::TLM_WRITE_COMMAND) {
+        wake_clock_if_needed();
+        irq_changed_.notify(SC_ZERO_TIME);
+    }
+}
+
+unsigned int CollisionBoard::transport_dbg(tlm::tlm_generic_payload& payload) {
+    // Debug reads only: a debug write must not start the clock behind the simulation's back.
+    if (payload.get_command() != tlm::TLM_READ_COMMAND) return 0;
+    const bool ok = access(tlm::TLM_READ_COMMAND, payload.get_address(), payload.get_data_ptr(),
+                           payload.get_data_length()) == tlm::TLM_OK_RESPONSE;
+    return ok ? payload.get_data_length() : 0;
+}
+
+tlm::tlm_response_status CollisionBoard::access(tlm::tlm_command command, uint64_t address, unsigned char* data,
+                                                unsigned int length) {
+    namespace am = address_map;
+    if (length == 0 || length % 4 != 0 || address % 4 != 0) return tlm::TLM_BURST_ERROR_RESPONSE;
+    const bool write = command == tlm::TLM_WRITE_COMMAND;
+    const uint64_t words = length / 4;
+    auto word_at = [data](uint64_t k) {
+        uint32_t w;
+        std::memcpy(&w, data + 4 * k, 4);
+        return w;
+    };
+    auto set_word = [data](uint64_t k, uint32_t w) { std::memcpy(data + 4 * k, &w, 4); };
+
+    if (address + length <= am::kRegistersSize) {
+        if (words != 1) return tlm::TLM_BURST_ERROR_RESPONSE;
+        const auto offset = static_cast<uint32_t>(address);
+        if (write) return core_.write_register(offset, word_at(0)) ? tlm::TLM_OK_RESPONSE : tlm::TLM_ADDRESS_ERROR_RESPONSE;
+        uint32_t value = 0;
+        if (!core_.read_register(offset, value)) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+        set_word(0, value);
+        return tlm::TLM_OK_RESPONSE;
+    }
+    if (address >= am::kCoordinateBase && address < am::kCoordinateBase + kCoordinates * am::kWindowSize) {
+        const auto coordinate = static_cast<Coordinate>((address - am::kCoordinateBase) / am::kWindowSize);
+        const uint64_t first = (address - am::kCoordinateBase) % am::kWindowSize / 4;
+        if (first + words > core_.capacity()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+        for (uint64_t k = 0; k < words; ++k) {
+            const auto index = static_cast<uint32_t>(first + k);
+            if (!write) set_word(k, core_.read_coordinate(coordinate, index));
+            else if (!core_.write_coordinate(coordinate, index, word_at(k))) return tlm::TLM_COMMAND_ERROR_RESPONSE;
+        }
+        return tlm::TLM_OK_RESPONSE;
+    }
+    if (address >= am::kPairBuffer && address + length <= am::kPairBuffer + am::kPairBufferSize) {
+        if (write) return tlm::TLM_COMMAND_ERROR_RESPONSE;
+        const uint64_t first = (address - am::kPairBuffer) / 4;
+        const auto& collector = core_.collector();
+        if ((first + words + 1) / 2 > collector.buffer_count()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+        for (uint64_t k = 0; k < words; ++k) {
+            const IndexPair& pair = collector.buffer_entry(static_cast<uint32_t>((first + k) / 2));
+            set_word(k, (first + k) % 2 == 0 ? pair.first : pair.second);
+        }
+        return tlm::TLM_OK_RESPONSE;
+    }
+    return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+}
+
+void CollisionBoard::wake_clock_if_needed() {
+    if (core_.running() && !clock_running_) {
+        clock_running_ = true;
+        wake_.notify(period_);  // the first edge comes one period after the command
+    }
+}
+
+void CollisionBoard::clock_edge() {
+    core_.step();
+    if (tracing_) sample_trace();
+    if (core_.running()) {
+        next_trigger(period_);
+        return;
+    }
+    clock_running_ = false;  // done or paused: the clock stops until the host acts
+    irq_changed_.notify(SC_ZERO_TIME);
+}
+
+// The interrupt line's only driver, so both the host's commands and the
+// clocked process can change it.
+void CollisionBoard::drive_irq() { irq.write(core_.registers().interrupt()); }
+
+void CollisionBoard::clock_fall() { waves_.clk = false; }
+
+void CollisionBoard::sample_trace() {
+    waves_.clk = true;
+    fall_.notify(period_ / 2);
+    waves_.state = static_cast<uint32_t>(core_.phase());
+    const AddressGenerator::Issue& issue = core_.last_issue();
+    waves_.address[0] = issue.row;
+    for (size_t port = 1; port < waves_.address.size(); ++port) {
+        waves_.address[port] = issue.first_column + static_cast<uint32_t>(port) - 1;
+    }
+    const BoardCore::Slot& out = core_.compare_output();
+    waves_.lane_valid = out.kind == BoardCore::Slot::kSweep ? (~0ull >> (64 - out.valid_lanes)) : 0;
+    waves_.lane_hit = out.kind == BoardCore::Slot::kSweep ? out.hits : 0;
+    waves_.fifo_level = core_.collector().fifo_level();
+    waves_.stall = core_.stalled();
+    waves_.done = core_.registers().done;
+    waves_.pair_count = core_.collector().buffer_count();
+}
+
+}  // namespace cdvp

@@ -1,0 +1,69 @@
+// SystemC shell of the collision board: TLM-2.0 target socket, interrupt line,
+// and a gated board clock that ticks only while a sweep runs.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_target_socket.h>
+
+#include "models/board/board_core.h"
+
+namespace cdvp {
+
+class CollisionBoard : public sc_core::sc_module {
+public:
+    SC_HAS_PROCESS(CollisionBoard);
+
+    // Registers, coordinate memories and pair buffer (see address_map).
+    tlm_utils::simple_target_socket<CollisionBoard> socket;
+    // High while done or overflow: the host has work.
+    sc_core::sc_out<bool> irq;
+
+    CollisionBoard(const sc_core::sc_module_name& name, const BoardConfig& config, uint32_t capacity);
+
+    const BoardCore& core() const { return core_; }
+    const sc_core::sc_time& period() const { return period_; }
+
+    // Adds the board's waveforms to a trace file (before the first sc_start).
+    // Without this call the clocked process does no tracing work at all.
+    void trace(sc_core::sc_trace_file* file);
+
+private:
+    void b_transport(tlm::tlm_generic_payload& payload, sc_core::sc_time& delay);
+    unsigned int transport_dbg(tlm::tlm_generic_payload& payload);
+    // Returns the TLM response for an access of len bytes at address.
+    tlm::tlm_response_status access(tlm::tlm_command command, uint64_t address, unsigned char* data,
+                                    unsigned int length);
+    void clock_edge();  // one board clock edge while running
+    void clock_fall();  // traced clock only: the falling edge
+    void drive_irq();
+    void wake_clock_if_needed();
+    void sample_trace();
+
+    BoardCore core_;
+    sc_core::sc_time period_;
+    sc_core::sc_event wake_;  // a command started or resumed the sweep
+    sc_core::sc_event fall_;
+    sc_core::sc_event irq_changed_;
+    bool clock_running_ = false;
+
+    // Waveform mirrors, updated each cycle only when traced.
+    struct Waves {
+        bool clk = false;
+        uint32_t state = 0;  // 0 idle, 1 running, 2 paused (overflow), 3 done
+        std::vector<uint32_t> address;  // 2m memory ports
+        uint64_t lane_valid = 0;
+        uint64_t lane_hit = 0;
+        uint32_t fifo_level = 0;
+        bool stall = false;
+        bool done = false;
+        uint32_t pair_count = 0;
+    };
+    bool tracing_ = false;
+    Waves waves_;
+};
+
+}  // namespace cdvp

@@ -1,0 +1,78 @@
+// The seed's comparison unit: 2m-1 lanes of six float comparators ANDed.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+
+#include "models/coordinate_memory/coordinate_memory.h"
+
+namespace cdvp {
+
+// Coordinate memories in the board's order.
+enum Coordinate : uint32_t { kMinX, kMinY, kMinZ, kMaxX, kMaxY, kMaxZ, kCoordinates };
+using CoordinateMemories = std::array<CoordinateMemory, kCoordinates>;
+
+struct ComparisonUnitConfig {
+    // Cycles from the block RAM outputs to the lane results. Default 2: the
+    // Xilinx Floating-Point Operator core's compare is configurable from 0 to
+    // 2 cycles; at the board's clock a fully pipelined core is the safe choice
+    // (assumption; the seed does not give the core's configuration).
+    uint32_t latency_cycles = 2;
+};
+
+// Lane k (0-based) compares box i on port 0 with box j on port k+1:
+// hit = min_i <= max_j && min_j <= max_i on x, y and z (closed intervals).
+// The comparisons are IEEE float32 comparisons: -0 equals +0, denormals are
+// compared as they are (the model never flushes to zero), infinities are
+// ordinary extremes. Lane results form a bit mask (bit k = lane k), so a
+// configuration has at most 63 lanes (m <= 32).
+class ComparisonUnit {
+public:
+    static constexpr uint32_t kMaxLanes = 63;
+
+    ComparisonUnit(uint32_t lanes, const ComparisonUnitConfig& config);
+
+    uint32_t lanes() const { return lanes_; }
+    uint32_t latency_cycles() const { return latency_; }
+
+    // The lane results for the current memory outputs; lanes beyond
+    // valid_lanes are not evaluated (their bits are 0).
+    uint64_t evaluate(const CoordinateMemories& memories, uint32_t valid_lanes) const {
+        float i_bounds[kCoordinates];
+        for (uint32_t c = 0; c < kCoordinates; ++c) i_bounds[c] = as_float(memories[c].output(0));
+        uint64_t hits = 0;
+        for (uint32_t port = 1; port <= valid_lanes; ++port) {
+            float j_bounds[kCoordinates];
+            for (uint32_t c = 0; c < kCoordinates; ++c) j_bounds[c] = as_float(memories[c].output(port));
+            hits |= static_cast<uint64_t>(lane_hit(i_bounds, j_bounds)) << (port - 1);
+        }
+        return hits;
+    }
+
+    // Six comparators ANDed. Bounds are ordered min_x, min_y, min_z, max_x, max_y, max_z.
+    static bool lane_hit(const float* a, const float* b) {
+        // Bitwise & keeps all six comparators evaluated, as in hardware, and
+        // lets the compiler avoid branches.
+        return (a[kMinX] <= b[kMaxX]) & (b[kMinX] <= a[kMaxX]) &
+               (a[kMinY] <= b[kMaxY]) & (b[kMinY] <= a[kMaxY]) &
+               (a[kMinZ] <= b[kMaxZ]) & (b[kMinZ] <= a[kMaxZ]);
+    }
+
+    static float as_float(uint32_t bits) {
+        float value;
+        std::memcpy(&value, &bits, sizeof value);
+        return value;
+    }
+    static uint32_t as_bits(float value) {
+        uint32_t bits;
+        std::memcpy(&bits, &value, sizeof bits);
+        return bits;
+    }
+
+private:
+    uint32_t lanes_;
+    uint32_t latency_;
+};
+
+}  // namespace cdvp
