@@ -133,14 +133,16 @@ BoardCore::Slot BoardCore::issue() {
 }
 
 void BoardCore::step() {
+    ++regs_.cycles;
     if (collector_.drain_blocked()) {
-        // A pair must move and the buffer is full: pause for the host. The
-        // clock stops, so the cycle is not counted.
+        // A pair must move and the buffer is full: this edge does no work
+        // (a stall) and the clock stops until the host drains and resumes.
+        stalled_ = true;
+        ++regs_.stalls;
         phase_ = Phase::Paused;
         regs_.overflow = true;
         return;
     }
-    ++regs_.cycles;
     collector_.drain();
     if (end_seen_) {
         // Only the FIFO's last pairs are left to move: every such cycle is

@@ -52,7 +52,8 @@ public:
     // Clock side.
     Phase phase() const { return phase_; }
     bool running() const { return phase_ == Phase::Running; }
-    // One clock edge. Counts the cycle unless the board pauses for a full pair buffer.
+    // One clock edge; every edge counts as a cycle. An edge that finds the
+    // pair buffer full pauses the board (and counts as a stall).
     void step();
 
     // Observation for tracing (cheap accessors; no per-cycle copies).

@@ -26,21 +26,33 @@ CollisionBoard::CollisionBoard(const sc_module_name& name, const BoardConfig& co
     waves_.address.assign(2 * config.m, 0);
 }
 
+namespace {
+// Bits needed to show values 0..max in a waveform.
+int bits_for(uint64_t max) {
+    int bits = 1;
+    while (bits < 64 && (max >> bits) != 0) ++bits;
+    return bits;
+}
+}  // namespace
+
 void CollisionBoard::trace(sc_trace_file* file) {
     tracing_ = true;
     const std::string p = std::string(name()) + ".";
+    const BoardConfig& config = core_.config();
+    // Address ports may point one window past the last box (invalid lanes).
+    const int address_bits = bits_for(uint64_t{core_.capacity()} + config.lanes());
     sc_trace(file, waves_.clk, p + "clk");
     sc_trace(file, waves_.state, p + "state", 2);
     for (size_t port = 0; port < waves_.address.size(); ++port) {
-        sc_trace(file, waves_.address[port], p + "address_" + std::to_string(port));
+        sc_trace(file, waves_.address[port], p + "address_" + std::to_string(port), address_bits);
     }
-    const int lanes = static_cast<int>(core_.config().lanes());
+    const int lanes = static_cast<int>(config.lanes());
     sc_trace(file, waves_.lane_valid, p + "lane_valid", lanes);
     sc_trace(file, waves_.lane_hit, p + "lane_hit", lanes);
-    sc_trace(file, waves_.fifo_level, p + "fifo_level");
+    sc_trace(file, waves_.fifo_level, p + "fifo_level", bits_for(config.collector.fifo_depth));
     sc_trace(file, waves_.stall, p + "stall");
     sc_trace(file, waves_.done, p + "done");
-    sc_trace(file, waves_.pair_count, p + "pair_count");
+    sc_trace(file, waves_.pair_count, p + "pair_count", bits_for(config.collector.buffer_depth));
 }
 
 void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& /*delay*/) {

@@ -1,0 +1,211 @@
+// The board's datapath against the plain C++ reference, without a kernel.
+#include "models/board/board_core.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+#include "sw/baselines/brute_force.h"
+#include "tests/support/core_driver.h"
+
+namespace cdvp {
+namespace {
+
+using testing::CoreRun;
+using testing::random_boxes;
+using testing::run_core;
+
+PairList sorted(PairList pairs) {
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+void expect_cycle_identity(const CoreRun& run, uint64_t n, const BoardConfig& config) {
+    EXPECT_EQ(run.cycles, AddressGenerator::sweep_cycles(n, config.m) + config.pipeline_latency() + run.stalls)
+        << "compute_cycles = S(N,m) + L + stalls, N=" << n << " m=" << config.m;
+}
+
+TEST(BoardCore, EqualsReferenceOnRandomScenes) {
+    std::mt19937 rng(2026);
+    for (uint32_t m : {1u, 2u, 3u, 8u, 16u}) {
+        for (std::size_t n : {0u, 1u, 2u, 3u, 29u, 512u, 513u, 1100u, 2000u}) {
+            if (m == 1 && n > 1100) continue;  // covered by the larger m; keeps the test quick
+            BoardConfig config;
+            config.m = m;
+            BoardCore core(config, static_cast<uint32_t>(n));
+            // Extent scaled so each box meets a few others on average.
+            const auto boxes = random_boxes(n, 10.0f * std::cbrt(static_cast<float>(n) + 1), 2.0f, rng);
+            const CoreRun run = run_core(core, boxes);
+            ASSERT_EQ(sorted(run.pairs), reference_pairs(boxes)) << "n=" << n << " m=" << m;
+            expect_cycle_identity(run, n, config);
+        }
+    }
+}
+
+TEST(BoardCore, CascadedBlockRamsBeyond512Boxes) {
+    BoardConfig config;
+    config.m = 4;
+    BoardCore core(config, 1500);
+    EXPECT_EQ(core.block_rams(), 6u * 4u * 3u);
+    std::mt19937 rng(5);
+    // Make box 1499 (in the third primitive) overlap box 3 (in the first) only.
+    auto boxes = random_boxes(1500, 1000.0f, 0.5f, rng);
+    boxes[1499] = boxes[3];
+    const PairList pairs = sorted(run_core(core, boxes).pairs);
+    EXPECT_EQ(pairs, reference_pairs(boxes));
+    EXPECT_TRUE(std::binary_search(pairs.begin(), pairs.end(), IndexPair{3, 1499}));
+}
+
+// Every box overlaps every other: 2m-1 hits a cycle against a drain of one a
+// cycle. The FIFO fills, the pipeline holds, and still no pair is lost.
+TEST(BoardCore, BackPressureLosesNoPair) {
+    const uint32_t n = 300;
+    for (uint32_t fifo : {15u, 16u, 64u}) {
+        BoardConfig config;
+        config.m = 8;
+        config.collector.fifo_depth = fifo;
+        BoardCore core(config, n);
+        const std::vector<FloatBox> boxes(n, FloatBox{{0, 0, 0}, {1, 1, 1}});
+        const CoreRun run = run_core(core, boxes);
+        EXPECT_EQ(run.pairs.size(), n * (n - 1) / 2);
+        EXPECT_EQ(std::set<IndexPair>(run.pairs.begin(), run.pairs.end()).size(), run.pairs.size()) << "duplicates";
+        EXPECT_EQ(sorted(run.pairs), reference_pairs(boxes));
+        EXPECT_GT(run.stalls, 0u);
+        expect_cycle_identity(run, n, config);
+        // With one pair drained a cycle, the sweep cannot beat the pair count.
+        EXPECT_GE(run.cycles, run.pairs.size());
+    }
+}
+
+TEST(BoardCore, FasterDrainStallsLess) {
+    const uint32_t n = 300;
+    uint64_t previous = UINT64_MAX;
+    for (uint32_t drain : {1u, 4u, 15u}) {
+        BoardConfig config;
+        config.m = 8;
+        config.collector.fifo_depth = 32;
+        config.collector.drain_per_cycle = drain;
+        BoardCore core(config, n);
+        const CoreRun run = run_core(core, std::vector<FloatBox>(n, FloatBox{{0, 0, 0}, {1, 1, 1}}));
+        EXPECT_EQ(run.pairs.size(), n * (n - 1) / 2);
+        expect_cycle_identity(run, n, config);
+        EXPECT_LT(run.stalls, previous) << "drain " << drain;
+        previous = run.stalls;
+    }
+    EXPECT_EQ(previous, 0u) << "draining 2m-1 a cycle never stalls";
+}
+
+// A pair buffer far smaller than the pair set: the board pauses, the host
+// drains and resumes, and every pair arrives exactly once.
+TEST(BoardCore, PairBufferOverflowPausesAndResumes) {
+    std::mt19937 rng(11);
+    for (uint32_t depth : {1u, 7u, 100u}) {
+        BoardConfig config;
+        config.m = 4;
+        config.collector.buffer_depth = depth;
+        config.collector.drain_per_cycle = 3;
+        BoardCore core(config, 400);
+        const auto boxes = random_boxes(400, 10.0f, 4.0f, rng);
+        const CoreRun run = run_core(core, boxes);
+        const PairList expected = reference_pairs(boxes);
+        ASSERT_GT(expected.size(), 10u * depth);
+        EXPECT_EQ(sorted(run.pairs), expected) << "depth " << depth;
+        EXPECT_GE(run.pauses, expected.size() / depth - 1);
+        expect_cycle_identity(run, 400, config);
+    }
+}
+
+TEST(BoardCore, LatencyIsBlockRamPlusComparePlusCollector) {
+    std::mt19937 rng(3);
+    const auto boxes = random_boxes(50, 10.0f, 3.0f, rng);
+    for (uint32_t latency : {0u, 1u, 2u, 5u}) {
+        BoardConfig config;
+        config.m = 2;
+        config.compare.latency_cycles = latency;
+        EXPECT_EQ(config.pipeline_latency(), latency + 2);
+        BoardCore core(config, 50);
+        const CoreRun run = run_core(core, boxes);
+        EXPECT_EQ(sorted(run.pairs), reference_pairs(boxes));
+        expect_cycle_identity(run, 50, config);
+    }
+}
+
+// Small N against many m, with a FIFO of exactly 2m-1, over dense scenes.
+TEST(BoardCore, CycleIdentityOverSmallScenes) {
+    std::mt19937 rng(17);
+    for (uint32_t m = 1; m <= 6; ++m) {
+        for (uint32_t n = 0; n <= 40; ++n) {
+            BoardConfig config;
+            config.m = m;
+            config.collector.fifo_depth = 2 * m - 1;
+            config.collector.buffer_depth = 16;
+            BoardCore core(config, n);
+            const auto boxes = random_boxes(n, 4.0f, 2.0f, rng);
+            const CoreRun run = run_core(core, boxes);
+            ASSERT_EQ(sorted(run.pairs), reference_pairs(boxes)) << n << " " << m;
+            expect_cycle_identity(run, n, config);
+        }
+    }
+}
+
+TEST(BoardCore, RegistersAndRefusedCommands) {
+    BoardConfig config;
+    config.m = 2;
+    BoardCore core(config, 10);
+    uint32_t value = 0;
+    ASSERT_TRUE(core.read_register(ControlRegisters::kId, value));
+    EXPECT_EQ(value, ControlRegisters::kIdValue);
+    ASSERT_TRUE(core.read_register(ControlRegisters::kCapacity, value));
+    EXPECT_EQ(value, 10u);
+    ASSERT_TRUE(core.read_register(ControlRegisters::kParallelism, value));
+    EXPECT_EQ(value, 2u);
+    EXPECT_FALSE(core.read_register(0x3FC, value)) << "unmapped";
+    EXPECT_FALSE(core.write_register(0x3FC, 1));
+    EXPECT_FALSE(core.write_coordinate(kMinX, 10, 0)) << "past capacity";
+
+    core.write_register(ControlRegisters::kObjectCount, 11);
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
+    EXPECT_TRUE(core.registers().error) << "more objects than the memories hold";
+    EXPECT_FALSE(core.running());
+
+    core.write_register(ControlRegisters::kObjectCount, 10);
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
+    EXPECT_FALSE(core.registers().error);
+    EXPECT_TRUE(core.running());
+    ASSERT_TRUE(core.read_register(ControlRegisters::kStatus, value));
+    EXPECT_EQ(value, uint32_t{ControlRegisters::kBusy});
+    EXPECT_FALSE(core.write_coordinate(kMinX, 0, 0)) << "memories are locked while busy";
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
+    EXPECT_TRUE(core.registers().error) << "start while busy";
+    while (core.running()) core.step();
+    EXPECT_EQ(core.phase(), BoardCore::Phase::Done);
+    EXPECT_TRUE(core.registers().interrupt());
+    ASSERT_TRUE(core.read_register(ControlRegisters::kCyclesLo, value));
+    EXPECT_EQ(value, AddressGenerator::sweep_cycles(10, 2) + config.pipeline_latency() + core.registers().stalls);
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
+    EXPECT_TRUE(core.registers().error) << "resume without a pause";
+}
+
+TEST(BoardConfig, RejectsAbsurdSettings) {
+    auto invalid = [](auto change) {
+        BoardConfig config;
+        change(config);
+        EXPECT_THROW(config.validate(), std::invalid_argument);
+    };
+    invalid([](BoardConfig& c) { c.m = 0; });
+    invalid([](BoardConfig& c) { c.m = 33; });
+    invalid([](BoardConfig& c) { c.clock_mhz = 0; });
+    invalid([](BoardConfig& c) { c.clock_mhz = std::nan(""); });
+    invalid([](BoardConfig& c) { c.collector.fifo_depth = 14; });  // < 2m-1 for m=8
+    invalid([](BoardConfig& c) { c.collector.drain_per_cycle = 0; });
+    invalid([](BoardConfig& c) { c.collector.buffer_depth = 0; });
+    invalid([](BoardConfig& c) { c.compare.latency_cycles = 65; });
+    BoardConfig ok;
+    EXPECT_NO_THROW(ok.validate());
+    EXPECT_EQ(ok.pipeline_latency(), 4u);
+}
+
+}  // namespace
+}  // namespace cdvp
