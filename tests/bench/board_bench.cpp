@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <sstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "sw/baselines/brute_force.h"
 #include "sw/scene/conversion.h"
 #include "sw/scene/spheres.h"
+#include "sw/scene/trace_csv.h"
 
 namespace {
 
@@ -65,6 +67,25 @@ void BM_BoardFrame(benchmark::State& state) {
                            benchmark::Counter::kIsRate);
 }
 
+// Parsing a 100,000-row trace (100 frames of 1000 spheres).
+void BM_ParseTrace(benchmark::State& state) {
+    cdvp::SpheresConfig config;
+    config.objects = 1000;
+    cdvp::SpheresScene spheres(config);
+    std::vector<cdvp::Frame> frames;
+    for (int k = 0; k < 100; ++k) frames.push_back(spheres.next());
+    std::ostringstream out;
+    cdvp::write_trace_csv(out, frames);
+    const std::string text = out.str();
+    for (auto _ : state) {
+        std::istringstream in(text);
+        benchmark::DoNotOptimize(cdvp::parse_trace_csv(in, "bench.csv").size());
+    }
+    state.counters["rows/s"] = benchmark::Counter(1e5 * static_cast<double>(state.iterations()),
+                                                  benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_ParseTrace)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScalarBruteForce)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BoardFrame)->Unit(benchmark::kMillisecond);
 

@@ -1,0 +1,57 @@
+// A deterministic synthetic scene: spheres flying through a closed cube and
+// bouncing off its walls (they pass through each other; no physics between
+// spheres yet). Each frame gives every sphere's bounding box.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "sw/scene/scene.h"
+
+namespace cdvp {
+
+// Lengths in scene units, times in seconds, speeds in scene units/second.
+struct SpheresConfig {
+    std::size_t objects = 500;
+    uint64_t seed = 1;
+    double radius_min = 0.5;        // radii uniform in [radius_min, radius_max]
+    double radius_max = 1.0;
+    double volume_fraction = 0.15;  // sphere volume / cube volume, in (0, 1)
+    double max_speed = 4.0;         // velocities uniform in the ball of this radius
+    double dt = 1.0 / 60.0;         // time between frames
+};
+
+class SpheresScene {
+public:
+    // Places the spheres. The cube's edge is chosen so the spheres' expected
+    // total volume is volume_fraction of the cube (so the overlap density
+    // stays about the same as objects grows), but never less than
+    // 2 * radius_max. Throws InputError for a config out of range.
+    explicit SpheresScene(const SpheresConfig& config);
+
+    // Frame k (k = 0, 1, ...): number k, ids 0..N-1, boxes centre +- radius.
+    // Frame 0 is the initial state; each later call first advances by dt.
+    Frame next();
+
+    // The cube is [0, edge()]^3; every box stays inside it.
+    double edge() const { return edge_; }
+
+private:
+    struct Sphere {
+        double radius;
+        std::array<double, 3> centre;
+        std::array<double, 3> velocity;
+        double hi;  // largest centre coordinate keeping centre + radius <= edge
+    };
+
+    void advance();
+
+    SpheresConfig config_;
+    double edge_ = 0.0;
+    uint64_t next_number_ = 0;
+    std::vector<Sphere> spheres_;
+};
+
+}  // namespace cdvp
