@@ -28,7 +28,8 @@ struct BoardConfig {
     uint32_t pipeline_latency() const;
     // Clock period in picoseconds (the simulation's time resolution).
     double period_ps() const { return 1e6 / clock_mhz; }
-    // Throws std::invalid_argument with a one-line message naming the setting.
+    // Throws std::invalid_argument with one line "SETTING: expected ..., got ...",
+    // SETTING named as in the run report's config.
     void validate() const;
 };
 

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstring>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -30,7 +31,9 @@ struct RunOptions {
     std::string trace;
     std::string scene;
     SpheresConfig spheres;
-    std::size_t frames = 1;
+    // Signed, so that a negative count is reported instead of wrapping around.
+    int64_t objects = 500;
+    int64_t frames = 1;
     BoardConfig board;
     std::string pairs_out, report, vcd;
     bool quiet = false;
@@ -41,7 +44,7 @@ po::options_description run_options(RunOptions& o) {
     input.add_options()
         ("trace", po::value(&o.trace)->value_name("FILE"), "scene trace CSV (see README: file formats)")
         ("scene", po::value(&o.scene)->value_name("NAME"), "generated scene: spheres")
-        ("objects", po::value(&o.spheres.objects)->value_name("N")->default_value(o.spheres.objects),
+        ("objects", po::value(&o.objects)->value_name("N")->default_value(o.objects),
          "spheres: number of spheres")
         ("frames", po::value(&o.frames)->value_name("F")->default_value(o.frames), "spheres: number of frames")
         ("seed", po::value(&o.spheres.seed)->value_name("S")->default_value(o.spheres.seed),
@@ -85,6 +88,24 @@ struct Outputs {
     }
 };
 
+// Board settings are checked by the model; its message names the setting as
+// the report does, which is mapped to the flag that sets it.
+void validate_board(const BoardConfig& config) {
+    try {
+        config.validate();
+    } catch (const std::invalid_argument& e) {
+        static const std::pair<const char*, const char*> kFlags[] = {
+            {"m:", "--m"}, {"clock_mhz:", "--clock-mhz"}, {"compare_latency_cycles:", "--compare-latency"},
+            {"fifo_depth:", "--fifo-depth"}, {"drain_per_cycle:", "--drain-rate"},
+            {"pair_buffer_depth:", "--pair-buffer"}};
+        std::string message = e.what();
+        for (const auto& [setting, flag] : kFlags) {
+            if (message.rfind(setting, 0) == 0) message = std::string(flag) + message.substr(std::strlen(setting) - 1);
+        }
+        throw InputError(message);
+    }
+}
+
 std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm) {
     if (o.trace.empty() == o.scene.empty()) throw InputError("give exactly one of --trace FILE or --scene spheres");
     if (!o.trace.empty()) {
@@ -94,11 +115,14 @@ std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variable
         return trace_source(o.trace);
     }
     if (o.scene != "spheres") throw InputError("--scene: expected 'spheres', found '" + o.scene + "'");
-    if (o.spheres.objects > address_map::kMaxObjects) {
-        throw InputError("--objects: expected at most " + std::to_string(address_map::kMaxObjects) + ", found " +
-                         std::to_string(o.spheres.objects));
+    if (o.objects < 0 || o.objects > address_map::kMaxObjects) {
+        throw InputError("--objects: expected 0 to " + std::to_string(address_map::kMaxObjects) + ", found " +
+                         std::to_string(o.objects));
     }
-    return spheres_source(o.spheres, o.frames);
+    if (o.frames < 0) throw InputError("--frames: expected a non-negative count, found " + std::to_string(o.frames));
+    SpheresConfig spheres = o.spheres;
+    spheres.objects = static_cast<std::size_t>(o.objects);
+    return spheres_source(spheres, static_cast<std::size_t>(o.frames));
 }
 
 class Progress {
@@ -163,11 +187,7 @@ int run_command(int argc, char** argv) {
             return 0;
         }
         po::notify(vm);
-        try {
-            o.board.validate();
-        } catch (const std::invalid_argument& e) {
-            throw InputError(e.what());
-        }
+        validate_board(o.board);
         std::unique_ptr<FrameSource> source = open_source(o, vm);
         Outputs out;
         if (!o.pairs_out.empty()) out.pairs.emplace(o.pairs_out);

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the Debian packages cdvp needs. Idempotent: when everything is
+# already installed it does nothing (and needs no network).
+set -euo pipefail
+
+packages=(
+  g++ cmake ninja-build pkg-config
+  libsystemc-dev                 # SystemC 2.3.4 + TLM-2.0 (pkg-config: systemc)
+  libboost-program-options-dev   # command line
+  nlohmann-json3-dev             # JSON reports
+  libgtest-dev libgmock-dev      # tests
+  libbenchmark-dev               # benchmarks
+  gtkwave                        # vcd2fst, used to check waveforms
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+echo "setup: installing ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,191 @@
+// The cdvp command line, run as users run it.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "models/address_generator/address_generator.h"
+#include "sw/scene/pairs_csv.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+    int status;
+    std::string out;
+    std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("cdvp-cli-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    Result run(const std::string& args) {
+        const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
+        const std::string command = "cd '" + dir_.string() + "' && '" CDVP_BINARY "' " + args + " > '" +
+                                    out.string() + "' 2> '" + err.string() + "' < /dev/null";
+        const int raw = std::system(command.c_str());
+        Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+        fs::remove(out);
+        fs::remove(err);
+        return r;
+    }
+    fs::path write(const std::string& name, const std::string& text) {
+        std::ofstream(dir_ / name, std::ios::binary) << text;
+        return dir_ / name;
+    }
+    std::vector<std::string> files() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+    static std::string trace(const std::string& name) { return CDVP_SOURCE_DIR "/traces/" + name; }
+
+    fs::path dir_;
+};
+
+TEST_F(Cli, HardCasesGiveTheHandDerivedPairs) {
+    for (int m : {1, 2, 5}) {
+        const Result r = run("run --trace " + trace("hard_cases.csv") + " --m " + std::to_string(m) +
+                             " --pairs-out pairs.csv --quiet");
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(r.out, "") << "--quiet prints nothing";
+        EXPECT_EQ(cdvp::read_pairs_csv((dir_ / "pairs.csv").string()),
+                  cdvp::read_pairs_csv(trace("hard_cases.expected.csv")))
+            << "m=" << m;
+    }
+}
+
+TEST_F(Cli, SmallTracePairsAndReport) {
+    const Result r = run("run --trace " + trace("small.csv") + " --m 2 --pairs-out p.csv --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(dir_ / "p.csv"), slurp(trace("small.expected.csv")));
+    const nlohmann::json report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+    EXPECT_EQ(report["config"]["m"], 2);
+    EXPECT_EQ(report["config"]["pipeline_latency_cycles"], 4);
+    ASSERT_EQ(report["frames"].size(), 3u);
+    const std::vector<int> pairs = {3, 3, 3};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const auto& f = report["frames"][k];
+        EXPECT_EQ(f["frame"], k);
+        EXPECT_EQ(f["objects"], 12);
+        EXPECT_EQ(f["pairs"], pairs[k]);
+        EXPECT_EQ(f["compute_cycles"].get<uint64_t>(),
+                  cdvp::AddressGenerator::sweep_cycles(12, 2) + 4 + f["stall_cycles"].get<uint64_t>());
+    }
+    EXPECT_NE(r.out.find("total: 3 frames, 9 pairs"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, SpheresAreDeterministicBySeed) {
+    const std::string scene = "run --scene spheres --objects 300 --frames 4 --m 4 --quiet";
+    ASSERT_EQ(run(scene + " --seed 5 --pairs-out a.csv").status, 0);
+    ASSERT_EQ(run(scene + " --seed 5 --pairs-out b.csv").status, 0);
+    ASSERT_EQ(run(scene + " --seed 6 --pairs-out c.csv").status, 0);
+    EXPECT_EQ(slurp(dir_ / "a.csv"), slurp(dir_ / "b.csv"));
+    EXPECT_NE(slurp(dir_ / "a.csv"), slurp(dir_ / "c.csv"));
+    EXPECT_GT(cdvp::read_pairs_csv((dir_ / "a.csv").string()).size(), 100u) << "a scene with something to find";
+}
+
+TEST_F(Cli, WaveformsOpenInVcd2fst) {
+    const Result r = run("run --trace " + trace("small.csv") + " --m 2 --vcd waves.vcd --quiet");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(files(), std::vector<std::string>{"waves.vcd"}) << "no temporary left behind";
+    const std::string command = "vcd2fst '" + (dir_ / "waves.vcd").string() + "' '" + (dir_ / "waves.fst").string() +
+                                "' > /dev/null 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0);
+    EXPECT_GT(fs::file_size(dir_ / "waves.fst"), 100u);
+}
+
+TEST_F(Cli, HelpListsEveryOption) {
+    const Result top = run("--help");
+    EXPECT_EQ(top.status, 0);
+    EXPECT_NE(top.out.find("run "), std::string::npos);
+    const Result help = run("run --help");
+    EXPECT_EQ(help.status, 0);
+    for (const char* flag : {"--trace", "--scene", "--objects", "--frames", "--seed", "--m ", "--clock-mhz",
+                             "--compare-latency", "--fifo-depth", "--drain-rate", "--pair-buffer", "--pairs-out",
+                             "--report", "--vcd", "--quiet"}) {
+        EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
+    }
+    EXPECT_EQ(run("").status, 2);
+    EXPECT_EQ(run("frobnicate").status, 2);
+}
+
+// Bad input: exit status 2, one line naming the file and line (or the flag)
+// and what was expected, and no output file left behind.
+struct BadInput {
+    const char* name;
+    const char* trace;  // written to bad.csv; nullptr: use small.csv
+    const char* flags;
+    const char* message;
+};
+
+class CliBadInput : public Cli, public ::testing::WithParamInterface<BadInput> {};
+
+#define HEADER "frame,id,min_x,min_y,min_z,max_x,max_y,max_z\n"
+#define BOX "0,1,0,0,0,1,1,1\n"
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliBadInput,
+    ::testing::Values(
+        BadInput{"NaN", HEADER BOX "0,2,0,nan,0,1,1,1\n", "", "bad.csv:3: field 'min_y': NaN"},
+        BadInput{"MinAboveMax", HEADER BOX "0,2,0,0,5,1,1,1\n", "", "bad.csv:3: min_z (5) is greater than max_z"},
+        BadInput{"FieldCount", HEADER BOX "0,2,0,0,0,1,1\n", "", "bad.csv:3: expected 8 comma-separated fields"},
+        BadInput{"NotANumber", HEADER "0,1,0,0,0,1,x1,1\n", "", "bad.csv:2: field 'max_y': expected a decimal"},
+        BadInput{"WrongHeader", "frame,id,x,y,z\n" BOX, "", "bad.csv:1: expected header"},
+        BadInput{"DuplicateId", HEADER BOX "0,1,2,2,2,3,3,3\n", "", "bad.csv:3: id 1 appears twice in frame 0"},
+        BadInput{"FramesOutOfOrder", HEADER "1,1,0,0,0,1,1,1\n" BOX, "", "bad.csv:3: frame 0 after frame 1"},
+        BadInput{"NegativeId", HEADER "0,-1,0,0,0,1,1,1\n", "", "bad.csv:2: field 'id': expected a non-negative"},
+        BadInput{"MissingTrace", nullptr, "--trace nowhere.csv", "nowhere.csv: cannot open"},
+        BadInput{"ZeroM", nullptr, "--m 0", "--m: expected 1 to 32"},
+        BadInput{"AbsurdM", nullptr, "--m 100000", "--m: expected 1 to 32"},
+        BadInput{"NonNumericM", nullptr, "--m eight", "'--m' is invalid"},
+        BadInput{"SmallFifo", nullptr, "--m 8 --fifo-depth 4", "--fifo-depth: expected 2m-1 = 15"},
+        BadInput{"UnwritableOutput", nullptr, "--report no/such/dir/r.json", "no/such/dir/r.json: cannot write"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
+#undef BOX
+#undef HEADER
+
+TEST_P(CliBadInput, ExitsWithOneLineAndWritesNothing) {
+    const BadInput& c = GetParam();
+    std::string args = "run ";
+    if (c.trace != nullptr) {
+        write("bad.csv", c.trace);
+        args += "--trace bad.csv ";
+    } else if (std::string(c.flags).find("--trace") == std::string::npos) {
+        args += "--trace " + trace("small.csv") + " ";
+    }
+    args += std::string(c.flags) + " --pairs-out pairs.csv --vcd waves.vcd" +
+            (std::string(c.flags).find("--report") == std::string::npos ? " --report report.json" : "");
+    const Result r = run(args);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_EQ(r.out, "");
+    ASSERT_FALSE(r.err.empty());
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "exactly one line: " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    const std::vector<std::string> left = files();
+    EXPECT_EQ(left, c.trace ? std::vector<std::string>{"bad.csv"} : std::vector<std::string>{});
+}
+
+}  // namespace
