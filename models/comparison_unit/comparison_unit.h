@@ -14,10 +14,9 @@ enum Coordinate : uint32_t { kMinX, kMinY, kMinZ, kMaxX, kMaxY, kMaxZ, kCoordina
 using CoordinateMemories = std::array<CoordinateMemory, kCoordinates>;
 
 struct ComparisonUnitConfig {
-    // Cycles from the block RAM outputs to the lane results. Default 2: the
-    // Xilinx Floating-Point Operator core's compare is configurable from 0 to
-    // 2 cycles; at the board's clock a fully pipelined core is the safe choice
-    // (assumption; the seed does not give the core's configuration).
+    // Cycles from the block RAM outputs to the lane results. Default 2, an
+    // assumption: the seed does not give its compare core's latency, and 0-2
+    // cycles is the plausible range for a Virtex-II -4 float compare core.
     uint32_t latency_cycles = 2;
 };
 
