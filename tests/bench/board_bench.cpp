@@ -92,6 +92,7 @@ BENCHMARK(BM_BoardFrame)->Unit(benchmark::kMillisecond);
 // Console output plus the per-iteration times, to print the ratio.
 class RatioReporter : public benchmark::ConsoleReporter {
 public:
+    RatioReporter() : ConsoleReporter(isatty(1) ? OO_ColorTabular : OO_Tabular) {}
     void ReportRuns(const std::vector<Run>& runs) override {
         ConsoleReporter::ReportRuns(runs);
         for (const Run& run : runs) {
