@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev             # JSON reports
   libgtest-dev libgmock-dev      # tests
   libbenchmark-dev               # benchmarks
+  libbullet-dev                  # software broad-phase baselines (Bullet 3.24, float)
   gtkwave                        # vcd2fst, used to check waveforms
 )
 
