@@ -6,20 +6,44 @@ namespace cdvp {
 
 using namespace sc_core;
 
-VirtualBoard::VirtualBoard(const sc_module_name& name, const BoardConfig& config, uint32_t capacity,
+namespace {
+std::shared_ptr<const BusTiming> bus_or_ideal(const std::shared_ptr<const BusTiming>& bus) {
+    return bus ? bus : std::make_shared<IdealBusTiming>();
+}
+}  // namespace
+
+VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& config, uint32_t capacity,
                            const std::string& vcd_base)
-    : sc_module(name), board_("board", config, capacity), host_("host"), irq_("irq") {
-    host_.socket.bind(board_.socket);
-    board_.irq.bind(irq_);
-    host_.irq.bind(irq_);
+    : sc_module(name),
+      board_("board", config.board, capacity),
+      bridge_("bridge", bus_or_ideal(config.bus)),
+      bus_("pci", bus_or_ideal(config.bus)),
+      memory_("memory", BoardDriver::host_memory_bytes(capacity, config.board.collector.buffer_depth)),
+      cpu_("cpu", memory_, bus_.interrupt_event(), board_.period(), config.driver),
+      fpga_irq_("fpga_irq"),
+      inta_("inta") {
+    cpu_.socket.bind(bus_.cpu_socket);
+    bus_.board_socket.bind(bridge_.pci_target);
+    bridge_.pci_master.bind(bus_.master_socket);
+    bus_.memory_socket.bind(memory_.socket);
+    bridge_.local_bus.bind(board_.socket);
+    board_.irq.bind(fpga_irq_);
+    bridge_.fpga_irq.bind(fpga_irq_);
+    bridge_.inta.bind(inta_);
+    bus_.inta.bind(inta_);
     if (!vcd_base.empty()) {
         trace_ = sc_create_vcd_trace_file(vcd_base.c_str());
         if (trace_ == nullptr) throw std::runtime_error(vcd_base + ".vcd: cannot create waveform file");
         trace_->set_time_unit(1, SC_PS);
         board_.trace(trace_);
-        sc_trace(trace_, irq_, std::string(this->name()) + ".irq");
+        sc_trace(trace_, fpga_irq_, std::string(this->name()) + ".irq");
+        sc_trace(trace_, inta_, std::string(this->name()) + ".inta");
     }
 }
+
+VirtualBoard::VirtualBoard(const sc_module_name& name, const BoardConfig& board, uint32_t capacity,
+                           const std::string& vcd_base)
+    : VirtualBoard(name, PlatformConfig{board, nullptr, DriverConfig{}}, capacity, vcd_base) {}
 
 VirtualBoard::~VirtualBoard() { close_trace(); }
 
@@ -36,11 +60,11 @@ const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes) {
                                     " boxes exceeds the board's capacity of " +
                                     std::to_string(board_.core().capacity()));
     }
-    host_.submit(boxes);
+    cpu_.submit(boxes);
     sc_start();  // returns when no activity is left: the frame is complete
-    if (!host_.finished()) throw std::runtime_error("the simulation stopped before the frame completed");
-    if (!host_.error().empty()) throw std::runtime_error(host_.error());
-    return host_.result();
+    if (!cpu_.finished()) throw std::runtime_error("the simulation stopped before the frame completed");
+    if (!cpu_.error().empty()) throw std::runtime_error(cpu_.error());
+    return cpu_.result();
 }
 
 }  // namespace cdvp

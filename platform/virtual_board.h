@@ -1,4 +1,5 @@
-// The virtual platform: the collision board and a host, wired and traced.
+// The virtual platform: host PC (CPU thread with driver, host memory) and the
+// collision board (PCI bridge, local bus, FPGA), joined by the PCI bus.
 #pragma once
 
 #include <memory>
@@ -8,18 +9,32 @@
 #include <systemc>
 
 #include "models/board/collision_board.h"
-#include "platform/simple_host.h"
+#include "models/pci/pci_bridge.h"
+#include "models/pci/pci_bus.h"
+#include "platform/host_cpu.h"
+#include "platform/host_memory.h"
 
 namespace cdvp {
 
+struct PlatformConfig {
+    BoardConfig board;
+    // The host bus; null means an ideal one (no communication cost), which
+    // leaves only the board's compute time.
+    std::shared_ptr<const BusTiming> bus;
+    DriverConfig driver;
+};
+
 // Elaborate once, then run any number of frames: each run_frame() hands the
-// boxes to the host thread and simulates until the board is idle again (the
-// board's clock does not tick between frames, so the kernel simply starves).
+// boxes to the CPU thread and simulates until all is idle again (the board's
+// clock does not tick between frames, so the kernel simply starves).
 class VirtualBoard : public sc_core::sc_module {
 public:
     // capacity: the most boxes any frame will hold (sizes the coordinate memories).
     // vcd_base: when not empty, waveforms go to vcd_base + ".vcd".
-    VirtualBoard(const sc_core::sc_module_name& name, const BoardConfig& config, uint32_t capacity,
+    VirtualBoard(const sc_core::sc_module_name& name, const PlatformConfig& config, uint32_t capacity,
+                 const std::string& vcd_base = "");
+    // The board alone on an ideal bus.
+    VirtualBoard(const sc_core::sc_module_name& name, const BoardConfig& board, uint32_t capacity,
                  const std::string& vcd_base = "");
     ~VirtualBoard() override;
 
@@ -29,11 +44,17 @@ public:
     void close_trace();
 
     const CollisionBoard& board() const { return board_; }
+    const PciBridge& bridge() const { return bridge_; }
+    const BusTiming& bus_timing() const { return bus_.timing(); }
 
 private:
     CollisionBoard board_;
-    SimpleHost host_;
-    sc_core::sc_signal<bool> irq_;
+    PciBridge bridge_;
+    PciBus bus_;
+    HostMemory memory_;
+    HostCpu cpu_;
+    sc_core::sc_signal<bool> fpga_irq_;
+    sc_core::sc_signal<bool> inta_;
     sc_core::sc_trace_file* trace_ = nullptr;
 };
 

@@ -61,6 +61,7 @@ bool BoardCore::write_register(uint32_t offset, uint32_t value) {
         case R::kControl:
             if (value & R::kStart) start();
             else if (value & R::kResume) resume();
+            else if (value & R::kAcknowledge) regs_.irq_pending = false;
             return true;
         case R::kId: case R::kStatus: case R::kPairCount: case R::kCyclesLo: case R::kCyclesHi:
         case R::kStallsLo: case R::kStallsHi: case R::kTotalPairsLo: case R::kTotalPairsHi:
@@ -95,7 +96,7 @@ void BoardCore::start() {
     end_issued_ = end_seen_ = stalled_ = false;
     regs_.cycles = regs_.stalls = 0;
     regs_.busy = true;
-    regs_.done = regs_.overflow = regs_.error = false;
+    regs_.done = regs_.overflow = regs_.error = regs_.irq_pending = false;
     phase_ = Phase::Running;
 }
 
@@ -106,7 +107,7 @@ void BoardCore::resume() {
         return;
     }
     collector_.clear_buffer();
-    regs_.overflow = false;
+    regs_.overflow = regs_.irq_pending = false;
     phase_ = Phase::Running;
 }
 
@@ -140,7 +141,7 @@ void BoardCore::step() {
         stalled_ = true;
         ++regs_.stalls;
         phase_ = Phase::Paused;
-        regs_.overflow = true;
+        regs_.overflow = regs_.irq_pending = true;
         return;
     }
     collector_.drain();
@@ -172,7 +173,7 @@ void BoardCore::step() {
 void BoardCore::finish() {
     phase_ = Phase::Done;
     regs_.busy = false;
-    regs_.done = true;
+    regs_.done = regs_.irq_pending = true;
 }
 
 }  // namespace cdvp

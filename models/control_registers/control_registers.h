@@ -28,7 +28,7 @@ constexpr uint32_t kMaxBufferedPairs = kPairBufferSize / 8;
 struct ControlRegisters {
     enum Offset : uint32_t {
         kId = 0x00,               // ro: kIdValue
-        kControl = 0x04,          // wo: kStart, kResume
+        kControl = 0x04,          // wo: kStart, kResume, kAcknowledge
         kStatus = 0x08,           // ro: kBusy, kDone, kOverflow, kError
         kObjectCount = 0x0C,      // rw: boxes for the next start
         kPairCount = 0x10,        // ro: pairs in the pair buffer now
@@ -42,7 +42,7 @@ struct ControlRegisters {
         kCapacity = 0x30,         // ro: memory depth in boxes
         kPairBufferDepth = 0x34,  // ro: pair buffer depth in pairs
     };
-    enum ControlBit : uint32_t { kStart = 1u << 0, kResume = 1u << 1 };
+    enum ControlBit : uint32_t { kStart = 1u << 0, kResume = 1u << 1, kAcknowledge = 1u << 2 };
     enum StatusBit : uint32_t { kBusy = 1u << 0, kDone = 1u << 1, kOverflow = 1u << 2, kError = 1u << 3 };
     static constexpr uint32_t kIdValue = 0xCD7B'0001;  // "cdvp", register map version 1
 
@@ -51,6 +51,7 @@ struct ControlRegisters {
     bool done = false;      // the last sweep finished; every pair is in the buffer
     bool overflow = false;  // paused: the pair buffer is full, drain it and resume
     bool error = false;     // the last command was refused (see board docs)
+    bool irq_pending = false;  // set on done or overflow; START, RESUME or ACKNOWLEDGE clear it
     uint64_t cycles = 0;
     uint64_t stalls = 0;
 
@@ -58,8 +59,9 @@ struct ControlRegisters {
         return (busy ? uint32_t{kBusy} : 0u) | (done ? uint32_t{kDone} : 0u) |
                (overflow ? uint32_t{kOverflow} : 0u) | (error ? uint32_t{kError} : 0u);
     }
-    // The interrupt line: high while the host has something to do.
-    bool interrupt() const { return done || overflow; }
+    // The interrupt line: high from done or overflow until the host
+    // acknowledges (so a shared interrupt line can fall between events).
+    bool interrupt() const { return irq_pending; }
 };
 
 }  // namespace cdvp

@@ -159,8 +159,8 @@ int simulate(const RunOptions& o, FrameSource& source, Outputs& out) {
         const FrameResult& result = platform.run_frame(boxes);
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         run.frames.push_back({frame->number, boxes.size(), result.pairs.size(),
-                              AddressGenerator::sweep_cycles(boxes.size(), o.board.m), result.compute_cycles,
-                              result.stall_cycles, result.overflow_pauses});
+                              AddressGenerator::sweep_cycles(boxes.size(), o.board.m), result.phases.compute_cycles,
+                              result.phases.stall_cycles, result.phases.overflow_pauses});
         progress.update(run.frames.size());
     }
     run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

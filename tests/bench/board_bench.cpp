@@ -58,7 +58,7 @@ void BM_BoardFrame(benchmark::State& state) {
     for (auto _ : state) {
         const cdvp::FrameResult& result = platform.run_frame(scene());
         pairs = result.pairs.size();
-        cycles = result.compute_cycles;
+        cycles = result.phases.compute_cycles;
     }
     state.counters["pairs"] = static_cast<double>(pairs);
     state.counters["cycles"] = static_cast<double>(cycles);

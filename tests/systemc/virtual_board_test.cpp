@@ -35,9 +35,9 @@ TEST(VirtualBoard, FramesEqualTheReferenceAndTimeIsOnlyComputeTime) {
         const auto boxes = testing::random_boxes(n, 6.0f * std::cbrt(static_cast<float>(n) + 1), 2.5f, rng);
         const FrameResult& r = platform.run_frame(boxes);
         ASSERT_EQ(sorted(r.pairs), reference_pairs(boxes)) << "n=" << n;
-        EXPECT_EQ(r.compute_cycles, AddressGenerator::sweep_cycles(n, 8) + config.pipeline_latency() + r.stall_cycles);
-        board_time += platform.board().period() * static_cast<double>(r.compute_cycles);
-        pauses += r.overflow_pauses;
+        EXPECT_EQ(r.phases.compute_cycles, AddressGenerator::sweep_cycles(n, 8) + config.pipeline_latency() + r.phases.stall_cycles);
+        board_time += platform.board().period() * static_cast<double>(r.phases.compute_cycles);
+        pauses += r.phases.overflow_pauses;
         EXPECT_FALSE(sc_pending_activity()) << "nothing may tick between frames";
     }
     EXPECT_GT(pauses, 0u) << "the scene should exercise the overflow path";
@@ -70,7 +70,7 @@ TEST(VirtualBoard, WaveformsOpenInGtkwaveTools) {
         VirtualBoard platform("platform", config, 40, base);
         const FrameResult& r = platform.run_frame(std::vector<FloatBox>(40, FloatBox{{0, 0, 0}, {1, 1, 1}}));
         EXPECT_EQ(r.pairs.size(), 780u);
-        EXPECT_GT(r.stall_cycles, 0u);
+        EXPECT_GT(r.phases.stall_cycles, 0u);
         platform.close_trace();
     }
     const std::string vcd = slurp(base + ".vcd");

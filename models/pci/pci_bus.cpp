@@ -1,0 +1,42 @@
+#include "models/pci/pci_bus.h"
+
+namespace cdvp {
+
+using namespace sc_core;
+
+PciBus::PciBus(const sc_module_name& name, std::shared_ptr<const BusTiming> timing)
+    : sc_module(name),
+      cpu_socket("cpu_socket"),
+      board_socket("board_socket"),
+      master_socket("master_socket"),
+      memory_socket("memory_socket"),
+      inta("inta"),
+      timing_(std::move(timing)) {
+    cpu_socket.register_b_transport(this, &PciBus::cpu_transport);
+    cpu_socket.register_transport_dbg(this, &PciBus::cpu_debug);
+    master_socket.register_b_transport(this, &PciBus::master_transport);
+    SC_METHOD(deliver_interrupt);
+    sensitive << inta.pos();
+    dont_initialize();
+}
+
+void PciBus::cpu_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
+    const double words = (payload.get_data_length() + 3) / 4;
+    const double per_word =
+        payload.get_command() == tlm::TLM_READ_COMMAND ? timing_->pio_read_ns() : timing_->pio_write_ns();
+    // Synchronise before the access reaches the board, so a START or RESUME
+    // takes effect when the write has crossed the bus, not when it was issued.
+    wait(delay + sc_time(words * per_word, SC_NS));
+    delay = SC_ZERO_TIME;
+    board_socket->b_transport(payload, delay);
+}
+
+void PciBus::master_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
+    memory_socket->b_transport(payload, delay);
+}
+
+unsigned int PciBus::cpu_debug(tlm::tlm_generic_payload& payload) { return board_socket->transport_dbg(payload); }
+
+void PciBus::deliver_interrupt() { interrupt_.notify(sc_time(timing_->interrupt_ns(), SC_NS)); }
+
+}  // namespace cdvp

@@ -1,0 +1,47 @@
+// The host's PCI (or PCIe) link as a loosely timed TLM-2.0 interconnect.
+#pragma once
+
+#include <memory>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+#include <tlm_utils/simple_target_socket.h>
+
+#include "models/pci/bus_timing.h"
+
+namespace cdvp {
+
+// Programmed I/O from the CPU goes to the board's BAR with the bus's read or
+// write cost annotated per 32-bit word (the CPU does single, uncached
+// accesses). The bridge's bus-master accesses reach host memory untimed here:
+// the bridge accounts a DMA transfer as a whole. The board's interrupt pin
+// reaches the driver's handler an interrupt latency after it rises.
+class PciBus : public sc_core::sc_module {
+public:
+    SC_HAS_PROCESS(PciBus);
+
+    tlm_utils::simple_target_socket<PciBus> cpu_socket;        // host CPU, programmed I/O
+    tlm_utils::simple_initiator_socket<PciBus> board_socket;   // the board's BAR (its bridge)
+    tlm_utils::simple_target_socket<PciBus> master_socket;     // the bridge as bus master
+    tlm_utils::simple_initiator_socket<PciBus> memory_socket;  // host memory
+    sc_core::sc_in<bool> inta;                                 // the board's interrupt pin
+
+    PciBus(const sc_core::sc_module_name& name, std::shared_ptr<const BusTiming> timing);
+
+    const BusTiming& timing() const { return *timing_; }
+    std::shared_ptr<const BusTiming> shared_timing() const { return timing_; }
+    // Notified when the driver's interrupt handler runs.
+    const sc_core::sc_event& interrupt_event() const { return interrupt_; }
+
+private:
+    void cpu_transport(tlm::tlm_generic_payload& payload, sc_core::sc_time& delay);
+    void master_transport(tlm::tlm_generic_payload& payload, sc_core::sc_time& delay);
+    unsigned int cpu_debug(tlm::tlm_generic_payload& payload);
+    void deliver_interrupt();
+
+    std::shared_ptr<const BusTiming> timing_;
+    sc_core::sc_event interrupt_;
+};
+
+}  // namespace cdvp

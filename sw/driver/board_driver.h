@@ -1,0 +1,93 @@
+// The host driver of the collision board: runs in a host CPU thread of the
+// simulation, reaches the board over the PCI bus and stages data in host RAM.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+
+#include "models/common/aabb.h"
+
+namespace cdvp {
+
+class HostMemory;
+
+struct DriverConfig {
+    bool use_dma = true;          // false: boxes and pairs by programmed I/O
+    bool use_interrupts = true;   // false: poll the status register
+    double poll_gap_ns = 0.0;     // CPU time between two status polls
+    // Host CPU work, per frame (assumptions of the host preset): packing a box
+    // (six double-to-float conversions and stores), unpacking a pair, and a
+    // call into the kernel driver per board operation.
+    double ns_per_box = 0.0;
+    double ns_per_pair = 0.0;
+    double call_ns = 0.0;
+};
+
+// Where a frame's simulated time went; the phases add up to total_ns.
+struct FramePhases {
+    double upload_ns = 0;    // staging boxes on the board (DMA or PIO, with its set-up and completion)
+    double start_ns = 0;     // writing the object count and START
+    double compute_ns = 0;   // the board's clock running (cycles x period)
+    double irq_ns = 0;       // from the board's interrupt to the driver noticing (interrupt or polling)
+    double readback_ns = 0;  // status reads, pair transfers, RESUME after overflows
+    double driver_ns = 0;    // host CPU work: packing boxes, unpacking pairs, driver calls
+    double total_ns = 0;
+    uint64_t compute_cycles = 0;
+    uint64_t stall_cycles = 0;
+    uint32_t overflow_pauses = 0;
+};
+
+class BoardDriver {
+public:
+    // The CPU's path to the board's BAR (blocking transport).
+    using Transport = std::function<void(tlm::tlm_generic_payload&, sc_core::sc_time&)>;
+
+    // interrupt: notified when the interrupt handler runs; period: the board's clock period.
+    BoardDriver(Transport pio, HostMemory& memory, const sc_core::sc_event& interrupt, const sc_core::sc_time& period,
+                const DriverConfig& config);
+
+    // Host RAM the driver needs for a board of this capacity and pair buffer.
+    static uint64_t host_memory_bytes(uint32_t capacity, uint32_t buffer_depth);
+
+    // Checks the board's identity and reads its capacity (call from a thread).
+    void open();
+    uint32_t capacity() const { return capacity_; }
+
+    // One frame: every overlapping pair into pairs (board order), or an
+    // exception; never a partial set. Call from a SystemC thread.
+    FramePhases run_frame(const std::vector<FloatBox>& boxes, PairList& pairs);
+
+private:
+    enum Phase { kUpload, kStart, kCompute, kIrq, kReadback, kDriver, kPhases };
+    void charge(Phase phase);  // the time since the last charge goes to phase
+    void cpu_work(double ns);  // host CPU time, charged to the driver
+    void poll_pause();
+
+    uint32_t read(uint64_t address);
+    void write(uint64_t address, uint32_t value);
+    void pio(tlm::tlm_command command, uint64_t address, void* data, unsigned int length);
+    void dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host);
+    uint64_t read_counter(uint32_t low_offset);
+    void upload(const std::vector<FloatBox>& boxes);
+    // Waits for the board after START or RESUME; returns its status.
+    uint32_t wait_for_board();
+    void read_pairs(PairList& pairs);
+
+    Transport pio_;
+    HostMemory& memory_;
+    const sc_core::sc_event& interrupt_;
+    sc_core::sc_time period_;
+    DriverConfig config_;
+    uint32_t capacity_ = 0;
+    uint32_t buffer_depth_ = 0;
+    uint64_t cycles_seen_ = 0;
+    double spent_[kPhases] = {};
+    sc_core::sc_time mark_;
+};
+
+}  // namespace cdvp
