@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace cdvp {
 
@@ -70,8 +71,7 @@ void check(bool ok, const std::string& what) {
 
 }  // namespace
 
-SpheresScene::SpheresScene(const SpheresConfig& config) : config_(config) {
-    const SpheresConfig& c = config_;
+SpheresPlacement place_spheres(const SpheresConfig& c) {
     check(std::isfinite(c.radius_min) && std::isfinite(c.radius_max) &&
               c.radius_min >= 0.0 && c.radius_max > 0.0 && c.radius_min <= c.radius_max,
           "expected 0 <= radius_min <= radius_max, radius_max > 0");
@@ -86,20 +86,16 @@ SpheresScene::SpheresScene(const SpheresConfig& config) : config_(config) {
     double mean_r3 = a == b ? a * a * a : (b * b * b * b - a * a * a * a) / (4.0 * (b - a));
     double volume = static_cast<double>(c.objects) * (4.0 / 3.0) * kPi * mean_r3 /
                     c.volume_fraction;
-    edge_ = std::max(volume > 0.0 ? cube_root(volume) : 0.0, 2.0 * b);
+    SpheresPlacement placement;
+    placement.edge = std::max(volume > 0.0 ? cube_root(volume) : 0.0, 2.0 * b);
 
     Rng rng(c.seed);
-    spheres_.resize(c.objects);
-    for (Sphere& s : spheres_) {
+    placement.spheres.resize(c.objects);
+    for (SphereState& s : placement.spheres) {
         s.radius = a + (b - a) * rng.unit();
-        // Rounding of edge - radius could put centre + radius an ulp past
-        // the wall; step hi down until it cannot.
-        s.hi = edge_ - s.radius;
-        while (s.hi + s.radius > edge_) {
-            s.hi = std::nextafter(s.hi, 0.0);
-        }
+        double hi = centre_limit(placement.edge, s.radius);
         for (double& x : s.centre) {
-            x = std::min(s.radius + (s.hi - s.radius) * rng.unit(), s.hi);
+            x = std::min(s.radius + (hi - s.radius) * rng.unit(), hi);
         }
         // Uniform in the unit ball by rejection from the cube [-1, 1)^3.
         double len2 = 0.0;
@@ -114,39 +110,45 @@ SpheresScene::SpheresScene(const SpheresConfig& config) : config_(config) {
             v *= c.max_speed;
         }
     }
+    return placement;
 }
 
-void SpheresScene::advance() {
-    for (Sphere& s : spheres_) {
-        double lo = s.radius;
-        for (int axis = 0; axis < 3; ++axis) {
-            double& x = s.centre[axis];
-            double& v = s.velocity[axis];
-            x += v * config_.dt;
-            // Mirror at the wall; the clamp covers a step longer than the
-            // free space (tiny cube, huge speed).
-            if (x < lo) {
-                x = 2.0 * lo - x;
-                v = -v;
-            } else if (x > s.hi) {
-                x = 2.0 * s.hi - x;
-                v = -v;
-            }
-            x = std::clamp(x, lo, s.hi);
+double centre_limit(double edge, double radius) {
+    // Rounding of edge - radius could put centre + radius an ulp past the
+    // wall; step hi down until it cannot.
+    double hi = edge - radius;
+    while (hi + radius > edge) {
+        hi = std::nextafter(hi, 0.0);
+    }
+    return hi;
+}
+
+void move_sphere(SphereState& s, double hi, double dt) {
+    double lo = s.radius;
+    for (int axis = 0; axis < 3; ++axis) {
+        double& x = s.centre[axis];
+        double& v = s.velocity[axis];
+        x += v * dt;
+        // Mirror at the wall; the clamp covers a step longer than the free
+        // space (tiny cube, huge speed).
+        if (x < lo) {
+            x = 2.0 * lo - x;
+            v = -v;
+        } else if (x > hi) {
+            x = 2.0 * hi - x;
+            v = -v;
         }
+        x = std::clamp(x, lo, hi);
     }
 }
 
-Frame SpheresScene::next() {
-    if (next_number_ > 0) {
-        advance();
-    }
+Frame spheres_frame(uint64_t number, const std::vector<SphereState>& spheres) {
     Frame frame;
-    frame.number = next_number_++;
-    frame.ids.resize(spheres_.size());
-    frame.boxes.resize(spheres_.size());
-    for (std::size_t k = 0; k < spheres_.size(); ++k) {
-        const Sphere& s = spheres_[k];
+    frame.number = number;
+    frame.ids.resize(spheres.size());
+    frame.boxes.resize(spheres.size());
+    for (std::size_t k = 0; k < spheres.size(); ++k) {
+        const SphereState& s = spheres[k];
         frame.ids[k] = k;
         for (int axis = 0; axis < 3; ++axis) {
             frame.boxes[k].min[axis] = s.centre[axis] - s.radius;
@@ -154,6 +156,28 @@ Frame SpheresScene::next() {
         }
     }
     return frame;
+}
+
+SpheresScene::SpheresScene(const SpheresConfig& config) : config_(config) {
+    SpheresPlacement placement = place_spheres(config_);
+    edge_ = placement.edge;
+    spheres_ = std::move(placement.spheres);
+    for (const SphereState& s : spheres_) {
+        hi_.push_back(centre_limit(edge_, s.radius));
+    }
+}
+
+void SpheresScene::advance() {
+    for (std::size_t k = 0; k < spheres_.size(); ++k) {
+        move_sphere(spheres_[k], hi_[k], config_.dt);
+    }
+}
+
+Frame SpheresScene::next() {
+    if (next_number_ > 0) {
+        advance();
+    }
+    return spheres_frame(next_number_++, spheres_);
 }
 
 }  // namespace cdvp

@@ -1,6 +1,6 @@
 // A deterministic synthetic scene: spheres flying through a closed cube and
-// bouncing off its walls (they pass through each other; no physics between
-// spheres yet). Each frame gives every sphere's bounding box.
+// bouncing off its walls (they pass through each other; sw/apps has spheres
+// that bounce off each other too). Each frame gives every sphere's bounding box.
 #pragma once
 
 #include <array>
@@ -23,6 +23,37 @@ struct SpheresConfig {
     double dt = 1.0 / 60.0;         // time between frames
 };
 
+// The pieces below are shared with the bouncing-spheres application
+// (sw/apps), so both start from the same state for the same config.
+
+// One sphere: centre and velocity per axis.
+struct SphereState {
+    double radius = 0.0;
+    std::array<double, 3> centre{};
+    std::array<double, 3> velocity{};
+};
+
+// The cube's edge and the spheres placed in it, all inside [0, edge]^3.
+struct SpheresPlacement {
+    double edge = 0.0;
+    std::vector<SphereState> spheres;
+};
+
+// Validates config (InputError) and places config.objects spheres: radii,
+// centres and velocities drawn from config.seed; edge as SpheresScene::edge().
+SpheresPlacement place_spheres(const SpheresConfig& config);
+
+// The largest centre coordinate keeping centre + radius <= edge exactly,
+// despite rounding (requires 2 * radius <= edge).
+double centre_limit(double edge, double radius);
+
+// Moves s by dt, mirroring it at the walls: each centre coordinate stays in
+// [radius, hi] with hi = centre_limit(edge, radius).
+void move_sphere(SphereState& s, double hi, double dt);
+
+// Frame `number`: ids 0..N-1, boxes centre +- radius.
+Frame spheres_frame(uint64_t number, const std::vector<SphereState>& spheres);
+
 class SpheresScene {
 public:
     // Places the spheres. The cube's edge is chosen so the spheres' expected
@@ -39,19 +70,13 @@ public:
     double edge() const { return edge_; }
 
 private:
-    struct Sphere {
-        double radius;
-        std::array<double, 3> centre;
-        std::array<double, 3> velocity;
-        double hi;  // largest centre coordinate keeping centre + radius <= edge
-    };
-
     void advance();
 
     SpheresConfig config_;
     double edge_ = 0.0;
     uint64_t next_number_ = 0;
-    std::vector<Sphere> spheres_;
+    std::vector<SphereState> spheres_;
+    std::vector<double> hi_;  // centre_limit(edge_, radius) per sphere
 };
 
 }  // namespace cdvp
