@@ -4,21 +4,12 @@
 
 namespace cdvp {
 
-namespace {
-bool overlap(const FloatBox& a, const FloatBox& b) {
-    for (int axis = 0; axis < 3; ++axis) {
-        if (!(a.min[axis] <= b.max[axis] && b.min[axis] <= a.max[axis])) return false;
-    }
-    return true;
-}
-}  // namespace
-
 size_t brute_force_pairs(const std::vector<FloatBox>& boxes, PairList& out) {
     out.clear();
     const auto n = static_cast<uint32_t>(boxes.size());
     for (uint32_t i = 0; i < n; ++i) {
         for (uint32_t j = i + 1; j < n; ++j) {
-            if (overlap(boxes[i], boxes[j])) out.push_back({i, j});
+            if (boxes_overlap(boxes[i], boxes[j])) out.push_back({i, j});
         }
     }
     return out.size();

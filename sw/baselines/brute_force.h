@@ -8,6 +8,15 @@
 
 namespace cdvp {
 
+// The exact test: a and b overlap on all three axes (min_a <= max_b and
+// min_b <= max_a; touching boxes overlap). Inexact baselines filter by it.
+inline bool boxes_overlap(const FloatBox& a, const FloatBox& b) {
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!(a.min[axis] <= b.max[axis] && b.min[axis] <= a.max[axis])) return false;
+    }
+    return true;
+}
+
 // The reference: every pair i < j whose boxes overlap on all three axes
 // (min_a <= max_b and min_b <= max_a), sorted by (i, j). Written without any
 // of the board's code so that tests compare two independent implementations.

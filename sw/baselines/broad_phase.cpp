@@ -1,0 +1,38 @@
+#include "sw/baselines/broad_phase.h"
+
+#include <stdexcept>
+
+#include "sw/baselines/brute_force.h"
+#include "sw/baselines/bullet_broad_phase.h"
+#include "sw/baselines/soa_broad_phase.h"
+
+namespace cdvp {
+
+namespace {
+
+// The existing scalar loop; stateless, so frame coherence does not apply.
+class BruteBroadPhase : public BroadPhase {
+public:
+    std::string name() const override { return "brute"; }
+    void find_pairs(const std::vector<FloatBox>& boxes, PairList& out) override {
+        brute_force_pairs(boxes, out);
+    }
+};
+
+}  // namespace
+
+std::vector<std::string> broad_phase_names() { return {"sap", "dbvt", "brute", "soa"}; }
+
+std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name) {
+    if (name == "sap") return make_bullet_broad_phase(BulletKind::sap);
+    if (name == "dbvt") return make_bullet_broad_phase(BulletKind::dbvt);
+    if (name == "brute") return std::make_unique<BruteBroadPhase>();
+    if (name == "soa") return std::make_unique<SoaBroadPhase>();
+    std::string expected;
+    for (const std::string& known : broad_phase_names()) {
+        expected += (expected.empty() ? "" : ", ") + known;
+    }
+    throw std::invalid_argument("unknown baseline '" + name + "'; expected one of: " + expected);
+}
+
+}  // namespace cdvp

@@ -1,0 +1,149 @@
+#include "sw/baselines/bullet_broad_phase.h"
+
+#include <BulletCollision/BroadphaseCollision/btAxisSweep3.h>
+#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "sw/baselines/brute_force.h"
+
+namespace cdvp {
+
+namespace {
+
+// Bullet never sees an infinity: a monotone clamp keeps every true overlap
+// (a <= b implies clamp(a) <= clamp(b)) and the exact filter removes what it
+// adds. Finite stand-ins also keep DBVT's velocity prediction, (max-min)/2 * 0,
+// from turning into NaN, and SAP's quantization scale finite.
+constexpr float kBig = 1e37f;
+
+float clamp_bound(float v) { return std::min(std::max(v, -kBig), kBig); }
+
+btVector3 to_bullet(const float (&v)[3]) {
+    return btVector3(clamp_bound(v[0]), clamp_bound(v[1]), clamp_bound(v[2]));
+}
+
+// SAP quantizes inside fixed world bounds and clamps whatever leaves them to the
+// edge (only loosening its set). Take them from the finite bounds of the first
+// frame, enlarged so that coherent motion stays inside for a while; the margin
+// never drops below an absolute 1 or a relative 1e-3 so the world has volume.
+std::pair<btVector3, btVector3> world_bounds(const std::vector<FloatBox>& boxes) {
+    btVector3 world_min, world_max;
+    for (int axis = 0; axis < 3; ++axis) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (const FloatBox& box : boxes) {
+            for (float v : {box.min[axis], box.max[axis]}) {
+                if (!std::isfinite(v)) continue;
+                lo = std::min(lo, static_cast<double>(clamp_bound(v)));
+                hi = std::max(hi, static_cast<double>(clamp_bound(v)));
+            }
+        }
+        if (lo > hi) lo = hi = 0.0;  // no finite bound on this axis
+        const double margin =
+            std::max({0.25 * (hi - lo), 1.0, 1e-3 * std::max(std::fabs(lo), std::fabs(hi))});
+        world_min[axis] = static_cast<btScalar>(lo - margin);
+        world_max[axis] = static_cast<btScalar>(hi + margin);
+    }
+    return {world_min, world_max};
+}
+
+constexpr std::size_t kMax16BitHandles = 16383;  // btAxisSweep3 adds a sentinel handle
+
+std::unique_ptr<btBroadphaseInterface> create_broadphase(BulletKind kind,
+                                                         const std::vector<FloatBox>& boxes) {
+    if (kind == BulletKind::dbvt) return std::make_unique<btDbvtBroadphase>();
+    const auto [world_min, world_max] = world_bounds(boxes);
+    constexpr bool kDisableRaycastAccelerator = true;  // a DBVT shadow we never query
+    if (boxes.size() <= kMax16BitHandles) {
+        return std::make_unique<btAxisSweep3>(world_min, world_max,
+                                              static_cast<unsigned short>(boxes.size()), nullptr,
+                                              kDisableRaycastAccelerator);
+    }
+    return std::make_unique<bt32BitAxisSweep3>(world_min, world_max,
+                                               static_cast<unsigned int>(boxes.size()), nullptr,
+                                               kDisableRaycastAccelerator);
+}
+
+// Both broad phases own a btHashedOverlappingPairCache (the default when none is
+// passed). No collision algorithms are ever created, so a null dispatcher is
+// safe: the cache touches the dispatcher only to free a pair's algorithm.
+class BulletBroadPhase : public BroadPhase {
+public:
+    explicit BulletBroadPhase(BulletKind kind) : kind_(kind) {}
+    ~BulletBroadPhase() override { release(); }
+
+    std::string name() const override { return kind_ == BulletKind::sap ? "sap" : "dbvt"; }
+
+    void find_pairs(const std::vector<FloatBox>& boxes, PairList& out) override {
+        out.clear();
+        if (!broadphase_ || boxes.size() != proxies_.size()) {
+            rebuild(boxes);
+            if (!broadphase_) return;
+        } else {
+            for (std::size_t i = 0; i < boxes.size(); ++i) {
+                broadphase_->setAabb(proxies_[i], to_bullet(boxes[i].min),
+                                     to_bullet(boxes[i].max), nullptr);
+            }
+        }
+        broadphase_->calculateOverlappingPairs(nullptr);
+        collect_exact(boxes, out);
+    }
+
+private:
+    void rebuild(const std::vector<FloatBox>& boxes) {
+        release();
+        if (boxes.empty()) return;
+        broadphase_ = create_broadphase(kind_, boxes);
+        proxies_.reserve(boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            // The box index rides in the proxy's client pointer.
+            void* index = reinterpret_cast<void*>(static_cast<std::uintptr_t>(i));
+            proxies_.push_back(broadphase_->createProxy(to_bullet(boxes[i].min),
+                                                        to_bullet(boxes[i].max),
+                                                        BOX_SHAPE_PROXYTYPE, index, 1, -1,
+                                                        nullptr));
+        }
+    }
+
+    // DBVT allocates each proxy separately: destroy them before the broad phase.
+    // SAP's handles live in its own array, and removing one re-sorts every axis
+    // (O(n) each, seconds for 17k boxes), so the destructor alone frees them.
+    void release() {
+        if (kind_ == BulletKind::dbvt) {
+            for (btBroadphaseProxy* proxy : proxies_) broadphase_->destroyProxy(proxy, nullptr);
+        }
+        proxies_.clear();
+        broadphase_.reset();
+    }
+
+    // Bullet's set is a superset (quantized SAP endpoints; enlarged DBVT leaves and
+    // stale pairs removed a few per frame): keep only the exact overlaps.
+    void collect_exact(const std::vector<FloatBox>& boxes, PairList& out) const {
+        const btBroadphasePairArray& pairs =
+            broadphase_->getOverlappingPairCache()->getOverlappingPairArray();
+        for (int k = 0; k < pairs.size(); ++k) {
+            auto a = static_cast<uint32_t>(
+                reinterpret_cast<std::uintptr_t>(pairs[k].m_pProxy0->m_clientObject));
+            auto b = static_cast<uint32_t>(
+                reinterpret_cast<std::uintptr_t>(pairs[k].m_pProxy1->m_clientObject));
+            if (a > b) std::swap(a, b);
+            if (boxes_overlap(boxes[a], boxes[b])) out.push_back({a, b});
+        }
+    }
+
+    BulletKind kind_;
+    std::unique_ptr<btBroadphaseInterface> broadphase_;
+    std::vector<btBroadphaseProxy*> proxies_;
+};
+
+}  // namespace
+
+std::unique_ptr<BroadPhase> make_bullet_broad_phase(BulletKind kind) {
+    return std::make_unique<BulletBroadPhase>(kind);
+}
+
+}  // namespace cdvp
