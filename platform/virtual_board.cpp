@@ -34,7 +34,7 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
     if (!vcd_base.empty()) {
         trace_ = sc_create_vcd_trace_file(vcd_base.c_str());
         if (trace_ == nullptr) throw std::runtime_error(vcd_base + ".vcd: cannot create waveform file");
-        trace_->set_time_unit(1, SC_PS);
+        trace_->set_time_unit(1, SC_FS);  // the kernel's resolution: every edge lands exactly
         board_.trace(trace_);
         sc_trace(trace_, fpga_irq_, std::string(this->name()) + ".irq");
         sc_trace(trace_, inta_, std::string(this->name()) + ".inta");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -38,7 +39,7 @@ PciTiming::PciTiming(const PciConfig& config) : config_(config) { config_.valida
 
 std::string PciTiming::describe() const {
     std::ostringstream s;
-    s << "PCI " << config_.width_bits << "-bit/" << std::lround(config_.clock_mhz) << " MHz";
+    s << "PCI " << config_.width_bits << "-bit/" << std::setprecision(3) << config_.clock_mhz << " MHz";
     return s.str();
 }
 

@@ -29,7 +29,7 @@ public:
 // No host-bus cost at all: the board alone, as if the host were on chip.
 class IdealBusTiming : public BusTiming {
 public:
-    std::string describe() const override { return "ideal (untimed host bus)"; }
+    std::string describe() const override { return "untimed host bus"; }
     double pio_read_ns() const override { return 0.0; }
     double pio_write_ns() const override { return 0.0; }
     double dma_ns(uint64_t, Direction) const override { return 0.0; }

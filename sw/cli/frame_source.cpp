@@ -30,13 +30,14 @@ private:
 
 class SpheresSource : public FrameSource {
 public:
-    SpheresSource(const SpheresConfig& config, std::size_t frames)
+    SpheresSource(const BouncingSpheresConfig& config, std::size_t frames)
         : config_(config), scene_(config), frames_(frames) {}
     std::optional<Frame> next() override {
         if (produced_ == frames_) return std::nullopt;
         ++produced_;
-        return scene_.next();
+        return scene_.frame();
     }
+    void feed(const PairList& pairs) override { scene_.step(pairs); }
     std::size_t frame_count() const override { return frames_; }
     std::size_t max_objects() const override { return config_.objects; }
     std::string describe() const override {
@@ -44,8 +45,8 @@ public:
     }
 
 private:
-    SpheresConfig config_;
-    SpheresScene scene_;
+    BouncingSpheresConfig config_;
+    BouncingSpheres scene_;
     std::size_t frames_;
     std::size_t produced_ = 0;
 };
@@ -54,7 +55,7 @@ private:
 
 std::unique_ptr<FrameSource> trace_source(const std::string& path) { return std::make_unique<TraceSource>(path); }
 
-std::unique_ptr<FrameSource> spheres_source(const SpheresConfig& config, std::size_t frames) {
+std::unique_ptr<FrameSource> spheres_source(const BouncingSpheresConfig& config, std::size_t frames) {
     return std::make_unique<SpheresSource>(config, frames);
 }
 

@@ -8,7 +8,8 @@
 #include <vector>
 
 #include "sw/scene/scene.h"
-#include "sw/scene/spheres.h"
+#include "models/common/aabb.h"
+#include "sw/apps/bouncing_spheres.h"
 
 namespace cdvp {
 
@@ -16,6 +17,9 @@ class FrameSource {
 public:
     virtual ~FrameSource() = default;
     virtual std::optional<Frame> next() = 0;
+    // The broad phase's pairs for the frame next() returned last (an
+    // application steps its physics on them; a trace ignores them).
+    virtual void feed(const PairList& /*pairs*/) {}
     virtual std::size_t frame_count() const = 0;
     // The most boxes any frame holds: the board's memory depth.
     virtual std::size_t max_objects() const = 0;
@@ -27,7 +31,8 @@ public:
 // before anything is simulated or written).
 std::unique_ptr<FrameSource> trace_source(const std::string& path);
 
-// A spheres scene generated frame by frame (no frame is kept).
-std::unique_ptr<FrameSource> spheres_source(const SpheresConfig& config, std::size_t frames);
+// The paper's application: spheres bouncing off the walls and each other,
+// stepped on the broad phase's pairs (no frame is kept).
+std::unique_ptr<FrameSource> spheres_source(const BouncingSpheresConfig& config, std::size_t frames);
 
 }  // namespace cdvp

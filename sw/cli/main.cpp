@@ -6,6 +6,7 @@
 
 #include <systemc>
 
+#include "platform/kernel.h"
 #include "sw/cli/run_command.h"
 
 namespace {
@@ -24,9 +25,7 @@ constexpr const char* kUsage =
 }  // namespace
 
 int sc_main(int argc, char** argv) {
-    // Informational kernel messages (e.g. the VCD timescale) are not for users;
-    // warnings and errors still surface.
-    sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+    cdvp::configure_kernel();
     if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
         std::cout << kUsage;
         return argc < 2 ? 2 : 0;

@@ -2,7 +2,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <map>
+#include <sstream>
 #include <cstring>
 #include <iostream>
 #include <memory>
@@ -14,7 +17,10 @@
 
 #include "models/address_generator/address_generator.h"
 #include "models/control_registers/control_registers.h"
+#include "models/block_ram/block_ram.h"
+#include "platform/board_preset.h"
 #include "platform/virtual_board.h"
+#include "sw/baselines/broad_phase.h"
 #include "sw/cli/frame_source.h"
 #include "sw/cli/run_report.h"
 #include "sw/scene/conversion.h"
@@ -30,11 +36,16 @@ namespace {
 struct RunOptions {
     std::string trace;
     std::string scene;
-    SpheresConfig spheres;
+    BouncingSpheresConfig spheres;
     // Signed, so that a negative count is reported instead of wrapping around.
     int64_t objects = 500;
     int64_t frames = 1;
     BoardConfig board;
+    std::string board_name;
+    std::string transfer = "dma";
+    std::string wait = "irq";
+    std::string baselines;
+    double host_factor = 0;  // 0: the preset's
     std::string pairs_out, report, vcd;
     bool quiet = false;
 };
@@ -51,6 +62,9 @@ po::options_description run_options(RunOptions& o) {
          "spheres: random seed (same seed, same scene)");
     po::options_description board("Board");
     board.add_options()
+        ("board", po::value(&o.board_name)->value_name("NAME"),
+         "board preset from platform/boards (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) or a .json path; "
+         "without it: the board alone on an ideal, untimed bus")
         ("m", po::value(&o.board.m)->value_name("M")->default_value(o.board.m),
          "parallelism: 2m-port memories, 2m-1 comparison lanes (1..32)")
         ("clock-mhz", po::value(&o.board.clock_mhz)->value_name("F")->default_value(o.board.clock_mhz, "66"),
@@ -63,6 +77,16 @@ po::options_description run_options(RunOptions& o) {
              ->default_value(o.board.collector.drain_per_cycle), "pairs moved from FIFO to pair buffer a cycle")
         ("pair-buffer", po::value(&o.board.collector.buffer_depth)->value_name("P")
              ->default_value(o.board.collector.buffer_depth), "pair buffer depth in pairs before the host drains it");
+    po::options_description host("Host and baselines");
+    host.add_options()
+        ("transfer", po::value(&o.transfer)->value_name("dma|pio")->default_value(o.transfer),
+         "how the driver moves boxes and pairs: bridge DMA or programmed I/O")
+        ("wait", po::value(&o.wait)->value_name("irq|poll")->default_value(o.wait),
+         "how the driver waits for the board: interrupt or polling")
+        ("baseline", po::value(&o.baselines)->value_name("LIST"),
+         "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa")
+        ("host-factor", po::value(&o.host_factor)->value_name("F"),
+         "host-speed factor: native software time x F = time on the modelled host (default: the board preset's)");
     po::options_description output("Output");
     output.add_options()
         ("pairs-out", po::value(&o.pairs_out)->value_name("FILE"), "overlapping pairs CSV (frame,a,b)")
@@ -71,9 +95,10 @@ po::options_description run_options(RunOptions& o) {
         ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors")
         ("help,h", "show this help");
     po::options_description all("Usage: cdvp run (--trace FILE | --scene spheres [--objects N] [--frames F] "
-                                "[--seed S]) [options]\n\nSimulates each frame on the cycle-level board "
-                                "and reports its pairs and cycles");
-    all.add(input).add(board).add(output);
+                                "[--seed S]) [options]\n\nSimulates each frame on the virtual platform "
+                                "and reports its pairs, cycles and time.\nWith --board, the board settings "
+                                "below come from the preset unless given");
+    all.add(input).add(board).add(host).add(output);
     return all;
 }
 
@@ -120,7 +145,7 @@ std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variable
                          std::to_string(o.objects));
     }
     if (o.frames < 0) throw InputError("--frames: expected a non-negative count, found " + std::to_string(o.frames));
-    SpheresConfig spheres = o.spheres;
+    BouncingSpheresConfig spheres = o.spheres;
     spheres.objects = static_cast<std::size_t>(o.objects);
     return spheres_source(spheres, static_cast<std::size_t>(o.frames));
 }
@@ -143,13 +168,104 @@ private:
     std::chrono::steady_clock::time_point last_{};
 };
 
-int simulate(const RunOptions& o, FrameSource& source, Outputs& out) {
+// What the run simulates on: the board (from a preset or the flags), its bus
+// and host, and the software baselines to time beside it.
+struct Setup {
+    PlatformConfig platform;
+    std::string board = "ideal";
+    std::string host = "this machine";
+    double host_factor = 1.0;
+    uint32_t block_rams = 0;  // the FPGA's; 0: unbounded
+    std::vector<std::unique_ptr<BroadPhase>> baselines;
+};
+
+Setup make_setup(const RunOptions& o, const po::variables_map& vm, std::size_t max_objects) {
+    Setup setup;
+    setup.platform.board = o.board;
+    if (!o.board_name.empty()) {
+        const BoardPreset preset = load_board_preset(o.board_name);
+        BoardConfig& b = setup.platform.board;
+        // The preset's numbers, unless a flag sets them.
+        if (vm["clock-mhz"].defaulted()) b.clock_mhz = preset.board.clock_mhz;
+        if (vm["compare-latency"].defaulted()) b.compare = preset.board.compare;
+        if (vm["fifo-depth"].defaulted()) b.collector.fifo_depth = preset.board.collector.fifo_depth;
+        if (vm["drain-rate"].defaulted()) b.collector.drain_per_cycle = preset.board.collector.drain_per_cycle;
+        if (vm["pair-buffer"].defaulted()) b.collector.buffer_depth = preset.board.collector.buffer_depth;
+        setup.platform.bus = preset.bus;
+        setup.platform.driver = preset.driver;
+        setup.board = preset.name;
+        setup.host = preset.host.name;
+        setup.host_factor = preset.host.speed_factor;
+        setup.block_rams = preset.block_rams;
+    }
+    validate_board(setup.platform.board);
+    const uint64_t needed = uint64_t{kCoordinates} * setup.platform.board.m *
+                            CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
+    if (setup.block_rams != 0 && needed > setup.block_rams) {
+        const uint64_t per_m = uint64_t{kCoordinates} * std::max<uint32_t>(1, CascadedBlockRam::primitives_for(
+                                                                                   static_cast<uint32_t>(max_objects)));
+        throw InputError("--m: m=" + std::to_string(setup.platform.board.m) + " needs " + std::to_string(needed) +
+                         " block RAMs for " + std::to_string(max_objects) + " objects; " + setup.board + " has " +
+                         std::to_string(setup.block_rams) + " (largest m that fits: " +
+                         std::to_string(setup.block_rams / per_m) + ")");
+    }
+    if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, found '" + o.transfer + "'");
+    if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, found '" + o.wait + "'");
+    setup.platform.driver.use_dma = o.transfer == "dma";
+    setup.platform.driver.use_interrupts = o.wait == "irq";
+    if (vm.count("host-factor")) {
+        if (!(o.host_factor > 0)) throw InputError("--host-factor: expected a positive number");
+        setup.host_factor = o.host_factor;
+    }
+    std::stringstream names(o.baselines);
+    for (std::string name; std::getline(names, name, ',');) {
+        try {
+            setup.baselines.push_back(make_broad_phase(name));
+        } catch (const std::invalid_argument& e) {
+            throw InputError(std::string("--baseline: ") + e.what());
+        }
+    }
+    return setup;
+}
+
+PairList sorted(PairList pairs) {
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+// Times each baseline natively on the frame and checks it finds the board's pairs.
+std::map<std::string, BaselineTime> run_baselines(Setup& setup, const std::vector<FloatBox>& boxes,
+                                                  const PairList& board_pairs, uint64_t frame) {
+    std::map<std::string, BaselineTime> times;
+    PairList found;
+    for (auto& baseline : setup.baselines) {
+        const auto start = std::chrono::steady_clock::now();
+        baseline->find_pairs(boxes, found);
+        const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+        times[baseline->name()] = {ns, ns * setup.host_factor};
+        if (sorted(found) != board_pairs) {
+            throw std::runtime_error("baseline " + baseline->name() + " found " + std::to_string(found.size()) +
+                                     " pairs in frame " + std::to_string(frame) + ", the board " +
+                                     std::to_string(board_pairs.size()));
+        }
+    }
+    return times;
+}
+
+int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out) {
     RunSummary run;
-    run.config = o.board;
+    run.config = setup.platform.board;
     run.source = source.describe();
     run.capacity = static_cast<uint32_t>(source.max_objects());
-    VirtualBoard platform("platform", o.board, run.capacity, out.vcd_base());
+    run.board = setup.board;
+    run.host = setup.host;
+    run.host_factor = setup.host_factor;
+    run.dma = setup.platform.driver.use_dma;
+    run.interrupts = setup.platform.driver.use_interrupts;
+    for (const auto& b : setup.baselines) run.baseline_names.push_back(b->name());
+    VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
     run.block_rams = platform.board().core().block_rams();
+    run.bus = platform.bus_timing().describe();
     if (out.pairs) write_pairs_header(out.pairs->stream());
 
     Progress progress(source.frame_count(), !o.quiet);
@@ -158,9 +274,11 @@ int simulate(const RunOptions& o, FrameSource& source, Outputs& out) {
         const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
         const FrameResult& result = platform.run_frame(boxes);
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
-        run.frames.push_back({frame->number, boxes.size(), result.pairs.size(),
-                              AddressGenerator::sweep_cycles(boxes.size(), o.board.m), result.phases.compute_cycles,
-                              result.phases.stall_cycles, result.phases.overflow_pauses});
+        FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
+                         AddressGenerator::sweep_cycles(boxes.size(), run.config.m), result.phases, {}};
+        if (!setup.baselines.empty()) stats.baselines = run_baselines(setup, boxes, sorted(result.pairs), frame->number);
+        run.frames.push_back(std::move(stats));
+        source.feed(result.pairs);
         progress.update(run.frames.size());
     }
     run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -189,11 +307,12 @@ int run_command(int argc, char** argv) {
         po::notify(vm);
         validate_board(o.board);
         std::unique_ptr<FrameSource> source = open_source(o, vm);
+        Setup setup = make_setup(o, vm, source->max_objects());
         Outputs out;
         if (!o.pairs_out.empty()) out.pairs.emplace(o.pairs_out);
         if (!o.report.empty()) out.report.emplace(o.report);
         if (!o.vcd.empty()) out.vcd.emplace(o.vcd, ".vcd", false);
-        return simulate(o, *source, out);
+        return simulate(o, *source, setup, out);
     } catch (const po::error& e) {
         std::cerr << "cdvp run: " << e.what() << " (see cdvp run --help)\n";
         return 2;

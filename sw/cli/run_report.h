@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -9,17 +10,22 @@
 #include <nlohmann/json.hpp>
 
 #include "models/board/board_config.h"
+#include "sw/driver/board_driver.h"
 
 namespace cdvp {
+
+struct BaselineTime {
+    double ns = 0;         // measured natively on this machine
+    double scaled_ns = 0;  // ns x the host-speed factor: on the modelled host
+};
 
 struct FrameStats {
     uint64_t frame = 0;
     uint64_t objects = 0;
     uint64_t pairs = 0;
     uint64_t sweep_cycles = 0;  // S(N, m)
-    uint64_t compute_cycles = 0;
-    uint64_t stall_cycles = 0;
-    uint32_t overflow_pauses = 0;
+    FramePhases phases;         // simulated; compute_cycles, stall_cycles, overflow_pauses inside
+    std::map<std::string, BaselineTime> baselines;
 };
 
 struct RunSummary {
@@ -27,6 +33,13 @@ struct RunSummary {
     uint32_t capacity = 0;
     uint32_t block_rams = 0;
     std::string source;
+    std::string board = "ideal";  // preset name
+    std::string bus;
+    std::string host;
+    double host_factor = 1.0;
+    bool dma = true;
+    bool interrupts = true;
+    std::vector<std::string> baseline_names;
     std::vector<FrameStats> frames;
     double wall_seconds = 0.0;
 };

@@ -17,6 +17,7 @@
 #include <benchmark/benchmark.h>
 #include <systemc>
 
+#include "platform/kernel.h"
 #include "platform/virtual_board.h"
 #include "sw/baselines/brute_force.h"
 #include "sw/scene/conversion.h"
@@ -113,7 +114,7 @@ private:
 }  // namespace
 
 int sc_main(int argc, char** argv) {
-    sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+    cdvp::configure_kernel();
     std::vector<char*> args;
     for (int k = 0; k < argc; ++k) {
         if (std::strcmp(argv[k], "--vcd") == 0) g_trace = true;

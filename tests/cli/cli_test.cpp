@@ -124,13 +124,46 @@ TEST_F(Cli, HelpListsEveryOption) {
     EXPECT_NE(top.out.find("run "), std::string::npos);
     const Result help = run("run --help");
     EXPECT_EQ(help.status, 0);
-    for (const char* flag : {"--trace", "--scene", "--objects", "--frames", "--seed", "--m ", "--clock-mhz",
+    for (const char* flag : {"--trace", "--scene", "--objects", "--frames", "--seed", "--m ", "--clock-mhz", "--board",
+                             "--transfer", "--wait", "--baseline", "--host-factor",
                              "--compare-latency", "--fifo-depth", "--drain-rate", "--pair-buffer", "--pairs-out",
                              "--report", "--vcd", "--quiet"}) {
         EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
     }
     EXPECT_EQ(run("").status, 2);
     EXPECT_EQ(run("frobnicate").status, 2);
+}
+
+TEST_F(Cli, BoardRunTimesBaselinesAndReportsConsistentPhases) {
+    const Result r = run("run --board adm-xrc-ii --scene spheres --objects 150 --frames 4 --m 8 "
+                         "--baseline sap,dbvt,brute,soa --host-factor 2.5 --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+    EXPECT_EQ(report["config"]["board"], "adm-xrc-ii");
+    EXPECT_EQ(report["config"]["host_factor"], 2.5);
+    EXPECT_EQ(report["config"]["transfer"], "dma");
+    ASSERT_EQ(report["frames"].size(), 4u);
+    for (const auto& f : report["frames"]) {
+        double sum = 0;
+        for (const char* phase : {"upload_ns", "start_ns", "compute_ns", "irq_ns", "readback_ns", "driver_ns"}) {
+            ASSERT_TRUE(f.contains(phase)) << phase;
+            EXPECT_GE(f[phase].get<double>(), 0.0) << phase;
+            sum += f[phase].get<double>();
+        }
+        EXPECT_NEAR(sum, f["total_ns"].get<double>(), 1e-6 * f["total_ns"].get<double>());
+        EXPECT_NEAR(f["compute_ns"].get<double>(), f["compute_cycles"].get<double>() * 1e3 / 66.0, 1e-3);
+        for (const char* b : {"sap", "dbvt", "brute", "soa"}) {
+            ASSERT_TRUE(f["baselines"].contains(b)) << b;
+            EXPECT_GT(f["baselines"][b]["ns"].get<double>(), 0.0);
+            EXPECT_DOUBLE_EQ(f["baselines"][b]["scaled_ns"].get<double>(), 2.5 * f["baselines"][b]["ns"].get<double>());
+        }
+    }
+    const auto& summary = report["summary"];
+    EXPECT_EQ(summary["frames_in_means"], 3) << "the warm-up frame is left out of the means";
+    const double speedup = summary["baselines"]["sap"]["speedup"].get<double>();
+    EXPECT_NEAR(speedup, summary["baselines"]["sap"]["mean_scaled_ns"].get<double>() /
+                             summary["mean_total_ns"].get<double>(), 1e-9);
+    EXPECT_NE(r.out.find("speedup"), std::string::npos) << r.out;
 }
 
 // Bad input: exit status 2, one line naming the file and line (or the flag)
@@ -162,6 +195,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"AbsurdM", nullptr, "--m 100000", "--m: expected 1 to 32"},
         BadInput{"NonNumericM", nullptr, "--m eight", "'--m' is invalid"},
         BadInput{"SmallFifo", nullptr, "--m 8 --fifo-depth 4", "--fifo-depth: expected 2m-1 = 15"},
+        BadInput{"UnknownBoard", nullptr, "--board nope", "--board: unknown board 'nope'; expected one of: adm-xrc-ii"},
+        BadInput{"UnknownBaseline", nullptr, "--baseline sap,fast", "--baseline: unknown baseline 'fast'"},
+        BadInput{"BadTransfer", nullptr, "--transfer usb", "--transfer: expected dma or pio"},
+        BadInput{"BadWait", nullptr, "--wait sleep", "--wait: expected irq or poll"},
+        BadInput{"TooManyBlockRams", nullptr, "--board adm-xrc-ii --m 30", "(largest m that fits: 24)"},
         BadInput{"UnwritableOutput", nullptr, "--report no/such/dir/r.json", "no/such/dir/r.json: cannot write"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
 #undef BOX

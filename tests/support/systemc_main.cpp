@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <systemc>
 
+#include "platform/kernel.h"
+
 namespace {
 void fail_on_report(const sc_core::sc_report& report, const sc_core::sc_actions& actions) {
     if (report.get_severity() >= sc_core::SC_WARNING) {
@@ -17,8 +19,8 @@ void fail_on_report(const sc_core::sc_report& report, const sc_core::sc_actions&
 }  // namespace
 
 int sc_main(int argc, char** argv) {
+    cdvp::configure_kernel();
     sc_core::sc_report_handler::set_handler(fail_on_report);
-    sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }

@@ -1,0 +1,153 @@
+#include "platform/board_preset.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "sw/scene/scene.h"
+
+namespace cdvp {
+
+namespace {
+
+using nlohmann::json;
+
+// Reads {"value": number, "source": "..."} fields, naming the file on error.
+class PresetReader {
+public:
+    PresetReader(std::string path, json root) : path_(std::move(path)), root_(std::move(root)) {}
+
+    double number(const char* section, const char* key) const {
+        const json* field = find(section, key);
+        if (field == nullptr || !field->is_object() || !field->contains("value") || !(*field)["value"].is_number() ||
+            !field->contains("source") || !(*field)["source"].is_string() ||
+            (*field)["source"].get<std::string>().empty()) {
+            fail(std::string(section) + "." + key + ": expected {\"value\": <number>, \"source\": \"<source or assumption>\"}");
+        }
+        return (*field)["value"].get<double>();
+    }
+    uint32_t count(const char* section, const char* key) const {
+        const double v = number(section, key);
+        if (v < 0 || v > 4294967295.0 || v != static_cast<uint32_t>(v)) {
+            fail(std::string(section) + "." + key + ": expected a non-negative integer");
+        }
+        return static_cast<uint32_t>(v);
+    }
+    std::string text(const char* section, const char* key) const {
+        const json* field = find(section, key);
+        if (field == nullptr || !field->is_string()) fail(std::string(section) + "." + key + ": expected a string");
+        return field->get<std::string>();
+    }
+    [[noreturn]] void fail(const std::string& what) const { throw InputError(path_ + ": " + what); }
+
+private:
+    const json* find(const char* section, const char* key) const {
+        const json* s = section[0] ? (root_.contains(section) ? &root_[section] : nullptr) : &root_;
+        return s != nullptr && s->is_object() && s->contains(key) ? &(*s)[key] : nullptr;
+    }
+    std::string path_;
+    json root_;
+};
+
+std::shared_ptr<const BusTiming> read_bus(const PresetReader& r) {
+    const std::string type = r.text("bus", "type");
+    LocalBusConfig local{r.count("bus", "local_bus_width_bits"), r.number("bus", "local_bus_clock_mhz")};
+    try {
+        if (type == "pci") {
+            PciConfig c;
+            c.width_bits = r.count("bus", "width_bits");
+            c.clock_mhz = r.number("bus", "clock_mhz");
+            c.arbitration_clocks = r.count("bus", "arbitration_clocks");
+            c.address_phase_clocks = r.count("bus", "address_phase_clocks");
+            c.board_read_latency_clocks = r.count("bus", "board_read_latency_clocks");
+            c.board_write_latency_clocks = r.count("bus", "board_write_latency_clocks");
+            c.host_read_latency_clocks = r.count("bus", "host_read_latency_clocks");
+            c.host_write_latency_clocks = r.count("bus", "host_write_latency_clocks");
+            c.wait_states = r.count("bus", "wait_states");
+            c.turnaround_clocks = r.count("bus", "turnaround_clocks");
+            c.latency_timer_clocks = r.count("bus", "latency_timer_clocks");
+            c.dma_read_burst_bytes = r.count("bus", "dma_read_burst_bytes");
+            c.dma_write_burst_bytes = r.count("bus", "dma_write_burst_bytes");
+            c.host_pio_overhead_ns = r.number("bus", "host_pio_overhead_ns");
+            c.interrupt_ns = r.number("bus", "interrupt_ns");
+            c.local_bus = local;
+            return std::make_shared<PciTiming>(c);
+        }
+        if (type == "pcie") {
+            PcieConfig c;
+            c.gigatransfers_per_s = r.number("bus", "gigatransfers_per_s");
+            c.lanes = r.count("bus", "lanes");
+            c.encoding_efficiency = r.number("bus", "encoding_efficiency");
+            c.max_payload_bytes = r.count("bus", "max_payload_bytes");
+            c.max_read_request_bytes = r.count("bus", "max_read_request_bytes");
+            c.tlp_overhead_bytes = r.count("bus", "tlp_overhead_bytes");
+            c.read_round_trip_ns = r.number("bus", "read_round_trip_ns");
+            c.posted_write_ns = r.number("bus", "posted_write_ns");
+            c.interrupt_ns = r.number("bus", "interrupt_ns");
+            c.local_bus = local;
+            return std::make_shared<PcieTiming>(c);
+        }
+    } catch (const std::invalid_argument& e) {
+        r.fail(e.what());
+    }
+    r.fail("bus.type: expected \"pci\" or \"pcie\", found \"" + type + "\"");
+}
+
+}  // namespace
+
+std::string boards_directory() {
+    const char* env = std::getenv("CDVP_BOARDS");
+    return env != nullptr && env[0] != '\0' ? env : CDVP_BOARDS_DIR;
+}
+
+std::vector<std::string> board_preset_names() {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(boards_directory(), ec)) {
+        if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+BoardPreset load_board_preset(const std::string& name) {
+    const bool is_path =
+        name.find('/') != std::string::npos || (name.size() > 5 && name.rfind(".json") == name.size() - 5);
+    const std::string path = is_path ? name : boards_directory() + "/" + name + ".json";
+    std::ifstream in(path);
+    if (!in) {
+        std::string known;
+        for (const std::string& n : board_preset_names()) known += (known.empty() ? "" : ", ") + n;
+        throw InputError(is_path ? path + ": cannot open" : "--board: unknown board '" + name + "'; expected one of: " + known);
+    }
+    json root;
+    try {
+        root = json::parse(in);
+    } catch (const json::parse_error& e) {
+        throw InputError(path + ": invalid JSON (" + e.what() + ")");
+    }
+    const PresetReader r(path, root);
+    BoardPreset p;
+    p.path = path;
+    p.name = r.text("", "name");
+    p.description = r.text("", "description");
+    p.board.clock_mhz = r.number("board", "clock_mhz");
+    p.board.compare.latency_cycles = r.count("board", "compare_latency_cycles");
+    p.board.collector.fifo_depth = r.count("board", "fifo_depth");
+    p.board.collector.drain_per_cycle = r.count("board", "drain_per_cycle");
+    p.board.collector.buffer_depth = r.count("board", "pair_buffer_depth");
+    p.block_rams = r.count("board", "block_rams");
+    p.bus = read_bus(r);
+    p.host.name = r.text("host", "name");
+    p.host.speed_factor = r.number("host", "speed_factor");
+    if (!(p.host.speed_factor > 0)) r.fail("host.speed_factor: expected a positive number");
+    p.driver.ns_per_box = r.number("host", "ns_per_box");
+    p.driver.ns_per_pair = r.number("host", "ns_per_pair");
+    p.driver.call_ns = r.number("host", "call_ns");
+    return p;
+}
+
+}  // namespace cdvp

@@ -1,0 +1,39 @@
+// Board presets: data files under platform/boards/, each number with its
+// source or stated assumption ({"value": ..., "source": "..."}).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "models/board/board_config.h"
+#include "models/pci/bus_timing.h"
+#include "sw/driver/board_driver.h"
+
+namespace cdvp {
+
+struct HostConfig {
+    std::string name;
+    // Native software time x speed_factor = time on the modelled host.
+    double speed_factor = 1.0;
+};
+
+struct BoardPreset {
+    std::string name;
+    std::string description;
+    std::string path;
+    BoardConfig board;      // m is the user's choice; the rest comes from the preset
+    uint32_t block_rams = 0;  // the FPGA's block RAMs: bounds m for a given N
+    std::shared_ptr<const BusTiming> bus;
+    DriverConfig driver;    // host CPU costs
+    HostConfig host;
+};
+
+// name: a preset in the boards directory (e.g. "adm-xrc-ii"), or a path to a
+// .json file. Throws InputError naming the file and the missing or bad field.
+BoardPreset load_board_preset(const std::string& name);
+std::vector<std::string> board_preset_names();
+// Where presets live: $CDVP_BOARDS if set, else the source tree's platform/boards.
+std::string boards_directory();
+
+}  // namespace cdvp
