@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "models/common/transaction.h"
+
 namespace cdvp {
 
 using namespace sc_core;
@@ -82,12 +84,7 @@ bool PciBridge::access_registers(tlm::tlm_generic_payload& payload) {
 void PciBridge::move(tlm::tlm_command command, tlm_utils::simple_initiator_socket<PciBridge>& socket,
                      uint64_t address, unsigned char* data, unsigned int length) {
     tlm::tlm_generic_payload p;
-    p.set_command(command);
-    p.set_address(address);
-    p.set_data_ptr(data);
-    p.set_data_length(length);
-    p.set_streaming_width(length);
-    p.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    prepare_transaction(p, command, address, data, length);
     sc_time delay = SC_ZERO_TIME;
     socket->b_transport(p, delay);
     if (p.is_response_error()) {

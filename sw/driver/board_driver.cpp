@@ -5,6 +5,7 @@
 #include <string>
 
 #include "models/comparison_unit/comparison_unit.h"
+#include "models/common/transaction.h"
 #include "models/control_registers/control_registers.h"
 #include "models/pci/pci_bridge.h"
 #include "platform/host_memory.h"
@@ -31,12 +32,7 @@ BoardDriver::BoardDriver(Transport pio, HostMemory& memory, const sc_event& inte
 
 void BoardDriver::pio(tlm::tlm_command command, uint64_t address, void* data, unsigned int length) {
     tlm::tlm_generic_payload p;
-    p.set_command(command);
-    p.set_address(address);
-    p.set_data_ptr(static_cast<unsigned char*>(data));
-    p.set_data_length(length);
-    p.set_streaming_width(length);
-    p.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    prepare_transaction(p, command, address, data, length);
     sc_time delay = SC_ZERO_TIME;
     pio_(p, delay);
     wait(delay);

@@ -8,6 +8,8 @@
 
 #include <tlm_utils/simple_initiator_socket.h>
 
+#include "models/common/transaction.h"
+
 namespace cdvp {
 namespace {
 
@@ -34,11 +36,7 @@ struct Bench : sc_module {
     tlm::tlm_response_status access(tlm::tlm_command command, uint64_t address, void* data, unsigned length,
                                     unsigned char* byte_enable = nullptr) {
         tlm::tlm_generic_payload p;
-        p.set_command(command);
-        p.set_address(address);
-        p.set_data_ptr(static_cast<unsigned char*>(data));
-        p.set_data_length(length);
-        p.set_streaming_width(length);
+        prepare_transaction(p, command, address, data, length);
         p.set_byte_enable_ptr(byte_enable);
         p.set_byte_enable_length(byte_enable ? length : 0);
         sc_time delay = SC_ZERO_TIME;
