@@ -52,6 +52,8 @@ bool PciBridge::access_registers(tlm::tlm_generic_payload& payload) {
             case D::kBytes: value = dma_.bytes; break;
             case D::kControl: value = 0; break;
             case D::kStatus: value = (dma_.busy ? uint32_t{D::kBusy} : 0u) | (dma_.done ? uint32_t{D::kDone} : 0u); break;
+            case D::kChainLo: value = static_cast<uint32_t>(dma_.chain_address); break;
+            case D::kChainHi: value = static_cast<uint32_t>(dma_.chain_address >> 32); break;
             default: return false;
         }
         std::memcpy(payload.get_data_ptr(), &value, 4);
@@ -63,6 +65,8 @@ bool PciBridge::access_registers(tlm::tlm_generic_payload& payload) {
         case D::kHostAddressHi: dma_.host_address = (dma_.host_address & 0xffffffffull) | uint64_t{value} << 32; break;
         case D::kLocalAddress: dma_.local_address = value; break;
         case D::kBytes: dma_.bytes = value; break;
+        case D::kChainLo: dma_.chain_address = (dma_.chain_address & ~0xffffffffull) | value; break;
+        case D::kChainHi: dma_.chain_address = (dma_.chain_address & 0xffffffffull) | uint64_t{value} << 32; break;
         case D::kStatus:
             if (value & D::kDone) dma_.done = false;
             inta_changed_.notify(SC_ZERO_TIME);
@@ -71,6 +75,7 @@ bool PciBridge::access_registers(tlm::tlm_generic_payload& payload) {
             if ((value & D::kStart) && !dma_.busy) {
                 dma_.to_host = value & D::kToHost;
                 dma_.interrupt_on_done = value & D::kInterruptOnDone;
+                dma_.chain = value & D::kChain;
                 dma_.busy = true;
                 dma_.done = false;
                 dma_start_.notify(SC_ZERO_TIME);
@@ -92,23 +97,46 @@ void PciBridge::move(tlm::tlm_command command, tlm_utils::simple_initiator_socke
     }
 }
 
-// The transfer's data move at once; its duration is the bus arithmetic's
-// (the slower of PCI and local bus), after which the engine reports done.
+double PciBridge::transfer_segment(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host) {
+    buffer_.resize(bytes);
+    if (bytes > 0) {
+        if (to_host) {
+            move(tlm::TLM_READ_COMMAND, local_bus, local_address, buffer_.data(), bytes);
+            move(tlm::TLM_WRITE_COMMAND, pci_master, host_address, buffer_.data(), bytes);
+        } else {
+            move(tlm::TLM_READ_COMMAND, pci_master, host_address, buffer_.data(), bytes);
+            move(tlm::TLM_WRITE_COMMAND, local_bus, local_address, buffer_.data(), bytes);
+        }
+    }
+    ++segments_;
+    return timing_->dma_ns(bytes, to_host ? Direction::kToHost : Direction::kToBoard);
+}
+
+// A segment's data move at once; its duration is the bus arithmetic's (the
+// slower of PCI and local bus). In chain mode each descriptor is first
+// fetched from host memory, a 24-byte bus-master read of its own.
 void PciBridge::dma_engine() {
-    std::vector<unsigned char> buffer;
     for (;;) {
         wait(dma_start_);
-        buffer.resize(dma_.bytes);
-        if (dma_.bytes > 0) {
-            if (dma_.to_host) {
-                move(tlm::TLM_READ_COMMAND, local_bus, dma_.local_address, buffer.data(), dma_.bytes);
-                move(tlm::TLM_WRITE_COMMAND, pci_master, dma_.host_address, buffer.data(), dma_.bytes);
-            } else {
-                move(tlm::TLM_READ_COMMAND, pci_master, dma_.host_address, buffer.data(), dma_.bytes);
-                move(tlm::TLM_WRITE_COMMAND, local_bus, dma_.local_address, buffer.data(), dma_.bytes);
+        double ns = 0;
+        if (!dma_.chain) {
+            ns = transfer_segment(dma_.host_address, dma_.local_address, dma_.bytes, dma_.to_host);
+        } else {
+            constexpr uint64_t kMaxDescriptors = 1u << 16;  // a chain that loops must not hang the host
+            uint64_t walked = 0;
+            for (uint64_t next = dma_.chain_address; next != 0; ++walked) {
+                if (walked == kMaxDescriptors) {
+                    SC_REPORT_ERROR("cdvp/pci_bridge", "DMA descriptor chain longer than 65536 (a loop?)");
+                    break;
+                }
+                DmaDescriptor d{};
+                move(tlm::TLM_READ_COMMAND, pci_master, next, reinterpret_cast<unsigned char*>(&d), sizeof d);
+                ns += timing_->dma_ns(sizeof d, Direction::kToBoard);
+                ns += transfer_segment(d.host_address, d.local_address, d.bytes, dma_.to_host);
+                next = d.next;
             }
         }
-        wait(sc_time(timing_->dma_ns(dma_.bytes, dma_.to_host ? Direction::kToHost : Direction::kToBoard), SC_NS));
+        wait(sc_time(ns, SC_NS));
         ++transfers_;
         dma_.busy = false;
         dma_.done = true;

@@ -17,13 +17,17 @@ using R = ControlRegisters;
 using D = DmaRegisters;
 
 namespace {
-// Host RAM layout: the six coordinate arrays, then the pair area.
+// Host RAM layout: the six coordinate arrays, the pair area, then the DMA
+// descriptors of the upload chain.
 uint64_t coordinate_area(uint32_t capacity, uint32_t c) { return uint64_t{c} * 4 * capacity; }
 uint64_t pair_area(uint32_t capacity) { return (uint64_t{24} * capacity + 7) / 8 * 8; }
+uint64_t descriptor_area(uint32_t capacity, uint32_t buffer_depth) {
+    return pair_area(capacity) + uint64_t{8} * buffer_depth;
+}
 }  // namespace
 
 uint64_t BoardDriver::host_memory_bytes(uint32_t capacity, uint32_t buffer_depth) {
-    return pair_area(capacity) + uint64_t{8} * buffer_depth;
+    return descriptor_area(capacity, buffer_depth) + kCoordinates * sizeof(DmaDescriptor);
 }
 
 BoardDriver::BoardDriver(Transport pio, HostMemory& memory, const sc_event& interrupt, const sc_time& period,
@@ -81,20 +85,25 @@ void BoardDriver::poll_pause() {
     wait(gap > SC_ZERO_TIME ? gap : period_);
 }
 
-// Programs the bridge's DMA engine and waits for it by interrupt or polling.
-void BoardDriver::dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host) {
-    write(D::kBase + D::kHostAddressLo, static_cast<uint32_t>(host_address));
-    write(D::kBase + D::kHostAddressHi, static_cast<uint32_t>(host_address >> 32));
-    write(D::kBase + D::kLocalAddress, local_address);
-    write(D::kBase + D::kBytes, bytes);
+// Starts the bridge's DMA engine (registers already set) and waits for it
+// by interrupt or polling.
+void BoardDriver::run_dma(uint32_t control) {
     write(D::kBase + D::kControl,
-          D::kStart | (to_host ? uint32_t{D::kToHost} : 0u) | (config_.use_interrupts ? uint32_t{D::kInterruptOnDone} : 0u));
+          control | D::kStart | (config_.use_interrupts ? uint32_t{D::kInterruptOnDone} : 0u));
     for (;;) {
         if (config_.use_interrupts) wait(interrupt_);
         else poll_pause();
         if (read(D::kBase + D::kStatus) & D::kDone) break;
     }
     write(D::kBase + D::kStatus, D::kDone);  // clear done: the shared line falls
+}
+
+void BoardDriver::dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host) {
+    write(D::kBase + D::kHostAddressLo, static_cast<uint32_t>(host_address));
+    write(D::kBase + D::kHostAddressHi, static_cast<uint32_t>(host_address >> 32));
+    write(D::kBase + D::kLocalAddress, local_address);
+    write(D::kBase + D::kBytes, bytes);
+    run_dma(to_host ? uint32_t{D::kToHost} : 0u);
 }
 
 void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
@@ -106,12 +115,28 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
             words[i] = ComparisonUnit::as_bits(c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3]);
         }
     }
-    cpu_work(config_.call_ns + config_.ns_per_box * n);  // packing, done natively above
-    for (uint32_t c = 0; c < kCoordinates; ++c) {
-        const auto local = static_cast<uint32_t>(address_map::kCoordinateBase + c * address_map::kWindowSize);
-        if (config_.use_dma) dma(coordinate_area(capacity_, c), local, 4 * n, false);
-        else pio(tlm::TLM_WRITE_COMMAND, local, memory_.data(coordinate_area(capacity_, c)), 4 * n);
+    auto local = [](uint32_t c) {
+        return static_cast<uint32_t>(address_map::kCoordinateBase + c * address_map::kWindowSize);
+    };
+    if (!config_.use_dma) {
+        cpu_work(config_.call_ns + config_.ns_per_box * n);  // packing, done natively above
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
+            pio(tlm::TLM_WRITE_COMMAND, local(c), memory_.data(coordinate_area(capacity_, c)), 4 * n);
+        }
+        charge(kUpload);
+        return;
     }
+    // One scatter-gather chain of six descriptors: one set-up, one interrupt.
+    const uint64_t chain = descriptor_area(capacity_, buffer_depth_);
+    auto* descriptors = reinterpret_cast<DmaDescriptor*>(memory_.data(chain));
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        const uint64_t next = c + 1 < kCoordinates ? chain + (c + 1) * sizeof(DmaDescriptor) : 0;
+        descriptors[c] = DmaDescriptor{coordinate_area(capacity_, c), next, local(c), 4 * n};
+    }
+    cpu_work(config_.call_ns + config_.ns_per_box * n);  // packing and the chain, done natively above
+    write(D::kBase + D::kChainLo, static_cast<uint32_t>(chain));
+    write(D::kBase + D::kChainHi, static_cast<uint32_t>(chain >> 32));
+    run_dma(D::kChain);
     charge(kUpload);
 }
 

@@ -30,7 +30,7 @@ struct DriverConfig {
 
 // Where a frame's simulated time went; the phases add up to total_ns.
 struct FramePhases {
-    double upload_ns = 0;    // staging boxes on the board (DMA or PIO, with its set-up and completion)
+    double upload_ns = 0;    // staging boxes on the board (one DMA chain or PIO, with set-up and completion)
     double start_ns = 0;     // writing the object count and START
     double compute_ns = 0;   // the board's clock running (cycles x period)
     double irq_ns = 0;       // from the board's interrupt to the driver noticing (interrupt or polling)
@@ -71,6 +71,7 @@ private:
     uint32_t read(uint64_t address);
     void write(uint64_t address, uint32_t value);
     void pio(tlm::tlm_command command, uint64_t address, void* data, unsigned int length);
+    void run_dma(uint32_t control);
     void dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host);
     uint64_t read_counter(uint32_t low_offset);
     void upload(const std::vector<FloatBox>& boxes);

@@ -53,7 +53,8 @@ TEST(Platform, PhasesAddUpAndComputeIsCyclesTimesPeriod) {
     EXPECT_GT(r.phases.upload_ns, 0);
     EXPECT_GT(r.phases.readback_ns, 0);
     EXPECT_GT(r.phases.driver_ns, 0);
-    EXPECT_EQ(platform.bridge().dma_transfers(), 7u) << "six coordinate arrays up, the pairs back";
+    EXPECT_EQ(platform.bridge().dma_transfers(), 2u) << "one chain up, the pairs back";
+    EXPECT_EQ(platform.bridge().dma_segments(), 7u) << "six coordinate arrays up, the pairs back";
 }
 
 // Two platforms in one elaboration: one moves data by DMA, the other by PIO.
