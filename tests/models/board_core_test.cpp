@@ -182,6 +182,9 @@ TEST(BoardCore, RegistersAndRefusedCommands) {
     while (core.running()) core.step();
     EXPECT_EQ(core.phase(), BoardCore::Phase::Done);
     EXPECT_TRUE(core.registers().interrupt());
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kAcknowledge);
+    EXPECT_FALSE(core.registers().interrupt()) << "acknowledged: the shared line may fall";
+    EXPECT_TRUE(core.registers().done) << "acknowledging keeps the status";
     ASSERT_TRUE(core.read_register(ControlRegisters::kCyclesLo, value));
     EXPECT_EQ(value, AddressGenerator::sweep_cycles(10, 2) + config.pipeline_latency() + core.registers().stalls);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
