@@ -166,6 +166,20 @@ TEST_F(Cli, BoardRunTimesBaselinesAndReportsConsistentPhases) {
     EXPECT_NE(r.out.find("speedup"), std::string::npos) << r.out;
 }
 
+TEST_F(Cli, TraceOnThePaperBoardByPioAndPolling) {
+    const Result r = run("run --trace " + trace("hard_cases.csv") + " --board adm-xrc-ii --m 4 --transfer pio "
+                         "--wait poll --baseline sap,dbvt,brute,soa --pairs-out p.csv --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(cdvp::read_pairs_csv((dir_ / "p.csv").string()), cdvp::read_pairs_csv(trace("hard_cases.expected.csv")))
+        << "infinite slabs, denormals and touching boxes through PCI and every baseline";
+    const nlohmann::json report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+    EXPECT_EQ(report["config"]["transfer"], "pio");
+    EXPECT_EQ(report["config"]["wait"], "poll");
+    const auto& f = report["frames"][0];
+    EXPECT_LT(f["irq_ns"].get<double>(), 1000.0) << "polling notices within one status read, not 10 us";
+    EXPECT_GT(f["upload_ns"].get<double>(), 0.0);
+}
+
 // Bad input: exit status 2, one line naming the file and line (or the flag)
 // and what was expected, and no output file left behind.
 struct BadInput {
