@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -52,46 +54,58 @@ private:
     json root_;
 };
 
-std::shared_ptr<const BusTiming> read_bus(const PresetReader& r) {
-    const std::string type = r.text("bus", "type");
-    LocalBusConfig local{r.count("bus", "local_bus_width_bits"), r.number("bus", "local_bus_clock_mhz")};
+// A bus config's fields by their names in the preset's "bus" section.
+template <class Config>
+struct BusFields {
+    std::vector<std::pair<const char*, uint32_t Config::*>> counts;
+    std::vector<std::pair<const char*, double Config::*>> numbers;
+};
+
+template <class Timing, class Config>
+std::shared_ptr<const BusTiming> read_bus_fields(const PresetReader& r, const BusFields<Config>& fields) {
+    Config c;
+    for (const auto& [key, member] : fields.counts) c.*member = r.count("bus", key);
+    for (const auto& [key, member] : fields.numbers) c.*member = r.number("bus", key);
+    c.local_bus = {r.count("bus", "local_bus_width_bits"), r.number("bus", "local_bus_clock_mhz")};
     try {
-        if (type == "pci") {
-            PciConfig c;
-            c.width_bits = r.count("bus", "width_bits");
-            c.clock_mhz = r.number("bus", "clock_mhz");
-            c.arbitration_clocks = r.count("bus", "arbitration_clocks");
-            c.address_phase_clocks = r.count("bus", "address_phase_clocks");
-            c.board_read_latency_clocks = r.count("bus", "board_read_latency_clocks");
-            c.board_write_latency_clocks = r.count("bus", "board_write_latency_clocks");
-            c.host_read_latency_clocks = r.count("bus", "host_read_latency_clocks");
-            c.host_write_latency_clocks = r.count("bus", "host_write_latency_clocks");
-            c.wait_states = r.count("bus", "wait_states");
-            c.turnaround_clocks = r.count("bus", "turnaround_clocks");
-            c.latency_timer_clocks = r.count("bus", "latency_timer_clocks");
-            c.dma_read_burst_bytes = r.count("bus", "dma_read_burst_bytes");
-            c.dma_write_burst_bytes = r.count("bus", "dma_write_burst_bytes");
-            c.host_pio_overhead_ns = r.number("bus", "host_pio_overhead_ns");
-            c.interrupt_ns = r.number("bus", "interrupt_ns");
-            c.local_bus = local;
-            return std::make_shared<PciTiming>(c);
-        }
-        if (type == "pcie") {
-            PcieConfig c;
-            c.gigatransfers_per_s = r.number("bus", "gigatransfers_per_s");
-            c.lanes = r.count("bus", "lanes");
-            c.encoding_efficiency = r.number("bus", "encoding_efficiency");
-            c.max_payload_bytes = r.count("bus", "max_payload_bytes");
-            c.max_read_request_bytes = r.count("bus", "max_read_request_bytes");
-            c.tlp_overhead_bytes = r.count("bus", "tlp_overhead_bytes");
-            c.read_round_trip_ns = r.number("bus", "read_round_trip_ns");
-            c.posted_write_ns = r.number("bus", "posted_write_ns");
-            c.interrupt_ns = r.number("bus", "interrupt_ns");
-            c.local_bus = local;
-            return std::make_shared<PcieTiming>(c);
-        }
+        return std::make_shared<Timing>(c);
     } catch (const std::invalid_argument& e) {
         r.fail(e.what());
+    }
+}
+
+std::shared_ptr<const BusTiming> read_bus(const PresetReader& r) {
+    const std::string type = r.text("bus", "type");
+    if (type == "pci") {
+        using C = PciConfig;
+        static const BusFields<C> kFields{
+            {{"width_bits", &C::width_bits},
+             {"arbitration_clocks", &C::arbitration_clocks},
+             {"address_phase_clocks", &C::address_phase_clocks},
+             {"board_read_latency_clocks", &C::board_read_latency_clocks},
+             {"board_write_latency_clocks", &C::board_write_latency_clocks},
+             {"host_read_latency_clocks", &C::host_read_latency_clocks},
+             {"host_write_latency_clocks", &C::host_write_latency_clocks},
+             {"wait_states", &C::wait_states},
+             {"turnaround_clocks", &C::turnaround_clocks},
+             {"latency_timer_clocks", &C::latency_timer_clocks},
+             {"dma_read_burst_bytes", &C::dma_read_burst_bytes},
+             {"dma_write_burst_bytes", &C::dma_write_burst_bytes}},
+            {{"clock_mhz", &C::clock_mhz}, {"host_pio_overhead_ns", &C::host_pio_overhead_ns},
+             {"interrupt_ns", &C::interrupt_ns}}};
+        return read_bus_fields<PciTiming>(r, kFields);
+    }
+    if (type == "pcie") {
+        using C = PcieConfig;
+        static const BusFields<C> kFields{
+            {{"lanes", &C::lanes},
+             {"max_payload_bytes", &C::max_payload_bytes},
+             {"max_read_request_bytes", &C::max_read_request_bytes},
+             {"tlp_overhead_bytes", &C::tlp_overhead_bytes}},
+            {{"gigatransfers_per_s", &C::gigatransfers_per_s}, {"encoding_efficiency", &C::encoding_efficiency},
+             {"read_round_trip_ns", &C::read_round_trip_ns}, {"posted_write_ns", &C::posted_write_ns},
+             {"interrupt_ns", &C::interrupt_ns}}};
+        return read_bus_fields<PcieTiming>(r, kFields);
     }
     r.fail("bus.type: expected \"pci\" or \"pcie\", found \"" + type + "\"");
 }

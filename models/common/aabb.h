@@ -1,6 +1,7 @@
 // Types shared by the hardware models, the reference and the host software.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -26,5 +27,11 @@ struct IndexPair {
 };
 
 using PairList = std::vector<IndexPair>;
+
+// A pair list in (first, second) order, the order in which results are compared.
+inline PairList sorted(PairList pairs) {
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
 
 }  // namespace cdvp

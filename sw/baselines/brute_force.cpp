@@ -1,6 +1,6 @@
 #include "sw/baselines/brute_force.h"
 
-#include <algorithm>
+#include <utility>
 
 namespace cdvp {
 
@@ -18,8 +18,7 @@ size_t brute_force_pairs(const std::vector<FloatBox>& boxes, PairList& out) {
 PairList reference_pairs(const std::vector<FloatBox>& boxes) {
     PairList pairs;
     brute_force_pairs(boxes, pairs);
-    std::sort(pairs.begin(), pairs.end());  // already in order; sorting states the contract
-    return pairs;
+    return sorted(std::move(pairs));  // already in order; sorting states the contract
 }
 
 }  // namespace cdvp

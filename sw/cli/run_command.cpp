@@ -228,10 +228,6 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm, std::size_t m
     return setup;
 }
 
-PairList sorted(PairList pairs) {
-    std::sort(pairs.begin(), pairs.end());
-    return pairs;
-}
 
 // Times each baseline natively on the frame and checks it finds the board's pairs.
 std::map<std::string, BaselineTime> run_baselines(Setup& setup, const std::vector<FloatBox>& boxes,

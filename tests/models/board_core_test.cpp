@@ -17,10 +17,6 @@ using testing::CoreRun;
 using testing::random_boxes;
 using testing::run_core;
 
-PairList sorted(PairList pairs) {
-    std::sort(pairs.begin(), pairs.end());
-    return pairs;
-}
 
 void expect_cycle_identity(const CoreRun& run, uint64_t n, const BoardConfig& config) {
     EXPECT_EQ(run.cycles, AddressGenerator::sweep_cycles(n, config.m) + config.pipeline_latency() + run.stalls)

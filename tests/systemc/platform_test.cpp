@@ -15,10 +15,6 @@
 namespace cdvp {
 namespace {
 
-PairList sorted(PairList pairs) {
-    std::sort(pairs.begin(), pairs.end());
-    return pairs;
-}
 
 PlatformConfig paper_platform(bool dma = true, bool interrupts = true) {
     const BoardPreset preset = load_board_preset("adm-xrc-ii");

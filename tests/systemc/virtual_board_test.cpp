@@ -18,10 +18,6 @@ namespace {
 
 using namespace sc_core;
 
-PairList sorted(PairList pairs) {
-    std::sort(pairs.begin(), pairs.end());
-    return pairs;
-}
 
 TEST(VirtualBoard, FramesEqualTheReferenceAndTimeIsOnlyComputeTime) {
     BoardConfig config;
