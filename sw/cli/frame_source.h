@@ -27,8 +27,10 @@ public:
     virtual std::string describe() const = 0;
 };
 
-// All frames of a trace file, parsed and checked up front (bad input fails
-// before anything is simulated or written).
+// The frames of a trace file, all checked up front (bad input fails before
+// anything is simulated or written), then read again one frame at a time so
+// memory holds the largest frame, not the file. A frame with more boxes than
+// the board's address map holds fails as bad input naming its line.
 std::unique_ptr<FrameSource> trace_source(const std::string& path);
 
 // The paper's application: spheres bouncing off the walls and each other,

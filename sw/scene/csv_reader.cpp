@@ -4,7 +4,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <locale.h>
+#include <string>
 #include <utility>
 
 #include "sw/scene/scene.h"
@@ -49,6 +53,12 @@ std::string quote_found(std::string_view text) {
 }
 
 std::ifstream open_input(const std::string& path) {
+    // A directory opens as a stream that reads nothing, which would be
+    // reported as an empty file; name the real problem.
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw InputError(path + ": is a directory; expected a file");
+    }
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -59,20 +69,64 @@ std::ifstream open_input(const std::string& path) {
 }
 
 CsvReader::CsvReader(std::istream& in, std::string name)
-    : in_(in), name_(std::move(name)) {}
+    : in_(in), name_(std::move(name)) {
+    text_.reserve(kMaxLineBytes);
+}
 
+// Byte by byte from the stream buffer, so that at most kMaxLineBytes are
+// ever held, however long the line is.
 bool CsvReader::read_line() {
-    if (!std::getline(in_, text_)) {
-        if (in_.bad()) {
-            fail_at(line_ + 1, "read error; expected a readable text file");
+    constexpr int kEof = std::char_traits<char>::eof();
+    std::streambuf* buffer = in_.rdbuf();
+    text_.clear();
+    std::size_t bytes = 0;  // of this line, line end included
+    for (;;) {
+        int c = buffer->sbumpc();
+        if (c == kEof) {
+            if (bytes == 0) {
+                return false;
+            }
+            break;
         }
-        return false;
+        if (bytes == 0) {
+            ++line_;
+        }
+        if (++bytes > kMaxLineBytes) {
+            fail("line longer than " + std::to_string(kMaxLineBytes) +
+                 " bytes; expected at most " + std::to_string(kMaxLineBytes) +
+                 " bytes a line, counting its line end");
+        }
+        if (c == '\n') {
+            break;
+        }
+        if (c == '\r') {
+            if (buffer->sgetc() != '\n') {
+                fail("carriage return not followed by a line feed at column " +
+                     std::to_string(text_.size() + 1) +
+                     "; expected LF or CRLF line ends");
+            }
+            continue;  // the LF ends the line on the next byte
+        }
+        text_.push_back(static_cast<char>(c));
     }
-    ++line_;
-    if (!text_.empty() && text_.back() == '\r') {
-        text_.pop_back();
-    }
+    check_characters();
     return true;
+}
+
+void CsvReader::check_characters() const {
+    for (std::size_t k = 0; k < text_.size(); ++k) {
+        unsigned char c = static_cast<unsigned char>(text_[k]);
+        std::string column = std::to_string(k + 1);
+        if (c == 0) {
+            fail("NUL byte at column " + column + "; expected a text file");
+        }
+        if ((c < 0x20 && c != '\t') || c == 0x7f) {
+            char code[8];
+            std::snprintf(code, sizeof code, "0x%02x", c);
+            fail(std::string("control character ") + code + " at column " + column +
+                 "; expected printable text");
+        }
+    }
 }
 
 void CsvReader::expect_header(std::string_view header) {
@@ -80,8 +134,14 @@ void CsvReader::expect_header(std::string_view header) {
     if (!read_line()) {
         fail_at(1, expected + "end of file");
     }
-    if (text_ != header) {
-        fail(expected + quote_found(text_));
+    // Spreadsheets on Windows save UTF-8 with a byte order mark.
+    constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+    std::string_view text = text_;
+    if (text.substr(0, kUtf8Bom.size()) == kUtf8Bom) {
+        text.remove_prefix(kUtf8Bom.size());
+    }
+    if (text != header) {
+        fail(expected + quote_found(text));
     }
 }
 
@@ -120,6 +180,7 @@ bool CsvReader::next_row(std::size_t field_count) {
 uint64_t CsvReader::uint_field(std::size_t i, const char* what) const {
     std::string_view s = fields_[i];
     uint64_t value = 0;
+    // from_chars takes digits only: no sign, no space, no fraction, no 0x.
     auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
     if (ec == std::errc::result_out_of_range) {
         fail(std::string("field '") + what +
@@ -133,27 +194,26 @@ uint64_t CsvReader::uint_field(std::size_t i, const char* what) const {
 }
 
 double CsvReader::number_field(std::size_t i, const char* what) const {
+    // The "C" locale whatever the process locale is, so '.' is the decimal
+    // point everywhere.
+    static const locale_t c_locale = newlocale(LC_ALL_MASK, "C", locale_t{});
     std::string_view s = fields_[i];
-    // strtod needs a NUL-terminated string; a field longer than the buffer
-    // is not a sensible number, so it is reported rather than parsed.
-    char buf[128];
-    bool fits = !s.empty() && s.size() < sizeof buf;
-    char* end = buf;
-    double value = 0.0;
-    if (fits) {
-        std::memcpy(buf, s.data(), s.size());
-        buf[s.size()] = '\0';
-        // Overflow gives +-HUGE_VAL (= +-inf) and underflow a denormal or
-        // zero, both wanted; errno is therefore not consulted.
-        value = std::strtod(buf, &end);
-    }
-    if (!fits || end != buf + s.size()) {
-        fail(std::string("field '") + what +
-             "': expected a decimal number, found " + quote_found(s));
+    number_text_.assign(s);  // strtod needs a NUL-terminated string
+    const char* begin = number_text_.c_str();
+    char* end = nullptr;
+    errno = 0;
+    double value = strtod_l(begin, &end, c_locale);
+    std::string field = std::string("field '") + what + "': ";
+    if (s.empty() || end != begin + number_text_.size()) {
+        fail(field + "expected a decimal number, found " + quote_found(s));
     }
     if (std::isnan(value)) {
-        fail(std::string("field '") + what +
-             "': NaN is not allowed (expected a number or +-inf)");
+        fail(field + "NaN is not allowed (expected a number or +-inf)");
+    }
+    if (std::isinf(value) && errno == ERANGE) {
+        fail(field + quote_found(s) +
+             " is beyond the double range (about 1.8e308); expected a finite "
+             "number in range, or inf / -inf for an unbounded side");
     }
     return value;
 }

@@ -1,12 +1,11 @@
 #include "sw/scene/trace_csv.h"
 
+#include <algorithm>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
-#include <unordered_map>
-
-#include "sw/scene/csv_reader.h"
+#include <utility>
 
 namespace cdvp {
 
@@ -32,56 +31,116 @@ void append_number(std::string& out, double v) {
 
 }  // namespace
 
-std::vector<Frame> parse_trace_csv(std::istream& in, const std::string& name) {
-    CsvReader reader(in, name);
-    reader.expect_header(kTraceCsvHeader);
+TraceReader::TraceReader(std::istream& in, std::string name, TraceLimits limits)
+    : reader_(in, std::move(name)), limits_(std::move(limits)) {
+    reader_.expect_header(kTraceCsvHeader);
+}
 
+bool TraceReader::read_row(Row& row) {
+    if (!reader_.next_row(kFields)) {
+        return false;
+    }
+    row.frame = reader_.uint_field(0, kFieldNames[0]);
+    row.id = reader_.uint_field(1, kFieldNames[1]);
+    for (int axis = 0; axis < 3; ++axis) {
+        row.box.min[axis] = reader_.number_field(2 + axis, kFieldNames[2 + axis]);
+        row.box.max[axis] = reader_.number_field(5 + axis, kFieldNames[5 + axis]);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!(row.box.min[axis] <= row.box.max[axis])) {
+            reader_.fail(std::string(kFieldNames[2 + axis]) + " (" +
+                         shorten_found(reader_.field(2 + axis)) + ") is greater than " +
+                         kFieldNames[5 + axis] + " (" +
+                         shorten_found(reader_.field(5 + axis)) + "); expected min <= max");
+        }
+    }
+    return true;
+}
+
+void TraceReader::add(Frame& frame, const Row& row) {
+    if (frame.boxes.size() >= limits_.max_boxes_per_frame) {
+        std::string limit = std::to_string(limits_.max_boxes_per_frame);
+        reader_.fail("frame " + std::to_string(row.frame) + " has more than " + limit +
+                     " boxes; expected at most " + limit + " boxes a frame (" +
+                     limits_.reason + ")");
+    }
+    frame.ids.push_back(row.id);
+    frame.boxes.push_back(row.box);
+}
+
+// A frame's rows sit on consecutive lines (blank lines end the file), so row
+// k is on first_line + k. Sorting indices by id costs 8 bytes a box where a
+// hash set of ids would cost several times that.
+void TraceReader::check_unique_ids(const Frame& frame, std::size_t first_line) const {
+    std::vector<std::size_t> order(frame.ids.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        order[k] = k;
+    }
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return frame.ids[a] != frame.ids[b] ? frame.ids[a] < frame.ids[b] : a < b;
+    });
+    // Report the repeat that comes first in the file, as a line-by-line check would.
+    std::size_t first = 0;
+    std::size_t repeat = order.size();
+    for (std::size_t k = 1; k < order.size(); ++k) {
+        if (frame.ids[order[k]] == frame.ids[order[k - 1]] &&
+            (k == 1 || frame.ids[order[k - 2]] != frame.ids[order[k]]) && order[k] < repeat) {
+            first = order[k - 1];
+            repeat = order[k];
+        }
+    }
+    if (repeat != order.size()) {
+        reader_.fail_at(first_line + repeat,
+                        "id " + std::to_string(frame.ids[repeat]) + " appears twice in frame " +
+                            std::to_string(frame.number) + " (first on line " +
+                            std::to_string(first_line + first) +
+                            "); expected unique ids within a frame");
+    }
+}
+
+std::optional<Frame> TraceReader::next_frame() {
+    Row row;
+    if (pending_) {
+        row = *pending_;
+        pending_.reset();
+    } else if (!read_row(row)) {
+        return std::nullopt;
+    }
+    Frame frame;
+    frame.number = row.frame;
+    std::size_t first_line = reader_.line();
+    add(frame, row);
+    while (read_row(row)) {
+        if (row.frame == frame.number) {
+            add(frame, row);
+            continue;
+        }
+        if (row.frame < frame.number) {
+            reader_.fail("frame " + std::to_string(row.frame) + " after frame " +
+                         std::to_string(frame.number) +
+                         "; expected ascending frame numbers with each frame's "
+                         "rows contiguous");
+        }
+        pending_ = row;
+        break;
+    }
+    check_unique_ids(frame, first_line);
+    return frame;
+}
+
+std::vector<Frame> parse_trace_csv(std::istream& in, const std::string& name,
+                                   const TraceLimits& limits) {
+    TraceReader reader(in, name, limits);
     std::vector<Frame> frames;
-    std::unordered_map<uint64_t, std::size_t> id_lines;  // current frame's ids
-    while (reader.next_row(kFields)) {
-        uint64_t number = reader.uint_field(0, kFieldNames[0]);
-        uint64_t id = reader.uint_field(1, kFieldNames[1]);
-        Box box;
-        for (int axis = 0; axis < 3; ++axis) {
-            box.min[axis] = reader.number_field(2 + axis, kFieldNames[2 + axis]);
-            box.max[axis] = reader.number_field(5 + axis, kFieldNames[5 + axis]);
-        }
-        for (int axis = 0; axis < 3; ++axis) {
-            if (!(box.min[axis] <= box.max[axis])) {
-                reader.fail(std::string(kFieldNames[2 + axis]) + " (" +
-                            shorten_found(reader.field(2 + axis)) + ") is greater than " +
-                            kFieldNames[5 + axis] + " (" +
-                            shorten_found(reader.field(5 + axis)) +
-                            "); expected min <= max");
-            }
-        }
-
-        if (frames.empty() || number > frames.back().number) {
-            frames.emplace_back();
-            frames.back().number = number;
-            id_lines.clear();
-        } else if (number < frames.back().number) {
-            reader.fail("frame " + std::to_string(number) + " after frame " +
-                        std::to_string(frames.back().number) +
-                        "; expected ascending frame numbers with each frame's "
-                        "rows contiguous");
-        }
-        auto [it, inserted] = id_lines.emplace(id, reader.line());
-        if (!inserted) {
-            reader.fail("id " + std::to_string(id) + " appears twice in frame " +
-                        std::to_string(number) + " (first on line " +
-                        std::to_string(it->second) +
-                        "); expected unique ids within a frame");
-        }
-        frames.back().ids.push_back(id);
-        frames.back().boxes.push_back(box);
+    while (std::optional<Frame> frame = reader.next_frame()) {
+        frames.push_back(std::move(*frame));
     }
     return frames;
 }
 
-std::vector<Frame> read_trace_csv(const std::string& path) {
+std::vector<Frame> read_trace_csv(const std::string& path, const TraceLimits& limits) {
     std::ifstream in = open_input(path);
-    return parse_trace_csv(in, path);
+    return parse_trace_csv(in, path, limits);
 }
 
 void write_trace_csv(std::ostream& out, const std::vector<Frame>& frames) {

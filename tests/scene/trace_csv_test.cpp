@@ -60,8 +60,8 @@ TEST(TraceCsv, AcceptsCrlfSpacesInfinitiesAndGaps) {
     std::string text =
         "frame,id,min_x,min_y,min_z,max_x,max_y,max_z\r\n"
         "2, 9 ,-inf,-INF,-Infinity, +inf ,inf,INFINITY\r\n"
-        "2,4,1e999,0,0,1e999,0,0\r\n"
-        "7,9,-1e999,-0,0,0,0,0x1p-3\r\n"
+        "2,4,1e308,0,0,1.7976931348623157e308,0,0\r\n"
+        "7,9,-inf,-0,0,0,0,0x1p-3\r\n"
         "\r\n";
     std::vector<Frame> frames = parse(text);
     ASSERT_EQ(2u, frames.size());
@@ -72,7 +72,8 @@ TEST(TraceCsv, AcceptsCrlfSpacesInfinitiesAndGaps) {
         EXPECT_EQ(-kInf, frames[0].boxes[0].min[axis]);
         EXPECT_EQ(kInf, frames[0].boxes[0].max[axis]);
     }
-    EXPECT_EQ(kInf, frames[0].boxes[1].min[0]);  // overflow becomes inf
+    EXPECT_EQ(1e308, frames[0].boxes[1].min[0]);
+    EXPECT_EQ(std::numeric_limits<double>::max(), frames[0].boxes[1].max[0]);
     EXPECT_EQ(-kInf, frames[1].boxes[0].min[0]);
     EXPECT_TRUE(std::signbit(frames[1].boxes[0].min[1]));
     EXPECT_EQ(0.125, frames[1].boxes[0].max[2]);
@@ -171,9 +172,39 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"BlankLineInMiddle", H ROW "\n0,2,0,0,0,1,1,1\n", "a.csv:3: ",
                  "blank line"},
         BadInput{"StrayCarriageReturn", H "0,1,0,0,0,1,1,1\r\r\n", "a.csv:2: ",
-                 "field 'max_z'"},
+                 "carriage return not followed by a line feed at column 16; expected LF or "
+                 "CRLF line ends"},
+        BadInput{"CarriageReturnOnlyLineEnds", "frame,id,min_x,min_y,min_z,max_x,max_y,max_z\r"
+                 "0,1,0,0,0,1,1,1\r", "a.csv:1: ", "carriage return not followed by a line feed at column 45"},
+        BadInput{"CarriageReturnAtEndOfFile", H "0,1,0,0,0,1,1,1\r", "a.csv:2: ",
+                 "carriage return not followed by a line feed"},
         BadInput{"ControlCharacter", H "0,1,0,0,0,1,1,1\x01\n", "a.csv:2: ",
-                 "found '1?'"}),
+                 "control character 0x01 at column 16; expected printable text"},
+        BadInput{"VerticalTab", H "0,1,0,0,0,1,1,\v1\n", "a.csv:2: ", "control character 0x0b"},
+        BadInput{"Delete", H "0,1\x7f,0,0,0,1,1,1\n", "a.csv:2: ", "control character 0x7f at column 4"},
+        BadInput{"TrailingComma", H "0,1,0,0,0,1,1,1,\n", "a.csv:2: ",
+                 "expected 8 comma-separated fields, found 9"},
+        BadInput{"SemicolonSeparated", H "0;1;0;0;0;1;1;1\n", "a.csv:2: ",
+                 "expected 8 comma-separated fields, found 1"},
+        BadInput{"BomBeforeRow", H "\xEF\xBB\xBF" ROW, "a.csv:2: ", "field 'frame'"},
+        BadInput{"HexId", H "0,0x10,0,0,0,1,1,1\n", "a.csv:2: ",
+                 "field 'id': expected a non-negative integer, found '0x10'"},
+        BadInput{"ExponentFrame", H "1e3,1,0,0,0,1,1,1\n", "a.csv:2: ",
+                 "field 'frame': expected a non-negative integer, found '1e3'"},
+        BadInput{"SpaceInsideId", H "0,1 2,0,0,0,1,1,1\n", "a.csv:2: ",
+                 "field 'id': expected a non-negative integer, found '1 2'"},
+        BadInput{"FrameOverflow", H "99999999999999999999999,1,0,0,0,1,1,1\n", "a.csv:2: ",
+                 "field 'frame': expected an integer below 2^64"},
+        BadInput{"OverflowToInfinity", H "0,1,0,0,0,1e999,1,1\n", "a.csv:2: ",
+                 "field 'max_x': '1e999' is beyond the double range"},
+        BadInput{"NegativeOverflowToInfinity", H "0,1,-1e99999,0,0,1,1,1\n", "a.csv:2: ",
+                 "field 'min_x': '-1e99999' is beyond the double range"},
+        BadInput{"NanSpelledOut", H "0,1,0,0,0,1,1,NAN\n", "a.csv:2: ", "field 'max_z': NaN"},
+        BadInput{"DecimalComma", H "0,1,0,0,0,\"1,5\",1,1\n", "a.csv:2: ", "found 9"},
+        BadInput{"HexWithoutDigits", H "0,1,0x,0,0,1,1,1\n", "a.csv:2: ",
+                 "field 'min_x': expected a decimal number, found '0x'"},
+        BadInput{"MinusZeroAboveNegative", H "0,1,-0,0,0,-1e-300,1,1\n", "a.csv:2: ",
+                 "min_x (-0) is greater than max_x (-1e-300)"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
 
 #undef ROW
