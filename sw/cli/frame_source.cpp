@@ -1,6 +1,7 @@
 #include "sw/cli/frame_source.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <utility>
@@ -13,51 +14,80 @@ namespace cdvp {
 
 namespace {
 
+// FNV-1a over a frame's number, ids and bound bits: tells whether the second
+// reading of a trace found the same frame as the first.
+uint64_t frame_digest(const Frame& frame) {
+    uint64_t hash = 14695981039346656037ull;
+    auto mix = [&hash](const void* data, std::size_t size) {
+        const auto* bytes = static_cast<const unsigned char*>(data);
+        for (std::size_t k = 0; k < size; ++k) hash = (hash ^ bytes[k]) * 1099511628211ull;
+    };
+    mix(&frame.number, sizeof frame.number);
+    mix(frame.ids.data(), frame.ids.size() * sizeof(uint64_t));
+    mix(frame.boxes.data(), frame.boxes.size() * sizeof(Box));
+    return hash;
+}
+
 // The trace is read twice: once up front, so that bad input fails before
 // anything is simulated or written and the frame count and the largest frame
 // are known; then frame by frame while the board runs, so memory holds one
-// frame, not the file. A pipe cannot be read twice; its frames are kept.
+// frame, not the file. Each frame of the second reading must equal the
+// first's (by digest), or the run fails as bad input. A pipe cannot be read
+// twice; its frames are kept.
 class TraceSource : public FrameSource {
 public:
-    explicit TraceSource(const std::string& path) : path_(path), in_(open_input(path)) {
-        const TraceLimits limits{address_map::kMaxObjects, "the board's address map"};
+    TraceSource(const std::string& path, const TraceLimits& limits) : path_(path) {
         std::error_code ec;
         const bool rereadable = std::filesystem::is_regular_file(path, ec);
+        in_ = open_input(path);
         TraceReader check(in_, path_, limits);
         while (std::optional<Frame> frame = check.next_frame()) {
-            ++frame_count_;
             max_objects_ = std::max(max_objects_, frame->boxes.size());
+            digests_.push_back(frame_digest(*frame));
             if (!rereadable) kept_.push_back(std::move(*frame));
         }
         if (rereadable) {
-            in_.clear();
-            in_.seekg(0);
-            // The second reading may not find more than the first did.
-            reader_.emplace(in_, path_, TraceLimits{max_objects_, "the file changed while being read"});
+            in_ = open_input(path);
+            // Bounds memory should the file grow in between.
+            reader_.emplace(in_, path_, TraceLimits{max_objects_, "the largest frame of the first reading"});
         }
     }
     std::optional<Frame> next() override {
-        if (delivered_ == frame_count_) return std::nullopt;
+        if (!reader_) {
+            if (delivered_ == kept_.size()) return std::nullopt;
+            return std::move(kept_[delivered_++]);
+        }
         std::optional<Frame> frame;
-        if (reader_) {
+        try {
             frame = reader_->next_frame();
-            if (!frame) throw InputError(path_ + ": the file changed while being read (fewer frames)");
-        } else {
-            frame = std::move(kept_[delivered_]);
+        } catch (const InputError& e) {
+            changed(e.what());  // the first reading found no such problem
+        }
+        if (delivered_ == digests_.size()) {
+            if (frame) changed("more frames than on the first reading");
+            return std::nullopt;
+        }
+        if (!frame) changed("fewer frames than on the first reading");
+        if (frame_digest(*frame) != digests_[delivered_]) {
+            changed("frame " + std::to_string(frame->number) + " differs from the first reading");
         }
         ++delivered_;
         return frame;
     }
-    std::size_t frame_count() const override { return frame_count_; }
+    std::size_t frame_count() const override { return digests_.size(); }
     std::size_t max_objects() const override { return max_objects_; }
     std::string describe() const override { return "trace " + path_; }
 
 private:
+    [[noreturn]] void changed(const std::string& how) const {
+        throw InputError(path_ + ": the file changed while being read (" + how + "); expected it unchanged during the run");
+    }
+
     std::string path_;
     std::ifstream in_;
     std::optional<TraceReader> reader_;
-    std::vector<Frame> kept_;
-    std::size_t frame_count_ = 0;
+    std::vector<uint64_t> digests_;  // one a frame, from the first reading
+    std::vector<Frame> kept_;        // a pipe's frames
     std::size_t delivered_ = 0;
     std::size_t max_objects_ = 0;
 };
@@ -87,7 +117,11 @@ private:
 
 }  // namespace
 
-std::unique_ptr<FrameSource> trace_source(const std::string& path) { return std::make_unique<TraceSource>(path); }
+TraceLimits board_trace_limits() { return TraceLimits{address_map::kMaxObjects, "the board's address map"}; }
+
+std::unique_ptr<FrameSource> trace_source(const std::string& path, const TraceLimits& limits) {
+    return std::make_unique<TraceSource>(path, limits);
+}
 
 std::unique_ptr<FrameSource> spheres_source(const BouncingSpheresConfig& config, std::size_t frames) {
     return std::make_unique<SpheresSource>(config, frames);

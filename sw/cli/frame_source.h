@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sw/scene/scene.h"
+#include "sw/scene/trace_csv.h"
 #include "models/common/aabb.h"
 #include "sw/apps/bouncing_spheres.h"
 
@@ -27,11 +28,14 @@ public:
     virtual std::string describe() const = 0;
 };
 
+// A frame may hold as many boxes as the board's address map has room for.
+TraceLimits board_trace_limits();
+
 // The frames of a trace file, all checked up front (bad input fails before
 // anything is simulated or written), then read again one frame at a time so
 // memory holds the largest frame, not the file. A frame with more boxes than
 // the board's address map holds fails as bad input naming its line.
-std::unique_ptr<FrameSource> trace_source(const std::string& path);
+std::unique_ptr<FrameSource> trace_source(const std::string& path, const TraceLimits& limits = board_trace_limits());
 
 // The paper's application: spheres bouncing off the walls and each other,
 // stepped on the broad phase's pairs (no frame is kept).

@@ -101,6 +101,7 @@ bool CsvReader::read_line() {
         }
         if (c == '\r') {
             if (buffer->sgetc() != '\n') {
+                check_characters();  // binary input: name the first non-text byte instead
                 fail("carriage return not followed by a line feed at column " +
                      std::to_string(text_.size() + 1) +
                      "; expected LF or CRLF line ends");
