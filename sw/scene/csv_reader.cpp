@@ -204,15 +204,15 @@ double CsvReader::number_field(std::size_t i, const char* what) const {
     char* end = nullptr;
     errno = 0;
     double value = strtod_l(begin, &end, c_locale);
-    std::string field = std::string("field '") + what + "': ";
+    auto field = [what] { return std::string("field '") + what + "': "; };  // built only on failure
     if (s.empty() || end != begin + number_text_.size()) {
-        fail(field + "expected a decimal number, found " + quote_found(s));
+        fail(field() + "expected a decimal number, found " + quote_found(s));
     }
     if (std::isnan(value)) {
-        fail(field + "NaN is not allowed (expected a number or +-inf)");
+        fail(field() + "NaN is not allowed (expected a number or +-inf)");
     }
     if (std::isinf(value) && errno == ERANGE) {
-        fail(field + quote_found(s) +
+        fail(field() + quote_found(s) +
              " is beyond the double range (about 1.8e308); expected a finite "
              "number in range, or inf / -inf for an unbounded side");
     }
