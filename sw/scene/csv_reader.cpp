@@ -117,16 +117,18 @@ bool CsvReader::read_line() {
 void CsvReader::check_characters() const {
     for (std::size_t k = 0; k < text_.size(); ++k) {
         unsigned char c = static_cast<unsigned char>(text_[k]);
+        bool control = (c < 0x20 && c != '\t') || c == 0x7f;
+        if (!control) {
+            continue;
+        }
         std::string column = std::to_string(k + 1);
         if (c == 0) {
             fail("NUL byte at column " + column + "; expected a text file");
         }
-        if ((c < 0x20 && c != '\t') || c == 0x7f) {
-            char code[8];
-            std::snprintf(code, sizeof code, "0x%02x", c);
-            fail(std::string("control character ") + code + " at column " + column +
-                 "; expected printable text");
-        }
+        char code[8];
+        std::snprintf(code, sizeof code, "0x%02x", c);
+        fail(std::string("control character ") + code + " at column " + column +
+             "; expected printable text");
     }
 }
 

@@ -149,6 +149,13 @@ TEST(TraceReader, EdgesOfDouble) {
     EXPECT_EQ(std::numeric_limits<double>::max(), c.max[2]);
 }
 
+TEST(TraceReader, IntegersTakeLeadingZerosAndTheFullRange) {
+    std::vector<Frame> frames = parse(kHeader + "007,0018446744073709551615,0,0,0,1,1,1\n");
+    ASSERT_EQ(1u, frames.size());
+    EXPECT_EQ(7u, frames[0].number);
+    EXPECT_EQ(std::numeric_limits<uint64_t>::max(), frames[0].ids[0]);
+}
+
 TEST(TraceReader, ByteOrderMarkBeforeTheHeader) {
     EXPECT_EQ(1u, parse("\xEF\xBB\xBF" + kHeader + "0,1,0,0,0,1,1,1\n").size());
     test::TempDir dir;
