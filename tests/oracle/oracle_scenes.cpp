@@ -1,5 +1,6 @@
 #include "tests/oracle/oracle_scenes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -68,6 +69,10 @@ std::vector<Box> touching_grid(std::size_t k) {
             for (std::size_t z = 0; z < k; ++z) boxes.push_back(cube(x, y, z, 1.0));
         }
     }
+    // Shuffled, so that each touching face meets the comparators from both
+    // sides (in grid order the lower box would always come first).
+    std::mt19937_64 rng(k);
+    std::shuffle(boxes.begin(), boxes.end(), rng);
     return boxes;
 }
 

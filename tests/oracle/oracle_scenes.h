@@ -21,8 +21,8 @@ std::vector<Box> clustered_scene(std::size_t n, std::size_t clusters, double spr
 // coarse (1 at 1e7, 8 at 1e8): many gaps smaller than a float ulp.
 std::vector<Box> offset_scene(std::size_t n, double offset, double extent, double size, uint32_t seed);
 
-// k^3 unit cubes on the integer grid: each touches its 26 neighbours on a
-// face, an edge or a corner and overlaps nothing else.
+// k^3 unit cubes on the integer grid, in shuffled order: each touches its
+// 26 neighbours on a face, an edge or a corner and overlaps nothing else.
 std::vector<Box> touching_grid(std::size_t k);
 // Pairs in touching_grid(k): ((3k-2)^3 - k^3) / 2.
 std::size_t touching_grid_pairs(std::size_t k);
