@@ -267,9 +267,11 @@ void PciBridge::finish(const Fault& fault) {
     ++transfers_;
     dma_.busy = false;
     dma_.done = !fault;
-    dma_.error = static_cast<bool>(fault);
-    dma_.cause = fault.cause;
-    dma_.fault_address = fault.address;
+    if (fault) {  // otherwise a refused START's error stays visible
+        dma_.error = true;
+        dma_.cause = fault.cause;
+        dma_.fault_address = fault.address;
+    }
     inta_changed_.notify(SC_ZERO_TIME);
 }
 
