@@ -142,6 +142,7 @@ void PciBridge::write_control(uint32_t value) {
         inta_changed_.notify(SC_ZERO_TIME);
         return;
     }
+    abort_requested_ = false;
     dma_.to_host = value & D::kToHost;
     dma_.interrupt_on_done = value & D::kInterruptOnDone;
     dma_.chain = value & D::kChain;
@@ -275,19 +276,23 @@ void PciBridge::finish(const Fault& fault) {
     inta_changed_.notify(SC_ZERO_TIME);
 }
 
+// Data move when the transfer starts; its bus time passes afterwards. An
+// ABORT before the start moves nothing; one during the bus time ends it
+// early (the data already moved stay where they are).
 void PciBridge::dma_engine() {
     for (;;) {
         wait(dma_start_);
-        abort_requested_ = false;
-        if (fault_due(faults_, FaultKind::kDmaHang)) {
-            wait(abort_);  // never completes: only the host's ABORT ends it
-        } else {
-            double ns = 0;
-            const Fault fault = run_transfer(ns);
-            wait(sc_time(ns, SC_NS), abort_);
-            if (!abort_requested_) {
-                finish(fault);
-                continue;
+        if (!abort_requested_) {
+            if (fault_due(faults_, FaultKind::kDmaHang)) {
+                wait(abort_);  // never completes: only the host's ABORT ends it
+            } else {
+                double ns = 0;
+                const Fault fault = run_transfer(ns);
+                wait(sc_time(ns, SC_NS), abort_);
+                if (!abort_requested_) {
+                    finish(fault);
+                    continue;
+                }
             }
         }
         // Aborted: idle, with the status the host cleared by aborting.
