@@ -30,6 +30,7 @@ public:
     void set_fault_plan(FaultPlan* plan) { faults_ = plan; }
     const sc_core::sc_time& period() const { return period_; }
 
+    using sc_core::sc_module::trace;
     // Adds the board's waveforms to a trace file (before the first sc_start).
     // Without this call the clocked process does no tracing work at all.
     void trace(sc_core::sc_trace_file* file);

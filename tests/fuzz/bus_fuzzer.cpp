@@ -36,7 +36,7 @@ namespace am = address_map;
 constexpr uint32_t kCapacity = 64;
 constexpr uint64_t kHostBytes = 1 << 16;
 constexpr std::size_t kMaxOps = 256;
-const sc_time kInputTimeLimit(200, SC_MS);  // simulated; a program that is not done by then hung
+constexpr double kInputTimeLimitMs = 200;  // simulated; a program that is not done by then hung
 
 [[noreturn]] void finding(const char* what) {
     std::fprintf(stderr, "bus_fuzzer: %s\n", what);
@@ -141,7 +141,7 @@ struct Harness : sc_module {
     // A host address: mostly inside host memory, sometimes anywhere.
     static uint64_t host_address(Bytes& in) {
         const uint8_t pick = in.u8();
-        if (pick < 160) return in.u16() & ~uint64_t{pick & 1 ? 0 : 3};
+        if (pick < 160) return in.u16() & ~static_cast<uint64_t>(pick & 1 ? 0 : 3);
         if (pick < 200) return kHostBytes - (in.u8() & 0x3c);
         if (pick < 220) return 0xFFFF'FFFF'FFFF'FFFFull - in.u8();
         return in.u64();
@@ -185,7 +185,9 @@ struct Harness : sc_module {
                 const uint32_t at = in.u16() % (kHostBytes - sizeof(DmaDescriptor) + 1);
                 DmaDescriptor d{host_address(in), 0, local_address(in), length(in)};
                 const uint8_t next = in.u8();
-                d.next = next < 64 ? 0 : next < 200 ? (at + sizeof d + 8 * (next % 4)) % kHostBytes : host_address(in);
+                d.next = next < 64 ? uint64_t{0}
+                         : next < 200 ? (at + sizeof d + 8 * (next % 4)) % kHostBytes
+                                      : host_address(in);
                 std::memcpy(memory.data(at), &d, sizeof d);
                 break;
             }
@@ -321,7 +323,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     h.input_size = size;
     h.finished = false;
     h.go.notify(SC_ZERO_TIME);
-    const sc_time limit = sc_time_stamp() + cdvp::kInputTimeLimit;
+    const sc_time limit = sc_time_stamp() + sc_time(cdvp::kInputTimeLimitMs, SC_MS);
     while (!h.finished && sc_time_stamp() < limit && sc_pending_activity()) sc_start(limit - sc_time_stamp());
     if (!h.finished) cdvp::finding("an input did not finish within its simulated time bound");
     return 0;
