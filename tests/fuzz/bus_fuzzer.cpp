@@ -143,7 +143,7 @@ struct Harness : sc_module {
         const uint8_t pick = in.u8();
         if (pick < 160) return in.u16() & ~static_cast<uint64_t>(pick & 1 ? 0 : 3);
         if (pick < 200) return kHostBytes - (in.u8() & 0x3c);
-        if (pick < 220) return 0xFFFF'FFFF'FFFF'FFFFull - in.u8();
+        if (pick < 220) return (0xFFFF'FFFF'FFFF'FFFFull - in.u8()) & ~static_cast<uint64_t>(pick & 1 ? 3 : 7);
         return in.u64();
     }
     // A board address: a coordinate window, the pair buffer, or anywhere.
