@@ -7,18 +7,18 @@ namespace cdvp {
 using namespace sc_core;
 
 HostCpu::HostCpu(const sc_module_name& name, HostMemory& memory, const sc_event& interrupt, const sc_time& period,
-                 const DriverConfig& config)
+                 const DriverConfig& config, std::shared_ptr<const BusTiming> bus)
     : sc_module(name),
       socket("socket"),
       driver_([this](tlm::tlm_generic_payload& p, sc_time& d) { socket->b_transport(p, d); }, memory, interrupt,
-              period, config) {
+              period, config, std::move(bus)) {
     SC_THREAD(run);
 }
 
 void HostCpu::submit(const std::vector<FloatBox>& boxes) {
     boxes_ = &boxes;
     pending_ = true;
-    error_.clear();
+    error_ = nullptr;
     submitted_.notify(SC_ZERO_TIME);
 }
 
@@ -33,8 +33,8 @@ void HostCpu::run() {
                 opened_ = true;
             }
             result_.phases = driver_.run_frame(*boxes_, result_.pairs);
-        } catch (const std::exception& e) {
-            error_ = e.what();
+        } catch (...) {
+            error_ = std::current_exception();
         }
         pending_ = false;
     }

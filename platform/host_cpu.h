@@ -1,6 +1,7 @@
 // The host PC: a CPU thread that runs the driver, frame by frame.
 #pragma once
 
+#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,12 +27,13 @@ public:
 
     // interrupt: when the driver's handler runs; period: the board's clock.
     HostCpu(const sc_core::sc_module_name& name, HostMemory& memory, const sc_core::sc_event& interrupt,
-            const sc_core::sc_time& period, const DriverConfig& config);
+            const sc_core::sc_time& period, const DriverConfig& config, std::shared_ptr<const BusTiming> bus);
 
     // Queues a frame for the CPU thread; run the simulation to process it.
     void submit(const std::vector<FloatBox>& boxes);
     bool finished() const { return !pending_; }
-    const std::string& error() const { return error_; }  // empty when the frame completed
+    // What the driver threw (null when the frame completed), to rethrow on the caller's side.
+    std::exception_ptr error() const { return error_; }
     const FrameResult& result() const { return result_; }
 
 private:
@@ -43,7 +45,7 @@ private:
     bool pending_ = false;
     sc_core::sc_event submitted_;
     FrameResult result_;
-    std::string error_;
+    std::exception_ptr error_;
 };
 
 }  // namespace cdvp

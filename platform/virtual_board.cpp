@@ -15,11 +15,12 @@ std::shared_ptr<const BusTiming> bus_or_ideal(const std::shared_ptr<const BusTim
 VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& config, uint32_t capacity,
                            const std::string& vcd_base)
     : sc_module(name),
+      faults_(config.faults),
       board_("board", config.board, capacity),
       bridge_("bridge", bus_or_ideal(config.bus)),
       bus_("pci", bus_or_ideal(config.bus)),
       memory_("memory", BoardDriver::host_memory_bytes(capacity, config.board.collector.buffer_depth)),
-      cpu_("cpu", memory_, bus_.interrupt_event(), board_.period(), config.driver),
+      cpu_("cpu", memory_, bus_.interrupt_event(), board_.period(), config.driver, bus_or_ideal(config.bus)),
       fpga_irq_("fpga_irq"),
       inta_("inta") {
     cpu_.socket.bind(bus_.cpu_socket);
@@ -31,6 +32,11 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
     bridge_.fpga_irq.bind(fpga_irq_);
     bridge_.inta.bind(inta_);
     bus_.inta.bind(inta_);
+    if (!faults_.empty()) {
+        board_.set_fault_plan(&faults_);
+        bridge_.set_fault_plan(&faults_);
+        bus_.set_fault_plan(&faults_);
+    }
     if (!vcd_base.empty()) {
         trace_ = sc_create_vcd_trace_file(vcd_base.c_str());
         if (trace_ == nullptr) throw std::runtime_error(vcd_base + ".vcd: cannot create waveform file");
@@ -43,7 +49,7 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
 
 VirtualBoard::VirtualBoard(const sc_module_name& name, const BoardConfig& board, uint32_t capacity,
                            const std::string& vcd_base)
-    : VirtualBoard(name, PlatformConfig{board, nullptr, DriverConfig{}}, capacity, vcd_base) {}
+    : VirtualBoard(name, PlatformConfig{board, nullptr, DriverConfig{}, {}}, capacity, vcd_base) {}
 
 VirtualBoard::~VirtualBoard() { close_trace(); }
 
@@ -60,10 +66,11 @@ const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes) {
                                     " boxes exceeds the board's capacity of " +
                                     std::to_string(board_.core().capacity()));
     }
+    faults_.begin_frame(++frames_);
     cpu_.submit(boxes);
     sc_start();  // returns when no activity is left: the frame is complete
     if (!cpu_.finished()) throw std::runtime_error("the simulation stopped before the frame completed");
-    if (!cpu_.error().empty()) throw std::runtime_error(cpu_.error());
+    if (cpu_.error()) std::rethrow_exception(cpu_.error());
     return cpu_.result();
 }
 

@@ -22,6 +22,8 @@ struct PlatformConfig {
     // leaves only the board's compute time.
     std::shared_ptr<const BusTiming> bus;
     DriverConfig driver;
+    // Faults to inject (docs/faults.md); empty for none.
+    std::vector<FaultSpec> faults;
 };
 
 // Elaborate once, then run any number of frames: each run_frame() hands the
@@ -38,8 +40,12 @@ public:
                  const std::string& vcd_base = "");
     ~VirtualBoard() override;
 
-    // Runs one frame; throws std::runtime_error if the host could not complete it.
+    // Runs one frame; rethrows what the driver threw (DeviceFault when the
+    // simulated system faulted, SimulatedTimeLimit), never with partial pairs.
     const FrameResult& run_frame(const std::vector<FloatBox>& boxes);
+    // Frames run so far (the injector's frame numbers count from 1).
+    uint64_t frames_run() const { return frames_; }
+    const FaultPlan& faults() const { return faults_; }
     // Flushes and closes the waveform file (also done by the destructor).
     void close_trace();
 
@@ -48,6 +54,8 @@ public:
     const BusTiming& bus_timing() const { return bus_.timing(); }
 
 private:
+    FaultPlan faults_;
+    uint64_t frames_ = 0;
     CollisionBoard board_;
     PciBridge bridge_;
     PciBus bus_;

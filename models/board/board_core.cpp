@@ -48,45 +48,70 @@ bool BoardCore::read_register(uint32_t offset, uint32_t& value) const {
         case R::kParallelism: value = config_.m; return true;
         case R::kCapacity: value = capacity_; return true;
         case R::kPairBufferDepth: value = collector_.buffer_depth(); return true;
+        case R::kErrorCause: value = regs_.error_cause; return true;
         default: return false;
     }
 }
 
-bool BoardCore::write_register(uint32_t offset, uint32_t value) {
+BoardCore::Write BoardCore::write_register(uint32_t offset, uint32_t value) {
     using R = ControlRegisters;
     switch (offset) {
         case R::kObjectCount:
+            // The sweep uses the count it started with; read-back must agree.
+            if (regs_.busy) {
+                raise_error(R::kWriteWhileBusy);
+                return Write::kRefused;
+            }
             regs_.object_count = value;
-            return true;
+            return Write::kDone;
         case R::kControl:
-            if (value & R::kStart) start();
+            if (value & R::kAbort) abort();
+            else if (value & R::kStart) start();
             else if (value & R::kResume) resume();
             else if (value & R::kAcknowledge) regs_.irq_pending = false;
-            return true;
+            return Write::kDone;
         case R::kId: case R::kStatus: case R::kPairCount: case R::kCyclesLo: case R::kCyclesHi:
         case R::kStallsLo: case R::kStallsHi: case R::kTotalPairsLo: case R::kTotalPairsHi:
-        case R::kParallelism: case R::kCapacity: case R::kPairBufferDepth:
-            return true;  // read-only: writes are ignored, as on the hardware
+        case R::kParallelism: case R::kCapacity: case R::kPairBufferDepth: case R::kErrorCause:
+            return Write::kDone;  // read-only: writes are ignored, as on the hardware
         default:
-            return false;
+            return Write::kUnmapped;
     }
 }
 
-bool BoardCore::write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word) {
-    if (regs_.busy || index >= capacity_) return false;
+BoardCore::Write BoardCore::write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word) {
+    if (index >= capacity_) return Write::kUnmapped;
+    if (regs_.busy) {
+        raise_error(ControlRegisters::kWriteWhileBusy);
+        return Write::kRefused;
+    }
     memories_[coordinate].write(index, word);
-    return true;
+    return Write::kDone;
 }
 
 uint32_t BoardCore::read_coordinate(Coordinate coordinate, uint32_t index) const {
     return memories_[coordinate].peek(index);
 }
 
+void BoardCore::raise_error(ControlRegisters::BoardError cause) {
+    regs_.error = true;
+    regs_.error_cause = cause;
+    regs_.irq_pending = true;
+}
+
+// ABORT: the sweep stops where it is; the pair buffer keeps what it holds.
+void BoardCore::abort() {
+    phase_ = Phase::Idle;
+    regs_.busy = regs_.done = regs_.overflow = regs_.error = regs_.irq_pending = false;
+    regs_.error_cause = ControlRegisters::kNoError;
+    stalled_ = false;
+}
+
 // START is refused (error bit) while a sweep is under way or when the object
 // count exceeds the memories' depth; the previous results stay readable then.
 void BoardCore::start() {
     if (regs_.busy || regs_.object_count > capacity_) {
-        regs_.error = true;
+        raise_error(regs_.busy ? ControlRegisters::kStartWhileBusy : ControlRegisters::kTooManyObjects);
         return;
     }
     address_generator_.start(regs_.object_count);
@@ -97,13 +122,14 @@ void BoardCore::start() {
     regs_.cycles = regs_.stalls = 0;
     regs_.busy = true;
     regs_.done = regs_.overflow = regs_.error = regs_.irq_pending = false;
+    regs_.error_cause = ControlRegisters::kNoError;
     phase_ = Phase::Running;
 }
 
 // RESUME after an overflow: the host has read every buffered pair.
 void BoardCore::resume() {
     if (phase_ != Phase::Paused) {
-        regs_.error = true;
+        raise_error(ControlRegisters::kResumeNotPaused);
         return;
     }
     collector_.clear_buffer();

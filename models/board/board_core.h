@@ -40,11 +40,17 @@ public:
     // Block RAM primitives of the six coordinate memories.
     uint32_t block_rams() const;
 
-    // Host side. Register accesses return false for an unmapped offset.
+    // Host side. A read returns false for an unmapped offset.
     bool read_register(uint32_t offset, uint32_t& value) const;
-    bool write_register(uint32_t offset, uint32_t value);
-    // Coordinate memory writes are refused (false) while busy or past capacity.
-    bool write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word);
+    enum class Write : uint8_t { kDone, kUnmapped, kRefused };
+    // A refused write (OBJECT_COUNT during a sweep) also sets ERROR.
+    Write write_register(uint32_t offset, uint32_t value);
+    // Coordinate memory writes are refused (kRefused, ERROR set) while busy,
+    // kUnmapped past capacity.
+    Write write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word);
+    // Reports an error status (ERROR with this cause, and the interrupt);
+    // a sweep under way goes on.
+    void raise_error(ControlRegisters::BoardError cause);
     uint32_t read_coordinate(Coordinate coordinate, uint32_t index) const;
     const PairCollector& collector() const { return collector_; }
     const ControlRegisters& registers() const { return regs_; }
@@ -64,6 +70,7 @@ public:
 private:
     void start();
     void resume();
+    void abort();
     Slot issue();
     void finish();
 

@@ -3,6 +3,9 @@
 #include <cstring>
 #include <string>
 
+#include "models/common/address_range.h"
+#include "models/common/transaction.h"
+
 namespace cdvp {
 
 using namespace sc_core;
@@ -58,8 +61,8 @@ void CollisionBoard::trace(sc_trace_file* file) {
 void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& /*delay*/) {
     // Host accesses take no board time here; the bus in front of the board
     // annotates its own timing.
-    if (payload.get_byte_enable_ptr() != nullptr) {
-        payload.set_response_status(tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE);
+    if (const tlm::tlm_response_status shape = check_plain_access(payload); shape != tlm::TLM_OK_RESPONSE) {
+        payload.set_response_status(shape);
         return;
     }
     payload.set_response_status(
@@ -78,9 +81,21 @@ unsigned int CollisionBoard::transport_dbg(tlm::tlm_generic_payload& payload) {
     return ok ? payload.get_data_length() : 0;
 }
 
+namespace {
+tlm::tlm_response_status response_for(BoardCore::Write result) {
+    switch (result) {
+        case BoardCore::Write::kDone: return tlm::TLM_OK_RESPONSE;
+        case BoardCore::Write::kRefused: return tlm::TLM_COMMAND_ERROR_RESPONSE;
+        case BoardCore::Write::kUnmapped: break;
+    }
+    return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+}
+}  // namespace
+
 tlm::tlm_response_status CollisionBoard::access(tlm::tlm_command command, uint64_t address, unsigned char* data,
                                                 unsigned int length) {
     namespace am = address_map;
+    using R = ControlRegisters;
     if (length == 0 || length % 4 != 0 || address % 4 != 0) return tlm::TLM_BURST_ERROR_RESPONSE;
     const bool write = command == tlm::TLM_WRITE_COMMAND;
     const uint64_t words = length / 4;
@@ -91,30 +106,40 @@ tlm::tlm_response_status CollisionBoard::access(tlm::tlm_command command, uint64
     };
     auto set_word = [data](uint64_t k, uint32_t w) { std::memcpy(data + 4 * k, &w, 4); };
 
-    if (address + length <= am::kRegistersSize) {
+    if (range_within(address, length, am::kRegisters, am::kRegistersSize)) {
         if (words != 1) return tlm::TLM_BURST_ERROR_RESPONSE;
-        const auto offset = static_cast<uint32_t>(address);
-        if (write) return core_.write_register(offset, word_at(0)) ? tlm::TLM_OK_RESPONSE : tlm::TLM_ADDRESS_ERROR_RESPONSE;
+        const auto offset = static_cast<uint32_t>(address - am::kRegisters);
+        if (write) {
+            if (offset == R::kControl && (word_at(0) & R::kStart) && fault_due(faults_, FaultKind::kBoardError)) {
+                core_.raise_error(R::kInjectedError);
+                return tlm::TLM_OK_RESPONSE;
+            }
+            return response_for(core_.write_register(offset, word_at(0)));
+        }
         uint32_t value = 0;
         if (!core_.read_register(offset, value)) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
         set_word(0, value);
         return tlm::TLM_OK_RESPONSE;
     }
-    if (address >= am::kCoordinateBase && address < am::kCoordinateBase + kCoordinates * am::kWindowSize) {
-        const auto coordinate = static_cast<Coordinate>((address - am::kCoordinateBase) / am::kWindowSize);
-        const uint64_t first = (address - am::kCoordinateBase) % am::kWindowSize / 4;
+    if (range_within(address, length, am::kCoordinateBase, kCoordinates * am::kWindowSize)) {
+        const uint64_t offset = address - am::kCoordinateBase;
+        const auto coordinate = static_cast<Coordinate>(offset / am::kWindowSize);
+        const uint64_t first = offset % am::kWindowSize / 4;
+        // One window per access, and only the boxes the memories hold.
         if (first + words > core_.capacity()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
         for (uint64_t k = 0; k < words; ++k) {
             const auto index = static_cast<uint32_t>(first + k);
             if (!write) set_word(k, core_.read_coordinate(coordinate, index));
-            else if (!core_.write_coordinate(coordinate, index, word_at(k))) return tlm::TLM_COMMAND_ERROR_RESPONSE;
+            else if (const auto r = core_.write_coordinate(coordinate, index, word_at(k)); r != BoardCore::Write::kDone)
+                return response_for(r);
         }
         return tlm::TLM_OK_RESPONSE;
     }
-    if (address >= am::kPairBuffer && address + length <= am::kPairBuffer + am::kPairBufferSize) {
+    if (range_within(address, length, am::kPairBuffer, am::kPairBufferSize)) {
         if (write) return tlm::TLM_COMMAND_ERROR_RESPONSE;
         const uint64_t first = (address - am::kPairBuffer) / 4;
         const auto& collector = core_.collector();
+        // Only the pairs the buffer holds: reading more is an address error.
         if ((first + words + 1) / 2 > collector.buffer_count()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
         for (uint64_t k = 0; k < words; ++k) {
             const IndexPair& pair = collector.buffer_entry(static_cast<uint32_t>((first + k) / 2));
@@ -133,6 +158,10 @@ void CollisionBoard::wake_clock_if_needed() {
 }
 
 void CollisionBoard::clock_edge() {
+    if (!core_.running()) {  // aborted since the last edge
+        clock_running_ = false;
+        return;
+    }
     core_.step();
     if (tracing_) sample_trace();
     if (core_.running()) {

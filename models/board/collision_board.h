@@ -10,6 +10,7 @@
 #include <tlm_utils/simple_target_socket.h>
 
 #include "models/board/board_core.h"
+#include "models/common/fault_plan.h"
 
 namespace cdvp {
 
@@ -25,8 +26,11 @@ public:
     CollisionBoard(const sc_core::sc_module_name& name, const BoardConfig& config, uint32_t capacity);
 
     const BoardCore& core() const { return core_; }
+    // Faults to inject (board-error); null for none. Not owned.
+    void set_fault_plan(FaultPlan* plan) { faults_ = plan; }
     const sc_core::sc_time& period() const { return period_; }
 
+    using sc_core::sc_module::trace;
     // Adds the board's waveforms to a trace file (before the first sc_start).
     // Without this call the clocked process does no tracing work at all.
     void trace(sc_core::sc_trace_file* file);
@@ -49,6 +53,7 @@ private:
     sc_core::sc_event fall_;
     sc_core::sc_event irq_changed_;
     bool clock_running_ = false;
+    FaultPlan* faults_ = nullptr;
 
     // Waveform mirrors, updated each cycle only when traced.
     struct Waves {

@@ -41,19 +41,44 @@ struct ControlRegisters {
         kParallelism = 0x2C,      // ro: m
         kCapacity = 0x30,         // ro: memory depth in boxes
         kPairBufferDepth = 0x34,  // ro: pair buffer depth in pairs
+        kErrorCause = 0x38,       // ro: why ERROR is set (a BoardError)
     };
-    enum ControlBit : uint32_t { kStart = 1u << 0, kResume = 1u << 1, kAcknowledge = 1u << 2 };
+    // ABORT stops any sweep and clears every status bit: the board is idle,
+    // ready for a new START (a driver's recovery after a fault).
+    enum ControlBit : uint32_t { kStart = 1u << 0, kResume = 1u << 1, kAcknowledge = 1u << 2, kAbort = 1u << 3 };
     enum StatusBit : uint32_t { kBusy = 1u << 0, kDone = 1u << 1, kOverflow = 1u << 2, kError = 1u << 3 };
+    // ERROR's causes. An error raises the interrupt like done or overflow.
+    enum BoardError : uint32_t {
+        kNoError = 0,
+        kStartWhileBusy = 1,    // START during a sweep
+        kTooManyObjects = 2,    // START with OBJECT_COUNT above the memories' depth
+        kResumeNotPaused = 3,   // RESUME without an overflow pause
+        kWriteWhileBusy = 4,    // OBJECT_COUNT or a coordinate written during a sweep
+        kInjectedError = 5,     // an injected board-error fault (docs/faults.md)
+    };
     static constexpr uint32_t kIdValue = 0xCD7B'0001;  // "cdvp", register map version 1
 
     uint32_t object_count = 0;
     bool busy = false;      // a sweep is under way (running or paused)
     bool done = false;      // the last sweep finished; every pair is in the buffer
     bool overflow = false;  // paused: the pair buffer is full, drain it and resume
-    bool error = false;     // the last command was refused (see board docs)
+    bool error = false;     // a command or access was refused; error_cause says which
+    uint32_t error_cause = 0;  // a BoardError
     bool irq_pending = false;  // set on done or overflow; START, RESUME or ACKNOWLEDGE clear it
     uint64_t cycles = 0;
     uint64_t stalls = 0;
+
+    static const char* describe(uint32_t cause) {
+        switch (cause) {
+            case kNoError: return "no error";
+            case kStartWhileBusy: return "START while a sweep was under way";
+            case kTooManyObjects: return "OBJECT_COUNT above the board's capacity";
+            case kResumeNotPaused: return "RESUME without an overflow pause";
+            case kWriteWhileBusy: return "a write to OBJECT_COUNT or a coordinate memory during a sweep";
+            case kInjectedError: return "the board reported an error (injected board-error)";
+            default: return "unknown cause";
+        }
+    }
 
     uint32_t status() const {
         return (busy ? uint32_t{kBusy} : 0u) | (done ? uint32_t{kDone} : 0u) |

@@ -59,6 +59,10 @@ double PciTiming::pio_read_ns() const { return config_.host_pio_overhead_ns + si
 
 double PciTiming::pio_write_ns() const { return single_write_clocks() * clock_ns(); }
 
+uint64_t PciTiming::dma_transaction_bytes(Direction direction) const {
+    return data_phases_per_tenure(direction) * (config_.width_bits / 8);
+}
+
 uint64_t PciTiming::data_phases_per_tenure(Direction direction) const {
     const uint64_t width = config_.width_bits / 8;
     const bool to_board = direction == Direction::kToBoard;  // the bridge reads host memory
@@ -112,6 +116,11 @@ std::string PcieTiming::describe() const {
 double PcieTiming::link_bytes_per_ns() const {
     const double raw = config_.gigatransfers_per_s * config_.lanes * config_.encoding_efficiency / 8.0;
     return raw * config_.max_payload_bytes / (config_.max_payload_bytes + config_.tlp_overhead_bytes);
+}
+
+// A read request (to the board) or a write's payload (to the host) is one TLP.
+uint64_t PcieTiming::dma_transaction_bytes(Direction direction) const {
+    return direction == Direction::kToBoard ? config_.max_read_request_bytes : config_.max_payload_bytes;
 }
 
 double PcieTiming::dma_ns(uint64_t bytes, Direction direction) const {

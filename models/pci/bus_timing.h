@@ -24,6 +24,8 @@ public:
     virtual double dma_ns(uint64_t bytes, Direction direction) const = 0;
     // From the board raising its interrupt to the driver's handler running.
     virtual double interrupt_ns() const = 0;
+    // Bytes one bus-master tenure (one transaction) of a DMA carries at most.
+    virtual uint64_t dma_transaction_bytes(Direction direction) const = 0;
 };
 
 // No host-bus cost at all: the board alone, as if the host were on chip.
@@ -34,6 +36,7 @@ public:
     double pio_write_ns() const override { return 0.0; }
     double dma_ns(uint64_t, Direction) const override { return 0.0; }
     double interrupt_ns() const override { return 0.0; }
+    uint64_t dma_transaction_bytes(Direction) const override { return 4096; }
 };
 
 // The board's local bus between the PCI bridge and the FPGA: DMA cannot move
@@ -74,6 +77,7 @@ public:
     double pio_write_ns() const override;
     double dma_ns(uint64_t bytes, Direction direction) const override;
     double interrupt_ns() const override { return config_.interrupt_ns; }
+    uint64_t dma_transaction_bytes(Direction direction) const override;
 
     // The cycle arithmetic behind the times (in PCI clocks).
     uint64_t single_read_clocks() const;   // one data phase, board as target
@@ -110,6 +114,7 @@ public:
     double pio_write_ns() const override { return config_.posted_write_ns; }
     double dma_ns(uint64_t bytes, Direction direction) const override;
     double interrupt_ns() const override { return config_.interrupt_ns; }
+    uint64_t dma_transaction_bytes(Direction direction) const override;
     // Payload bytes per ns on the link after encoding and TLP overhead.
     double link_bytes_per_ns() const;
 

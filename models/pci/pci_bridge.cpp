@@ -1,15 +1,32 @@
 #include "models/pci/pci_bridge.h"
 
+#include <algorithm>
 #include <cstring>
-#include <stdexcept>
-#include <vector>
+#include <unordered_set>
 
+#include "models/common/address_range.h"
 #include "models/common/transaction.h"
 
 namespace cdvp {
 
 using namespace sc_core;
 using D = DmaRegisters;
+
+const char* describe(DmaFault fault) {
+    switch (fault) {
+        case DmaFault::kNone: return "no fault";
+        case DmaFault::kBadLength: return "bad length (zero, not a multiple of 4, or above 16 MiB)";
+        case DmaFault::kMisaligned: return "misaligned address";
+        case DmaFault::kMasterAbort: return "master abort (no host memory claimed the address)";
+        case DmaFault::kTargetAbort: return "target abort (the board rejected the address)";
+        case DmaFault::kBoardRefused: return "the board refused the access";
+        case DmaFault::kDescriptorFault: return "descriptor fetch failed (master abort)";
+        case DmaFault::kChainLoop: return "descriptor chain loops";
+        case DmaFault::kChainTooLong: return "descriptor chain longer than 1024";
+        case DmaFault::kStartWhileBusy: return "START while a transfer was under way";
+    }
+    return "unknown fault";
+}
 
 PciBridge::PciBridge(const sc_module_name& name, std::shared_ptr<const BusTiming> timing)
     : sc_module(name),
@@ -18,7 +35,8 @@ PciBridge::PciBridge(const sc_module_name& name, std::shared_ptr<const BusTiming
       local_bus("local_bus"),
       fpga_irq("fpga_irq"),
       inta("inta"),
-      timing_(std::move(timing)) {
+      timing_(std::move(timing)),
+      buffer_(kBurstBytes) {
     pci_target.register_b_transport(this, &PciBridge::b_transport);
     pci_target.register_transport_dbg(this, &PciBridge::transport_dbg);
     SC_THREAD(dma_engine);
@@ -27,10 +45,8 @@ PciBridge::PciBridge(const sc_module_name& name, std::shared_ptr<const BusTiming
 }
 
 void PciBridge::b_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
-    const uint64_t address = payload.get_address();
-    if (address >= D::kBase && address < D::kBase + D::kSize) {
-        payload.set_response_status(access_registers(payload) ? tlm::TLM_OK_RESPONSE
-                                                              : tlm::TLM_ADDRESS_ERROR_RESPONSE);
+    if (starts_within(payload.get_address(), D::kBase, D::kSize)) {
+        payload.set_response_status(access_registers(payload));
         return;
     }
     local_bus->b_transport(payload, delay);  // the FPGA's own address map
@@ -40,9 +56,13 @@ unsigned int PciBridge::transport_dbg(tlm::tlm_generic_payload& payload) {
     return local_bus->transport_dbg(payload);
 }
 
-bool PciBridge::access_registers(tlm::tlm_generic_payload& payload) {
-    if (payload.get_data_length() != 4) return false;
-    const auto offset = static_cast<uint32_t>(payload.get_address() - D::kBase);
+// Whole 32-bit registers only: a partial write is refused, never half-applied.
+tlm::tlm_response_status PciBridge::access_registers(tlm::tlm_generic_payload& payload) {
+    if (const tlm::tlm_response_status shape = check_plain_access(payload); shape != tlm::TLM_OK_RESPONSE) return shape;
+    const uint64_t address = payload.get_address();
+    if (payload.get_data_length() != 4 || address % 4 != 0) return tlm::TLM_BURST_ERROR_RESPONSE;
+    if (!range_within(address, 4, D::kBase, D::kSize)) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+    const auto offset = static_cast<uint32_t>(address - D::kBase);
     uint32_t value = 0;
     if (payload.get_command() == tlm::TLM_READ_COMMAND) {
         switch (offset) {
@@ -51,99 +71,240 @@ bool PciBridge::access_registers(tlm::tlm_generic_payload& payload) {
             case D::kLocalAddress: value = dma_.local_address; break;
             case D::kBytes: value = dma_.bytes; break;
             case D::kControl: value = 0; break;
-            case D::kStatus: value = (dma_.busy ? uint32_t{D::kBusy} : 0u) | (dma_.done ? uint32_t{D::kDone} : 0u); break;
+            case D::kStatus: value = dma_.status(); break;
             case D::kChainLo: value = static_cast<uint32_t>(dma_.chain_address); break;
             case D::kChainHi: value = static_cast<uint32_t>(dma_.chain_address >> 32); break;
-            default: return false;
+            case D::kErrorCause: value = static_cast<uint32_t>(dma_.cause); break;
+            case D::kErrorAddressLo: value = static_cast<uint32_t>(dma_.fault_address); break;
+            case D::kErrorAddressHi: value = static_cast<uint32_t>(dma_.fault_address >> 32); break;
+            default: return tlm::TLM_ADDRESS_ERROR_RESPONSE;
         }
         std::memcpy(payload.get_data_ptr(), &value, 4);
-        return true;
+        return tlm::TLM_OK_RESPONSE;
     }
     std::memcpy(&value, payload.get_data_ptr(), 4);
+    // The set-up registers are locked while a transfer runs: it reads them.
+    auto settable = [this] { return !dma_.busy; };
     switch (offset) {
-        case D::kHostAddressLo: dma_.host_address = (dma_.host_address & ~0xffffffffull) | value; break;
-        case D::kHostAddressHi: dma_.host_address = (dma_.host_address & 0xffffffffull) | uint64_t{value} << 32; break;
-        case D::kLocalAddress: dma_.local_address = value; break;
-        case D::kBytes: dma_.bytes = value; break;
-        case D::kChainLo: dma_.chain_address = (dma_.chain_address & ~0xffffffffull) | value; break;
-        case D::kChainHi: dma_.chain_address = (dma_.chain_address & 0xffffffffull) | uint64_t{value} << 32; break;
+        case D::kHostAddressLo:
+        case D::kHostAddressHi:
+        case D::kLocalAddress:
+        case D::kBytes:
+        case D::kChainLo:
+        case D::kChainHi:
+            if (!settable()) return tlm::TLM_COMMAND_ERROR_RESPONSE;
+            if (offset == D::kHostAddressLo) dma_.host_address = (dma_.host_address & ~0xffffffffull) | value;
+            if (offset == D::kHostAddressHi) dma_.host_address = (dma_.host_address & 0xffffffffull) | uint64_t{value} << 32;
+            if (offset == D::kLocalAddress) dma_.local_address = value;
+            if (offset == D::kBytes) dma_.bytes = value;
+            if (offset == D::kChainLo) dma_.chain_address = (dma_.chain_address & ~0xffffffffull) | value;
+            if (offset == D::kChainHi) dma_.chain_address = (dma_.chain_address & 0xffffffffull) | uint64_t{value} << 32;
+            return tlm::TLM_OK_RESPONSE;
         case D::kStatus:
             if (value & D::kDone) dma_.done = false;
-            inta_changed_.notify(SC_ZERO_TIME);
-            break;
-        case D::kControl:
-            if ((value & D::kStart) && !dma_.busy) {
-                dma_.to_host = value & D::kToHost;
-                dma_.interrupt_on_done = value & D::kInterruptOnDone;
-                dma_.chain = value & D::kChain;
-                dma_.busy = true;
-                dma_.done = false;
-                dma_start_.notify(SC_ZERO_TIME);
+            if (value & D::kError) {
+                dma_.error = false;
+                dma_.cause = DmaFault::kNone;
+                dma_.fault_address = 0;
             }
-            break;
-        default: return false;
-    }
-    return true;
-}
-
-void PciBridge::move(tlm::tlm_command command, tlm_utils::simple_initiator_socket<PciBridge>& socket,
-                     uint64_t address, unsigned char* data, unsigned int length) {
-    tlm::tlm_generic_payload p;
-    prepare_transaction(p, command, address, data, length);
-    sc_time delay = SC_ZERO_TIME;
-    socket->b_transport(p, delay);
-    if (p.is_response_error()) {
-        SC_REPORT_ERROR("cdvp/pci_bridge", ("DMA access failed: " + p.get_response_string()).c_str());
+            inta_changed_.notify(SC_ZERO_TIME);
+            return tlm::TLM_OK_RESPONSE;
+        case D::kControl:
+            write_control(value);
+            return tlm::TLM_OK_RESPONSE;
+        case D::kErrorCause:
+        case D::kErrorAddressLo:
+        case D::kErrorAddressHi:
+            return tlm::TLM_OK_RESPONSE;  // read-only: writes are ignored
+        default:
+            return tlm::TLM_ADDRESS_ERROR_RESPONSE;
     }
 }
 
-double PciBridge::transfer_segment(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host) {
-    buffer_.resize(bytes);
-    if (bytes > 0) {
-        if (to_host) {
-            move(tlm::TLM_READ_COMMAND, local_bus, local_address, buffer_.data(), bytes);
-            move(tlm::TLM_WRITE_COMMAND, pci_master, host_address, buffer_.data(), bytes);
-        } else {
-            move(tlm::TLM_READ_COMMAND, pci_master, host_address, buffer_.data(), bytes);
-            move(tlm::TLM_WRITE_COMMAND, local_bus, local_address, buffer_.data(), bytes);
+void PciBridge::write_control(uint32_t value) {
+    if (value & D::kAbort) {
+        if (dma_.busy) {
+            abort_requested_ = true;
+            abort_.notify(SC_ZERO_TIME);
         }
+        dma_.done = dma_.error = false;
+        dma_.cause = DmaFault::kNone;
+        dma_.fault_address = 0;
+        inta_changed_.notify(SC_ZERO_TIME);
+        return;
     }
-    ++segments_;
-    return timing_->dma_ns(bytes, to_host ? Direction::kToHost : Direction::kToBoard);
+    if (!(value & D::kStart)) return;
+    if (dma_.busy) {
+        // Refused, and said so; the transfer under way goes on.
+        dma_.error = true;
+        dma_.cause = DmaFault::kStartWhileBusy;
+        dma_.fault_address = 0;
+        inta_changed_.notify(SC_ZERO_TIME);
+        return;
+    }
+    abort_requested_ = false;
+    dma_.to_host = value & D::kToHost;
+    dma_.interrupt_on_done = value & D::kInterruptOnDone;
+    dma_.chain = value & D::kChain;
+    dma_.busy = true;
+    dma_.done = dma_.error = false;
+    dma_.cause = DmaFault::kNone;
+    dma_start_.notify(SC_ZERO_TIME);
 }
 
-// A segment's data move at once; its duration is the bus arithmetic's (the
-// slower of PCI and local bus). In chain mode each descriptor is first
-// fetched from host memory, a 24-byte bus-master read of its own.
+PciBridge::Fault PciBridge::check_segment(uint64_t host_address, uint32_t local_address, uint32_t bytes) {
+    if (bytes == 0 || bytes % 4 != 0 || bytes > D::kMaxSegmentBytes) return {DmaFault::kBadLength, host_address};
+    if (host_address % 4 != 0) return {DmaFault::kMisaligned, host_address};
+    if (local_address % 4 != 0) return {DmaFault::kMisaligned, local_address};
+    // Addresses that wrap are no host memory and no board address at all.
+    if (!range_within(host_address, bytes, 0, UINT64_MAX)) return {DmaFault::kMasterAbort, host_address};
+    if (!range_within(local_address, bytes, 0, uint64_t{1} << 32)) return {DmaFault::kTargetAbort, local_address};
+    return {};
+}
+
+PciBridge::Fault PciBridge::move_burst(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host) {
+    auto transport = [&](tlm_utils::simple_initiator_socket<PciBridge>& socket, tlm::tlm_command command,
+                         uint64_t address) {
+        tlm::tlm_generic_payload p;
+        prepare_transaction(p, command, address, buffer_.data(), bytes);
+        sc_time delay = SC_ZERO_TIME;  // the segment's time is accounted as a whole
+        socket->b_transport(p, delay);
+        return p.get_response_status();
+    };
+    auto local_fault = [&](tlm::tlm_response_status response) -> Fault {
+        if (response == tlm::TLM_OK_RESPONSE) return {};
+        return {response == tlm::TLM_COMMAND_ERROR_RESPONSE ? DmaFault::kBoardRefused : DmaFault::kTargetAbort,
+                local_address};
+    };
+    auto host_fault = [&](tlm::tlm_response_status response) -> Fault {
+        if (response == tlm::TLM_OK_RESPONSE) return {};
+        return {DmaFault::kMasterAbort, host_address};
+    };
+    auto local = [&](tlm::tlm_command command) -> Fault {
+        if (fault_due(faults_, FaultKind::kTargetAbort)) return {DmaFault::kTargetAbort, local_address};
+        return local_fault(transport(local_bus, command, local_address));
+    };
+    auto host = [&](tlm::tlm_command command) -> Fault {
+        if (fault_due(faults_, FaultKind::kMasterAbort)) return {DmaFault::kMasterAbort, host_address};
+        return host_fault(transport(pci_master, command, host_address));
+    };
+    if (to_host) {
+        if (Fault f = local(tlm::TLM_READ_COMMAND)) return f;
+        return host(tlm::TLM_WRITE_COMMAND);
+    }
+    if (Fault f = host(tlm::TLM_READ_COMMAND)) return f;
+    return local(tlm::TLM_WRITE_COMMAND);
+}
+
+// A retry ends a transaction at its first data phase with no data moved: it
+// costs a one-word transaction, and the whole transaction follows. A
+// disconnect ends it after half its data: the rest needs a transaction of its own.
+double PciBridge::transaction_ns(uint32_t bytes, Direction direction) {
+    double ns = timing_->dma_ns(bytes, direction);
+    const uint32_t first = static_cast<uint32_t>(std::min<uint64_t>(bytes, timing_->dma_transaction_bytes(direction)));
+    if (fault_due(faults_, FaultKind::kRetry)) {
+        ns += timing_->dma_ns(4, direction);
+        ++repeated_;
+    }
+    if (fault_due(faults_, FaultKind::kDisconnect)) {
+        const uint32_t half = first / 8 * 4;
+        ns += half == 0 ? timing_->dma_ns(4, direction)
+                        : timing_->dma_ns(half, direction) + timing_->dma_ns(first - half, direction) -
+                              timing_->dma_ns(first, direction);
+        ++repeated_;
+    }
+    return ns;
+}
+
+// The data move in bursts through one bounded buffer, at once; the segment's
+// duration is the bus arithmetic's (the slower of PCI and local bus). After
+// a fault only the bytes moved before it are charged.
+PciBridge::Fault PciBridge::transfer_segment(uint64_t host_address, uint32_t local_address, uint32_t bytes,
+                                             bool to_host, double& ns) {
+    if (Fault f = check_segment(host_address, local_address, bytes)) return f;
+    const Direction direction = to_host ? Direction::kToHost : Direction::kToBoard;
+    for (uint32_t done = 0; done < bytes;) {
+        const uint32_t burst = std::min(bytes - done, kBurstBytes);
+        if (Fault f = move_burst(host_address + done, local_address + done, burst, to_host)) {
+            if (done > 0) ns += timing_->dma_ns(done, direction);
+            return f;
+        }
+        done += burst;
+    }
+    ns += transaction_ns(bytes, direction);
+    ++segments_;
+    return {};
+}
+
+PciBridge::Fault PciBridge::fetch_descriptor(uint64_t address, DmaDescriptor& descriptor) {
+    if (address % 8 != 0) return {DmaFault::kMisaligned, address};
+    tlm::tlm_generic_payload p;
+    prepare_transaction(p, tlm::TLM_READ_COMMAND, address, &descriptor, sizeof descriptor);
+    sc_time delay = SC_ZERO_TIME;
+    if (fault_due(faults_, FaultKind::kMasterAbort)) return {DmaFault::kDescriptorFault, address};
+    pci_master->b_transport(p, delay);
+    if (p.is_response_error()) return {DmaFault::kDescriptorFault, address};
+    return {};
+}
+
+// Register mode moves one segment; chain mode first fetches each descriptor,
+// a 24-byte bus-master read of its own. A chain may not revisit a descriptor.
+PciBridge::Fault PciBridge::run_transfer(double& ns) {
+    if (!dma_.chain) return transfer_segment(dma_.host_address, dma_.local_address, dma_.bytes, dma_.to_host, ns);
+    std::unordered_set<uint64_t> visited;
+    for (uint64_t next = dma_.chain_address; next != 0;) {
+        if (visited.size() == D::kMaxDescriptors) return {DmaFault::kChainTooLong, next};
+        if (!visited.insert(next).second) return {DmaFault::kChainLoop, next};
+        DmaDescriptor d{};
+        if (Fault f = fetch_descriptor(next, d)) return f;
+        ns += transaction_ns(sizeof d, Direction::kToBoard);
+        if (Fault f = transfer_segment(d.host_address, d.local_address, d.bytes, dma_.to_host, ns)) return f;
+        next = d.next;
+    }
+    return {};
+}
+
+void PciBridge::finish(const Fault& fault) {
+    ++transfers_;
+    dma_.busy = false;
+    dma_.done = !fault;
+    if (fault) {  // otherwise a refused START's error stays visible
+        dma_.error = true;
+        dma_.cause = fault.cause;
+        dma_.fault_address = fault.address;
+    }
+    inta_changed_.notify(SC_ZERO_TIME);
+}
+
+// Data move when the transfer starts; its bus time passes afterwards. An
+// ABORT before the start moves nothing; one during the bus time ends it
+// early (the data already moved stay where they are).
 void PciBridge::dma_engine() {
     for (;;) {
         wait(dma_start_);
-        double ns = 0;
-        if (!dma_.chain) {
-            ns = transfer_segment(dma_.host_address, dma_.local_address, dma_.bytes, dma_.to_host);
-        } else {
-            constexpr uint64_t kMaxDescriptors = 1u << 16;  // a chain that loops must not hang the host
-            uint64_t walked = 0;
-            for (uint64_t next = dma_.chain_address; next != 0; ++walked) {
-                if (walked == kMaxDescriptors) {
-                    SC_REPORT_ERROR("cdvp/pci_bridge", "DMA descriptor chain longer than 65536 (a loop?)");
-                    break;
+        if (!abort_requested_) {
+            if (fault_due(faults_, FaultKind::kDmaHang)) {
+                wait(abort_);  // never completes: only the host's ABORT ends it
+            } else {
+                double ns = 0;
+                const Fault fault = run_transfer(ns);
+                wait(sc_time(ns, SC_NS), abort_);
+                if (!abort_requested_) {
+                    finish(fault);
+                    continue;
                 }
-                DmaDescriptor d{};
-                move(tlm::TLM_READ_COMMAND, pci_master, next, reinterpret_cast<unsigned char*>(&d), sizeof d);
-                ns += timing_->dma_ns(sizeof d, Direction::kToBoard);
-                ns += transfer_segment(d.host_address, d.local_address, d.bytes, dma_.to_host);
-                next = d.next;
             }
         }
-        wait(sc_time(ns, SC_NS));
+        // Aborted: idle, with the status the host cleared by aborting.
         ++transfers_;
         dma_.busy = false;
-        dma_.done = true;
+        abort_requested_ = false;
         inta_changed_.notify(SC_ZERO_TIME);
     }
 }
 
-void PciBridge::drive_inta() { inta.write(fpga_irq.read() || (dma_.done && dma_.interrupt_on_done)); }
+void PciBridge::drive_inta() {
+    inta.write(fpga_irq.read() || ((dma_.done || dma_.error) && dma_.interrupt_on_done));
+}
 
 }  // namespace cdvp

@@ -37,6 +37,10 @@ void PciBus::master_transport(tlm::tlm_generic_payload& payload, sc_time& delay)
 
 unsigned int PciBus::cpu_debug(tlm::tlm_generic_payload& payload) { return board_socket->transport_dbg(payload); }
 
-void PciBus::deliver_interrupt() { interrupt_.notify(sc_time(timing_->interrupt_ns(), SC_NS)); }
+// A lost interrupt never reaches the handler: the driver's timeout finds it.
+void PciBus::deliver_interrupt() {
+    if (fault_due(faults_, FaultKind::kLostIrq)) return;
+    interrupt_.notify(sc_time(timing_->interrupt_ns(), SC_NS));
+}
 
 }  // namespace cdvp

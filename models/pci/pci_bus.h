@@ -8,6 +8,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/simple_target_socket.h>
 
+#include "models/common/fault_plan.h"
 #include "models/pci/bus_timing.h"
 
 namespace cdvp {
@@ -31,6 +32,8 @@ public:
 
     const BusTiming& timing() const { return *timing_; }
     std::shared_ptr<const BusTiming> shared_timing() const { return timing_; }
+    // Faults to inject (lost-irq); null for none. Not owned.
+    void set_fault_plan(FaultPlan* plan) { faults_ = plan; }
     // Notified when the driver's interrupt handler runs.
     const sc_core::sc_event& interrupt_event() const { return interrupt_; }
 
@@ -42,6 +45,7 @@ private:
 
     std::shared_ptr<const BusTiming> timing_;
     sc_core::sc_event interrupt_;
+    FaultPlan* faults_ = nullptr;
 };
 
 }  // namespace cdvp

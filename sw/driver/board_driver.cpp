@@ -1,9 +1,12 @@
 #include "sw/driver/board_driver.h"
 
+#include <cinttypes>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 
+#include "models/address_generator/address_generator.h"
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/common/transaction.h"
 #include "models/control_registers/control_registers.h"
@@ -24,6 +27,32 @@ uint64_t pair_area(uint32_t capacity) { return (uint64_t{24} * capacity + 7) / 8
 uint64_t descriptor_area(uint32_t capacity, uint32_t buffer_depth) {
     return pair_area(capacity) + uint64_t{8} * buffer_depth;
 }
+
+std::string hex(uint64_t value) {
+    char text[24];
+    std::snprintf(text, sizeof text, "0x%" PRIx64, value);
+    return text;
+}
+
+std::string mebibytes(uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g MiB", static_cast<double>(bytes) / (1 << 20));
+    return text;
+}
+
+std::string microseconds(const sc_time& t) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g us", t.to_seconds() * 1e6);
+    return text;
+}
+
+// Cycles the board may run between START or RESUME and its next event: the
+// whole sweep, a full pair buffer's drain (every stall cycle moves a pair),
+// and the pipeline and FIFO tail.
+uint64_t worst_case_run_cycles(uint64_t objects, uint32_t m, uint32_t buffer_depth) {
+    constexpr uint64_t kPipelineSlack = 1024;
+    return AddressGenerator::sweep_cycles(objects, m) + buffer_depth + kPipelineSlack;
+}
 }  // namespace
 
 uint64_t BoardDriver::host_memory_bytes(uint32_t capacity, uint32_t buffer_depth) {
@@ -31,8 +60,13 @@ uint64_t BoardDriver::host_memory_bytes(uint32_t capacity, uint32_t buffer_depth
 }
 
 BoardDriver::BoardDriver(Transport pio, HostMemory& memory, const sc_event& interrupt, const sc_time& period,
-                         const DriverConfig& config)
-    : pio_(std::move(pio)), memory_(memory), interrupt_(interrupt), period_(period), config_(config) {}
+                         const DriverConfig& config, std::shared_ptr<const BusTiming> bus)
+    : pio_(std::move(pio)),
+      memory_(memory),
+      interrupt_(interrupt),
+      period_(period),
+      config_(config),
+      bus_(bus ? std::move(bus) : std::make_shared<IdealBusTiming>()) {}
 
 void BoardDriver::pio(tlm::tlm_command command, uint64_t address, void* data, unsigned int length) {
     tlm::tlm_generic_payload p;
@@ -41,8 +75,8 @@ void BoardDriver::pio(tlm::tlm_command command, uint64_t address, void* data, un
     pio_(p, delay);
     wait(delay);
     if (p.is_response_error()) {
-        throw std::runtime_error("board access at offset " + std::to_string(address) + " failed: " +
-                                 p.get_response_string());
+        throw DeviceFault(std::string("board ") + (command == tlm::TLM_READ_COMMAND ? "read" : "write") + " at " +
+                          hex(address) + " failed: " + p.get_response_string());
     }
 }
 
@@ -63,6 +97,7 @@ void BoardDriver::open() {
     if (read(R::kId) != R::kIdValue) throw std::runtime_error("no collision board answers at the BAR");
     capacity_ = read(R::kCapacity);
     buffer_depth_ = read(R::kPairBufferDepth);
+    parallelism_ = read(R::kParallelism);
     if (memory_.size() < host_memory_bytes(capacity_, buffer_depth_)) {
         throw std::runtime_error("host memory too small for the board's capacity and pair buffer");
     }
@@ -85,17 +120,61 @@ void BoardDriver::poll_pause() {
     wait(gap > SC_ZERO_TIME ? gap : period_);
 }
 
+sc_time BoardDriver::timeout_for(double expected_ns) const {
+    const double ns = config_.timeout_floor_ns + config_.timeout_factor * expected_ns;
+    const double left_ns = (sc_max_time() - sc_time_stamp()).to_seconds() * 1e9;
+    if (!(ns < 0.99 * left_ns)) {  // a margin for rounding near 2^64 fs
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "the frame could take %.3g s of simulated time; the simulator's clock has %.3g s left "
+                      "(2^64 fs in all)",
+                      ns * 1e-9, left_ns * 1e-9);
+        throw SimulatedTimeLimit(text);
+    }
+    return sc_time(ns, SC_NS);
+}
+
+// By interrupt: each interrupt (the line is shared) or the timeout is
+// followed by one status read. By polling: status reads until the deadline.
+uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, const sc_time& timeout, const char* what) {
+    const sc_time deadline = sc_time_stamp() + timeout;
+    for (;;) {
+        if (config_.use_interrupts) wait(deadline - sc_time_stamp(), interrupt_);
+        noticed_ = sc_time_stamp();  // the handler runs: the status read is readback work
+        const uint32_t value = read(status_address);
+        if (!config_.use_interrupts) noticed_ = sc_time_stamp();  // a poll notices when its read returns
+        const bool late = sc_time_stamp() >= deadline;
+        if (value & bits) {
+            if (late && config_.use_interrupts) ++timeouts_recovered_;  // the interrupt was lost
+            return value;
+        }
+        if (late) {
+            throw DeviceFault(std::string(what) + " timed out: no completion within " + microseconds(timeout) +
+                              " of simulated time");
+        }
+        if (!config_.use_interrupts) poll_pause();
+    }
+}
+
 // Starts the bridge's DMA engine (registers already set) and waits for it
-// by interrupt or polling.
-void BoardDriver::run_dma(uint32_t control) {
+// by interrupt or polling; a fault the engine reports fails the frame.
+void BoardDriver::run_dma(uint32_t control, double expected_ns) {
+    const sc_time timeout = timeout_for(expected_ns + bus_->interrupt_ns());
     write(D::kBase + D::kControl,
           control | D::kStart | (config_.use_interrupts ? uint32_t{D::kInterruptOnDone} : 0u));
-    for (;;) {
-        if (config_.use_interrupts) wait(interrupt_);
-        else poll_pause();
-        if (read(D::kBase + D::kStatus) & D::kDone) break;
-    }
+    const uint32_t status = wait_for(D::kBase + D::kStatus, D::kDone | D::kError, timeout, "DMA");
+    if (status & D::kError) dma_fault();
     write(D::kBase + D::kStatus, D::kDone);  // clear done: the shared line falls
+}
+
+void BoardDriver::dma_fault() {
+    const auto cause = static_cast<DmaFault>(read(D::kBase + D::kErrorCause));
+    const uint64_t address = read_counter(D::kBase + D::kErrorAddressLo);
+    if (cause == DmaFault::kMasterAbort && address >= memory_.size()) {
+        throw DeviceFault("DMA fault: host address " + hex(address) + " beyond host memory (" +
+                          mebibytes(memory_.size()) + ")");
+    }
+    throw DeviceFault(std::string("DMA fault: ") + describe(cause) + " at address " + hex(address));
 }
 
 void BoardDriver::dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host) {
@@ -103,7 +182,8 @@ void BoardDriver::dma(uint64_t host_address, uint32_t local_address, uint32_t by
     write(D::kBase + D::kHostAddressHi, static_cast<uint32_t>(host_address >> 32));
     write(D::kBase + D::kLocalAddress, local_address);
     write(D::kBase + D::kBytes, bytes);
-    run_dma(to_host ? uint32_t{D::kToHost} : 0u);
+    const Direction direction = to_host ? Direction::kToHost : Direction::kToBoard;
+    run_dma(to_host ? uint32_t{D::kToHost} : 0u, bus_->dma_ns(bytes, direction));
 }
 
 void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
@@ -136,22 +216,21 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
     cpu_work(config_.call_ns + config_.ns_per_box * n);  // packing and the chain, done natively above
     write(D::kBase + D::kChainLo, static_cast<uint32_t>(chain));
     write(D::kBase + D::kChainHi, static_cast<uint32_t>(chain >> 32));
-    run_dma(D::kChain);
+    run_dma(D::kChain, kCoordinates * (bus_->dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) +
+                                       bus_->dma_ns(4 * uint64_t{n}, Direction::kToBoard)));
     charge(kUpload);
 }
 
-uint32_t BoardDriver::wait_for_board() {
+uint32_t BoardDriver::wait_for_board(uint32_t objects) {
     const sc_time started = mark_;
-    uint32_t status = 0;
-    if (config_.use_interrupts) {
-        wait(interrupt_);
-        mark_ = sc_time_stamp();
-        status = read(R::kStatus);
-        write(R::kControl, R::kAcknowledge);
-    } else {
-        constexpr uint32_t kEvents = R::kDone | R::kOverflow | R::kError;
-        while (!((status = read(R::kStatus)) & kEvents)) poll_pause();
-        mark_ = sc_time_stamp();
+    const double worst_ns =
+        (period_ * static_cast<double>(worst_case_run_cycles(objects, parallelism_, buffer_depth_))).to_seconds() * 1e9;
+    const sc_time timeout = timeout_for(worst_ns + bus_->interrupt_ns());
+    const uint32_t status = wait_for(R::kStatus, R::kDone | R::kOverflow | R::kError, timeout, "board");
+    mark_ = noticed_;
+    if (config_.use_interrupts) write(R::kControl, R::kAcknowledge);
+    if (status & R::kError) {
+        throw DeviceFault(std::string("board error status: ") + R::describe(read(R::kErrorCause)));
     }
     // The segment from the command to noticing the board is its compute time
     // (cycles x period) plus the notification's lag.
@@ -184,11 +263,34 @@ FramePhases BoardDriver::run_frame(const std::vector<FloatBox>& boxes, PairList&
         throw std::invalid_argument("frame of " + std::to_string(boxes.size()) + " boxes exceeds the board's capacity of " +
                                     std::to_string(capacity_));
     }
+    try {
+        return frame(boxes, pairs);
+    } catch (const std::exception&) {
+        pairs.clear();  // never a partial set
+        recover();
+        throw;
+    }
+}
+
+void BoardDriver::recover() {
+    try {
+        write(D::kBase + D::kControl, D::kAbort);
+        write(R::kControl, R::kAbort);
+        // Let an aborted transfer's engine settle before the next frame.
+        wait(SC_ZERO_TIME);
+        wait(SC_ZERO_TIME);
+    } catch (const DeviceFault&) {
+        // The next frame's accesses report the board's state.
+    }
+}
+
+FramePhases BoardDriver::frame(const std::vector<FloatBox>& boxes, PairList& pairs) {
     pairs.clear();
     for (double& s : spent_) s = 0;
     const sc_time frame_start = sc_time_stamp();
     mark_ = frame_start;
     cycles_seen_ = 0;
+    timeouts_recovered_ = 0;
     FramePhases phases;
 
     upload(boxes);
@@ -196,8 +298,7 @@ FramePhases BoardDriver::run_frame(const std::vector<FloatBox>& boxes, PairList&
     write(R::kControl, R::kStart);
     charge(kStart);
     for (;;) {
-        const uint32_t status = wait_for_board();
-        if (status & R::kError) throw std::runtime_error("the board refused the frame (status error)");
+        const uint32_t status = wait_for_board(static_cast<uint32_t>(boxes.size()));
         read_pairs(pairs);
         if (status & R::kOverflow) {
             ++phases.overflow_pauses;
@@ -206,15 +307,15 @@ FramePhases BoardDriver::run_frame(const std::vector<FloatBox>& boxes, PairList&
             continue;
         }
         if (status & R::kDone) break;
-        throw std::runtime_error("board interrupt with unexpected status " + std::to_string(status));
+        throw DeviceFault("board interrupt with unexpected status " + hex(status));
     }
     phases.compute_cycles = cycles_seen_;
     phases.stall_cycles = read_counter(R::kStallsLo);
     const uint64_t found = read_counter(R::kTotalPairsLo);
     charge(kReadback);
     if (found != pairs.size()) {
-        throw std::runtime_error("the board found " + std::to_string(found) + " pairs but " +
-                                 std::to_string(pairs.size()) + " were read back");
+        throw DeviceFault("the board found " + std::to_string(found) + " pairs but " + std::to_string(pairs.size()) +
+                          " were read back");
     }
     phases.upload_ns = spent_[kUpload];
     phases.start_ns = spent_[kStart];
@@ -223,6 +324,7 @@ FramePhases BoardDriver::run_frame(const std::vector<FloatBox>& boxes, PairList&
     phases.readback_ns = spent_[kReadback];
     phases.driver_ns = spent_[kDriver];
     phases.total_ns = (sc_time_stamp() - frame_start).to_seconds() * 1e9;
+    phases.timeouts_recovered = timeouts_recovered_;
     return phases;
 }
 

@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -11,10 +13,25 @@
 #include <tlm>
 
 #include "models/common/aabb.h"
+#include "models/pci/bus_timing.h"
 
 namespace cdvp {
 
 class HostMemory;
+
+// The simulated system faulted (a DMA or bus fault, a board error status, a
+// driver timeout): the input was fine. The frame produced no pairs.
+class DeviceFault : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// A frame would run the simulated clock past what SystemC can represent
+// (2^64 fs, about 5.1 hours): refused before the board starts.
+class SimulatedTimeLimit : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
 
 struct DriverConfig {
     bool use_dma = true;          // false: boxes and pairs by programmed I/O
@@ -26,6 +43,13 @@ struct DriverConfig {
     double ns_per_box = 0.0;
     double ns_per_pair = 0.0;
     double call_ns = 0.0;
+    // Simulated-time timeouts: a wait for the DMA engine or the board gives
+    // up after timeout_factor x its worst-case time plus timeout_floor_ns
+    // (worst case: the bus's DMA time, or every sweep cycle plus a full pair
+    // buffer's drain, plus an interrupt). On timeout the driver polls the
+    // status once (a lost interrupt recovers) and otherwise fails the frame.
+    double timeout_factor = 2.0;
+    double timeout_floor_ns = 100000.0;
 };
 
 // Where a frame's simulated time went; the phases add up to total_ns.
@@ -40,6 +64,7 @@ struct FramePhases {
     uint64_t compute_cycles = 0;
     uint64_t stall_cycles = 0;
     uint32_t overflow_pauses = 0;
+    uint32_t timeouts_recovered = 0;  // waits whose interrupt never came, finished by polling STATUS
 };
 
 class BoardDriver {
@@ -48,8 +73,9 @@ public:
     using Transport = std::function<void(tlm::tlm_generic_payload&, sc_core::sc_time&)>;
 
     // interrupt: notified when the interrupt handler runs; period: the board's clock period.
+    // bus: the timing the timeouts are derived from.
     BoardDriver(Transport pio, HostMemory& memory, const sc_core::sc_event& interrupt, const sc_core::sc_time& period,
-                const DriverConfig& config);
+                const DriverConfig& config, std::shared_ptr<const BusTiming> bus);
 
     // Host RAM the driver needs for a board of this capacity and pair buffer.
     static uint64_t host_memory_bytes(uint32_t capacity, uint32_t buffer_depth);
@@ -59,7 +85,9 @@ public:
     uint32_t capacity() const { return capacity_; }
 
     // One frame: every overlapping pair into pairs (board order), or an
-    // exception; never a partial set. Call from a SystemC thread.
+    // exception (DeviceFault when the simulated system faulted) and no pairs;
+    // after a fault the driver aborts the DMA engine and the board, so the
+    // next frame starts clean. Call from a SystemC thread.
     FramePhases run_frame(const std::vector<FloatBox>& boxes, PairList& pairs);
 
 private:
@@ -71,12 +99,23 @@ private:
     uint32_t read(uint64_t address);
     void write(uint64_t address, uint32_t value);
     void pio(tlm::tlm_command command, uint64_t address, void* data, unsigned int length);
-    void run_dma(uint32_t control);
+    FramePhases frame(const std::vector<FloatBox>& boxes, PairList& pairs);
+    // Stops the DMA engine and the board and clears their status (best effort).
+    void recover();
+    // How long a wait whose worst case is expected_ns may take; refuses a
+    // deadline past the simulator's clock.
+    sc_core::sc_time timeout_for(double expected_ns) const;
+    // Waits for the interrupt or a poll to find any of bits in the register's
+    // value, until the timeout; returns the value. what names the wait.
+    uint32_t wait_for(uint64_t status_address, uint32_t bits, const sc_core::sc_time& timeout, const char* what);
+    void run_dma(uint32_t control, double expected_ns);
     void dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host);
+    [[noreturn]] void dma_fault();
     uint64_t read_counter(uint32_t low_offset);
     void upload(const std::vector<FloatBox>& boxes);
-    // Waits for the board after START or RESUME; returns its status.
-    uint32_t wait_for_board();
+    // Waits for the board after START or RESUME; returns its status (an
+    // error status fails the frame).
+    uint32_t wait_for_board(uint32_t objects);
     void read_pairs(PairList& pairs);
 
     Transport pio_;
@@ -86,9 +125,13 @@ private:
     DriverConfig config_;
     uint32_t capacity_ = 0;
     uint32_t buffer_depth_ = 0;
+    uint32_t parallelism_ = 1;
     uint64_t cycles_seen_ = 0;
     double spent_[kPhases] = {};
     sc_core::sc_time mark_;
+    sc_core::sc_time noticed_;  // when the last wait_for noticed its event
+    std::shared_ptr<const BusTiming> bus_;
+    uint32_t timeouts_recovered_ = 0;
 };
 
 }  // namespace cdvp

@@ -158,12 +158,15 @@ TEST(BoardCore, RegistersAndRefusedCommands) {
     ASSERT_TRUE(core.read_register(ControlRegisters::kParallelism, value));
     EXPECT_EQ(value, 2u);
     EXPECT_FALSE(core.read_register(0x3FC, value)) << "unmapped";
-    EXPECT_FALSE(core.write_register(0x3FC, 1));
-    EXPECT_FALSE(core.write_coordinate(kMinX, 10, 0)) << "past capacity";
+    using Write = BoardCore::Write;
+    EXPECT_EQ(core.write_register(0x3FC, 1), Write::kUnmapped);
+    EXPECT_EQ(core.write_coordinate(kMinX, 10, 0), Write::kUnmapped) << "past capacity";
 
     core.write_register(ControlRegisters::kObjectCount, 11);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
     EXPECT_TRUE(core.registers().error) << "more objects than the memories hold";
+    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kTooManyObjects);
+    EXPECT_TRUE(core.registers().interrupt()) << "an error interrupts like done";
     EXPECT_FALSE(core.running());
 
     core.write_register(ControlRegisters::kObjectCount, 10);
@@ -172,9 +175,14 @@ TEST(BoardCore, RegistersAndRefusedCommands) {
     EXPECT_TRUE(core.running());
     ASSERT_TRUE(core.read_register(ControlRegisters::kStatus, value));
     EXPECT_EQ(value, uint32_t{ControlRegisters::kBusy});
-    EXPECT_FALSE(core.write_coordinate(kMinX, 0, 0)) << "memories are locked while busy";
+    EXPECT_EQ(core.write_coordinate(kMinX, 0, 0), Write::kRefused) << "memories are locked while busy";
+    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kWriteWhileBusy);
+    EXPECT_EQ(core.write_register(ControlRegisters::kObjectCount, 3), Write::kRefused) << "the sweep's count is fixed";
+    ASSERT_TRUE(core.read_register(ControlRegisters::kObjectCount, value));
+    EXPECT_EQ(value, 10u) << "read-back equals the count the sweep uses";
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
     EXPECT_TRUE(core.registers().error) << "start while busy";
+    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kStartWhileBusy);
     while (core.running()) core.step();
     EXPECT_EQ(core.phase(), BoardCore::Phase::Done);
     EXPECT_TRUE(core.registers().interrupt());
@@ -185,6 +193,24 @@ TEST(BoardCore, RegistersAndRefusedCommands) {
     EXPECT_EQ(value, AddressGenerator::sweep_cycles(10, 2) + config.pipeline_latency() + core.registers().stalls);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
     EXPECT_TRUE(core.registers().error) << "resume without a pause";
+    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kResumeNotPaused);
+}
+
+TEST(BoardCore, AbortStopsASweepAndClearsEveryStatusBit) {
+    BoardConfig config;
+    config.m = 1;
+    BoardCore core(config, 50);
+    core.write_register(ControlRegisters::kObjectCount, 50);
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
+    core.step();
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
+    ASSERT_TRUE(core.registers().error);
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
+    EXPECT_EQ(core.phase(), BoardCore::Phase::Idle);
+    EXPECT_EQ(core.registers().status(), 0u);
+    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kNoError);
+    EXPECT_FALSE(core.registers().interrupt());
+    EXPECT_EQ(core.write_register(ControlRegisters::kObjectCount, 4), BoardCore::Write::kDone) << "idle again";
 }
 
 TEST(BoardConfig, RejectsAbsurdSettings) {

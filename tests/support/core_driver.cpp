@@ -16,7 +16,7 @@ CoreRun run_core(BoardCore& core, const std::vector<FloatBox>& boxes) {
     for (uint32_t i = 0; i < n; ++i) {
         for (uint32_t c = 0; c < kCoordinates; ++c) {
             const float v = c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3];
-            if (!core.write_coordinate(static_cast<Coordinate>(c), i, ComparisonUnit::as_bits(v))) {
+            if (core.write_coordinate(static_cast<Coordinate>(c), i, ComparisonUnit::as_bits(v)) != BoardCore::Write::kDone) {
                 throw std::runtime_error("coordinate write refused");
             }
         }

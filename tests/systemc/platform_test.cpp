@@ -18,7 +18,7 @@ namespace {
 
 PlatformConfig paper_platform(bool dma = true, bool interrupts = true) {
     const BoardPreset preset = load_board_preset("adm-xrc-ii");
-    PlatformConfig config{preset.board, preset.bus, preset.driver};
+    PlatformConfig config{preset.board, preset.bus, preset.driver, {}};
     config.driver.use_dma = dma;
     config.driver.use_interrupts = interrupts;
     return config;
@@ -99,7 +99,7 @@ TEST(Platform, OverflowIsDrainedAndResumedByTheDriver) {
 
 TEST(Platform, PcieWhatIfUploadsFasterThanPci) {
     const BoardPreset pcie = load_board_preset("pcie-gen3-x8");
-    VirtualBoard fast("fast", PlatformConfig{pcie.board, pcie.bus, pcie.driver}, 2000);
+    VirtualBoard fast("fast", PlatformConfig{pcie.board, pcie.bus, pcie.driver, {}}, 2000);
     VirtualBoard paper("paper", paper_platform(), 2000);
     const auto boxes = scene(2000, 4);
     const FramePhases on_pci = paper.run_frame(boxes).phases;
