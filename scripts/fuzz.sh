@@ -27,6 +27,11 @@ command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 
 run() { echo "+ $*"; "$@"; }
 
+# As in scripts/sanitize.sh: SystemC's coroutine switches leave ASan no fake
+# stacks to keep, and its memory pool would hide allocations from ASan.
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_stack_use_after_return=0}"
+export SYSTEMC_MEMPOOL_DONT_USE=1
+
 start=$SECONDS
 run cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_COMPILER=$cxx" -DCDVP_FUZZ=ON "${launcher[@]}"
 run cmake --build "$build_dir" -j "$(nproc)" --target fuzzers
