@@ -63,7 +63,8 @@ fuzz_one() {
   local dirs=("$corpus")
   [ -d "$seeds" ] && dirs+=("$seeds")
   echo "+ $binary ${args[*]} ${dirs[*]} > $log"
-  local status=0
+  local status=0 started
+  started=$(date +%s.%N)
   "$binary" "${args[@]}" "${dirs[@]}" > "$log" 2>&1 || status=$?
   local runs
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
@@ -71,11 +72,8 @@ fuzz_one() {
     echo "fuzz: $name: PASS: ${runs:-?} executions in ${seconds} s, corpus $(find "$corpus" -type f | wc -l) inputs"
   else
     echo "fuzz: $name: FAIL (exit $status) after ${runs:-?} executions; the end of $log:"
-    grep -E "ERROR|SUMMARY|invariant|runtime error|#[0-9]+ 0x" "$log" | head -40 | sed 's/^/    /'
-    local artifact
-    for artifact in "$artifacts"*; do
-      [ -f "$artifact" ] && echo "    reproduce: $binary $artifact"
-    done
+    grep -E "ERROR|SUMMARY|invariant|runtime error|#[0-9]+ 0x" "$log" | head -40 | sed 's/^/    /' || true
+    find "$artifacts" -type f -newermt "@$started" -printf "    reproduce: $binary %p\n"
   fi
   return "$status"
 }
