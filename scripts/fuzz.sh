@@ -72,7 +72,7 @@ fuzz_one() {
     echo "fuzz: $name: PASS: ${runs:-?} executions in ${seconds} s, corpus $(find "$corpus" -type f | wc -l) inputs"
   else
     echo "fuzz: $name: FAIL (exit $status) after ${runs:-?} executions; the end of $log:"
-    grep -E "ERROR|SUMMARY|invariant|runtime error|#[0-9]+ 0x" "$log" | head -40 | sed 's/^/    /' || true
+    grep -E "ERROR|SUMMARY|invariant|runtime error|terminate called|what\(\)|#[0-9]+ 0x" "$log" | head -40 | sed 's/^/    /' || true
     find "$artifacts" -type f -newermt "@$started" -printf "    reproduce: $binary %p\n"
   fi
   return "$status"
