@@ -4,7 +4,7 @@
 # fails its test (UBSan is built non-recovering). See docs/testing.md for the
 # SystemC coroutine settings below.
 #
-#   scripts/sanitize.sh [ctest arguments...]     e.g. -R scene_tests
+#   scripts/sanitize.sh [ctest arguments...]     e.g. -R TraceCsv
 # Environment: SANITIZERS (default address,undefined), BUILD_DIR (build-asan),
 # JOBS (nproc).
 set -euo pipefail
