@@ -12,6 +12,10 @@ packages=(
   libbenchmark-dev               # benchmarks
   libbullet-dev                  # software broad-phase baselines (Bullet 3.24, float)
   gtkwave                        # vcd2fst, used to check waveforms
+  clang-14 libclang-rt-14-dev    # fuzz build: libFuzzer and the clang sanitizer runtimes live in libclang-rt-14-dev
+  libcgal-dev                    # independent oracle for the pair tests (box_self_intersection_d)
+  gnuplot-nox                    # plots of measured results
+  parallel                       # GNU parallel for sweeps
 )
 
 missing=()
