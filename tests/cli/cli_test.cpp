@@ -205,16 +205,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"FramesOutOfOrder", HEADER "1,1,0,0,0,1,1,1\n" BOX, "", "bad.csv:3: frame 0 after frame 1"},
         BadInput{"NegativeId", HEADER "0,-1,0,0,0,1,1,1\n", "", "bad.csv:2: field 'id': expected a non-negative"},
         BadInput{"MissingTrace", nullptr, "--trace nowhere.csv", "nowhere.csv: cannot open"},
-        BadInput{"ZeroM", nullptr, "--m 0", "--m: expected 1 to 32"},
-        BadInput{"AbsurdM", nullptr, "--m 100000", "--m: expected 1 to 32"},
-        BadInput{"NonNumericM", nullptr, "--m eight", "'--m' is invalid"},
+        BadInput{"ZeroM", nullptr, "--m 0", "--m: expected an integer from 1 to 32, got"},
+        BadInput{"AbsurdM", nullptr, "--m 100000", "--m: expected an integer from 1 to 32, got"},
+        BadInput{"NonNumericM", nullptr, "--m eight", "--m: expected an integer from 1 to 32, got 'eight'"},
         BadInput{"SmallFifo", nullptr, "--m 8 --fifo-depth 4", "--fifo-depth: expected 2m-1 = 15"},
         BadInput{"UnknownBoard", nullptr, "--board nope", "--board: unknown board 'nope'; expected one of: adm-xrc-ii"},
         BadInput{"UnknownBaseline", nullptr, "--baseline sap,fast", "--baseline: unknown baseline 'fast'"},
         BadInput{"BadTransfer", nullptr, "--transfer usb", "--transfer: expected dma or pio"},
         BadInput{"BadWait", nullptr, "--wait sleep", "--wait: expected irq or poll"},
         BadInput{"TooManyBlockRams", nullptr, "--board adm-xrc-ii --m 30", "(largest m that fits: 24)"},
-        BadInput{"UnwritableOutput", nullptr, "--report no/such/dir/r.json", "no/such/dir/r.json: cannot write"}),
+        BadInput{"UnwritableOutput", nullptr, "--report no/such/dir/r.json", "--report: no/such/dir/r.json: cannot write: directory 'no/such/dir' does not exist"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
 #undef BOX
 #undef HEADER

@@ -70,7 +70,7 @@ TEST(OutputFile, MissingDirectoryThrows) {
         OutputFile file(final_path);
         FAIL() << "no exception";
     } catch (const InputError& e) {
-        EXPECT_EQ(final_path + ": cannot write: No such file or directory",
+        EXPECT_EQ(final_path + ": cannot write: directory '" + dir.file("no/such/dir") + "' does not exist",
                   std::string(e.what()));
     }
 }
