@@ -127,10 +127,21 @@ std::vector<std::string> board_preset_names() {
     return names;
 }
 
+namespace {
+
+bool names_a_path(const std::string& name) {
+    return name.find('/') != std::string::npos || (name.size() > 5 && name.rfind(".json") == name.size() - 5);
+}
+
+}  // namespace
+
+std::string board_preset_path(const std::string& name) {
+    return names_a_path(name) ? name : boards_directory() + "/" + name + ".json";
+}
+
 BoardPreset load_board_preset(const std::string& name) {
-    const bool is_path =
-        name.find('/') != std::string::npos || (name.size() > 5 && name.rfind(".json") == name.size() - 5);
-    const std::string path = is_path ? name : boards_directory() + "/" + name + ".json";
+    const bool is_path = names_a_path(name);
+    const std::string path = board_preset_path(name);
     std::ifstream in(path);
     if (!in) {
         std::string known;
