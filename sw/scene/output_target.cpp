@@ -56,14 +56,14 @@ OutputTarget resolve_output_target(const std::string& given) {
         if (hops > kMaxLinkHops) refuse(given, std::strerror(ELOOP));
         OutputTarget target;
         if (lstat(path.c_str(), &target.status) != 0) {
-            if (errno != ENOENT) refuse(given, std::strerror(errno));
+            if (errno != ENOENT && errno != ENOTDIR) refuse(given, std::strerror(errno));
             // Nothing there: the file is created in its (existing) directory.
             const std::string parent = parent_of(path);
             const std::string name = fs::path(path).filename().string();
             struct stat parent_status {};
             if (stat(parent.c_str(), &parent_status) != 0) {
-                refuse(given, "directory '" + parent + "' " +
-                                  (errno == ENOENT ? std::string("does not exist") : std::strerror(errno)));
+                refuse(given, "directory '" + parent + "'" +
+                                  (errno == ENOENT ? std::string(" does not exist") : ": " + std::string(std::strerror(errno))));
             }
             if (!S_ISDIR(parent_status.st_mode)) refuse(given, "'" + parent + "' is not a directory");
             if (name == "." || name == "..") refuse(given, "names a directory, expected a file");
