@@ -45,6 +45,7 @@ public:
     bool is_composing() const override { return false; }
     bool is_required() const override { return false; }
     void parse(boost::any& store, const std::vector<std::string>& tokens, bool /*utf8*/) const override {
+        boost::program_options::validators::check_first_occurrence(store);  // "--m 2 --m 3" is refused
         const std::string& text = tokens.empty() ? std::string() : tokens.front();
         try {
             if constexpr (std::is_floating_point_v<T>) {

@@ -86,16 +86,20 @@ void validate_board(const BoardConfig& config, const po::variables_map& vm, cons
     }
 }
 
-std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm) {
+void check_source_options(const RunOptions& o, const po::variables_map& vm) {
     if (vm.count("trace") == vm.count("scene")) throw InputError("give exactly one of --trace FILE or --scene spheres");
     if (vm.count("trace")) {
         if (o.trace.empty()) throw InputError("--trace: expected a file path, got ''");
         for (const char* flag : {"objects", "frames", "seed"}) {
             if (!vm[flag].defaulted()) throw InputError(std::string("--") + flag + " goes with --scene, not --trace");
         }
-        return trace_source(o.trace);
+    } else if (o.scene != "spheres") {
+        throw InputError("--scene: expected 'spheres', got '" + o.scene + "'");
     }
-    if (o.scene != "spheres") throw InputError("--scene: expected 'spheres', got '" + o.scene + "'");
+}
+
+std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm) {
+    if (vm.count("trace")) return trace_source(o.trace);
     BouncingSpheresConfig spheres = o.spheres;
     spheres.objects = static_cast<std::size_t>(o.objects);
     return spheres_source(spheres, static_cast<std::size_t>(o.frames));
@@ -134,7 +138,7 @@ struct Setup {
 // whose generous estimate exceeds half of that is refused up front instead
 // of overflowing the kernel's clock mid-run.
 void check_simulated_time(const RunOptions& o, const po::variables_map& vm, const BoardConfig& board,
-                          std::size_t max_objects, std::size_t frame_count) {
+                          uint64_t max_objects, uint64_t frame_count) {
     constexpr double kBudgetSeconds = 9223.0;   // 2^63 fs
     constexpr double kPerBoxSeconds = 10e-6;    // PIO of a box on the slowest bus, with margin
     constexpr double kPerFrameSeconds = 1e-3;   // driver calls, interrupts, status reads, with margin
@@ -152,8 +156,7 @@ void check_simulated_time(const RunOptions& o, const po::variables_map& vm, cons
     throw InputError(message.str());
 }
 
-Setup make_setup(const RunOptions& o, const po::variables_map& vm, const FrameSource& source) {
-    const std::size_t max_objects = source.max_objects();
+Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     Setup setup;
     setup.platform.board = o.board;
     std::string preset_path;
@@ -176,17 +179,6 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm, const FrameSo
         preset_path = preset.path;
     }
     validate_board(setup.platform.board, vm, preset_path);
-    check_simulated_time(o, vm, setup.platform.board, max_objects, source.frame_count());
-    const uint64_t needed = uint64_t{kCoordinates} * setup.platform.board.m *
-                            CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
-    if (setup.block_rams != 0 && needed > setup.block_rams) {
-        const uint64_t per_m = uint64_t{kCoordinates} * std::max<uint32_t>(1, CascadedBlockRam::primitives_for(
-                                                                                   static_cast<uint32_t>(max_objects)));
-        throw InputError("--m: m=" + std::to_string(setup.platform.board.m) + " needs " + std::to_string(needed) +
-                         " block RAMs for " + std::to_string(max_objects) + " objects; " + setup.board + " has " +
-                         std::to_string(setup.block_rams) + " (largest m that fits: " +
-                         std::to_string(setup.block_rams / per_m) + ")");
-    }
     if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, found '" + o.transfer + "'");
     if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, found '" + o.wait + "'");
     setup.platform.driver.use_dma = o.transfer == "dma";
@@ -202,6 +194,23 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm, const FrameSo
     }
     return setup;
 }
+
+// The scene must fit the board's block RAMs and SystemC's time.
+void check_scene_fits(const RunOptions& o, const po::variables_map& vm, const Setup& setup, uint64_t max_objects,
+                      uint64_t frame_count) {
+    check_simulated_time(o, vm, setup.platform.board, max_objects, frame_count);
+    const uint64_t needed = uint64_t{kCoordinates} * setup.platform.board.m *
+                            CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
+    if (setup.block_rams != 0 && needed > setup.block_rams) {
+        const uint64_t per_m = uint64_t{kCoordinates} * std::max<uint32_t>(1, CascadedBlockRam::primitives_for(
+                                                                                   static_cast<uint32_t>(max_objects)));
+        throw InputError("--m: m=" + std::to_string(setup.platform.board.m) + " needs " + std::to_string(needed) +
+                         " block RAMs for " + std::to_string(max_objects) + " objects; " + setup.board + " has " +
+                         std::to_string(setup.block_rams) + " (largest m that fits: " +
+                         std::to_string(setup.block_rams / per_m) + ")");
+    }
+}
+
 
 
 // Times each baseline natively on the frame and checks it finds the board's pairs.
@@ -277,8 +286,13 @@ int run_command(int argc, char** argv) {
         // input or another output, is refused before any work.
         Outputs out;
         open_outputs(o, vm, out);
+        check_source_options(o, vm);
+        Setup setup = make_setup(o, vm);
+        // A generated scene is checked before it is generated (millions of
+        // spheres take a while to place), a trace once it is read.
+        if (vm.count("scene")) check_scene_fits(o, vm, setup, o.objects, o.frames);
         std::unique_ptr<FrameSource> source = open_source(o, vm);
-        Setup setup = make_setup(o, vm, *source);
+        check_scene_fits(o, vm, setup, source->max_objects(), source->frame_count());
         return simulate(o, *source, setup, out);
     } catch (const po::error& e) {
         std::cerr << "cdvp run: " << e.what() << " (see cdvp run --help)\n";

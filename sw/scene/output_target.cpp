@@ -125,7 +125,8 @@ FileIdentity identity_of_input(const std::string& path) {
     id.device = status.st_dev;
     id.inode = status.st_ino;
     id.path = real_path(path);
-    if (id.path.empty()) id.path = fs::absolute(path).lexically_normal().string();
+    std::error_code error;
+    if (id.path.empty()) id.path = fs::absolute(path, error).lexically_normal().string();
     return id;
 }
 
