@@ -272,6 +272,24 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
 
 }  // namespace
 
+std::string printable(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (byte < 0x20 || byte == 0x7f) {
+            static const char kHex[] = "0123456789abcdef";
+            out += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
 int run_command(int argc, char** argv) {
     for (int k = 1; k < argc; ++k) {
         if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
@@ -295,13 +313,13 @@ int run_command(int argc, char** argv) {
         check_scene_fits(o, vm, setup, source->max_objects(), source->frame_count());
         return simulate(o, *source, setup, out);
     } catch (const po::error& e) {
-        std::cerr << "cdvp run: " << e.what() << " (see cdvp run --help)\n";
+        std::cerr << "cdvp run: " << printable(e.what()) << " (see cdvp run --help)\n";
         return 2;
     } catch (const InputError& e) {
-        std::cerr << "cdvp run: " << e.what() << '\n';
+        std::cerr << "cdvp run: " << printable(e.what()) << '\n';
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "cdvp run: simulation failed: " << e.what() << '\n';
+        std::cerr << "cdvp run: simulation failed: " << printable(e.what()) << '\n';
         return 1;
     }
 }

@@ -96,6 +96,11 @@ TEST_F(CliOutputs, DevicesAreWrittenNotReplaced) {
     EXPECT_EQ(std::vector<std::string>{"in.csv"}, files());
 }
 
+TEST_F(CliOutputs, AWriteErrorAtCommitLeavesNoOtherOutput) {
+    // /dev/full fails every write (ENOSPC), as a full disk would.
+    expect_refused("--pairs-out p.csv --report /dev/full", "--report: /dev/full: cannot write: No space left on device");
+}
+
 TEST_F(CliOutputs, ReplacedOutputKeepsItsMode) {
     write("p.csv", "old\n");
     fs::permissions(dir_ / "p.csv", fs::perms(0640));

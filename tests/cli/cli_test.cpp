@@ -79,8 +79,29 @@ TEST_F(Cli, HelpListsEveryOption) {
                              "--report", "--vcd", "--quiet"}) {
         EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
     }
-    EXPECT_EQ(run("").status, 2);
-    EXPECT_EQ(run("frobnicate").status, 2);
+    EXPECT_NE(help.out.find("no abbreviations"), std::string::npos) << "the prefix rule is documented";
+}
+
+TEST_F(Cli, TopLevelCommandLine) {
+    const Result none = run("");
+    EXPECT_EQ(none.status, 2);
+    EXPECT_EQ(none.out, "");
+    EXPECT_EQ(none.err.rfind("Usage: cdvp <command>", 0), 0u) << "usage goes to stderr on error";
+    const Result version = run("--version");
+    EXPECT_EQ(version.status, 0);
+    EXPECT_EQ(version.out, "cdvp 0.1.0\n");
+    for (const char* bad : {"frobnicate", "--frobnicate", "-x", "ru"}) {
+        const Result r = run(bad);
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_EQ(r.err, std::string("cdvp: unknown command '") + bad + "'; expected one of: run (see cdvp --help)\n");
+    }
+    EXPECT_EQ(run("run").err, "cdvp run: give exactly one of --trace FILE or --scene spheres\n");
+}
+
+TEST_F(Cli, ControlCharactersInArgumentsKeepErrorsOnOneLine) {
+    const Result r = run("run --scene \"$(printf 'two\\nlines\\033[31m')\"");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "cdvp run: --scene: expected 'spheres', got 'two\\nlines\\x1b[31m'\n");
 }
 
 TEST_F(Cli, BoardRunTimesBaselinesAndReportsConsistentPhases) {
