@@ -113,7 +113,7 @@ public:
         const std::string name = qualified(section, spec.key);
         const json* field = find(section, spec.key);
         const char* kForm = ": expected {\"value\": <number>, \"source\": \"<source or assumption>\"}";
-        if (field == nullptr) fail(name + ": missing" + std::string(kForm).substr(1));
+        if (field == nullptr) fail(name + ": missing;" + std::string(kForm).substr(1));
         if (!field->is_object()) fail(name + kForm);
         for (const auto& [key, value] : field->items()) {
             if (key != "value" && key != "source") fail(name + kForm + ", found '" + key + "'");
