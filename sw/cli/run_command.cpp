@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <chrono>
-#include <map>
-#include <iomanip>
-#include <sstream>
 #include <cstring>
+#include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -23,9 +23,9 @@
 #include "platform/virtual_board.h"
 #include "sw/baselines/broad_phase.h"
 #include "sw/cli/frame_source.h"
+#include "sw/cli/run_options.h"
 #include "sw/cli/run_report.h"
 #include "sw/scene/conversion.h"
-#include "sw/cli/run_options.h"
 #include "sw/scene/output_set.h"
 #include "sw/scene/pairs_csv.h"
 
@@ -77,7 +77,9 @@ void validate_board(const BoardConfig& config, const po::variables_map& vm, cons
             const std::string prefix = std::string(setting) + ":";
             if (message.rfind(prefix, 0) != 0) continue;
             const std::string rest = message.substr(prefix.size() - 1);
-            const bool from_flag = preset_path.empty() || vm.count(flag) == 0 || !vm[flag].defaulted();
+            // m is never a preset's: the board's parallelism is the user's choice.
+            const bool from_flag =
+                preset_path.empty() || std::strcmp(setting, "m") == 0 || vm.count(flag) == 0 || !vm[flag].defaulted();
             message = from_flag ? std::string("--") + flag + rest
                                 : preset_path + ": board." + setting + rest + " (with --m " + std::to_string(config.m) + ")";
             break;
@@ -179,8 +181,8 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
         preset_path = preset.path;
     }
     validate_board(setup.platform.board, vm, preset_path);
-    if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, found '" + o.transfer + "'");
-    if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, found '" + o.wait + "'");
+    if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, got '" + o.transfer + "'");
+    if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, got '" + o.wait + "'");
     setup.platform.driver.use_dma = o.transfer == "dma";
     setup.platform.driver.use_interrupts = o.wait == "irq";
     if (vm.count("host-factor")) setup.host_factor = o.host_factor;
@@ -210,8 +212,6 @@ void check_scene_fits(const RunOptions& o, const po::variables_map& vm, const Se
                          std::to_string(setup.block_rams / per_m) + ")");
     }
 }
-
-
 
 // Times each baseline natively on the frame and checks it finds the board's pairs.
 std::map<std::string, BaselineTime> run_baselines(Setup& setup, const std::vector<FloatBox>& boxes,
