@@ -197,9 +197,28 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     return setup;
 }
 
-// The scene must fit the board's block RAMs and SystemC's time.
+// The model keeps every block RAM word: six coordinate memories of m
+// copies each (2m ports from dual-port RAMs). A fixed bound keeps a large
+// --objects and --m from exhausting this machine's memory instead of
+// failing clearly, whatever the machine.
+void check_model_memory(const BoardConfig& board, uint64_t max_objects) {
+    constexpr uint64_t kMaxModelBytes = uint64_t{2} << 30;
+    const uint64_t words = uint64_t{BlockRam::kWords} * CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
+    const uint64_t bytes = uint64_t{kCoordinates} * board.m * words * sizeof(uint32_t);
+    if (bytes <= kMaxModelBytes) return;
+    std::ostringstream message;
+    message << "--objects/--m: the board model for " << max_objects << " objects at m=" << board.m << " needs "
+            << std::fixed << std::setprecision(1) << static_cast<double>(bytes) / (1 << 30)
+            << " GiB of block RAM words (6 coordinate memories x m copies); at most 2 GiB: use fewer objects or a "
+               "smaller m";
+    throw InputError(message.str());
+}
+
+// The scene must fit the board's block RAMs, this machine's memory and
+// SystemC's time.
 void check_scene_fits(const RunOptions& o, const po::variables_map& vm, const Setup& setup, uint64_t max_objects,
                       uint64_t frame_count) {
+    check_model_memory(setup.platform.board, max_objects);
     check_simulated_time(o, vm, setup.platform.board, max_objects, frame_count);
     const uint64_t needed = uint64_t{kCoordinates} * setup.platform.board.m *
                             CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
