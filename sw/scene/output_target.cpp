@@ -50,6 +50,7 @@ void require_writable_directory(const std::string& given, const std::string& dir
 
 OutputTarget resolve_output_target(const std::string& given) {
     if (given.empty()) refuse(given, "empty path");
+    if (given == "-") return resolve_output_target("/dev/stdout");  // the usual spelling of standard output
     if (given.back() == '/') refuse(given, "names a directory, expected a file");
     std::string path = given;
     for (int hops = 0;; ++hops) {

@@ -22,7 +22,7 @@ struct OutputTarget {
     struct stat status {};  // of 'path' when it exists (kRegular, kDirect)
 };
 
-// Resolves 'given' and checks it can be written: not a directory, in an
+// Resolves 'given' ("-" is standard output) and checks it can be written: not a directory, in an
 // existing writable directory, no symbolic-link loop. Throws InputError
 // "GIVEN: cannot write: REASON".
 OutputTarget resolve_output_target(const std::string& given);

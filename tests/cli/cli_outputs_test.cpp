@@ -94,6 +94,10 @@ TEST_F(CliOutputs, DevicesAreWrittenNotReplaced) {
     ASSERT_EQ(0, stat("/dev/null", &st));
     EXPECT_TRUE(S_ISCHR(st.st_mode));
     EXPECT_EQ(std::vector<std::string>{"in.csv"}, files());
+    const Result dash = run("run --trace in.csv --m 2 -q --pairs-out -");
+    ASSERT_EQ(0, dash.status) << dash.err;
+    EXPECT_EQ(slurp(trace("small.expected.csv")), dash.out) << "'-' is standard output";
+    EXPECT_EQ(std::vector<std::string>{"in.csv"}, files());
 }
 
 TEST_F(CliOutputs, AWriteErrorAtCommitLeavesNoOtherOutput) {
