@@ -173,7 +173,8 @@ std::string OutputFile::publish() {
         throw std::logic_error("OutputFile::publish: " + final_path_ + " is not finished");
     }
     if (target_.kind == OutputTarget::Kind::kDirect) {
-        const int out = open(target_.path.c_str(), O_WRONLY | O_APPEND | O_NOCTTY | O_CLOEXEC);
+        const int out = target_.descriptor >= 0 ? fcntl(target_.descriptor, F_DUPFD_CLOEXEC, 0)
+                                                : open(target_.path.c_str(), O_WRONLY | O_APPEND | O_NOCTTY | O_CLOEXEC);
         if (out < 0) fail(errno);
         int err = copy_into(temp_path_, out);
         if (close(out) != 0 && err == 0) err = errno;

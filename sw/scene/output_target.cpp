@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <regex>
@@ -81,6 +82,9 @@ OutputTarget resolve_output_target(const std::string& given) {
             if (is_descriptor_directory(real_parent)) {
                 target.kind = OutputTarget::Kind::kDirect;
                 target.path = path;
+                if (real_parent == "/proc/" + std::to_string(getpid()) + "/fd") {
+                    target.descriptor = std::atoi(fs::path(path).filename().c_str());
+                }
                 if (stat(path.c_str(), &target.status) != 0) refuse(given, std::strerror(errno));
                 if (access(path.c_str(), W_OK) != 0) refuse(given, std::strerror(errno));
                 return target;

@@ -20,6 +20,11 @@ struct OutputTarget {
     // '..'. For kDirect, the path to open (a /proc/self/fd link is kept).
     std::string path;
     struct stat status {};  // of 'path' when it exists (kRegular, kDirect)
+    // For /dev/stdout, /dev/fd/N and /proc/self/fd/N: this process's
+    // descriptor N, written through a duplicate so that it shares the
+    // descriptor's file offset with everything else the process writes there
+    // (reopening the path would start a second offset at 0). -1 otherwise.
+    int descriptor = -1;
 };
 
 // Resolves 'given' ("-" is standard output) and checks it can be written: not a directory, in an

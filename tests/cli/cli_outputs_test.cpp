@@ -98,6 +98,11 @@ TEST_F(CliOutputs, DevicesAreWrittenNotReplaced) {
     ASSERT_EQ(0, dash.status) << dash.err;
     EXPECT_EQ(slurp(trace("small.expected.csv")), dash.out) << "'-' is standard output";
     EXPECT_EQ(std::vector<std::string>{"in.csv"}, files());
+    // Without --quiet the summary follows the pairs on the same descriptor.
+    const Result both = run("run --trace in.csv --m 2 --pairs-out /dev/stdout");
+    ASSERT_EQ(0, both.status) << both.err;
+    EXPECT_EQ(0u, both.out.find(slurp(trace("small.expected.csv")))) << both.out;
+    EXPECT_NE(std::string::npos, both.out.find("total: 3 frames, 9 pairs")) << both.out;
 }
 
 TEST_F(CliOutputs, AWriteErrorAtCommitLeavesNoOtherOutput) {
