@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/control_registers/control_registers.h"
+#include "sw/scene/output_text.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {
@@ -86,7 +88,11 @@ std::string nearest(const std::string& key, const std::vector<std::string>& vali
     });
 }
 
+// Whole numbers in full (1048576, not 1.04858e+06); others as %g.
 std::string show(double value) {
+    if (value == static_cast<double>(static_cast<int64_t>(value)) && std::abs(value) < 1e15) {
+        return std::to_string(static_cast<int64_t>(value));
+    }
     std::ostringstream text;
     text << value;
     return text.str();
@@ -348,7 +354,9 @@ std::string board_preset_path(const std::string& name) {
     return names_a_path(name) ? name : boards_directory() + "/" + name + ".json";
 }
 
-BoardPreset load_board_preset(const std::string& name) {
+namespace {
+
+BoardPreset read_board_preset(const std::string& name) {
     const std::string path = board_preset_path(name);
     const PresetReader r(path, parse_preset(path, read_preset_text(path, names_a_path(name), name)));
     r.only("", {"name", "description", "board", "bus", "host"});
@@ -374,6 +382,17 @@ BoardPreset load_board_preset(const std::string& name) {
     p.driver.ns_per_pair = host("ns_per_pair");
     p.driver.call_ns = host("call_ns");
     return p;
+}
+
+}  // namespace
+
+BoardPreset load_board_preset(const std::string& name) {
+    try {
+        return read_board_preset(name);
+    } catch (const InputError& e) {
+        // One line whatever the file holds: keys, strings and paths may hold control characters.
+        throw InputError(printable(e.what()));
+    }
 }
 
 }  // namespace cdvp

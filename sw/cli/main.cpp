@@ -8,6 +8,7 @@
 
 #include "platform/kernel.h"
 #include "sw/cli/run_command.h"
+#include "sw/scene/output_text.h"
 
 namespace {
 

@@ -27,6 +27,7 @@
 #include "sw/cli/run_report.h"
 #include "sw/scene/conversion.h"
 #include "sw/scene/output_set.h"
+#include "sw/scene/output_text.h"
 #include "sw/scene/pairs_csv.h"
 
 namespace po = boost::program_options;
@@ -290,24 +291,6 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
 }
 
 }  // namespace
-
-std::string printable(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (c == '\n') {
-            out += "\\n";
-        } else if (c == '\t') {
-            out += "\\t";
-        } else if (byte < 0x20 || byte == 0x7f) {
-            static const char kHex[] = "0123456789abcdef";
-            out += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
-        } else {
-            out += c;
-        }
-    }
-    return out;
-}
 
 int run_command(int argc, char** argv) {
     for (int k = 1; k < argc; ++k) {

@@ -139,6 +139,21 @@ TEST_F(PresetFile, OnlyASmallRegularFileIsAPreset) {
     EXPECT_EQ(path_ + ": larger than 1048576 bytes; not a board preset", error_for(std::string(2 << 20, ' ')));
 }
 
+TEST_F(PresetFile, ErrorsStayOnOneLineWhateverTheFileHolds) {
+    json changed = preset("adm-xrc-ii");
+    changed["bus"]["type"] = "pci\ncontinued";
+    EXPECT_EQ(path_ + ": bus.type: expected \"pci\" or \"pcie\", got \"pci\\ncontinued\"", error_for(changed.dump()));
+    changed = preset("adm-xrc-ii");
+    changed["host"]["tab\tkey"] = 1;
+    EXPECT_EQ(path_ + ": host.tab\\tkey: unknown key; did you mean 'name'?", error_for(changed.dump()));
+}
+
+TEST_F(PresetFile, RangesReadInFull) {
+    json changed = preset("adm-xrc-ii");
+    changed["board"]["fifo_depth"]["value"] = 4294967296.0;
+    EXPECT_EQ(path_ + ": board.fifo_depth: expected 1 to 1048576 pairs, got 4294967296.0", error_for(changed.dump()));
+}
+
 TEST_F(PresetFile, ModelRulesNameThePresetKey) {
     json changed = preset("adm-xrc-ii");
     changed["bus"]["width_bits"]["value"] = 48;
