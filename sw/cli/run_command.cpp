@@ -285,7 +285,11 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     platform.close_trace();
 
     if (out.report) out.report->stream() << report_json(run).dump(2) << '\n';
-    out.files.commit();
+    // Reported by value, not thrown: see OutputFile::try_finish.
+    if (const std::optional<std::string> error = out.files.try_commit()) {
+        std::cerr << "cdvp run: " << printable(*error) << '\n';
+        return 2;
+    }
     if (!o.quiet) print_summary(std::cout, run);
     return 0;
 }

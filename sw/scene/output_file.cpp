@@ -160,37 +160,57 @@ std::ostream& OutputFile::stream() {
 
 void OutputFile::finish() {
     if (temp_path_.empty()) throw std::logic_error("OutputFile::finish: nothing to finish for " + final_path_);
+    if (const int err = try_finish()) fail(err);
+}
+
+int OutputFile::try_finish() noexcept {
+    if (temp_path_.empty()) return EINVAL;  // nothing to finish: committed, discarded or moved from
     if (stream_) {
         errno = 0;
         stream_->close();  // flushes
-        if (stream_->fail()) fail(errno != 0 ? errno : EIO);
+        const bool failed = stream_->fail();
         stream_.reset();
+        if (failed) return errno != 0 ? errno : EIO;
     }
+    return 0;
 }
 
 std::string OutputFile::publish() {
     if (temp_path_.empty() || stream_) {
         throw std::logic_error("OutputFile::publish: " + final_path_ + " is not finished");
     }
+    std::string backup;
+    if (const int err = try_publish(backup)) fail(err);
+    return backup;
+}
+
+int OutputFile::try_publish(std::string& backup) noexcept {
+    backup.clear();
+    if (temp_path_.empty() || stream_) return EINVAL;  // not finished
     if (target_.kind == OutputTarget::Kind::kDirect) {
         const int out = target_.descriptor >= 0 ? fcntl(target_.descriptor, F_DUPFD_CLOEXEC, 0)
                                                 : open(target_.path.c_str(), O_WRONLY | O_APPEND | O_NOCTTY | O_CLOEXEC);
-        if (out < 0) fail(errno);
+        if (out < 0) return errno;
         int err = copy_into(temp_path_, out);
         if (close(out) != 0 && err == 0) err = errno;
-        if (err != 0) fail(err);
+        if (err != 0) return err;
         discard();
-        return {};
+        return 0;
     }
     struct stat existing {};
-    const std::string backup = lstat(target_.path.c_str(), &existing) == 0 ? link_backup(target_.path) : "";
+    if (lstat(target_.path.c_str(), &existing) == 0) backup = link_backup(target_.path);
     if (std::rename(temp_path_.c_str(), target_.path.c_str()) != 0) {
         const int err = errno;
         if (!backup.empty()) unlink(backup.c_str());
-        fail(err);
+        backup.clear();
+        return err;
     }
     forget_temporary();
-    return backup;
+    return 0;
+}
+
+std::string OutputFile::error_message(int err) const {
+    return final_path_ + ": cannot write: " + std::strerror(err);
 }
 
 void OutputFile::commit() {
@@ -213,6 +233,6 @@ void OutputFile::discard() noexcept {
     }
 }
 
-void OutputFile::fail(int err) const { throw InputError(final_path_ + ": cannot write: " + std::strerror(err)); }
+void OutputFile::fail(int err) const { throw InputError(error_message(err)); }
 
 }  // namespace cdvp

@@ -50,6 +50,15 @@ public:
     // finish() and publish() for a single file, removing the backup.
     void commit();
 
+    // finish() and publish() without exceptions: 0 or the errno, which
+    // error_message() turns into the text the throwing versions give. After
+    // a SystemC run, an exception on the main stack can trip AddressSanitizer
+    // (its stack bounds are stale after the kernel's coroutine switches), so
+    // a run's final commit reports failure by value.
+    int try_finish() noexcept;
+    int try_publish(std::string& backup) noexcept;
+    std::string error_message(int err) const;
+
 private:
     void discard() noexcept;
     void forget_temporary() noexcept;

@@ -67,46 +67,46 @@ void OutputSet::open() {
 }
 
 void OutputSet::commit() {
+    if (std::optional<std::string> error = try_commit()) throw InputError(*error);
+}
+
+std::optional<std::string> OutputSet::try_commit() noexcept {
+    const auto failure = [this](std::size_t k, int err) {
+        return std::optional<std::string>(outputs_[k].label + ": " + files_[k].error_message(err));
+    };
     for (std::size_t k = 0; k < files_.size(); ++k) {
-        try {
-            files_[k].finish();
-        } catch (const InputError& e) {
-            throw InputError(outputs_[k].label + ": " + e.what());
-        }
+        if (const int err = files_[k].try_finish()) return failure(k, err);
     }
     CleanupSignalsBlocked blocked;
     struct Published {
         std::string path, backup;
     };
     std::vector<Published> published;
-    const auto roll_back = [&published] {
-        for (auto it = published.rbegin(); it != published.rend(); ++it) {
-            if (it->backup.empty()) {
-                unlink(it->path.c_str());
-            } else {
-                std::rename(it->backup.c_str(), it->path.c_str());
-            }
-        }
-    };
     // Devices cannot be rolled back, so they go first: a failure there
     // leaves every regular file untouched.
     for (bool direct : {true, false}) {
         for (std::size_t k = 0; k < files_.size(); ++k) {
             OutputFile& file = files_[k];
             if ((file.target().kind == OutputTarget::Kind::kDirect) != direct) continue;
-            try {
-                const std::string path = file.target().path;
-                std::string backup = file.publish();
-                if (!direct) published.push_back({path, std::move(backup)});
-            } catch (const InputError& e) {
-                roll_back();
-                throw InputError(outputs_[k].label + ": " + e.what());
+            const std::string path = file.target().path;
+            std::string backup;
+            if (const int err = file.try_publish(backup)) {
+                for (auto it = published.rbegin(); it != published.rend(); ++it) {
+                    if (it->backup.empty()) {
+                        unlink(it->path.c_str());
+                    } else {
+                        std::rename(it->backup.c_str(), it->path.c_str());
+                    }
+                }
+                return failure(k, err);
             }
+            if (!direct) published.push_back({path, std::move(backup)});
         }
     }
     for (const Published& p : published) {
         if (!p.backup.empty()) unlink(p.backup.c_str());
     }
+    return std::nullopt;
 }
 
 }  // namespace cdvp

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ public:
     // their hard-link backups, new ones removed) before the InputError
     // propagates. Signals are held back meanwhile.
     void commit();
+    // The same without exceptions (see OutputFile::try_finish): the error
+    // message ("LABEL: PATH: cannot write: REASON"), or nothing on success.
+    std::optional<std::string> try_commit() noexcept;
 
 private:
     struct Declared {
