@@ -1,14 +1,23 @@
 #include "platform/board_preset.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "models/control_registers/control_registers.h"
+#include "sw/scene/output_text.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {
@@ -17,60 +26,195 @@ namespace {
 
 using nlohmann::json;
 
-// Reads {"value": number, "source": "..."} fields, naming the file on error.
+// A preset is a small hand-written file; anything bigger is not one.
+constexpr std::size_t kMaxPresetBytes = 1 << 20;
+
+// One numeric key of a section: its unit and the range it must lie in.
+// Ranges are what the modelled hardware can be, with margin, and keep a
+// frame's simulated time far from SystemC's 64-bit femtosecond limit.
+struct NumberSpec {
+    const char* key;
+    const char* unit;
+    double min;
+    double max;
+    bool integer;
+};
+
+constexpr NumberSpec kBoardNumbers[] = {
+    {"clock_mhz", "MHz", 1, 1000, false},
+    {"compare_latency_cycles", "cycles", 0, 64, true},
+    {"fifo_depth", "pairs", 1, 1 << 20, true},
+    {"drain_per_cycle", "pairs a cycle", 1, 64, true},
+    {"pair_buffer_depth", "pairs", 1, address_map::kMaxBufferedPairs, true},
+    {"block_rams", "block RAMs", 1, 100000, true},
+};
+constexpr NumberSpec kHostNumbers[] = {
+    {"speed_factor", "x", 0.001, 1000, false},
+    {"ns_per_box", "ns", 0, 1e6, false},
+    {"ns_per_pair", "ns", 0, 1e6, false},
+    {"call_ns", "ns", 0, 1e6, false},
+};
+constexpr NumberSpec kLocalBusNumbers[] = {
+    {"local_bus_width_bits", "bits", 8, 1024, true},
+    {"local_bus_clock_mhz", "MHz", 1, 1000, false},
+};
+
+template <std::size_t N>
+const NumberSpec& spec_of(const NumberSpec (&table)[N], const char* key) {
+    for (const NumberSpec& spec : table) {
+        if (std::strcmp(spec.key, key) == 0) return spec;
+    }
+    throw std::logic_error(std::string("no preset key ") + key);
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+std::string nearest(const std::string& key, const std::vector<std::string>& valid) {
+    return *std::min_element(valid.begin(), valid.end(), [&](const std::string& x, const std::string& y) {
+        return edit_distance(key, x) < edit_distance(key, y);
+    });
+}
+
+// Whole numbers in full (1048576, not 1.04858e+06); others as %g.
+std::string show(double value) {
+    if (value == static_cast<double>(static_cast<int64_t>(value)) && std::abs(value) < 1e15) {
+        return std::to_string(static_cast<int64_t>(value));
+    }
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+// Reads a preset's sections, each declared with its keys: a key that is
+// not declared is refused with the nearest declared one; every number is
+// a {"value": number, "source": "..."} field within its spec's range.
+// Every error names the file and the key.
 class PresetReader {
 public:
     PresetReader(std::string path, json root) : path_(std::move(path)), root_(std::move(root)) {}
 
-    double number(const char* section, const char* key) const {
-        const json* field = find(section, key);
-        if (field == nullptr || !field->is_object() || !field->contains("value") || !(*field)["value"].is_number() ||
-            !field->contains("source") || !(*field)["source"].is_string() ||
-            (*field)["source"].get<std::string>().empty()) {
-            fail(std::string(section) + "." + key + ": expected {\"value\": <number>, \"source\": \"<source or assumption>\"}");
+    // Refuses keys of 'section' ("" for the top level) outside 'keys'.
+    void only(const std::string& section, const std::vector<std::string>& keys) const {
+        const json& object = section.empty() ? root_ : this->section(section);
+        for (const auto& [key, value] : object.items()) {
+            if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+                fail(qualified(section, key) + ": unknown key; did you mean '" + nearest(key, keys) + "'?");
+            }
         }
-        return (*field)["value"].get<double>();
     }
-    uint32_t count(const char* section, const char* key) const {
-        const double v = number(section, key);
-        if (v < 0 || v > 4294967295.0 || v != static_cast<uint32_t>(v)) {
-            fail(std::string(section) + "." + key + ": expected a non-negative integer");
+    double number(const std::string& section, const NumberSpec& spec) const {
+        const std::string name = qualified(section, spec.key);
+        const json* field = find(section, spec.key);
+        const char* kForm = ": expected {\"value\": <number>, \"source\": \"<source or assumption>\"}";
+        if (field == nullptr) fail(name + ": missing;" + std::string(kForm).substr(1));
+        if (!field->is_object()) fail(name + kForm);
+        for (const auto& [key, value] : field->items()) {
+            if (key != "value" && key != "source") fail(name + kForm + ", found '" + key + "'");
         }
-        return static_cast<uint32_t>(v);
+        const auto value = field->find("value");
+        const auto source = field->find("source");
+        if (value == field->end() || !value->is_number() || source == field->end() || !source->is_string() ||
+            source->get<std::string>().empty()) {
+            fail(name + kForm);
+        }
+        const double v = value->get<double>();
+        const std::string unit = std::string(" ") + spec.unit;
+        if (!(v >= spec.min && v <= spec.max)) {
+            fail(name + ": expected " + show(spec.min) + " to " + show(spec.max) + unit + ", got " + value->dump());
+        }
+        if (spec.integer && v != static_cast<double>(static_cast<uint64_t>(v))) {
+            fail(name + ": expected a whole number of" + unit + ", got " + value->dump());
+        }
+        return v;
     }
-    std::string text(const char* section, const char* key) const {
+    std::string text(const std::string& section, const char* key) const {
         const json* field = find(section, key);
-        if (field == nullptr || !field->is_string()) fail(std::string(section) + "." + key + ": expected a string");
+        if (field == nullptr || !field->is_string() || field->get<std::string>().empty()) {
+            fail(qualified(section, key) + ": expected a non-empty string");
+        }
         return field->get<std::string>();
     }
     [[noreturn]] void fail(const std::string& what) const { throw InputError(path_ + ": " + what); }
 
 private:
-    const json* find(const char* section, const char* key) const {
-        const json* s = section[0] ? (root_.contains(section) ? &root_[section] : nullptr) : &root_;
-        return s != nullptr && s->is_object() && s->contains(key) ? &(*s)[key] : nullptr;
+    static std::string qualified(const std::string& section, const std::string& key) {
+        return section.empty() ? key : section + "." + key;
+    }
+    const json& section(const std::string& name) const {
+        const auto it = root_.find(name);
+        if (it == root_.end() || !it->is_object()) fail(name + ": expected an object of fields");
+        return *it;
+    }
+    const json* find(const std::string& section, const char* key) const {
+        const json& object = section.empty() ? root_ : this->section(section);
+        const auto it = object.find(key);
+        return it == object.end() ? nullptr : &*it;
     }
     std::string path_;
     json root_;
 };
 
-// A bus config's fields by their names in the preset's "bus" section.
+std::vector<std::string> keys_of(const NumberSpec* begin, const NumberSpec* end, std::vector<std::string> more = {}) {
+    for (const NumberSpec* s = begin; s != end; ++s) more.emplace_back(s->key);
+    return more;
+}
+
+// A bus config's fields by their keys in the preset's "bus" section.
 template <class Config>
-struct BusFields {
-    std::vector<std::pair<const char*, uint32_t Config::*>> counts;
-    std::vector<std::pair<const char*, double Config::*>> numbers;
+struct BusField {
+    NumberSpec spec;
+    uint32_t Config::*count;  // one of the two is set
+    double Config::*number;
 };
 
+template <class Config>
+BusField<Config> count_field(NumberSpec spec, uint32_t Config::*member) {
+    return {spec, member, nullptr};
+}
+template <class Config>
+BusField<Config> number_field(NumberSpec spec, double Config::*member) {
+    return {spec, nullptr, member};
+}
+
 template <class Timing, class Config>
-std::shared_ptr<const BusTiming> read_bus_fields(const PresetReader& r, const BusFields<Config>& fields) {
+std::shared_ptr<const BusTiming> read_bus_fields(const PresetReader& r, const std::vector<BusField<Config>>& fields) {
+    std::vector<std::string> keys = keys_of(std::begin(kLocalBusNumbers), std::end(kLocalBusNumbers), {"type"});
+    for (const auto& field : fields) keys.emplace_back(field.spec.key);
+    r.only("bus", keys);
     Config c;
-    for (const auto& [key, member] : fields.counts) c.*member = r.count("bus", key);
-    for (const auto& [key, member] : fields.numbers) c.*member = r.number("bus", key);
-    c.local_bus = {r.count("bus", "local_bus_width_bits"), r.number("bus", "local_bus_clock_mhz")};
+    for (const auto& field : fields) {
+        const double value = r.number("bus", field.spec);
+        if (field.count != nullptr) c.*field.count = static_cast<uint32_t>(value);
+        if (field.number != nullptr) c.*field.number = value;
+    }
+    c.local_bus = {static_cast<uint32_t>(r.number("bus", spec_of(kLocalBusNumbers, "local_bus_width_bits"))),
+                   r.number("bus", spec_of(kLocalBusNumbers, "local_bus_clock_mhz"))};
     try {
         return std::make_shared<Timing>(c);
     } catch (const std::invalid_argument& e) {
-        r.fail(e.what());
+        // The model names its settings "pci.KEY" or "pcie.KEY"; here they are "bus.KEY".
+        std::string message = e.what();
+        for (const char* prefix : {"pci.", "pcie.", "local_bus:"}) {
+            if (message.rfind(prefix, 0) == 0) {
+                message = (std::strcmp(prefix, "local_bus:") == 0 ? "bus.local_bus_*:" : "bus.") +
+                          message.substr(std::strlen(prefix));
+                break;
+            }
+        }
+        r.fail(message);
     }
 }
 
@@ -78,36 +222,115 @@ std::shared_ptr<const BusTiming> read_bus(const PresetReader& r) {
     const std::string type = r.text("bus", "type");
     if (type == "pci") {
         using C = PciConfig;
-        static const BusFields<C> kFields{
-            {{"width_bits", &C::width_bits},
-             {"arbitration_clocks", &C::arbitration_clocks},
-             {"address_phase_clocks", &C::address_phase_clocks},
-             {"board_read_latency_clocks", &C::board_read_latency_clocks},
-             {"board_write_latency_clocks", &C::board_write_latency_clocks},
-             {"host_read_latency_clocks", &C::host_read_latency_clocks},
-             {"host_write_latency_clocks", &C::host_write_latency_clocks},
-             {"wait_states", &C::wait_states},
-             {"turnaround_clocks", &C::turnaround_clocks},
-             {"latency_timer_clocks", &C::latency_timer_clocks},
-             {"dma_read_burst_bytes", &C::dma_read_burst_bytes},
-             {"dma_write_burst_bytes", &C::dma_write_burst_bytes}},
-            {{"clock_mhz", &C::clock_mhz}, {"host_pio_overhead_ns", &C::host_pio_overhead_ns},
-             {"interrupt_ns", &C::interrupt_ns}}};
+        static const std::vector<BusField<C>> kFields = {
+            count_field<C>({"width_bits", "bits", 32, 64, true}, &C::width_bits),
+            number_field<C>({"clock_mhz", "MHz", 1, 133, false}, &C::clock_mhz),
+            count_field<C>({"arbitration_clocks", "clocks", 0, 255, true}, &C::arbitration_clocks),
+            count_field<C>({"address_phase_clocks", "clocks", 1, 2, true}, &C::address_phase_clocks),
+            count_field<C>({"board_read_latency_clocks", "clocks", 0, 16, true}, &C::board_read_latency_clocks),
+            count_field<C>({"board_write_latency_clocks", "clocks", 0, 16, true}, &C::board_write_latency_clocks),
+            count_field<C>({"host_read_latency_clocks", "clocks", 0, 16, true}, &C::host_read_latency_clocks),
+            count_field<C>({"host_write_latency_clocks", "clocks", 0, 16, true}, &C::host_write_latency_clocks),
+            count_field<C>({"wait_states", "clocks", 0, 8, true}, &C::wait_states),
+            count_field<C>({"turnaround_clocks", "clocks", 0, 8, true}, &C::turnaround_clocks),
+            count_field<C>({"latency_timer_clocks", "clocks", 0, 255, true}, &C::latency_timer_clocks),
+            count_field<C>({"dma_read_burst_bytes", "bytes", 4, 4096, true}, &C::dma_read_burst_bytes),
+            count_field<C>({"dma_write_burst_bytes", "bytes", 4, 4096, true}, &C::dma_write_burst_bytes),
+            number_field<C>({"host_pio_overhead_ns", "ns", 0, 1e6, false}, &C::host_pio_overhead_ns),
+            number_field<C>({"interrupt_ns", "ns", 0, 1e6, false}, &C::interrupt_ns),
+        };
         return read_bus_fields<PciTiming>(r, kFields);
     }
     if (type == "pcie") {
         using C = PcieConfig;
-        static const BusFields<C> kFields{
-            {{"lanes", &C::lanes},
-             {"max_payload_bytes", &C::max_payload_bytes},
-             {"max_read_request_bytes", &C::max_read_request_bytes},
-             {"tlp_overhead_bytes", &C::tlp_overhead_bytes}},
-            {{"gigatransfers_per_s", &C::gigatransfers_per_s}, {"encoding_efficiency", &C::encoding_efficiency},
-             {"read_round_trip_ns", &C::read_round_trip_ns}, {"posted_write_ns", &C::posted_write_ns},
-             {"interrupt_ns", &C::interrupt_ns}}};
+        static const std::vector<BusField<C>> kFields = {
+            number_field<C>({"gigatransfers_per_s", "GT/s", 1, 64, false}, &C::gigatransfers_per_s),
+            count_field<C>({"lanes", "lanes", 1, 32, true}, &C::lanes),
+            number_field<C>({"encoding_efficiency", "(fraction)", 0.5, 1, false}, &C::encoding_efficiency),
+            count_field<C>({"max_payload_bytes", "bytes", 128, 4096, true}, &C::max_payload_bytes),
+            count_field<C>({"max_read_request_bytes", "bytes", 128, 4096, true}, &C::max_read_request_bytes),
+            count_field<C>({"tlp_overhead_bytes", "bytes", 0, 256, true}, &C::tlp_overhead_bytes),
+            number_field<C>({"read_round_trip_ns", "ns", 0, 1e6, false}, &C::read_round_trip_ns),
+            number_field<C>({"posted_write_ns", "ns", 0, 1e6, false}, &C::posted_write_ns),
+            number_field<C>({"interrupt_ns", "ns", 0, 1e6, false}, &C::interrupt_ns),
+        };
         return read_bus_fields<PcieTiming>(r, kFields);
     }
-    r.fail("bus.type: expected \"pci\" or \"pcie\", found \"" + type + "\"");
+    r.fail("bus.type: expected \"pci\" or \"pcie\", got \"" + type + "\"");
+}
+
+// "FILE:LINE:COLUMN" of a byte offset (nlohmann counts from 1).
+std::string position(const std::string& path, const std::string& text, std::size_t byte) {
+    const std::size_t end = std::min(byte == 0 ? 0 : byte - 1, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t k = 0; k < end; ++k) {
+        if (text[k] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return path + ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+
+// Parses the preset text, refusing a key given twice in one object (JSON
+// leaves that open; nlohmann would keep the last silently).
+json parse_preset(const std::string& path, const std::string& text) {
+    struct Level {
+        std::set<std::string> keys;
+        std::string current;
+    };
+    std::vector<Level> levels;
+    std::string duplicate;
+    const json::parser_callback_t check_keys = [&](int, json::parse_event_t event, json& parsed) {
+        if (event == json::parse_event_t::object_start) levels.emplace_back();
+        if (event == json::parse_event_t::object_end && !levels.empty()) levels.pop_back();
+        if (event == json::parse_event_t::key && !levels.empty()) {
+            const std::string key = parsed.get<std::string>();
+            if (!levels.back().keys.insert(key).second && duplicate.empty()) {
+                for (std::size_t k = 0; k + 1 < levels.size(); ++k) duplicate += levels[k].current + ".";
+                duplicate += key;
+            }
+            levels.back().current = key;
+        }
+        return true;
+    };
+    json root;
+    try {
+        root = json::parse(text, check_keys);
+    } catch (const json::parse_error& e) {
+        std::string what = e.what();
+        const std::size_t detail = what.find("syntax error");
+        throw InputError(position(path, text, e.byte) + ": invalid JSON: " +
+                         (detail == std::string::npos ? what : what.substr(detail)));
+    }
+    if (!duplicate.empty()) throw InputError(path + ": " + duplicate + ": key given twice");
+    if (!root.is_object()) throw InputError(path + ": expected a JSON object");
+    return root;
+}
+
+std::string read_preset_text(const std::string& path, bool is_path, const std::string& name) {
+    struct stat status {};
+    if (stat(path.c_str(), &status) != 0) {
+        if (is_path) throw InputError(path + ": cannot open: " + std::strerror(errno));
+        std::string known;
+        for (const std::string& n : board_preset_names()) known += (known.empty() ? "" : ", ") + n;
+        throw InputError("--board: unknown board '" + name + "'; expected one of: " + known);
+    }
+    if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot open: not a regular file");
+    if (static_cast<std::size_t>(status.st_size) > kMaxPresetBytes) {
+        throw InputError(path + ": larger than " + std::to_string(kMaxPresetBytes) + " bytes; not a board preset");
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throw InputError(path + ": cannot read: " + std::strerror(errno));
+    return text.str();
+}
+
+bool names_a_path(const std::string& name) {
+    return name.find('/') != std::string::npos || (name.size() > 5 && name.rfind(".json") == name.size() - 5);
 }
 
 }  // namespace
@@ -127,41 +350,49 @@ std::vector<std::string> board_preset_names() {
     return names;
 }
 
-BoardPreset load_board_preset(const std::string& name) {
-    const bool is_path =
-        name.find('/') != std::string::npos || (name.size() > 5 && name.rfind(".json") == name.size() - 5);
-    const std::string path = is_path ? name : boards_directory() + "/" + name + ".json";
-    std::ifstream in(path);
-    if (!in) {
-        std::string known;
-        for (const std::string& n : board_preset_names()) known += (known.empty() ? "" : ", ") + n;
-        throw InputError(is_path ? path + ": cannot open" : "--board: unknown board '" + name + "'; expected one of: " + known);
-    }
-    json root;
-    try {
-        root = json::parse(in);
-    } catch (const json::parse_error& e) {
-        throw InputError(path + ": invalid JSON (" + e.what() + ")");
-    }
-    const PresetReader r(path, root);
+std::string board_preset_path(const std::string& name) {
+    return names_a_path(name) ? name : boards_directory() + "/" + name + ".json";
+}
+
+namespace {
+
+BoardPreset read_board_preset(const std::string& name) {
+    const std::string path = board_preset_path(name);
+    const PresetReader r(path, parse_preset(path, read_preset_text(path, names_a_path(name), name)));
+    r.only("", {"name", "description", "board", "bus", "host"});
+    r.only("board", keys_of(std::begin(kBoardNumbers), std::end(kBoardNumbers)));
+    r.only("host", keys_of(std::begin(kHostNumbers), std::end(kHostNumbers), {"name"}));
     BoardPreset p;
     p.path = path;
     p.name = r.text("", "name");
     p.description = r.text("", "description");
-    p.board.clock_mhz = r.number("board", "clock_mhz");
-    p.board.compare.latency_cycles = r.count("board", "compare_latency_cycles");
-    p.board.collector.fifo_depth = r.count("board", "fifo_depth");
-    p.board.collector.drain_per_cycle = r.count("board", "drain_per_cycle");
-    p.board.collector.buffer_depth = r.count("board", "pair_buffer_depth");
-    p.block_rams = r.count("board", "block_rams");
+    const auto board = [&](const char* key) { return r.number("board", spec_of(kBoardNumbers, key)); };
+    const auto board_count = [&](const char* key) { return static_cast<uint32_t>(board(key)); };
+    p.board.clock_mhz = board("clock_mhz");
+    p.board.compare.latency_cycles = board_count("compare_latency_cycles");
+    p.board.collector.fifo_depth = board_count("fifo_depth");
+    p.board.collector.drain_per_cycle = board_count("drain_per_cycle");
+    p.board.collector.buffer_depth = board_count("pair_buffer_depth");
+    p.block_rams = board_count("block_rams");
     p.bus = read_bus(r);
     p.host.name = r.text("host", "name");
-    p.host.speed_factor = r.number("host", "speed_factor");
-    if (!(p.host.speed_factor > 0)) r.fail("host.speed_factor: expected a positive number");
-    p.driver.ns_per_box = r.number("host", "ns_per_box");
-    p.driver.ns_per_pair = r.number("host", "ns_per_pair");
-    p.driver.call_ns = r.number("host", "call_ns");
+    const auto host = [&](const char* key) { return r.number("host", spec_of(kHostNumbers, key)); };
+    p.host.speed_factor = host("speed_factor");
+    p.driver.ns_per_box = host("ns_per_box");
+    p.driver.ns_per_pair = host("ns_per_pair");
+    p.driver.call_ns = host("call_ns");
     return p;
+}
+
+}  // namespace
+
+BoardPreset load_board_preset(const std::string& name) {
+    try {
+        return read_board_preset(name);
+    } catch (const InputError& e) {
+        // One line whatever the file holds: keys, strings and paths may hold control characters.
+        throw InputError(printable(e.what()));
+    }
 }
 
 }  // namespace cdvp

@@ -30,8 +30,12 @@ struct BoardPreset {
 };
 
 // name: a preset in the boards directory (e.g. "adm-xrc-ii"), or a path to a
-// .json file. Throws InputError naming the file and the missing or bad field.
+// .json file. Throws InputError naming the file and the missing or bad field,
+// on one line (control characters escaped). Every key must be declared and
+// every number within its unit's range (see board_preset.cpp's tables).
 BoardPreset load_board_preset(const std::string& name);
+// The file load_board_preset(name) reads (whether or not it exists).
+std::string board_preset_path(const std::string& name);
 std::vector<std::string> board_preset_names();
 // Where presets live: $CDVP_BOARDS if set, else the source tree's platform/boards.
 std::string boards_directory();

@@ -8,6 +8,7 @@
 
 #include "platform/kernel.h"
 #include "sw/cli/run_command.h"
+#include "sw/scene/output_text.h"
 
 namespace {
 
@@ -20,15 +21,23 @@ constexpr const char* kUsage =
     "Commands:\n"
     "  run       simulate scene frames on the cycle-level board; write pairs, a report, waveforms\n"
     "\n"
-    "Run 'cdvp <command> --help' for a command's options.\n";
+    "Run 'cdvp <command> --help' for a command's options.\n"
+    "\n"
+    "Exit status: 0 done; 1 internal failure (a cdvp bug); 2 bad input (file, flag, preset or\n"
+    "output path), with one line on stderr naming it; 3 the simulated system faulted;\n"
+    "128+N killed by signal N (temporary files removed).\n";
 
 }  // namespace
 
 int sc_main(int argc, char** argv) {
     cdvp::configure_kernel();
-    if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    if (argc < 2) {
+        std::cerr << kUsage;
+        return 2;
+    }
+    if (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
         std::cout << kUsage;
-        return argc < 2 ? 2 : 0;
+        return 0;
     }
     const std::string command = argv[1];
     if (command == "--version") {
@@ -36,7 +45,7 @@ int sc_main(int argc, char** argv) {
         return 0;
     }
     if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
-    std::cerr << "cdvp: unknown command '" << command << "'; expected one of: run (see cdvp --help)\n";
+    std::cerr << "cdvp: unknown command '" << cdvp::printable(command) << "'; expected one of: run (see cdvp --help)\n";
     return 2;
 }
 

@@ -4,12 +4,13 @@
 
 #include <algorithm>
 #include <chrono>
-#include <map>
-#include <sstream>
 #include <cstring>
+#include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -22,9 +23,11 @@
 #include "platform/virtual_board.h"
 #include "sw/baselines/broad_phase.h"
 #include "sw/cli/frame_source.h"
+#include "sw/cli/run_options.h"
 #include "sw/cli/run_report.h"
 #include "sw/scene/conversion.h"
-#include "sw/scene/output_file.h"
+#include "sw/scene/output_set.h"
+#include "sw/scene/output_text.h"
 #include "sw/scene/pairs_csv.h"
 
 namespace po = boost::program_options;
@@ -33,118 +36,73 @@ namespace cdvp {
 
 namespace {
 
-struct RunOptions {
-    std::string trace;
-    std::string scene;
-    BouncingSpheresConfig spheres;
-    // Signed, so that a negative count is reported instead of wrapping around.
-    int64_t objects = 500;
-    int64_t frames = 1;
-    BoardConfig board;
-    std::string board_name;
-    std::string transfer = "dma";
-    std::string wait = "irq";
-    std::string baselines;
-    double host_factor = 0;  // 0: the preset's
-    std::string pairs_out, report, vcd;
-    bool quiet = false;
-};
-
-po::options_description run_options(RunOptions& o) {
-    po::options_description input("Input (one of)");
-    input.add_options()
-        ("trace", po::value(&o.trace)->value_name("FILE"), "scene trace CSV (see README: file formats)")
-        ("scene", po::value(&o.scene)->value_name("NAME"), "generated scene: spheres")
-        ("objects", po::value(&o.objects)->value_name("N")->default_value(o.objects),
-         "spheres: number of spheres")
-        ("frames", po::value(&o.frames)->value_name("F")->default_value(o.frames), "spheres: number of frames")
-        ("seed", po::value(&o.spheres.seed)->value_name("S")->default_value(o.spheres.seed),
-         "spheres: random seed (same seed, same scene)");
-    po::options_description board("Board");
-    board.add_options()
-        ("board", po::value(&o.board_name)->value_name("NAME"),
-         "board preset from platform/boards (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) or a .json path; "
-         "without it: the board alone on an ideal, untimed bus")
-        ("m", po::value(&o.board.m)->value_name("M")->default_value(o.board.m),
-         "parallelism: 2m-port memories, 2m-1 comparison lanes (1..32)")
-        ("clock-mhz", po::value(&o.board.clock_mhz)->value_name("F")->default_value(o.board.clock_mhz, "66"),
-         "board clock in MHz")
-        ("compare-latency", po::value(&o.board.compare.latency_cycles)->value_name("C")
-             ->default_value(o.board.compare.latency_cycles), "float compare pipeline depth in cycles")
-        ("fifo-depth", po::value(&o.board.collector.fifo_depth)->value_name("P")
-             ->default_value(o.board.collector.fifo_depth), "pair FIFO depth in pairs (>= 2m-1)")
-        ("drain-rate", po::value(&o.board.collector.drain_per_cycle)->value_name("R")
-             ->default_value(o.board.collector.drain_per_cycle), "pairs moved from FIFO to pair buffer a cycle")
-        ("pair-buffer", po::value(&o.board.collector.buffer_depth)->value_name("P")
-             ->default_value(o.board.collector.buffer_depth), "pair buffer depth in pairs before the host drains it");
-    po::options_description host("Host and baselines");
-    host.add_options()
-        ("transfer", po::value(&o.transfer)->value_name("dma|pio")->default_value(o.transfer),
-         "how the driver moves boxes and pairs: bridge DMA or programmed I/O")
-        ("wait", po::value(&o.wait)->value_name("irq|poll")->default_value(o.wait),
-         "how the driver waits for the board: interrupt or polling")
-        ("baseline", po::value(&o.baselines)->value_name("LIST"),
-         "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa")
-        ("host-factor", po::value(&o.host_factor)->value_name("F"),
-         "host-speed factor: native software time x F = time on the modelled host (default: the board preset's)");
-    po::options_description output("Output");
-    output.add_options()
-        ("pairs-out", po::value(&o.pairs_out)->value_name("FILE"), "overlapping pairs CSV (frame,a,b)")
-        ("report", po::value(&o.report)->value_name("FILE"), "JSON report: configuration and per-frame cycles")
-        ("vcd", po::value(&o.vcd)->value_name("FILE"), "board waveforms (VCD, opens in GTKWave)")
-        ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors")
-        ("help,h", "show this help");
-    po::options_description all("Usage: cdvp run (--trace FILE | --scene spheres [--objects N] [--frames F] "
-                                "[--seed S]) [options]\n\nSimulates each frame on the virtual platform "
-                                "and reports its pairs, cycles and time.\nWith --board, the board settings "
-                                "below come from the preset unless given");
-    all.add(input).add(board).add(host).add(output);
-    return all;
-}
-
-// The output files, created as temporaries up front (an unwritable path
-// fails before the simulation) and renamed into place only at the end.
+// The run's output files: one transaction (see OutputSet).
 struct Outputs {
-    std::optional<OutputFile> pairs, report, vcd;
+    OutputSet files;
+    OutputFile* pairs = nullptr;
+    OutputFile* report = nullptr;
+    OutputFile* vcd = nullptr;
     std::string vcd_base() const {
-        if (!vcd) return {};
+        if (vcd == nullptr) return {};
         const std::string& t = vcd->temp_path();
         return t.substr(0, t.size() - 4);  // SystemC appends ".vcd"
     }
 };
 
+// Declares the inputs and outputs and checks them together before any work.
+void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out) {
+    if (vm.count("trace")) out.files.add_input("--trace", o.trace);
+    if (vm.count("board") && !o.board_name.empty()) out.files.add_input("--board", board_preset_path(o.board_name));
+    std::optional<std::size_t> pairs, report, vcd;
+    if (vm.count("pairs-out")) pairs = out.files.add_output("--pairs-out", o.pairs_out);
+    if (vm.count("report")) report = out.files.add_output("--report", o.report);
+    if (vm.count("vcd")) vcd = out.files.add_output("--vcd", o.vcd, ".vcd", false);
+    out.files.open();
+    if (pairs) out.pairs = &out.files.file(*pairs);
+    if (report) out.report = &out.files.file(*report);
+    if (vcd) out.vcd = &out.files.file(*vcd);
+}
+
 // Board settings are checked by the model; its message names the setting as
-// the report does, which is mapped to the flag that sets it.
-void validate_board(const BoardConfig& config) {
+// the preset does ("fifo_depth: expected ..."). The error names where the
+// value came from: the flag if one set it, else the preset file and key.
+void validate_board(const BoardConfig& config, const po::variables_map& vm, const std::string& preset_path) {
     try {
         config.validate();
     } catch (const std::invalid_argument& e) {
         static const std::pair<const char*, const char*> kFlags[] = {
-            {"m:", "--m"}, {"clock_mhz:", "--clock-mhz"}, {"compare_latency_cycles:", "--compare-latency"},
-            {"fifo_depth:", "--fifo-depth"}, {"drain_per_cycle:", "--drain-rate"},
-            {"pair_buffer_depth:", "--pair-buffer"}};
+            {"m", "m"}, {"clock_mhz", "clock-mhz"}, {"compare_latency_cycles", "compare-latency"},
+            {"fifo_depth", "fifo-depth"}, {"drain_per_cycle", "drain-rate"}, {"pair_buffer_depth", "pair-buffer"}};
         std::string message = e.what();
         for (const auto& [setting, flag] : kFlags) {
-            if (message.rfind(setting, 0) == 0) message = std::string(flag) + message.substr(std::strlen(setting) - 1);
+            const std::string prefix = std::string(setting) + ":";
+            if (message.rfind(prefix, 0) != 0) continue;
+            const std::string rest = message.substr(prefix.size() - 1);
+            // m is never a preset's: the board's parallelism is the user's choice.
+            const bool from_flag =
+                preset_path.empty() || std::strcmp(setting, "m") == 0 || vm.count(flag) == 0 || !vm[flag].defaulted();
+            message = from_flag ? std::string("--") + flag + rest
+                                : preset_path + ": board." + setting + rest + " (with --m " + std::to_string(config.m) + ")";
+            break;
         }
         throw InputError(message);
     }
 }
 
-std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm) {
-    if (o.trace.empty() == o.scene.empty()) throw InputError("give exactly one of --trace FILE or --scene spheres");
-    if (!o.trace.empty()) {
+void check_source_options(const RunOptions& o, const po::variables_map& vm) {
+    if (vm.count("trace") == vm.count("scene")) throw InputError("give exactly one of --trace FILE or --scene spheres");
+    if (vm.count("trace")) {
+        if (o.trace.empty()) throw InputError("--trace: expected a file path, got ''");
         for (const char* flag : {"objects", "frames", "seed"}) {
             if (!vm[flag].defaulted()) throw InputError(std::string("--") + flag + " goes with --scene, not --trace");
         }
-        return trace_source(o.trace);
+    } else if (o.scene != "spheres") {
+        throw InputError("--scene: expected 'spheres', got '" + o.scene + "'");
     }
-    if (o.scene != "spheres") throw InputError("--scene: expected 'spheres', found '" + o.scene + "'");
-    if (o.objects < 0 || o.objects > address_map::kMaxObjects) {
-        throw InputError("--objects: expected 0 to " + std::to_string(address_map::kMaxObjects) + ", found " +
-                         std::to_string(o.objects));
-    }
-    if (o.frames < 0) throw InputError("--frames: expected a non-negative count, found " + std::to_string(o.frames));
+}
+
+std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm) {
+    if (vm.count("trace")) return trace_source(o.trace);
     BouncingSpheresConfig spheres = o.spheres;
     spheres.objects = static_cast<std::size_t>(o.objects);
     return spheres_source(spheres, static_cast<std::size_t>(o.frames));
@@ -179,10 +137,34 @@ struct Setup {
     std::vector<std::unique_ptr<BroadPhase>> baselines;
 };
 
-Setup make_setup(const RunOptions& o, const po::variables_map& vm, std::size_t max_objects) {
+// SystemC counts time in 64-bit femtoseconds (2^64 fs = 5.1 hours). A run
+// whose generous estimate exceeds half of that is refused up front instead
+// of overflowing the kernel's clock mid-run.
+void check_simulated_time(const RunOptions& o, const po::variables_map& vm, const BoardConfig& board,
+                          uint64_t max_objects, uint64_t frame_count) {
+    constexpr double kBudgetSeconds = 9223.0;   // 2^63 fs
+    constexpr double kPerBoxSeconds = 10e-6;    // PIO of a box on the slowest bus, with margin
+    constexpr double kPerFrameSeconds = 1e-3;   // driver calls, interrupts, status reads, with margin
+    const double frames = static_cast<double>(frame_count);
+    const double frame_seconds = static_cast<double>(AddressGenerator::sweep_cycles(max_objects, board.m)) /
+                                     (board.clock_mhz * 1e6) +
+                                 static_cast<double>(max_objects) * kPerBoxSeconds + kPerFrameSeconds;
+    const double total = frames * frame_seconds;
+    if (total <= kBudgetSeconds) return;
+    std::ostringstream message;
+    message << (vm.count("trace") ? "--trace: " + o.trace + ": frames" : std::string("--objects/--frames: a run"))
+            << " of up to " << max_objects << " objects at m=" << board.m << " would simulate about " << std::fixed << std::setprecision(0)
+            << total << " s, more than the " << kBudgetSeconds
+            << " s SystemC's 64-bit femtosecond time allows: use fewer objects or frames, or a larger m";
+    throw InputError(message.str());
+}
+
+Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     Setup setup;
     setup.platform.board = o.board;
-    if (!o.board_name.empty()) {
+    std::string preset_path;
+    if (vm.count("board")) {
+        if (o.board_name.empty()) throw InputError("--board: expected a preset name or a .json path, got ''");
         const BoardPreset preset = load_board_preset(o.board_name);
         BoardConfig& b = setup.platform.board;
         // The preset's numbers, unless a flag sets them.
@@ -197,26 +179,14 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm, std::size_t m
         setup.host = preset.host.name;
         setup.host_factor = preset.host.speed_factor;
         setup.block_rams = preset.block_rams;
+        preset_path = preset.path;
     }
-    validate_board(setup.platform.board);
-    const uint64_t needed = uint64_t{kCoordinates} * setup.platform.board.m *
-                            CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
-    if (setup.block_rams != 0 && needed > setup.block_rams) {
-        const uint64_t per_m = uint64_t{kCoordinates} * std::max<uint32_t>(1, CascadedBlockRam::primitives_for(
-                                                                                   static_cast<uint32_t>(max_objects)));
-        throw InputError("--m: m=" + std::to_string(setup.platform.board.m) + " needs " + std::to_string(needed) +
-                         " block RAMs for " + std::to_string(max_objects) + " objects; " + setup.board + " has " +
-                         std::to_string(setup.block_rams) + " (largest m that fits: " +
-                         std::to_string(setup.block_rams / per_m) + ")");
-    }
-    if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, found '" + o.transfer + "'");
-    if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, found '" + o.wait + "'");
+    validate_board(setup.platform.board, vm, preset_path);
+    if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, got '" + o.transfer + "'");
+    if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, got '" + o.wait + "'");
     setup.platform.driver.use_dma = o.transfer == "dma";
     setup.platform.driver.use_interrupts = o.wait == "irq";
-    if (vm.count("host-factor")) {
-        if (!(o.host_factor > 0)) throw InputError("--host-factor: expected a positive number");
-        setup.host_factor = o.host_factor;
-    }
+    if (vm.count("host-factor")) setup.host_factor = o.host_factor;
     std::stringstream names(o.baselines);
     for (std::string name; std::getline(names, name, ',');) {
         try {
@@ -228,6 +198,40 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm, std::size_t m
     return setup;
 }
 
+// The model keeps every block RAM word: six coordinate memories of m
+// copies each (2m ports from dual-port RAMs). A fixed bound keeps a large
+// --objects and --m from exhausting this machine's memory instead of
+// failing clearly, whatever the machine.
+void check_model_memory(const BoardConfig& board, uint64_t max_objects) {
+    constexpr uint64_t kMaxModelBytes = uint64_t{2} << 30;
+    const uint64_t words = uint64_t{BlockRam::kWords} * CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
+    const uint64_t bytes = uint64_t{kCoordinates} * board.m * words * sizeof(uint32_t);
+    if (bytes <= kMaxModelBytes) return;
+    std::ostringstream message;
+    message << "--objects/--m: the board model for " << max_objects << " objects at m=" << board.m << " needs "
+            << std::fixed << std::setprecision(1) << static_cast<double>(bytes) / (1 << 30)
+            << " GiB of block RAM words (6 coordinate memories x m copies); at most 2 GiB: use fewer objects or a "
+               "smaller m";
+    throw InputError(message.str());
+}
+
+// The scene must fit the board's block RAMs, this machine's memory and
+// SystemC's time.
+void check_scene_fits(const RunOptions& o, const po::variables_map& vm, const Setup& setup, uint64_t max_objects,
+                      uint64_t frame_count) {
+    check_model_memory(setup.platform.board, max_objects);
+    check_simulated_time(o, vm, setup.platform.board, max_objects, frame_count);
+    const uint64_t needed = uint64_t{kCoordinates} * setup.platform.board.m *
+                            CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
+    if (setup.block_rams != 0 && needed > setup.block_rams) {
+        const uint64_t per_m = uint64_t{kCoordinates} * std::max<uint32_t>(1, CascadedBlockRam::primitives_for(
+                                                                                   static_cast<uint32_t>(max_objects)));
+        throw InputError("--m: m=" + std::to_string(setup.platform.board.m) + " needs " + std::to_string(needed) +
+                         " block RAMs for " + std::to_string(max_objects) + " objects; " + setup.board + " has " +
+                         std::to_string(setup.block_rams) + " (largest m that fits: " +
+                         std::to_string(setup.block_rams / per_m) + ")");
+    }
+}
 
 // Times each baseline natively on the frame and checks it finds the board's pairs.
 std::map<std::string, BaselineTime> run_baselines(Setup& setup, const std::vector<FloatBox>& boxes,
@@ -281,8 +285,10 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     platform.close_trace();
 
     if (out.report) out.report->stream() << report_json(run).dump(2) << '\n';
-    for (auto* file : {&out.pairs, &out.report, &out.vcd}) {
-        if (*file) (*file)->commit();
+    // Reported by value, not thrown: see OutputFile::try_finish.
+    if (const std::optional<std::string> error = out.files.try_commit()) {
+        std::cerr << "cdvp run: " << printable(*error) << '\n';
+        return 2;
     }
     if (!o.quiet) print_summary(std::cout, run);
     return 0;
@@ -291,32 +297,35 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
 }  // namespace
 
 int run_command(int argc, char** argv) {
-    RunOptions o;
-    const po::options_description options = run_options(o);
-    try {
-        po::variables_map vm;
-        po::store(po::command_line_parser(argc, argv).options(options).run(), vm);
-        if (vm.count("help")) {
-            std::cout << options << '\n';
+    for (int k = 1; k < argc; ++k) {
+        if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
+            std::cout << run_options_help() << '\n';
             return 0;
         }
-        po::notify(vm);
-        validate_board(o.board);
-        std::unique_ptr<FrameSource> source = open_source(o, vm);
-        Setup setup = make_setup(o, vm, source->max_objects());
+    }
+    try {
+        RunOptions o;
+        const po::variables_map vm = parse_run_options(argc, argv, o);
+        // Outputs first: a path that cannot be written, or that names an
+        // input or another output, is refused before any work.
         Outputs out;
-        if (!o.pairs_out.empty()) out.pairs.emplace(o.pairs_out);
-        if (!o.report.empty()) out.report.emplace(o.report);
-        if (!o.vcd.empty()) out.vcd.emplace(o.vcd, ".vcd", false);
+        open_outputs(o, vm, out);
+        check_source_options(o, vm);
+        Setup setup = make_setup(o, vm);
+        // A generated scene is checked before it is generated (millions of
+        // spheres take a while to place), a trace once it is read.
+        if (vm.count("scene")) check_scene_fits(o, vm, setup, o.objects, o.frames);
+        std::unique_ptr<FrameSource> source = open_source(o, vm);
+        check_scene_fits(o, vm, setup, source->max_objects(), source->frame_count());
         return simulate(o, *source, setup, out);
     } catch (const po::error& e) {
-        std::cerr << "cdvp run: " << e.what() << " (see cdvp run --help)\n";
+        std::cerr << "cdvp run: " << printable(e.what()) << " (see cdvp run --help)\n";
         return 2;
     } catch (const InputError& e) {
-        std::cerr << "cdvp run: " << e.what() << '\n';
+        std::cerr << "cdvp run: " << printable(e.what()) << '\n';
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "cdvp run: simulation failed: " << e.what() << '\n';
+        std::cerr << "cdvp run: simulation failed: " << printable(e.what()) << '\n';
         return 1;
     }
 }

@@ -1,5 +1,6 @@
 #include "sw/scene/output_file.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -7,17 +8,24 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "sw/scene/output_cleanup.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {
 
 namespace {
 
-// mkstemps creates the file with mode 0600; a finished output should get the
+namespace fs = std::filesystem;
+
+// Room for ".part-XXXXXX" and a suffix within NAME_MAX (255).
+constexpr std::size_t kMaxStemBytes = 200;
+
+// mkstemps creates the file with mode 0600; a new output should get the
 // mode an ordinary open() would give. umask can only be read by setting it,
 // so this briefly sets it to 0 (harmless in the single-threaded CLI).
 mode_t default_file_mode() {
@@ -26,27 +34,96 @@ mode_t default_file_mode() {
     return 0666 & ~mask;
 }
 
+// "<directory>/<name>.part-XXXXXX", the name cut so the result stays a legal
+// file name whatever the target's name length.
+std::string temporary_pattern(const fs::path& directory, std::string name) {
+    if (name.size() > kMaxStemBytes) name.resize(kMaxStemBytes);
+    return (directory / name).string() + ".part-XXXXXX";
+}
+
+// Creates a unique file from pattern + suffix; returns its descriptor and
+// sets 'pattern' to the file's path. -1 with errno on failure.
+int make_unique_file(std::string& pattern, const std::string& suffix) {
+    std::string name = pattern + suffix;
+    std::vector<char> buffer(name.begin(), name.end());
+    buffer.push_back('\0');
+    const int fd = mkstemps(buffer.data(), static_cast<int>(suffix.size()));
+    if (fd >= 0) pattern.assign(buffer.data());
+    return fd;
+}
+
+// A second name for 'target' in its directory, so the old file survives a
+// rename over it. Empty where the file system has no hard links.
+std::string link_backup(const std::string& target) {
+    for (int attempt = 0; attempt < 16; ++attempt) {
+        std::string name = temporary_pattern(fs::path(target).parent_path(), fs::path(target).filename().string());
+        const int fd = make_unique_file(name, ".old");
+        if (fd < 0) return {};
+        close(fd);
+        unlink(name.c_str());
+        if (link(target.c_str(), name.c_str()) == 0) return name;
+        if (errno != EEXIST) return {};
+    }
+    return {};
+}
+
+// Appends the file at 'from' to the open descriptor 'to'. 0 or errno.
+int copy_into(const std::string& from, int to) {
+    const int in = open(from.c_str(), O_RDONLY | O_CLOEXEC);
+    if (in < 0) return errno;
+    char buffer[1 << 16];
+    int err = 0;
+    for (;;) {
+        const ssize_t got = read(in, buffer, sizeof buffer);
+        if (got == 0) break;
+        if (got < 0) {
+            if (errno == EINTR) continue;
+            err = errno;
+            break;
+        }
+        for (ssize_t done = 0; done < got && err == 0;) {
+            const ssize_t put = write(to, buffer + done, static_cast<std::size_t>(got - done));
+            if (put < 0 && errno != EINTR) err = errno;
+            if (put > 0) done += put;
+        }
+        if (err != 0) break;
+    }
+    close(in);
+    return err;
+}
+
 }  // namespace
 
 OutputFile::OutputFile(std::string final_path, std::string suffix, bool open_stream)
-    : final_path_(std::move(final_path)) {
-    std::string name = final_path_ + ".part-XXXXXX" + suffix;
-    std::vector<char> buf(name.begin(), name.end());
-    buf.push_back('\0');
-    int fd = mkstemps(buf.data(), static_cast<int>(suffix.size()));
-    if (fd < 0) {
-        fail(errno);
+    : final_path_(std::move(final_path)), target_(resolve_output_target(final_path_)) {
+    const fs::path target(target_.path);
+    std::string pattern;
+    if (target_.kind == OutputTarget::Kind::kDirect) {
+        const char* tmp = std::getenv("TMPDIR");
+        pattern = temporary_pattern(tmp != nullptr && tmp[0] != '\0' ? tmp : "/tmp",
+                                    "cdvp-" + fs::path(final_path_).filename().string());
+    } else {
+        pattern = temporary_pattern(target.parent_path(), target.filename().string());
     }
-    temp_path_.assign(buf.data());
-    int err = fchmod(fd, default_file_mode()) == 0 ? 0 : errno;
+    int fd;
+    {
+        // No signal between creating the temporary and registering it.
+        CleanupSignalsBlocked blocked;
+        fd = make_unique_file(pattern, suffix);
+        if (fd < 0) fail(errno);
+        temp_path_ = pattern;
+        cleanup_slot_ = TemporaryRegistry::hold(temp_path_);
+    }
+    const mode_t mode = target_.kind == OutputTarget::Kind::kRegular ? target_.status.st_mode & 07777
+                                                                     : default_file_mode();
+    int err = fchmod(fd, mode) == 0 ? 0 : errno;
     close(fd);
     if (err != 0) {
         discard();
         fail(err);
     }
     if (open_stream) {
-        stream_ = std::make_unique<std::ofstream>(
-            temp_path_, std::ios::binary | std::ios::trunc);
+        stream_ = std::make_unique<std::ofstream>(temp_path_, std::ios::binary | std::ios::trunc);
         if (!*stream_) {
             err = errno != 0 ? errno : EIO;
             discard();
@@ -55,47 +132,96 @@ OutputFile::OutputFile(std::string final_path, std::string suffix, bool open_str
     }
 }
 
-OutputFile::~OutputFile() {
-    discard();
-}
+OutputFile::~OutputFile() { discard(); }
 
 OutputFile::OutputFile(OutputFile&& other) noexcept
     : final_path_(std::move(other.final_path_)),
+      target_(std::move(other.target_)),
       temp_path_(std::exchange(other.temp_path_, std::string())),
+      cleanup_slot_(std::exchange(other.cleanup_slot_, -1)),
       stream_(std::move(other.stream_)) {}
 
 OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
     if (this != &other) {
         discard();
         final_path_ = std::move(other.final_path_);
+        target_ = std::move(other.target_);
         temp_path_ = std::exchange(other.temp_path_, std::string());
+        cleanup_slot_ = std::exchange(other.cleanup_slot_, -1);
         stream_ = std::move(other.stream_);
     }
     return *this;
 }
 
 std::ostream& OutputFile::stream() {
-    if (!stream_) {
-        throw std::logic_error("OutputFile::stream: no stream open for " + final_path_);
-    }
+    if (!stream_) throw std::logic_error("OutputFile::stream: no stream open for " + final_path_);
     return *stream_;
 }
 
-void OutputFile::commit() {
-    if (temp_path_.empty()) {
-        throw std::logic_error("OutputFile::commit: nothing to commit for " + final_path_);
-    }
+void OutputFile::finish() {
+    if (temp_path_.empty()) throw std::logic_error("OutputFile::finish: nothing to finish for " + final_path_);
+    if (const int err = try_finish()) fail(err);
+}
+
+int OutputFile::try_finish() noexcept {
+    if (temp_path_.empty()) return EINVAL;  // nothing to finish: committed, discarded or moved from
     if (stream_) {
         errno = 0;
         stream_->close();  // flushes
-        if (stream_->fail()) {
-            fail(errno != 0 ? errno : EIO);
-        }
+        const bool failed = stream_->fail();
         stream_.reset();
+        if (failed) return errno != 0 ? errno : EIO;
     }
-    if (std::rename(temp_path_.c_str(), final_path_.c_str()) != 0) {
-        fail(errno);
+    return 0;
+}
+
+std::string OutputFile::publish() {
+    if (temp_path_.empty() || stream_) {
+        throw std::logic_error("OutputFile::publish: " + final_path_ + " is not finished");
     }
+    std::string backup;
+    if (const int err = try_publish(backup)) fail(err);
+    return backup;
+}
+
+int OutputFile::try_publish(std::string& backup) noexcept {
+    backup.clear();
+    if (temp_path_.empty() || stream_) return EINVAL;  // not finished
+    if (target_.kind == OutputTarget::Kind::kDirect) {
+        const int out = target_.descriptor >= 0 ? fcntl(target_.descriptor, F_DUPFD_CLOEXEC, 0)
+                                                : open(target_.path.c_str(), O_WRONLY | O_APPEND | O_NOCTTY | O_CLOEXEC);
+        if (out < 0) return errno;
+        int err = copy_into(temp_path_, out);
+        if (close(out) != 0 && err == 0) err = errno;
+        if (err != 0) return err;
+        discard();
+        return 0;
+    }
+    struct stat existing {};
+    if (lstat(target_.path.c_str(), &existing) == 0) backup = link_backup(target_.path);
+    if (std::rename(temp_path_.c_str(), target_.path.c_str()) != 0) {
+        const int err = errno;
+        if (!backup.empty()) unlink(backup.c_str());
+        backup.clear();
+        return err;
+    }
+    forget_temporary();
+    return 0;
+}
+
+std::string OutputFile::error_message(int err) const {
+    return final_path_ + ": cannot write: " + std::strerror(err);
+}
+
+void OutputFile::commit() {
+    finish();
+    CleanupSignalsBlocked blocked;
+    const std::string backup = publish();
+    if (!backup.empty()) unlink(backup.c_str());
+}
+
+void OutputFile::forget_temporary() noexcept {
+    TemporaryRegistry::release(std::exchange(cleanup_slot_, -1));
     temp_path_.clear();
 }
 
@@ -103,12 +229,10 @@ void OutputFile::discard() noexcept {
     stream_.reset();
     if (!temp_path_.empty()) {
         std::remove(temp_path_.c_str());
-        temp_path_.clear();
+        forget_temporary();
     }
 }
 
-void OutputFile::fail(int err) const {
-    throw InputError(final_path_ + ": cannot write: " + std::strerror(err));
-}
+void OutputFile::fail(int err) const { throw InputError(error_message(err)); }
 
 }  // namespace cdvp

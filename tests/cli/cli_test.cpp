@@ -1,70 +1,19 @@
 // The cdvp command line, run as users run it.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
-#include <string>
-#include <vector>
+
+#include "tests/cli/cli_support.h"
 
 #include "models/address_generator/address_generator.h"
 #include "sw/scene/pairs_csv.h"
 
+using cdvp::test::Result;
+using cdvp::test::slurp;
+using Cli = cdvp::test::Cli;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Result {
-    int status;
-    std::string out;
-    std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-class Cli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("cdvp-cli-" + std::to_string(::getpid()) + "-" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    Result run(const std::string& args) {
-        const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
-        const std::string command = "cd '" + dir_.string() + "' && '" CDVP_BINARY "' " + args + " > '" +
-                                    out.string() + "' 2> '" + err.string() + "' < /dev/null";
-        const int raw = std::system(command.c_str());
-        Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-        fs::remove(out);
-        fs::remove(err);
-        return r;
-    }
-    fs::path write(const std::string& name, const std::string& text) {
-        std::ofstream(dir_ / name, std::ios::binary) << text;
-        return dir_ / name;
-    }
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-    static std::string trace(const std::string& name) { return CDVP_SOURCE_DIR "/traces/" + name; }
-
-    fs::path dir_;
-};
 
 TEST_F(Cli, HardCasesGiveTheHandDerivedPairs) {
     for (int m : {1, 2, 5}) {
@@ -130,8 +79,29 @@ TEST_F(Cli, HelpListsEveryOption) {
                              "--report", "--vcd", "--quiet"}) {
         EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
     }
-    EXPECT_EQ(run("").status, 2);
-    EXPECT_EQ(run("frobnicate").status, 2);
+    EXPECT_NE(help.out.find("no abbreviations"), std::string::npos) << "the prefix rule is documented";
+}
+
+TEST_F(Cli, TopLevelCommandLine) {
+    const Result none = run("");
+    EXPECT_EQ(none.status, 2);
+    EXPECT_EQ(none.out, "");
+    EXPECT_EQ(none.err.rfind("Usage: cdvp <command>", 0), 0u) << "usage goes to stderr on error";
+    const Result version = run("--version");
+    EXPECT_EQ(version.status, 0);
+    EXPECT_EQ(version.out, "cdvp 0.1.0\n");
+    for (const char* bad : {"frobnicate", "--frobnicate", "-x", "ru"}) {
+        const Result r = run(bad);
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_EQ(r.err, std::string("cdvp: unknown command '") + bad + "'; expected one of: run (see cdvp --help)\n");
+    }
+    EXPECT_EQ(run("run").err, "cdvp run: give exactly one of --trace FILE or --scene spheres\n");
+}
+
+TEST_F(Cli, ControlCharactersInArgumentsKeepErrorsOnOneLine) {
+    const Result r = run("run --scene \"$(printf 'two\\nlines\\033[31m')\"");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "cdvp run: --scene: expected 'spheres', got 'two\\nlines\\x1b[31m'\n");
 }
 
 TEST_F(Cli, BoardRunTimesBaselinesAndReportsConsistentPhases) {
@@ -205,16 +175,60 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"FramesOutOfOrder", HEADER "1,1,0,0,0,1,1,1\n" BOX, "", "bad.csv:3: frame 0 after frame 1"},
         BadInput{"NegativeId", HEADER "0,-1,0,0,0,1,1,1\n", "", "bad.csv:2: field 'id': expected a non-negative"},
         BadInput{"MissingTrace", nullptr, "--trace nowhere.csv", "nowhere.csv: cannot open"},
-        BadInput{"ZeroM", nullptr, "--m 0", "--m: expected 1 to 32"},
-        BadInput{"AbsurdM", nullptr, "--m 100000", "--m: expected 1 to 32"},
-        BadInput{"NonNumericM", nullptr, "--m eight", "'--m' is invalid"},
+        BadInput{"ZeroM", nullptr, "--m 0", "--m: expected an integer from 1 to 32, got"},
+        BadInput{"AbsurdM", nullptr, "--m 100000", "--m: expected an integer from 1 to 32, got"},
+        BadInput{"NonNumericM", nullptr, "--m eight", "--m: expected an integer from 1 to 32, got 'eight'"},
         BadInput{"SmallFifo", nullptr, "--m 8 --fifo-depth 4", "--fifo-depth: expected 2m-1 = 15"},
         BadInput{"UnknownBoard", nullptr, "--board nope", "--board: unknown board 'nope'; expected one of: adm-xrc-ii"},
         BadInput{"UnknownBaseline", nullptr, "--baseline sap,fast", "--baseline: unknown baseline 'fast'"},
         BadInput{"BadTransfer", nullptr, "--transfer usb", "--transfer: expected dma or pio"},
         BadInput{"BadWait", nullptr, "--wait sleep", "--wait: expected irq or poll"},
         BadInput{"TooManyBlockRams", nullptr, "--board adm-xrc-ii --m 30", "(largest m that fits: 24)"},
-        BadInput{"UnwritableOutput", nullptr, "--report no/such/dir/r.json", "no/such/dir/r.json: cannot write"}),
+        BadInput{"UnwritableOutput", nullptr, "--report no/such/dir/r.json",
+                 "--report: no/such/dir/r.json: cannot write: directory 'no/such/dir' does not exist"},
+        // Numbers: one checked parser for every option; what the user typed is quoted.
+        BadInput{"MWrapsAround", nullptr, "--m -4294967295", "--m: expected an integer from 1 to 32, got '-4294967295'"},
+        BadInput{"NegativeM", nullptr, "--m -1", "--m: expected an integer from 1 to 32, got '-1'"},
+        BadInput{"PairBufferWrapsAround", nullptr, "--pair-buffer -4294967295",
+                 "--pair-buffer: expected an integer from 1 to 2097152, got '-4294967295'"},
+        BadInput{"FifoWrapsAround", nullptr, "--fifo-depth -4294966784",
+                 "--fifo-depth: expected an integer from 1 to 1048576, got '-4294966784'"},
+        BadInput{"NegativeSeed", nullptr, "--scene spheres --seed -1",
+                 "--seed: expected an integer from 0 to 18446744073709551615, got '-1'"},
+        BadInput{"SeedTooLarge", nullptr, "--scene spheres --seed 18446744073709551616", "got '18446744073709551616'"},
+        BadInput{"FractionalObjects", nullptr, "--scene spheres --objects 2.5", "--objects: expected an integer"},
+        BadInput{"ExponentM", nullptr, "--m 1e1", "--m: expected an integer from 1 to 32, got '1e1'"},
+        BadInput{"HexM", nullptr, "--m 0x8", "got '0x8'"},
+        BadInput{"SignedM", nullptr, "--m +8", "got '+8'"},
+        BadInput{"BlankM", nullptr, "--m ' 8'", "got ' 8'"},
+        BadInput{"EmptyM", nullptr, "--m ''", "--m: expected an integer from 1 to 32, got ''"},
+        BadInput{"HugeObjects", nullptr, "--scene spheres --objects 99999999999999999999999",
+                 "--objects: expected an integer from 0 to 4194304, got '99999999999999999999999'"},
+        BadInput{"NegativeFrames", nullptr, "--scene spheres --frames -1", "--frames: expected an integer"},
+        BadInput{"NanClock", nullptr, "--clock-mhz nan", "--clock-mhz: expected a number from 1 to 1000, got 'nan'"},
+        BadInput{"InfClock", nullptr, "--clock-mhz inf", "got 'inf'"},
+        BadInput{"HexClock", nullptr, "--clock-mhz 0x42", "got '0x42'"},
+        BadInput{"ClockTooHigh", nullptr, "--clock-mhz 1e6", "got '1e6'"},
+        BadInput{"ClockWithUnit", nullptr, "--clock-mhz 66MHz", "got '66MHz'"},
+        BadInput{"CompareTooDeep", nullptr, "--compare-latency 65", "--compare-latency: expected an integer from 0 to 64"},
+        BadInput{"NoDrain", nullptr, "--drain-rate 0", "--drain-rate: expected an integer from 1 to 64, got '0'"},
+        BadInput{"ZeroHostFactor", nullptr, "--host-factor 0", "--host-factor: expected a number from 0.001 to 1000"},
+        BadInput{"NegativeHostFactor", nullptr, "--host-factor -1", "got '-1'"},
+        BadInput{"RunTooLongForSystemC", nullptr, "--scene spheres --objects 4000000 --m 1",
+                 "SystemC's 64-bit femtosecond time allows"},
+        BadInput{"ModelTooLargeForMemory", nullptr, "--scene spheres --objects 4194304 --m 32",
+                 "--objects/--m: the board model for 4194304 objects at m=32 needs 3.0 GiB of block RAM words"},
+        // Words: no stray arguments, no abbreviations, no empty paths or names.
+        BadInput{"StrayArgument", nullptr, "extra", "unexpected argument 'extra'"},
+        BadInput{"AbbreviatedOption", nullptr, "--rep r.json", "unrecognised option '--rep'"},
+        BadInput{"RepeatedOption", nullptr, "--m 2 --m 3", "'--m' cannot be specified more than once"},
+        BadInput{"EmptyTracePath", nullptr, "--trace ''", "--trace: expected a file path, got ''"},
+        BadInput{"EmptyBoard", nullptr, "--board ''", "--board: expected a preset name or a .json path, got ''"},
+        BadInput{"EmptyReportPath", nullptr, "--report ''", "--report: expected a file path, got ''"},
+        BadInput{"EmptyScene", nullptr, "--scene ''", "--scene: expected 'spheres', got ''"},
+        BadInput{"BoardIsADirectory", nullptr, "--board ./", "./: cannot open: not a regular file"},
+        BadInput{"OutputIsADirectory", nullptr, "--report .", "--report: .: cannot write: is a directory"},
+        BadInput{"OutputInAFile", nullptr, "--report " CDVP_SOURCE_DIR "/README.md/r.json", "is not a directory"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
 #undef BOX
 #undef HEADER
@@ -225,7 +239,8 @@ TEST_P(CliBadInput, ExitsWithOneLineAndWritesNothing) {
     if (c.trace != nullptr) {
         write("bad.csv", c.trace);
         args += "--trace bad.csv ";
-    } else if (std::string(c.flags).find("--trace") == std::string::npos) {
+    } else if (std::string(c.flags).find("--trace") == std::string::npos &&
+               std::string(c.flags).find("--scene") == std::string::npos) {
         args += "--trace " + trace("small.csv") + " ";
     }
     args += std::string(c.flags) + " --pairs-out pairs.csv --vcd waves.vcd" +

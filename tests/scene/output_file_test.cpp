@@ -3,6 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <thread>
 
 #include <filesystem>
 #include <utility>
@@ -70,7 +75,7 @@ TEST(OutputFile, MissingDirectoryThrows) {
         OutputFile file(final_path);
         FAIL() << "no exception";
     } catch (const InputError& e) {
-        EXPECT_EQ(final_path + ": cannot write: No such file or directory",
+        EXPECT_EQ(final_path + ": cannot write: directory '" + dir.file("no/such/dir") + "' does not exist",
                   std::string(e.what()));
     }
 }
@@ -112,6 +117,164 @@ TEST(OutputFile, TwoOutputsForOnePathDoNotCollide) {
     OutputFile a(dir.file("out.csv"));
     OutputFile b(dir.file("out.csv"));
     EXPECT_NE(a.temp_path(), b.temp_path());
+}
+
+}  // namespace
+}  // namespace cdvp
+
+namespace cdvp {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string written_through(const test::TempDir& dir, const std::string& link_name) {
+    OutputFile file(dir.file(link_name));
+    file.stream() << "through\n";
+    file.commit();
+    return test::slurp(dir.file(link_name));
+}
+
+TEST(OutputFile, SymbolicLinkIsWrittenThroughAndStaysALink) {
+    test::TempDir dir;
+    test::spit(dir.file("real.csv"), "old\n");
+    fs::create_symlink("real.csv", dir.file("link.csv"));
+    EXPECT_EQ("through\n", written_through(dir, "link.csv"));
+    EXPECT_TRUE(fs::is_symlink(dir.file("link.csv")));
+    EXPECT_EQ("through\n", test::slurp(dir.file("real.csv")));
+    EXPECT_EQ(2u, dir.count()) << "no temporary or backup left";
+}
+
+TEST(OutputFile, LinkChainAcrossDirectoriesReplacesTheFileAtItsEnd) {
+    test::TempDir dir;
+    fs::create_directories(dir.path() / "a");
+    fs::create_directories(dir.path() / "b");
+    // first -> a/second -> ../b/end (relative links resolve from their own directory); end does not exist yet.
+    fs::create_symlink("../b/end.csv", dir.path() / "a" / "second");
+    fs::create_symlink("a/second", dir.path() / "first");
+    EXPECT_EQ("through\n", written_through(dir, "first"));
+    EXPECT_TRUE(fs::is_symlink(dir.path() / "first"));
+    EXPECT_TRUE(fs::is_symlink(dir.path() / "a" / "second"));
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir.path() / "b" / "end.csv")));
+    EXPECT_EQ(1u, static_cast<std::size_t>(std::distance(fs::directory_iterator(dir.path() / "b"), {})));
+}
+
+TEST(OutputFile, LinkLoopIsRefused) {
+    test::TempDir dir;
+    fs::create_symlink("y", dir.file("x"));
+    fs::create_symlink("x", dir.file("y"));
+    EXPECT_THROW(OutputFile(dir.file("x")), InputError);
+    EXPECT_EQ(2u, dir.count());
+}
+
+TEST(OutputFile, ReplacedFileKeepsItsMode) {
+    test::TempDir dir;
+    test::spit(dir.file("out.csv"), "old\n");
+    fs::permissions(dir.file("out.csv"), fs::perms(0640));
+    OutputFile file(dir.file("out.csv"));
+    file.stream() << "new\n";
+    file.commit();
+    struct stat st {};
+    ASSERT_EQ(0, stat(dir.file("out.csv").c_str(), &st));
+    EXPECT_EQ(0640u, st.st_mode & 0777);
+}
+
+TEST(OutputFile, DirectoryAndUnwritableTargetsAreRefusedUpFront) {
+    test::TempDir dir;
+    fs::create_directories(dir.path() / "sub");
+    const auto message = [](const std::string& path) {
+        try {
+            OutputFile file(path);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(dir.file("sub") + ": cannot write: is a directory", message(dir.file("sub")));
+    EXPECT_EQ(dir.file("sub/") + ": cannot write: names a directory, expected a file", message(dir.file("sub/")));
+    EXPECT_EQ(": cannot write: empty path", message(""));
+    EXPECT_NE(std::string::npos, message("/proc/cdvp-out.csv").find("/proc/cdvp-out.csv: cannot write: "))
+        << "even root cannot create files in /proc";
+    test::spit(dir.file("plain"), "");
+    EXPECT_EQ(dir.file("plain/x.csv") + ": cannot write: '" + dir.file("plain") + "' is not a directory",
+              message(dir.file("plain/x.csv")));
+    if (geteuid() != 0) {  // root writes anywhere
+        fs::permissions(dir.path() / "sub", fs::perms(0555));
+        EXPECT_NE(std::string::npos, message(dir.file("sub/x.csv")).find("is not writable"));
+        fs::permissions(dir.path() / "sub", fs::perms(0755));
+    }
+    EXPECT_EQ(2u, dir.count());
+}
+
+TEST(OutputFile, LongNameStillGetsATemporary) {
+    test::TempDir dir;
+    const std::string name(250, 'n');
+    OutputFile file(dir.file(name));
+    EXPECT_LT(fs::path(file.temp_path()).filename().string().size(), 256u);
+    file.stream() << "long\n";
+    file.commit();
+    EXPECT_EQ("long\n", test::slurp(dir.file(name)));
+}
+
+TEST(OutputFile, DeviceIsWrittenNeverReplaced) {
+    OutputFile file("/dev/null");
+    EXPECT_EQ(OutputTarget::Kind::kDirect, file.target().kind);
+    EXPECT_NE(0u, file.temp_path().rfind("/dev/", 0)) << "the temporary is not made in /dev";
+    file.stream() << "discarded\n";
+    file.commit();
+    struct stat st {};
+    ASSERT_EQ(0, stat("/dev/null", &st));
+    EXPECT_TRUE(S_ISCHR(st.st_mode));
+}
+
+TEST(OutputFile, FifoGetsTheDataAtCommit) {
+    test::TempDir dir;
+    ASSERT_EQ(0, mkfifo(dir.file("pipe").c_str(), 0600));
+    OutputFile file(dir.file("pipe"));
+    file.stream() << "through a pipe\n";
+    std::string received;
+    std::thread reader([&] { received = test::slurp(dir.file("pipe")); });
+    file.commit();
+    reader.join();
+    EXPECT_EQ("through a pipe\n", received);
+    struct stat st {};
+    ASSERT_EQ(0, lstat(dir.file("pipe").c_str(), &st));
+    EXPECT_TRUE(S_ISFIFO(st.st_mode));
+}
+
+// In a child process: create an output, then be killed by 'signal_number'.
+// Returns the child's wait status.
+int status_of_child_killed_with_output(const std::string& path, int signal_number, bool ignore_first) {
+    const pid_t child = fork();
+    if (child == 0) {
+        if (ignore_first) signal(signal_number, SIG_IGN);  // as nohup does
+        {
+            OutputFile file(path);
+            file.stream() << "partial" << std::flush;
+            raise(signal_number);
+        }
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return status;
+}
+
+TEST(OutputFile, KillingSignalsRemoveTheTemporaryAndKeepTheirStatus) {
+    for (int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
+        test::TempDir dir;
+        const int status = status_of_child_killed_with_output(dir.file("out.csv"), signal_number, false);
+        ASSERT_TRUE(WIFSIGNALED(status)) << signal_number;
+        EXPECT_EQ(signal_number, WTERMSIG(status));
+        EXPECT_EQ(0u, dir.count()) << "signal " << signal_number << " left a temporary";
+    }
+}
+
+TEST(OutputFile, IgnoredSignalStaysIgnored) {
+    test::TempDir dir;
+    const int status = status_of_child_killed_with_output(dir.file("out.csv"), SIGHUP, true);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(0, WEXITSTATUS(status));
+    EXPECT_EQ(0u, dir.count()) << "the child went on and discarded its temporary";
 }
 
 }  // namespace

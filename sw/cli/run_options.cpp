@@ -1,0 +1,95 @@
+#include "sw/cli/run_options.h"
+
+#include <sstream>
+
+#include "models/control_registers/control_registers.h"
+#include "sw/cli/number_option.h"
+#include "sw/scene/scene.h"
+
+namespace po = boost::program_options;
+
+namespace cdvp {
+
+namespace {
+
+// Frames and objects are bounded by the address map and by a sane count;
+// SystemC's simulated time is checked against the whole run elsewhere.
+constexpr uint64_t kMaxFrames = 1'000'000'000;
+
+po::options_description run_options(RunOptions& o) {
+    po::options_description input("Input (one of)");
+    input.add_options()
+        ("trace", po::value(&o.trace)->value_name("FILE"), "scene trace CSV (see README: file formats)")
+        ("scene", po::value(&o.scene)->value_name("NAME"), "generated scene: spheres")
+        ("objects", number<uint64_t>(&o.objects, 0, address_map::kMaxObjects, "N"), "spheres: number of spheres")
+        ("frames", number<uint64_t>(&o.frames, 0, kMaxFrames, "F"), "spheres: number of frames")
+        ("seed", number<uint64_t>(&o.spheres.seed, 0, UINT64_MAX, "S"),
+         "spheres: random seed (same seed, same scene)");
+    po::options_description board("Board");
+    board.add_options()
+        ("board", po::value(&o.board_name)->value_name("NAME"),
+         "board preset from platform/boards (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) or a .json path; "
+         "without it: the board alone on an ideal, untimed bus")
+        ("m", number<uint32_t>(&o.board.m, 1, BoardConfig::kMaxM, "M"),
+         "parallelism: 2m-port memories, 2m-1 comparison lanes")
+        ("clock-mhz", number<double>(&o.board.clock_mhz, 1, 1000, "F"), "board clock in MHz")
+        ("compare-latency", number<uint32_t>(&o.board.compare.latency_cycles, 0, 64, "C"),
+         "float compare pipeline depth in cycles")
+        ("fifo-depth", number<uint32_t>(&o.board.collector.fifo_depth, 1, 1u << 20, "P"),
+         "pair FIFO depth in pairs (at least 2m-1)")
+        ("drain-rate", number<uint32_t>(&o.board.collector.drain_per_cycle, 1, 64, "R"),
+         "pairs moved from FIFO to pair buffer a cycle")
+        ("pair-buffer", number<uint32_t>(&o.board.collector.buffer_depth, 1, address_map::kMaxBufferedPairs, "P"),
+         "pair buffer depth in pairs before the host drains it");
+    po::options_description host("Host and baselines");
+    host.add_options()
+        ("transfer", po::value(&o.transfer)->value_name("dma|pio")->default_value(o.transfer),
+         "how the driver moves boxes and pairs: bridge DMA or programmed I/O")
+        ("wait", po::value(&o.wait)->value_name("irq|poll")->default_value(o.wait),
+         "how the driver waits for the board: interrupt or polling")
+        ("baseline", po::value(&o.baselines)->value_name("LIST"),
+         "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa")
+        ("host-factor", number<double>(&o.host_factor, 0.001, 1000, "F", false),
+         "host-speed factor: native software time x F = time on the modelled host (default: the board preset's)");
+    po::options_description output("Output (written only if the whole run succeeds)");
+    output.add_options()
+        ("pairs-out", po::value(&o.pairs_out)->value_name("FILE"), "overlapping pairs CSV (frame,a,b)")
+        ("report", po::value(&o.report)->value_name("FILE"), "JSON report: configuration and per-frame cycles")
+        ("vcd", po::value(&o.vcd)->value_name("FILE"), "board waveforms (VCD, opens in GTKWave)")
+        ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors")
+        ("help,h", po::bool_switch(&o.help), "show this help");
+    po::options_description all(
+        "Usage: cdvp run (--trace FILE | --scene spheres [--objects N] [--frames F] [--seed S]) [options]\n\n"
+        "Simulates each frame on the virtual platform and reports its pairs, cycles and time.\n"
+        "With --board, the board settings below come from the preset unless given.\n"
+        "Options are spelt in full (no abbreviations); numbers show their range and default");
+    all.add(input).add(board).add(host).add(output);
+    return all;
+}
+
+}  // namespace
+
+po::variables_map parse_run_options(int argc, char** argv, RunOptions& options) {
+    const po::options_description description = run_options(options);
+    const po::parsed_options parsed =
+        po::command_line_parser(argc, argv)
+            .options(description)
+            .style(po::command_line_style::default_style & ~po::command_line_style::allow_guessing)
+            .run();
+    for (const std::string& stray : po::collect_unrecognized(parsed.options, po::include_positional)) {
+        throw InputError("unexpected argument '" + stray + "'");
+    }
+    po::variables_map vm;
+    po::store(parsed, vm);
+    po::notify(vm);
+    return vm;
+}
+
+std::string run_options_help() {
+    RunOptions defaults;
+    std::ostringstream text;
+    text << run_options(defaults);
+    return text.str();
+}
+
+}  // namespace cdvp

@@ -1,0 +1,38 @@
+// The options of `cdvp run` and their parsing.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <boost/program_options.hpp>
+
+#include "models/board/board_config.h"
+#include "sw/apps/bouncing_spheres.h"
+
+namespace cdvp {
+
+struct RunOptions {
+    std::string trace;
+    std::string scene;
+    BouncingSpheresConfig spheres;
+    uint64_t objects = 500;
+    uint64_t frames = 1;
+    BoardConfig board;
+    std::string board_name;
+    std::string transfer = "dma";
+    std::string wait = "irq";
+    std::string baselines;
+    double host_factor = 0;  // unset: the preset's
+    std::string pairs_out, report, vcd;
+    bool quiet = false;
+    bool help = false;
+};
+
+// Parses argv (argv[0] is the command's name). Long options must be spelt
+// in full (no prefix guessing) and there are no positional arguments.
+// Throws boost::program_options::error or InputError on bad input.
+boost::program_options::variables_map parse_run_options(int argc, char** argv, RunOptions& options);
+// The --help text.
+std::string run_options_help();
+
+}  // namespace cdvp

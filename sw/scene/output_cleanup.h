@@ -1,0 +1,39 @@
+// Temporaries that must not outlive the process: when it is killed by
+// SIGINT, SIGTERM, SIGHUP or SIGPIPE, a signal handler unlinks every
+// registered path and re-raises the signal, so the process still ends with
+// the conventional status 128+signal.
+#pragma once
+
+#include <csignal>
+#include <string>
+
+namespace cdvp {
+
+class TemporaryRegistry {
+public:
+    // Registers 'path' (installing the handlers on first use; a signal the
+    // process ignores, as under nohup, stays ignored). Returns a slot for
+    // release(). Throws std::length_error when the fixed table is full or the
+    // path is longer than PATH_MAX: the handler may not allocate.
+    static int hold(const std::string& path);
+    // Forgets the slot (the path was renamed or removed); -1 is ignored.
+    static void release(int slot) noexcept;
+    // The signals whose default action the handler keeps.
+    static const int kSignals[4];
+};
+
+// Blocks the cleanup signals for its lifetime, so that a commit's renames
+// and their rollback are never cut short; a signal that arrives meanwhile
+// is delivered when the block ends.
+class CleanupSignalsBlocked {
+public:
+    CleanupSignalsBlocked();
+    ~CleanupSignalsBlocked();
+    CleanupSignalsBlocked(const CleanupSignalsBlocked&) = delete;
+    CleanupSignalsBlocked& operator=(const CleanupSignalsBlocked&) = delete;
+
+private:
+    sigset_t previous_;
+};
+
+}  // namespace cdvp

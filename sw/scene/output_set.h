@@ -1,0 +1,52 @@
+// All output files of a run as one transaction: declared with the run's
+// inputs, checked together before any work, committed together or not at
+// all.
+#pragma once
+
+#include <cstddef>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sw/scene/output_file.h"
+
+namespace cdvp {
+
+class OutputSet {
+public:
+    // 'label' names the path in messages: the flag that gave it ("--trace").
+    void add_input(std::string label, std::string path);
+    // Declares an output (see OutputFile for suffix and open_stream); its
+    // index is for file(). Nothing is touched before open().
+    std::size_t add_output(std::string label, std::string path, std::string suffix = "",
+                           bool open_stream = true);
+
+    // Resolves every output, refuses one that names an input or another
+    // output (same resolved path, or same file through any link), then
+    // creates every temporary. Throws InputError naming the labels and paths;
+    // nothing is left behind then. A character device, FIFO or /dev/stdout
+    // is exempt from the sameness check: it is written, never replaced.
+    void open();
+    OutputFile& file(std::size_t index) { return files_.at(index); }
+
+    // Finishes every file, then publishes them all: a device is written
+    // first, then each regular file renamed into place. If any step fails,
+    // the renames already done are undone (the old files restored from
+    // their hard-link backups, new ones removed) before the InputError
+    // propagates. Signals are held back meanwhile.
+    void commit();
+    // The same without exceptions (see OutputFile::try_finish): the error
+    // message ("LABEL: PATH: cannot write: REASON"), or nothing on success.
+    std::optional<std::string> try_commit() noexcept;
+
+private:
+    struct Declared {
+        std::string label, path, suffix;
+        bool open_stream;
+    };
+    std::vector<Declared> inputs_, outputs_;
+    std::deque<OutputFile> files_;  // deque: file() references stay valid
+};
+
+}  // namespace cdvp

@@ -1,0 +1,72 @@
+// The cdvp command line, run as users run it: a fresh directory per test.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace cdvp::test {
+
+namespace fs = std::filesystem;
+
+struct Result {
+    int status;
+    std::string out;
+    std::string err;
+};
+
+inline std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("cdvp-cli-" + std::to_string(::getpid()) + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // Runs `cdvp ARGS` (a shell command line) in the test's directory, with
+    // 'environment' ("NAME=value ...") set.
+    Result run(const std::string& args, const std::string& environment = "") {
+        const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
+        const std::string command = "cd '" + dir_.string() + "' && " + environment + " '" CDVP_BINARY "' " + args +
+                                    " > '" + out.string() + "' 2> '" + err.string() + "' < /dev/null";
+        const int raw = std::system(command.c_str());
+        Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+        fs::remove(out);
+        fs::remove(err);
+        return r;
+    }
+    fs::path write(const std::string& name, const std::string& text) {
+        std::ofstream(dir_ / name, std::ios::binary) << text;
+        return dir_ / name;
+    }
+    std::vector<std::string> files() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+    static std::string trace(const std::string& name) { return CDVP_SOURCE_DIR "/traces/" + name; }
+    static std::string preset(const std::string& name) { return CDVP_SOURCE_DIR "/platform/boards/" + name + ".json"; }
+
+    fs::path dir_;
+};
+
+}  // namespace cdvp::test

@@ -1,0 +1,164 @@
+// Board presets: every key declared, every number range-checked against its
+// unit, and every error naming the file and the key.
+#include "platform/board_preset.h"
+
+#include <gtest/gtest.h>
+
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sw/scene/scene.h"
+
+namespace cdvp {
+namespace {
+
+using nlohmann::json;
+
+std::string read(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+class PresetFile : public ::testing::Test {
+protected:
+    void SetUp() override {
+        char pattern[] = "/tmp/cdvp-preset-XXXXXX";
+        ASSERT_NE(nullptr, mkdtemp(pattern));
+        dir_ = pattern;
+        path_ = dir_ + "/board.json";
+    }
+    void TearDown() override {
+        std::remove(path_.c_str());
+        rmdir(dir_.c_str());
+    }
+    // Writes 'text' as the preset and returns load_board_preset's error.
+    std::string error_for(const std::string& text) {
+        std::ofstream(path_, std::ios::binary) << text;
+        try {
+            load_board_preset(path_);
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        return "accepted";
+    }
+    static json preset(const std::string& name) { return json::parse(read(boards_directory() + "/" + name + ".json")); }
+
+    std::string dir_, path_;
+};
+
+// Every {"value": ...} field of every shipped preset, set far outside any
+// plausible range either way, is refused by a range naming its key and unit.
+TEST_F(PresetFile, EveryNumberOfEveryPresetIsRangeChecked) {
+    int fields = 0;
+    for (const std::string& name : board_preset_names()) {
+        const json original = preset(name);
+        for (const char* section : {"board", "bus", "host"}) {
+            for (const auto& [key, field] : original[section].items()) {
+                if (!field.is_object()) continue;
+                ++fields;
+                for (const double bad : {1e300, -1e300, -1.0}) {
+                    json changed = original;
+                    changed[section][key]["value"] = bad;
+                    const std::string error = error_for(changed.dump());
+                    const std::string expected = path_ + ": " + section + "." + key + ": expected ";
+                    EXPECT_EQ(0u, error.rfind(expected, 0)) << name << ": " << error;
+                    EXPECT_NE(std::string::npos, error.find(" to ")) << "a range: " << error;
+                }
+            }
+        }
+    }
+    EXPECT_EQ(27 + 27 + 21, fields) << "board 6, host 4, PCI bus 17, PCIe bus 11 fields";
+}
+
+TEST_F(PresetFile, CountsMustBeWholeNumbers) {
+    json changed = preset("adm-xrc-ii");
+    changed["board"]["fifo_depth"]["value"] = 511.5;
+    EXPECT_EQ(path_ + ": board.fifo_depth: expected a whole number of pairs, got 511.5", error_for(changed.dump()));
+}
+
+TEST_F(PresetFile, UnknownKeysSuggestTheNearestValidOne) {
+    json changed = preset("pcie-gen3-x8");
+    changed["bus"]["lane"] = changed["bus"]["lanes"];
+    changed["bus"].erase("lanes");
+    EXPECT_EQ(path_ + ": bus.lane: unknown key; did you mean 'lanes'?", error_for(changed.dump()));
+    changed = preset("adm-xrc-ii");
+    changed["descripton"] = "typo";
+    EXPECT_EQ(path_ + ": descripton: unknown key; did you mean 'description'?", error_for(changed.dump()));
+    changed = preset("adm-xrc-ii");
+    changed["bus"]["lanes"] = changed["bus"]["wait_states"];  // a PCIe key on a PCI bus
+    EXPECT_EQ(path_ + ": bus.lanes: unknown key; did you mean 'type'?", error_for(changed.dump()));
+}
+
+TEST_F(PresetFile, MissingAndMalformedFieldsNameTheKey) {
+    json changed = preset("adm-xrc-ii");
+    changed["host"].erase("call_ns");
+    EXPECT_EQ(path_ + ": host.call_ns: missing; expected {\"value\": <number>, \"source\": \"<source or assumption>\"}",
+              error_for(changed.dump()));
+    changed = preset("adm-xrc-ii");
+    changed["host"]["call_ns"] = 2000;
+    EXPECT_EQ(0u, error_for(changed.dump()).rfind(path_ + ": host.call_ns: expected {\"value\"", 0));
+    changed = preset("adm-xrc-ii");
+    changed["host"]["call_ns"]["value"] = "2000";
+    EXPECT_EQ(0u, error_for(changed.dump()).rfind(path_ + ": host.call_ns: expected {\"value\"", 0));
+    changed = preset("adm-xrc-ii");
+    changed["name"] = "";
+    EXPECT_EQ(path_ + ": name: expected a non-empty string", error_for(changed.dump()));
+    changed = preset("adm-xrc-ii");
+    changed["bus"] = 5;
+    EXPECT_EQ(path_ + ": bus: expected an object of fields", error_for(changed.dump()));
+}
+
+TEST_F(PresetFile, SyntaxErrorsGiveLineAndColumn) {
+    EXPECT_EQ(0u, error_for("{\n  \"name\": \"x\",\n  \"board\" {}\n}\n").rfind(path_ + ":3:11: invalid JSON: ", 0));
+    EXPECT_EQ(0u, error_for("").rfind(path_ + ":1:1: invalid JSON: ", 0));
+    EXPECT_EQ(path_ + ": expected a JSON object", error_for("[1, 2]"));
+}
+
+TEST_F(PresetFile, KeysGivenTwiceAreRefused) {
+    EXPECT_EQ(path_ + ": board.clock_mhz: key given twice",
+              error_for("{\"board\": {\"clock_mhz\": {}, \"clock_mhz\": {}}}"));
+    EXPECT_EQ(path_ + ": name: key given twice", error_for("{\"name\": \"a\", \"name\": \"b\"}"));
+}
+
+TEST_F(PresetFile, OnlyASmallRegularFileIsAPreset) {
+    try {
+        load_board_preset(dir_ + "/");
+        ADD_FAILURE() << "a directory was read as a preset";
+    } catch (const InputError& e) {
+        EXPECT_EQ(dir_ + "/: cannot open: not a regular file", std::string(e.what()));
+    }
+    EXPECT_EQ(path_ + ": larger than 1048576 bytes; not a board preset", error_for(std::string(2 << 20, ' ')));
+}
+
+TEST_F(PresetFile, ErrorsStayOnOneLineWhateverTheFileHolds) {
+    json changed = preset("adm-xrc-ii");
+    changed["bus"]["type"] = "pci\ncontinued";
+    EXPECT_EQ(path_ + ": bus.type: expected \"pci\" or \"pcie\", got \"pci\\ncontinued\"", error_for(changed.dump()));
+    changed = preset("adm-xrc-ii");
+    changed["host"]["tab\tkey"] = 1;
+    EXPECT_EQ(path_ + ": host.tab\\tkey: unknown key; did you mean 'name'?", error_for(changed.dump()));
+}
+
+TEST_F(PresetFile, RangesReadInFull) {
+    json changed = preset("adm-xrc-ii");
+    changed["board"]["fifo_depth"]["value"] = 4294967296.0;
+    EXPECT_EQ(path_ + ": board.fifo_depth: expected 1 to 1048576 pairs, got 4294967296.0", error_for(changed.dump()));
+}
+
+TEST_F(PresetFile, ModelRulesNameThePresetKey) {
+    json changed = preset("adm-xrc-ii");
+    changed["bus"]["width_bits"]["value"] = 48;
+    EXPECT_EQ(path_ + ": bus.width_bits: expected 32 or 64, got 48", error_for(changed.dump()));
+}
+
+}  // namespace
+}  // namespace cdvp
