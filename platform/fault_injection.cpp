@@ -22,12 +22,13 @@ std::string valid_kinds() {
 }
 
 // A positive decimal integer up to max, all of text.
-uint64_t parse_count(const std::string& spec, const std::string& key, const std::string& text, uint64_t max) {
+uint64_t parse_count(const std::string& spec, const std::string& key, const std::string& text, uint64_t min,
+                     uint64_t max) {
     uint64_t value = 0;
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (text.empty() || ec != std::errc() || ptr != end || value == 0 || value > max) {
-        fail(spec, key + ": expected an integer from 1 to " + std::to_string(max) + ", found '" + text + "'");
+    if (text.empty() || ec != std::errc() || ptr != end || value < min || value > max) {
+        fail(spec, key + ": expected an integer from " + std::to_string(min) + " to " + std::to_string(max) + ", found '" + text + "'");
     }
     return value;
 }
@@ -37,6 +38,7 @@ FaultSpec parse_one(const std::string& spec) {
     if (at == std::string::npos) fail(spec, "expected KIND@frame=N[,n=K]");
     const std::string kind_text = spec.substr(0, at);
     FaultSpec parsed{FaultKind::kRetry, 0, 1};
+    bool has_frame = false;
     bool known = false;
     for (FaultKind kind : kAllFaultKinds) {
         if (kind_text == fault_kind_name(kind)) {
@@ -51,16 +53,17 @@ FaultSpec parse_one(const std::string& spec) {
         const std::size_t eq = item.find('=');
         const std::string key = item.substr(0, eq);
         const std::string value = eq == std::string::npos ? "" : item.substr(eq + 1);
-        if (key == "frame" && parsed.frame == 0) {
-            parsed.frame = parse_count(spec, key, value, UINT64_MAX);
+        if (key == "frame" && !has_frame) {
+            parsed.frame = parse_count(spec, key, value, 0, UINT64_MAX);
+            has_frame = true;
         } else if (key == "n" && !has_count) {
-            parsed.count = static_cast<uint32_t>(parse_count(spec, key, value, kMaxCount));
+            parsed.count = static_cast<uint32_t>(parse_count(spec, key, value, 1, kMaxCount));
             has_count = true;
         } else {
             fail(spec, "unexpected '" + item + "'; expected frame=N and optionally n=K, once each");
         }
     }
-    if (parsed.frame == 0) fail(spec, "expected frame=N after '@'");
+    if (!has_frame) fail(spec, "expected frame=N after '@'");
     return parsed;
 }
 

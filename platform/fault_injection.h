@@ -1,6 +1,7 @@
 // The --inject specs: KIND@WHERE, several separated by ';' or spaces.
 //   KIND   target-abort | master-abort | retry | disconnect | lost-irq | dma-hang | board-error
-//   WHERE  frame=N[,n=K]   the N-th frame the platform runs (from 1); K faults of that kind (default 1)
+//   WHERE  frame=N[,n=K]   the frame numbered N (as in the trace, the report and the pairs CSV);
+//                          K faults of that kind (default 1)
 // e.g. "retry@frame=3,n=2; lost-irq@frame=1". docs/faults.md describes each kind.
 #pragma once
 

@@ -60,13 +60,16 @@ void VirtualBoard::close_trace() {
     }
 }
 
-const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes) {
+const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes) { return run_frame(boxes, frames_); }
+
+const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes, uint64_t number) {
     if (boxes.size() > board_.core().capacity()) {
         throw std::invalid_argument("frame of " + std::to_string(boxes.size()) +
                                     " boxes exceeds the board's capacity of " +
                                     std::to_string(board_.core().capacity()));
     }
-    faults_.begin_frame(++frames_);
+    faults_.begin_frame(number);
+    ++frames_;
     cpu_.submit(boxes);
     sc_start();  // returns when no activity is left: the frame is complete
     if (!cpu_.finished()) throw std::runtime_error("the simulation stopped before the frame completed");

@@ -43,7 +43,11 @@ public:
     // Runs one frame; rethrows what the driver threw (DeviceFault when the
     // simulated system faulted, SimulatedTimeLimit), never with partial pairs.
     const FrameResult& run_frame(const std::vector<FloatBox>& boxes);
-    // Frames run so far (the injector's frame numbers count from 1).
+    // The same, for the frame numbered 'number' (a trace's own frame number):
+    // the number --inject's frame=N selects. Without it, frames are numbered
+    // 0, 1, 2, ... in the order they run.
+    const FrameResult& run_frame(const std::vector<FloatBox>& boxes, uint64_t number);
+    // Frames run so far.
     uint64_t frames_run() const { return frames_; }
     const FaultPlan& faults() const { return faults_; }
     // Flushes and closes the waveform file (also done by the destructor).

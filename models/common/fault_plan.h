@@ -26,10 +26,10 @@ constexpr FaultKind kAllFaultKinds[] = {FaultKind::kTargetAbort, FaultKind::kMas
 // The kind's spelling in a spec, e.g. "target-abort".
 const char* fault_kind_name(FaultKind kind);
 
-// Inject count faults of kind in the frame-th frame the platform runs (from 1).
+// Inject count faults of kind in the frame numbered frame.
 struct FaultSpec {
     FaultKind kind;
-    uint64_t frame = 1;
+    uint64_t frame = 0;
     uint32_t count = 1;
     bool operator==(const FaultSpec& o) const { return kind == o.kind && frame == o.frame && count == o.count; }
 };

@@ -20,6 +20,7 @@
 #include "models/control_registers/control_registers.h"
 #include "models/block_ram/block_ram.h"
 #include "platform/board_preset.h"
+#include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
 #include "sw/baselines/broad_phase.h"
 #include "sw/cli/frame_source.h"
@@ -159,6 +160,27 @@ void check_simulated_time(const RunOptions& o, const po::variables_map& vm, cons
     throw InputError(message.str());
 }
 
+// The --inject specs; a fault that the driver's mode can never meet is refused
+// rather than silently never injected.
+std::vector<FaultSpec> fault_specs(const std::vector<std::string>& texts, const DriverConfig& driver) {
+    std::vector<FaultSpec> specs;
+    for (const std::string& text : texts) {
+        for (const FaultSpec& spec : parse_fault_specs(text)) {
+            const bool needs_dma = spec.kind == FaultKind::kTargetAbort || spec.kind == FaultKind::kMasterAbort ||
+                                   spec.kind == FaultKind::kRetry || spec.kind == FaultKind::kDisconnect ||
+                                   spec.kind == FaultKind::kDmaHang;
+            if (needs_dma && !driver.use_dma) {
+                throw InputError("--inject: '" + to_string(spec) + "' faults a DMA; it needs --transfer dma");
+            }
+            if (spec.kind == FaultKind::kLostIrq && !driver.use_interrupts) {
+                throw InputError("--inject: '" + to_string(spec) + "' loses an interrupt; it needs --wait irq");
+            }
+            specs.push_back(spec);
+        }
+    }
+    return specs;
+}
+
 Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     Setup setup;
     setup.platform.board = o.board;
@@ -187,6 +209,7 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     setup.platform.driver.use_dma = o.transfer == "dma";
     setup.platform.driver.use_interrupts = o.wait == "irq";
     if (vm.count("host-factor")) setup.host_factor = o.host_factor;
+    setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
     std::stringstream names(o.baselines);
     for (std::string name; std::getline(names, name, ',');) {
         try {
@@ -263,6 +286,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.dma = setup.platform.driver.use_dma;
     run.interrupts = setup.platform.driver.use_interrupts;
     for (const auto& b : setup.baselines) run.baseline_names.push_back(b->name());
+    for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
     run.block_rams = platform.board().core().block_rams();
     run.bus = platform.bus_timing().describe();
@@ -272,7 +296,20 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     const auto wall_start = std::chrono::steady_clock::now();
     while (std::optional<Frame> frame = source.next()) {
         const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
-        const FrameResult& result = platform.run_frame(boxes);
+        // A simulated fault is caught here, so the platform is torn down by an
+        // ordinary return (see OutputFile::try_finish); the outputs' destructors
+        // discard their temporaries.
+        const FrameResult* frame_result = nullptr;
+        try {
+            frame_result = &platform.run_frame(boxes, frame->number);
+        } catch (const DeviceFault& e) {
+            std::cerr << "cdvp run: frame " << frame->number << ": " << printable(e.what()) << '\n';
+            return kExitDeviceFault;
+        } catch (const SimulatedTimeLimit& e) {
+            std::cerr << "cdvp run: frame " << frame->number << ": " << printable(e.what()) << '\n';
+            return 2;
+        }
+        const FrameResult& result = *frame_result;
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
                          AddressGenerator::sweep_cycles(boxes.size(), run.config.m), result.phases, {}};

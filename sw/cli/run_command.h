@@ -3,7 +3,13 @@
 
 namespace cdvp {
 
-// Returns the process exit status: 0 done, 2 bad input, 1 simulation failure.
+// Exit statuses of cdvp (README: exit status; docs/numerics.md).
+constexpr int kExitDone = 0;
+constexpr int kExitInternal = 1;     // a cdvp bug
+constexpr int kExitBadInput = 2;     // a bad trace, flag, preset or output path
+constexpr int kExitDeviceFault = 3;  // the simulated system faulted (bus, DMA, driver timeout, board error)
+
+// Returns the process exit status (above).
 int run_command(int argc, char** argv);
 
 }  // namespace cdvp

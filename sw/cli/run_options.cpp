@@ -41,7 +41,7 @@ po::options_description run_options(RunOptions& o) {
          "pairs moved from FIFO to pair buffer a cycle")
         ("pair-buffer", number<uint32_t>(&o.board.collector.buffer_depth, 1, address_map::kMaxBufferedPairs, "P"),
          "pair buffer depth in pairs before the host drains it");
-    po::options_description host("Host and baselines");
+    po::options_description host("Host, baselines and faults");
     host.add_options()
         ("transfer", po::value(&o.transfer)->value_name("dma|pio")->default_value(o.transfer),
          "how the driver moves boxes and pairs: bridge DMA or programmed I/O")
@@ -50,7 +50,10 @@ po::options_description run_options(RunOptions& o) {
         ("baseline", po::value(&o.baselines)->value_name("LIST"),
          "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa")
         ("host-factor", number<double>(&o.host_factor, 0.001, 1000, "F", false),
-         "host-speed factor: native software time x F = time on the modelled host (default: the board preset's)");
+         "host-speed factor: native software time x F = time on the modelled host (default: the board preset's)")
+        ("inject", po::value(&o.inject)->value_name("KIND@frame=N[,n=K]"),
+         "inject a bus or board fault into frame N (repeatable): target-abort, master-abort, retry, disconnect, "
+         "lost-irq, dma-hang, board-error (docs/faults.md)");
     po::options_description output("Output (written only if the whole run succeeds)");
     output.add_options()
         ("pairs-out", po::value(&o.pairs_out)->value_name("FILE"), "overlapping pairs CSV (frame,a,b)")

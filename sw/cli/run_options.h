@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <boost/program_options.hpp>
 
@@ -22,6 +23,7 @@ struct RunOptions {
     std::string transfer = "dma";
     std::string wait = "irq";
     std::string baselines;
+    std::vector<std::string> inject;  // fault specs, docs/faults.md
     double host_factor = 0;  // unset: the preset's
     std::string pairs_out, report, vcd;
     bool quiet = false;

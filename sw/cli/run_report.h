@@ -40,6 +40,7 @@ struct RunSummary {
     bool dma = true;
     bool interrupts = true;
     std::vector<std::string> baseline_names;
+    std::vector<std::string> inject;  // fault specs, as parsed
     std::vector<FrameStats> frames;
     double wall_seconds = 0.0;
 };

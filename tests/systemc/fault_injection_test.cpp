@@ -40,7 +40,7 @@ std::string message_of_failed_frame(VirtualBoard& platform, const std::vector<Fl
     return "";
 }
 
-// Frames 1 and 3 run clean, frame 2 carries the fault; returns frame 2's result.
+// Frames 0 and 2 run clean, frame 1 carries the fault; returns frame 1's result.
 FrameResult run_three_frames(VirtualBoard& platform, const std::vector<FloatBox>& boxes, FramePhases& clean) {
     clean = platform.run_frame(boxes).phases;
     const FrameResult injected = platform.run_frame(boxes);
@@ -77,8 +77,9 @@ TEST(FaultSpecs, RejectBadSpecsNamingWhatWasExpected) {
               "master-abort, retry, disconnect, lost-irq, dma-hang, board-error");
     EXPECT_EQ(message("retry"), "--inject: 'retry': expected KIND@frame=N[,n=K]");
     EXPECT_EQ(message("retry@n=2"), "--inject: 'retry@n=2': expected frame=N after '@'");
-    EXPECT_EQ(message("retry@frame=0"),
-              "--inject: 'retry@frame=0': frame: expected an integer from 1 to 18446744073709551615, found '0'");
+    EXPECT_EQ(message("retry@frame=x"),
+              "--inject: 'retry@frame=x': frame: expected an integer from 0 to 18446744073709551615, found 'x'");
+    EXPECT_EQ(parse_fault_specs("retry@frame=0")[0].frame, 0u);
     EXPECT_NE(message("retry@frame=-1").find("found '-1'"), std::string::npos);
     EXPECT_NE(message("retry@frame=2.5").find("found '2.5'"), std::string::npos);
     EXPECT_NE(message("retry@frame=99999999999999999999").find("found '99999999999999999999'"), std::string::npos);
@@ -90,8 +91,8 @@ TEST(FaultSpecs, RejectBadSpecsNamingWhatWasExpected) {
 
 TEST(FaultInjection, RetryAndDisconnectCompleteWithEveryPairAndCostBusTime) {
     // Elaborate every platform before the first one runs.
-    VirtualBoard retry("retry", paper_platform("retry@frame=2,n=3"), 300);
-    VirtualBoard disconnect("disconnect", paper_platform("disconnect@frame=2,n=3"), 300);
+    VirtualBoard retry("retry", paper_platform("retry@frame=1,n=3"), 300);
+    VirtualBoard disconnect("disconnect", paper_platform("disconnect@frame=1,n=3"), 300);
     for (VirtualBoard* each : {&retry, &disconnect}) {
         const std::string kind = each->basename();
         SCOPED_TRACE(kind);
@@ -108,7 +109,7 @@ TEST(FaultInjection, RetryAndDisconnectCompleteWithEveryPairAndCostBusTime) {
 }
 
 TEST(FaultInjection, ALostInterruptIsRecoveredByTheTimeoutsStatusPoll) {
-    VirtualBoard platform("platform", paper_platform("lost-irq@frame=2,n=2"), 300);
+    VirtualBoard platform("platform", paper_platform("lost-irq@frame=1,n=2"), 300);
     const auto boxes = scene();
     FramePhases clean;
     const FrameResult injected = run_three_frames(platform, boxes, clean);
@@ -124,10 +125,10 @@ TEST(FaultInjection, AbortsHangsAndBoardErrorsFailTheFrameAndTheNextFrameRunsCle
         const char* message;
     };
     const Case cases[] = {
-        {"target-abort@frame=2", "DMA fault: target abort (the board rejected the address) at address 0x1000000"},
-        {"master-abort@frame=2", "DMA fault: descriptor fetch failed (master abort) at address 0x"},
-        {"dma-hang@frame=2", "DMA timed out: no completion within "},
-        {"board-error@frame=2", "board error status: the board reported an error (injected board-error)"},
+        {"target-abort@frame=1", "DMA fault: target abort (the board rejected the address) at address 0x1000000"},
+        {"master-abort@frame=1", "DMA fault: descriptor fetch failed (master abort) at address 0x"},
+        {"dma-hang@frame=1", "DMA timed out: no completion within "},
+        {"board-error@frame=1", "board error status: the board reported an error (injected board-error)"},
     };
     std::vector<std::unique_ptr<VirtualBoard>> platforms;
     for (const Case& c : cases) {
@@ -148,7 +149,7 @@ TEST(FaultInjection, AbortsHangsAndBoardErrorsFailTheFrameAndTheNextFrameRunsCle
 
 TEST(FaultInjection, AMasterAbortOnTheUploadChainFailsAtItsFirstDescriptor) {
     // The upload chain's first bus-master access is its first descriptor.
-    VirtualBoard platform("platform", paper_platform("master-abort@frame=1"), 300);
+    VirtualBoard platform("platform", paper_platform("master-abort@frame=0"), 300);
     const auto boxes = scene();
     const std::string message = message_of_failed_frame(platform, boxes);
     EXPECT_EQ(message.rfind("DMA fault: descriptor fetch failed (master abort)", 0), 0u) << message;
@@ -156,7 +157,7 @@ TEST(FaultInjection, AMasterAbortOnTheUploadChainFailsAtItsFirstDescriptor) {
 }
 
 TEST(FaultInjection, PollingDriverIsImmuneToLostInterruptsAndStillTimesOutAHang) {
-    VirtualBoard platform("platform", paper_platform("lost-irq@frame=1; dma-hang@frame=2", false), 300);
+    VirtualBoard platform("platform", paper_platform("lost-irq@frame=0; dma-hang@frame=1", false), 300);
     const auto boxes = scene();
     EXPECT_EQ(sorted(platform.run_frame(boxes).pairs), reference_pairs(boxes));
     EXPECT_EQ(message_of_failed_frame(platform, boxes).rfind("DMA timed out", 0), 0u);
