@@ -304,6 +304,12 @@ json parse_preset(const std::string& path, const std::string& text) {
         const std::size_t detail = what.find("syntax error");
         throw InputError(position(path, text, e.byte) + ": invalid JSON: " +
                          (detail == std::string::npos ? what : what.substr(detail)));
+    } catch (const json::exception& e) {
+        // A number beyond double's range (out_of_range 406) and the like: the
+        // library gives no position, so the message names the file alone.
+        const std::string what = e.what();
+        const std::size_t detail = what.find("] ");
+        throw InputError(path + ": invalid JSON: " + (detail == std::string::npos ? what : what.substr(detail + 2)));
     }
     if (!duplicate.empty()) throw InputError(path + ": " + duplicate + ": key given twice");
     if (!root.is_object()) throw InputError(path + ": expected a JSON object");

@@ -4,7 +4,7 @@
 # finds a crash, a sanitizer report, a timeout or an out-of-memory input.
 #
 #   scripts/fuzz.sh [NAME...]        default: every *_fuzzer built
-# Environment (defaults): FUZZ_SECONDS (60) per fuzzer, FUZZ_RSS_MB (2048),
+# Environment (defaults): FUZZ_SECONDS (60) per fuzzer, FUZZ_RSS_MB (2048), FUZZ_MALLOC_MB (128),
 # FUZZ_TIMEOUT (10 s per input), FUZZ_JOBS (nproc) fuzzers at once,
 # BUILD_DIR (build-fuzz), CXX_FUZZ (clang++-14, else clang++).
 # New inputs go to BUILD_DIR/corpus/NAME (kept between local runs), crashing
@@ -14,6 +14,7 @@ cd "$(dirname "$0")/.."
 
 seconds="${FUZZ_SECONDS:-60}"
 rss_mb="${FUZZ_RSS_MB:-2048}"
+malloc_mb="${FUZZ_MALLOC_MB:-128}"  # one allocation larger than this is a finding: no input may make a model allocate without bound
 timeout="${FUZZ_TIMEOUT:-10}"
 jobs="${FUZZ_JOBS:-$(nproc)}"
 build_dir="${BUILD_DIR:-build-fuzz}"
@@ -30,6 +31,8 @@ run() { echo "+ $*"; "$@"; }
 # As in scripts/sanitize.sh: SystemC's coroutine switches leave ASan no fake
 # stacks to keep, and its memory pool would hide allocations from ASan.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_stack_use_after_return=0}"
+# libFuzzer's own driver allocation, reported as a leak at exit (tests/fuzz/lsan.supp).
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0}"
 export SYSTEMC_MEMPOOL_DONT_USE=1
 
 start=$SECONDS
@@ -57,7 +60,7 @@ fuzz_one() {
     echo "fuzz: $name: FAIL: no such fuzzer $binary"
     return 1
   fi
-  local args=(-max_total_time="$seconds" -rss_limit_mb="$rss_mb" -timeout="$timeout"
+  local args=(-max_total_time="$seconds" -rss_limit_mb="$rss_mb" -malloc_limit_mb="$malloc_mb" -timeout="$timeout"
               -artifact_prefix="$artifacts" -print_final_stats=1)
   [ -f "$dict" ] && args+=(-dict="$dict")
   local dirs=("$corpus")

@@ -21,7 +21,7 @@ constexpr const char* kUsage =
     "Commands:\n"
     "  run       simulate scene frames on the cycle-level board; write pairs, a report, waveforms\n"
     "\n"
-    "Run 'cdvp <command> --help' for a command's options.\n"
+    "Run 'cdvp <command> --help' for a command's options; 'cdvp --version' prints the version.\n"
     "\n"
     "Exit status: 0 done; 1 internal failure (a cdvp bug); 2 bad input (file, flag, preset or\n"
     "output path), with one line on stderr naming it; 3 the simulated system faulted;\n"

@@ -120,6 +120,8 @@ TEST_F(PresetFile, MissingAndMalformedFieldsNameTheKey) {
 TEST_F(PresetFile, SyntaxErrorsGiveLineAndColumn) {
     EXPECT_EQ(0u, error_for("{\n  \"name\": \"x\",\n  \"board\" {}\n}\n").rfind(path_ + ":3:11: invalid JSON: ", 0));
     EXPECT_EQ(0u, error_for("").rfind(path_ + ":1:1: invalid JSON: ", 0));
+    // A number beyond double's range is the library's out_of_range, not a parse_error.
+    EXPECT_EQ(error_for("{\"name\": 1e3000}"), path_ + ": invalid JSON: number overflow parsing '1e3000'");
     EXPECT_EQ(path_ + ": expected a JSON object", error_for("[1, 2]"));
 }
 
