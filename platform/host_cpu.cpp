@@ -18,7 +18,8 @@ HostCpu::HostCpu(const sc_module_name& name, HostMemory& memory, const sc_event&
 void HostCpu::submit(const std::vector<FloatBox>& boxes) {
     boxes_ = &boxes;
     pending_ = true;
-    error_ = nullptr;
+    fault_ = FrameFault{};
+    internal_error_ = nullptr;
     submitted_.notify(SC_ZERO_TIME);
 }
 
@@ -33,8 +34,12 @@ void HostCpu::run() {
                 opened_ = true;
             }
             result_.phases = driver_.run_frame(*boxes_, result_.pairs);
+        } catch (const DeviceFault& e) {
+            fault_ = FrameFault{FrameFault::Kind::kDevice, e.what()};
+        } catch (const SimulatedTimeLimit& e) {
+            fault_ = FrameFault{FrameFault::Kind::kTimeLimit, e.what()};
         } catch (...) {
-            error_ = std::current_exception();
+            internal_error_ = std::current_exception();
         }
         pending_ = false;
     }

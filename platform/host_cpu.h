@@ -1,6 +1,7 @@
 // The host PC: a CPU thread that runs the driver, frame by frame.
 #pragma once
 
+#include <cstdint>
 #include <exception>
 #include <memory>
 #include <string>
@@ -19,6 +20,16 @@ struct FrameResult {
     FramePhases phases;
 };
 
+// Why a frame did not complete. Faults travel by value from the CPU thread to
+// the caller: an exception rethrown on the main stack after the coroutines
+// have run trips AddressSanitizer's stale stack bounds (docs/testing.md).
+struct FrameFault {
+    enum class Kind : uint8_t { kNone, kDevice, kTimeLimit };
+    Kind kind = Kind::kNone;
+    std::string message;  // the driver's message, one line
+    explicit operator bool() const { return kind != Kind::kNone; }
+};
+
 class HostCpu : public sc_core::sc_module {
 public:
     SC_HAS_PROCESS(HostCpu);
@@ -32,8 +43,10 @@ public:
     // Queues a frame for the CPU thread; run the simulation to process it.
     void submit(const std::vector<FloatBox>& boxes);
     bool finished() const { return !pending_; }
-    // What the driver threw (null when the frame completed), to rethrow on the caller's side.
-    std::exception_ptr error() const { return error_; }
+    // The fault that ended the frame (none when it completed).
+    const FrameFault& fault() const { return fault_; }
+    // Anything else the driver threw (a defect, not a simulated fault).
+    std::exception_ptr internal_error() const { return internal_error_; }
     const FrameResult& result() const { return result_; }
 
 private:
@@ -45,7 +58,8 @@ private:
     bool pending_ = false;
     sc_core::sc_event submitted_;
     FrameResult result_;
-    std::exception_ptr error_;
+    FrameFault fault_;
+    std::exception_ptr internal_error_;
 };
 
 }  // namespace cdvp
