@@ -1,5 +1,6 @@
 // The board's datapath against the plain C++ reference, without a kernel.
 #include "models/board/board_core.h"
+#include "models/address_generator/address_generator.h"
 
 #include <gtest/gtest.h>
 
@@ -164,36 +165,36 @@ TEST(BoardCore, RegistersAndRefusedCommands) {
 
     core.write_register(ControlRegisters::kObjectCount, 11);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
-    EXPECT_TRUE(core.registers().error) << "more objects than the memories hold";
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kTooManyObjects);
-    EXPECT_TRUE(core.registers().interrupt()) << "an error interrupts like done";
+    EXPECT_TRUE(core.status().error) << "more objects than the memories hold";
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kTooManyObjects);
+    EXPECT_TRUE(core.interrupt()) << "an error interrupts like done";
     EXPECT_FALSE(core.running());
 
     core.write_register(ControlRegisters::kObjectCount, 10);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
-    EXPECT_FALSE(core.registers().error);
+    EXPECT_FALSE(core.status().error);
     EXPECT_TRUE(core.running());
     ASSERT_TRUE(core.read_register(ControlRegisters::kStatus, value));
     EXPECT_EQ(value, uint32_t{ControlRegisters::kBusy});
     EXPECT_EQ(core.write_coordinate(kMinX, 0, 0), Write::kRefused) << "memories are locked while busy";
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kWriteWhileBusy);
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kWriteWhileBusy);
     EXPECT_EQ(core.write_register(ControlRegisters::kObjectCount, 3), Write::kRefused) << "the sweep's count is fixed";
     ASSERT_TRUE(core.read_register(ControlRegisters::kObjectCount, value));
     EXPECT_EQ(value, 10u) << "read-back equals the count the sweep uses";
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
-    EXPECT_TRUE(core.registers().error) << "start while busy";
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kStartWhileBusy);
+    EXPECT_TRUE(core.status().error) << "start while busy";
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kStartWhileBusy);
     while (core.running()) core.step();
     EXPECT_EQ(core.phase(), BoardCore::Phase::Done);
-    EXPECT_TRUE(core.registers().interrupt());
+    EXPECT_TRUE(core.interrupt());
     core.write_register(ControlRegisters::kControl, ControlRegisters::kAcknowledge);
-    EXPECT_FALSE(core.registers().interrupt()) << "acknowledged: the shared line may fall";
-    EXPECT_TRUE(core.registers().done) << "acknowledging keeps the status";
+    EXPECT_FALSE(core.interrupt()) << "acknowledged: the shared line may fall";
+    EXPECT_TRUE(core.status().done) << "acknowledging keeps the status";
     ASSERT_TRUE(core.read_register(ControlRegisters::kCyclesLo, value));
-    EXPECT_EQ(value, AddressGenerator::sweep_cycles(10, 2) + config.pipeline_latency() + core.registers().stalls);
+    EXPECT_EQ(value, AddressGenerator::sweep_cycles(10, 2) + config.pipeline_latency() + core.counters().stalls);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
-    EXPECT_TRUE(core.registers().error) << "resume without a pause";
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kResumeNotPaused);
+    EXPECT_TRUE(core.status().error) << "resume without a pause";
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kResumeNotPaused);
 }
 
 TEST(BoardCore, AbortStopsASweepAndClearsEveryStatusBit) {
@@ -204,12 +205,12 @@ TEST(BoardCore, AbortStopsASweepAndClearsEveryStatusBit) {
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
     core.step();
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
-    ASSERT_TRUE(core.registers().error);
+    ASSERT_TRUE(core.status().error);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
     EXPECT_EQ(core.phase(), BoardCore::Phase::Idle);
-    EXPECT_EQ(core.registers().status(), 0u);
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kNoError);
-    EXPECT_FALSE(core.registers().interrupt());
+    EXPECT_EQ(core.status().bits(), 0u);
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kNoError);
+    EXPECT_FALSE(core.interrupt());
     EXPECT_EQ(core.write_register(ControlRegisters::kObjectCount, 4), BoardCore::Write::kDone) << "idle again";
 }
 
