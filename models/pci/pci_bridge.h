@@ -14,6 +14,7 @@
 #include <tlm_utils/simple_target_socket.h>
 
 #include "models/common/fault_plan.h"
+#include "models/common/register_bank.h"
 #include "models/pci/bus_timing.h"
 
 namespace cdvp {
@@ -128,6 +129,8 @@ private:
     void b_transport(tlm::tlm_generic_payload& payload, sc_core::sc_time& delay);
     unsigned int transport_dbg(tlm::tlm_generic_payload& payload);
     tlm::tlm_response_status access_registers(tlm::tlm_generic_payload& payload);
+    void declare_registers();
+    void clear_error();
     void write_control(uint32_t value);
     void dma_engine();
     Fault run_transfer(double& ns);
@@ -145,6 +148,7 @@ private:
     std::shared_ptr<const BusTiming> timing_;
     FaultPlan* faults_ = nullptr;
     DmaRegisters dma_;
+    RegisterBank registers_;
     sc_core::sc_event dma_start_;
     sc_core::sc_event abort_;
     sc_core::sc_event inta_changed_;
