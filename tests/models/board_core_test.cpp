@@ -235,3 +235,76 @@ TEST(BoardConfig, RejectsAbsurdSettings) {
 
 }  // namespace
 }  // namespace cdvp
+
+namespace cdvp {
+namespace {
+
+void load(BoardCore& core, const std::vector<FloatBox>& boxes) {
+    for (uint32_t i = 0; i < boxes.size(); ++i) {
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
+            const float v = c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3];
+            core.write_coordinate(static_cast<Coordinate>(c), i, ComparisonUnit::as_bits(v));
+        }
+    }
+    core.write_register(ControlRegisters::kObjectCount, static_cast<uint32_t>(boxes.size()));
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
+}
+
+// A board whose engine computed each segment ahead answers, at every edge,
+// exactly what a board stepped edge by edge shows: the host may look at any time.
+TEST(BoardCore, ASegmentComputedAheadAnswersForEveryEdge) {
+    std::mt19937 rng(23);
+    for (uint32_t depth : {1u, 5u, 64u}) {
+        BoardConfig config;
+        config.m = 3;
+        config.collector.fifo_depth = 5;
+        config.collector.buffer_depth = depth;
+        const auto boxes = random_boxes(90, 6.0f, 3.0f, rng);
+        BoardCore stepped(config, 90), ahead(config, 90);
+        load(stepped, boxes);
+        load(ahead, boxes);
+        uint32_t segments = 0;
+        for (;;) {
+            ++segments;
+            const uint64_t edges = ahead.segment_edges();
+            for (uint64_t e = 1; e <= edges; ++e) {
+                stepped.step();
+                ahead.advance_to(e);
+                ASSERT_EQ(ahead.counters(), stepped.counters()) << "edge " << e << " of segment " << segments;
+                ASSERT_EQ(ahead.status().bits(), stepped.status().bits()) << "edge " << e;
+            }
+            ASSERT_FALSE(stepped.running()) << "the stepped board ends its segment at the same edge";
+            ASSERT_EQ(ahead.buffered_pairs(), stepped.buffered_pairs());
+            for (uint32_t k = 0; k < ahead.buffered_pairs(); ++k) {
+                ASSERT_EQ(ahead.buffered_pair(k), stepped.buffered_pair(k));
+            }
+            if (stepped.phase() == BoardCore::Phase::Done) break;
+            stepped.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
+            ahead.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
+        }
+        if (depth < 64) EXPECT_GT(segments, 10u) << "many overflow pauses";
+    }
+}
+
+// ABORT in the middle of a segment computed ahead keeps what the buffer held then.
+TEST(BoardCore, AbortAfterComputingAheadKeepsTheBufferOfThatEdge) {
+    BoardConfig config;
+    config.m = 2;
+    const std::vector<FloatBox> boxes(60, FloatBox{{0, 0, 0}, {1, 1, 1}});
+    BoardCore stepped(config, 60), ahead(config, 60);
+    load(stepped, boxes);
+    load(ahead, boxes);
+    ASSERT_GT(ahead.segment_edges(), 500u);
+    for (int e = 0; e < 400; ++e) stepped.step();
+    ahead.advance_to(400);
+    const SweepCounters before = stepped.counters();
+    ahead.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
+    stepped.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
+    EXPECT_EQ(ahead.phase(), BoardCore::Phase::Idle);
+    EXPECT_EQ(ahead.counters(), before);
+    ASSERT_EQ(ahead.buffered_pairs(), before.buffered);
+    for (uint32_t k = 0; k < before.buffered; ++k) EXPECT_EQ(ahead.buffered_pair(k), stepped.buffered_pair(k));
+}
+
+}  // namespace
+}  // namespace cdvp
