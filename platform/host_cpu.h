@@ -11,7 +11,9 @@
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
 
+#include "platform/host_memory.h"
 #include "sw/driver/board_driver.h"
+#include "sw/driver/host_port.h"
 
 namespace cdvp {
 
@@ -30,7 +32,9 @@ struct FrameFault {
     explicit operator bool() const { return kind != Kind::kNone; }
 };
 
-class HostCpu : public sc_core::sc_module {
+// The CPU thread is the driver's host: it implements the driver's port with
+// blocking transport on its initiator socket and SystemC time.
+class HostCpu : public sc_core::sc_module, private HostPort {
 public:
     SC_HAS_PROCESS(HostCpu);
 
@@ -52,6 +56,19 @@ public:
 private:
     void run();
 
+    // HostPort
+    std::string read(uint64_t address, void* data, uint32_t length) override;
+    std::string write(uint64_t address, const void* data, uint32_t length) override;
+    unsigned char* memory(uint64_t address) override;
+    uint64_t memory_size() const override;
+    SimTime now() const override;
+    SimTime end_of_time() const override;
+    void wait(SimTime duration) override;
+    void wait_for_interrupt(SimTime timeout) override;
+    std::string transport(tlm::tlm_command command, uint64_t address, void* data, uint32_t length);
+
+    HostMemory& memory_;
+    const sc_core::sc_event& interrupt_;
     BoardDriver driver_;
     bool opened_ = false;
     const std::vector<FloatBox>* boxes_ = nullptr;
