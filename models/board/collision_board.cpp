@@ -61,25 +61,26 @@ void CollisionBoard::trace(sc_trace_file* file) {
     sc_trace(file, waves_.pair_count, p + "pair_count", bits_for(config.collector.buffer_depth));
 }
 
-void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& /*delay*/) {
+void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
     // Host accesses take no board time here; the bus in front of the board
-    // annotates its own timing.
+    // annotates its own timing, and the access happens at now + delay.
     if (const tlm::tlm_response_status shape = check_plain_access(payload); shape != tlm::TLM_OK_RESPONSE) {
         payload.set_response_status(shape);
         return;
     }
-    sync();
+    const sc_time at = sc_time_stamp() + delay;
+    sync(at);
     const uint64_t segments_before = core_.segments_started();
     payload.set_response_status(
         access(payload.get_command(), payload.get_address(), payload.get_data_ptr(), payload.get_data_length()));
-    if (payload.get_command() == tlm::TLM_WRITE_COMMAND) schedule_clock(segments_before);
-    irq_changed_.notify(SC_ZERO_TIME);  // a command or the synchronisation may have moved the line
+    if (payload.get_command() == tlm::TLM_WRITE_COMMAND) schedule_clock(segments_before, at);
+    irq_changed_.notify(delay);  // a command or the synchronisation may have moved the line
 }
 
 unsigned int CollisionBoard::transport_dbg(tlm::tlm_generic_payload& payload) {
     // Debug reads only: a debug write must not start the clock behind the simulation's back.
     if (payload.get_command() != tlm::TLM_READ_COMMAND) return 0;
-    sync();
+    sync(sc_time_stamp());
     const bool ok = access(tlm::TLM_READ_COMMAND, payload.get_address(), payload.get_data_ptr(),
                            payload.get_data_length()) == tlm::TLM_OK_RESPONSE;
     return ok ? payload.get_data_length() : 0;
@@ -153,32 +154,35 @@ tlm::tlm_response_status CollisionBoard::access(tlm::tlm_command command, uint64
     return tlm::TLM_ADDRESS_ERROR_RESPONSE;
 }
 
-void CollisionBoard::sync() {
-    if (!core_.running()) return;
-    core_.advance_to((sc_time_stamp() - segment_start_).value() / period_.value());
+void CollisionBoard::sync(const sc_time& at) {
+    // An access annotated behind the segment's start (a loosely-timed
+    // initiator) sees the board as it was at the start.
+    if (!core_.running() || at <= segment_start_) return;
+    core_.advance_to((at - segment_start_).value() / period_.value());
 }
 
-void CollisionBoard::schedule_clock(uint64_t segments_before) {
+void CollisionBoard::schedule_clock(uint64_t segments_before, const sc_time& at) {
     if (core_.segments_started() == segments_before) {
         if (!core_.running()) clock_event_.cancel();  // aborted, or the command was refused
         return;
     }
-    segment_start_ = sc_time_stamp();
+    segment_start_ = at;
     clock_event_.cancel();
+    const sc_time lead = at - sc_time_stamp();
     if (traced_engine_ != nullptr) {
-        clock_event_.notify(period_);  // the first edge comes one period after the command
+        clock_event_.notify(lead + period_);  // the first edge comes one period after the command
         return;
     }
     const uint64_t edges = core_.segment_edges();
     // A segment that would end past the simulator's last instant never ends;
     // the driver's own time limit reports it.
-    if (edges <= (sc_max_time() - sc_time_stamp()).value() / period_.value()) {
-        clock_event_.notify(sc_time::from_value(edges * period_.value()));
+    if (edges <= (sc_max_time() - at).value() / period_.value()) {
+        clock_event_.notify(lead + sc_time::from_value(edges * period_.value()));
     }
 }
 
 void CollisionBoard::on_clock_event() {
-    sync();
+    sync(sc_time_stamp());
     if (traced_engine_ != nullptr) {
         sample_trace();
         if (core_.running()) {

@@ -48,10 +48,11 @@ private:
     // Returns the TLM response for an access of len bytes at address.
     tlm::tlm_response_status access(tlm::tlm_command command, uint64_t address, unsigned char* data,
                                     unsigned int length);
-    // Brings the board to the edges elapsed since the segment began.
-    void sync();
-    // After a host command: schedules the clock for a new segment, or stops it.
-    void schedule_clock(uint64_t segments_before);
+    // Brings the board to the edges elapsed from the segment's start to `at`.
+    void sync(const sc_core::sc_time& at);
+    // After a host command taken at `at`: schedules the clock for a new
+    // segment, or stops it.
+    void schedule_clock(uint64_t segments_before, const sc_core::sc_time& at);
     void on_clock_event();  // the segment's end (or, traced, one rising edge)
     void clock_fall();      // traced clock only: the falling edge
     void drive_irq();

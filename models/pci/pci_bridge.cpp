@@ -31,6 +31,12 @@ PciBridge::PciBridge(const sc_module_name& name, std::shared_ptr<const BusTiming
 
 void PciBridge::b_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
     if (starts_within(payload.get_address(), D::kBase, D::kSize)) {
+        // The DMA engine's state is kept by its own process, so it can only
+        // answer for the present: synchronise to the access's time first.
+        if (delay > SC_ZERO_TIME) {
+            wait(delay);
+            delay = SC_ZERO_TIME;
+        }
         payload.set_response_status(access_registers(payload));
         return;
     }

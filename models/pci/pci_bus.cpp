@@ -24,10 +24,10 @@ void PciBus::cpu_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
     const double words = (payload.get_data_length() + 3) / 4;
     const double per_word =
         payload.get_command() == tlm::TLM_READ_COMMAND ? timing_->pio_read_ns() : timing_->pio_write_ns();
-    // Synchronise before the access reaches the board, so a START or RESUME
-    // takes effect when the write has crossed the bus, not when it was issued.
-    wait(delay + sc_time(words * per_word, SC_NS));
-    delay = SC_ZERO_TIME;
+    // Loosely timed: the access reaches the board when it has crossed the
+    // bus, at the initiator's time plus the annotated delay; the targets act
+    // at that time, and the initiator decides when to synchronise.
+    delay += sc_time(words * per_word, SC_NS);
     board_socket->b_transport(payload, delay);
 }
 
