@@ -10,6 +10,7 @@
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
+#include <tlm_utils/tlm_quantumkeeper.h>
 
 #include "platform/host_memory.h"
 #include "sw/driver/board_driver.h"
@@ -34,15 +35,36 @@ struct FrameFault {
 
 // The CPU thread is the driver's host: it implements the driver's port with
 // blocking transport on its initiator socket and SystemC time.
+// The CPU's own quantum (the global one is shared by every platform in a
+// process), with sync points aligned to multiples of it as the global one's.
+class HostQuantumKeeper : public tlm_utils::tlm_quantumkeeper {
+public:
+    explicit HostQuantumKeeper(const sc_core::sc_time& quantum) : quantum_(quantum) {}
+    const sc_core::sc_time& quantum() const { return quantum_; }
+
+protected:
+    sc_core::sc_time compute_local_quantum() override;
+
+private:
+    sc_core::sc_time quantum_;
+};
+
+// The CPU thread is loosely timed, as Accellera's lt_td_initiator: accesses
+// annotate their delay into a quantum keeper instead of waiting, and the
+// thread synchronises when the quantum runs out or before it waits for the
+// interrupt.
 class HostCpu : public sc_core::sc_module, private HostPort {
 public:
     SC_HAS_PROCESS(HostCpu);
 
     tlm_utils::simple_initiator_socket<HostCpu> socket;  // programmed I/O onto the PCI bus
 
-    // interrupt: when the driver's handler runs; period: the board's clock.
+    // interrupt: when the driver's handler runs; period: the board's clock;
+    // quantum: how far the CPU may run ahead of the rest of the simulation
+    // (zero: it synchronises at every access, the most accurate).
     HostCpu(const sc_core::sc_module_name& name, HostMemory& memory, const sc_core::sc_event& interrupt,
-            const sc_core::sc_time& period, const DriverConfig& config, std::shared_ptr<const BusTiming> bus);
+            const sc_core::sc_time& period, const DriverConfig& config, std::shared_ptr<const BusTiming> bus,
+            const sc_core::sc_time& quantum = sc_core::SC_ZERO_TIME);
 
     // Queues a frame for the CPU thread; run the simulation to process it.
     void submit(const std::vector<FloatBox>& boxes);
@@ -66,8 +88,11 @@ private:
     void wait(SimTime duration) override;
     void wait_for_interrupt(SimTime timeout) override;
     std::string transport(tlm::tlm_command command, uint64_t address, void* data, uint32_t length);
+    void note_interrupt() { last_interrupt_ = sc_core::sc_time_stamp(); }
 
     HostMemory& memory_;
+    HostQuantumKeeper quantum_keeper_;
+    sc_core::sc_time last_interrupt_ = sc_core::sc_max_time();
     const sc_core::sc_event& interrupt_;
     BoardDriver driver_;
     bool opened_ = false;

@@ -20,7 +20,8 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
       bridge_("bridge", bus_or_ideal(config.bus)),
       bus_("pci", bus_or_ideal(config.bus)),
       memory_("memory", BoardDriver::host_memory_bytes(capacity, config.board.collector.buffer_depth)),
-      cpu_("cpu", memory_, bus_.interrupt_event(), board_.period(), config.driver, bus_or_ideal(config.bus)),
+      cpu_("cpu", memory_, bus_.interrupt_event(), board_.period(), config.driver, bus_or_ideal(config.bus),
+           sc_time(config.quantum_ns, SC_NS)),
       fpga_irq_("fpga_irq"),
       inta_("inta") {
     cpu_.socket.bind(bus_.cpu_socket);

@@ -24,6 +24,9 @@ struct PlatformConfig {
     DriverConfig driver;
     // Faults to inject (docs/faults.md); empty for none.
     std::vector<FaultSpec> faults;
+    // How far the host CPU may run ahead of the rest of the simulation, in
+    // ns; 0 synchronises at every access (exact). See HostCpu.
+    double quantum_ns = 0.0;
 };
 
 // Elaborate once, then run any number of frames: each run_frame() hands the

@@ -210,6 +210,7 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     setup.platform.driver.use_interrupts = o.wait == "irq";
     if (vm.count("host-factor")) setup.host_factor = o.host_factor;
     setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
+    setup.platform.quantum_ns = o.quantum_ns;
     std::stringstream names(o.baselines);
     for (std::string name; std::getline(names, name, ',');) {
         try {
@@ -285,6 +286,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.host_factor = setup.host_factor;
     run.dma = setup.platform.driver.use_dma;
     run.interrupts = setup.platform.driver.use_interrupts;
+    run.quantum_ns = setup.platform.quantum_ns;
     for (const auto& b : setup.baselines) run.baseline_names.push_back(b->name());
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());

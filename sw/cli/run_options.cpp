@@ -51,6 +51,9 @@ po::options_description run_options(RunOptions& o) {
          "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa")
         ("host-factor", number<double>(&o.host_factor, 0.001, 1000, "F", false),
          "host-speed factor: native software time x F = time on the modelled host (default: the board preset's)")
+        ("quantum-ns", number<double>(&o.quantum_ns, 0, 1e9, "Q"),
+         "host CPU quantum in ns: how far the CPU runs ahead of the board and bus before it synchronises "
+         "(0: at every access, exact; larger is faster and loosely timed)")
         ("inject", po::value(&o.inject)->value_name("KIND@frame=N[,n=K]"),
          "inject a bus or board fault into frame N (repeatable): target-abort, master-abort, retry, disconnect, "
          "lost-irq, dma-hang, board-error (docs/faults.md)");

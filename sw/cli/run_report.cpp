@@ -15,6 +15,7 @@ nlohmann::json config_json(const RunSummary& run) {
             {"host_factor", run.host_factor},
             {"transfer", run.dma ? "dma" : "pio"},
             {"wait", run.interrupts ? "irq" : "poll"},
+            {"quantum_ns", run.quantum_ns},
             {"baselines", run.baseline_names},
             {"inject", run.inject},
             {"m", c.m},

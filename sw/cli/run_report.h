@@ -39,6 +39,7 @@ struct RunSummary {
     double host_factor = 1.0;
     bool dma = true;
     bool interrupts = true;
+    double quantum_ns = 0.0;
     std::vector<std::string> baseline_names;
     std::vector<std::string> inject;  // fault specs, as parsed
     std::vector<FrameStats> frames;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <random>
 
 #include "platform/board_preset.h"
@@ -148,6 +149,41 @@ TEST(BoardPreset, RejectsUnsourcedNumbersAndUnknownNames) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("expected one of: adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8"),
                   std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace cdvp
+
+namespace cdvp {
+namespace {
+
+// A loosely-timed host CPU: the board answers for each access's annotated
+// time and the bridge synchronises, so every mode gives the pairs and the
+// per-phase times of a CPU that synchronises at every access.
+TEST(Platform, AHostQuantumKeepsPairsAndPhases) {
+    std::mt19937 rng(8);
+    const auto boxes = testing::random_boxes(300, 12.0f, 3.0f, rng);
+    // Elaborate every platform before the first frame runs.
+    std::vector<std::unique_ptr<VirtualBoard>> exact, loose;
+    for (const auto& [dma, irq] : {std::pair{true, true}, std::pair{true, false}, std::pair{false, false}}) {
+        PlatformConfig config = paper_platform(dma, irq);
+        config.board.collector.buffer_depth = 16;  // overflow pauses too
+        exact.push_back(std::make_unique<VirtualBoard>(("exact" + std::to_string(exact.size())).c_str(), config, 300));
+        config.quantum_ns = 10000;
+        loose.push_back(std::make_unique<VirtualBoard>(("loose" + std::to_string(loose.size())).c_str(), config, 300));
+    }
+    for (std::size_t mode = 0; mode < exact.size(); ++mode) {
+        for (int frame = 0; frame < 2; ++frame) {
+            const FrameResult a = exact[mode]->run_frame(boxes);
+            const FrameResult& b = loose[mode]->run_frame(boxes);
+            ASSERT_EQ(b.pairs, a.pairs) << "mode " << mode;
+            EXPECT_GT(a.phases.overflow_pauses, 0u);
+            EXPECT_EQ(b.phases.compute_cycles, a.phases.compute_cycles);
+            EXPECT_NEAR(b.phases.total_ns, a.phases.total_ns, 1e-9 * a.phases.total_ns) << "mode " << mode;
+            EXPECT_NEAR(b.phases.irq_ns, a.phases.irq_ns, 1e-6) << "mode " << mode;
+            EXPECT_NEAR(b.phases.readback_ns, a.phases.readback_ns, 1e-6) << "mode " << mode;
+        }
     }
 }
 
