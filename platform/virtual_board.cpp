@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "platform/kernel.h"
+
 namespace cdvp {
 
 using namespace sc_core;
@@ -82,6 +84,7 @@ const FrameResult* VirtualBoard::try_run_frame(const std::vector<FloatBox>& boxe
     ++frames_;
     cpu_.submit(boxes);
     sc_start();  // returns when no activity is left: the frame is complete
+    after_kernel_returns();
     if (!cpu_.finished()) throw std::runtime_error("the simulation stopped before the frame completed");
     if (cpu_.internal_error()) std::rethrow_exception(cpu_.internal_error());
     fault = cpu_.fault();

@@ -41,7 +41,7 @@ public:
     uint32_t read_coordinate(Coordinate coordinate, uint32_t index) const { return store_[coordinate][index]; }
     // The pair buffer as the host reads it now.
     uint32_t buffered_pairs();
-    const IndexPair& buffered_pair(uint32_t index) { return engine_->buffer()[index]; }
+    const IndexPair& buffered_pair(uint32_t index) { return engine_->buffer_entry(index); }
     // Reports an error status (ERROR with this cause, and the interrupt);
     // a sweep under way goes on.
     void raise_error(ControlRegisters::BoardError cause);

@@ -61,9 +61,9 @@ public:
     virtual bool segment_finishes() = 0;
     // The counters after `edges` edges of the segment (edges <= segment_edges()).
     virtual SweepCounters counters_after(uint64_t edges) = 0;
-    // The pair buffer in board order; after `edges` edges of the segment its
-    // first counters_after(edges).buffered entries are valid.
-    virtual const PairList& buffer() = 0;
+    // Entry k of the pair buffer (board order); after `edges` edges of the
+    // segment, entries below counters_after(edges).buffered are valid.
+    virtual const IndexPair& buffer_entry(uint32_t k) = 0;
 };
 
 enum class Fidelity : uint8_t { kCycle, kFast };

@@ -44,7 +44,7 @@ public:
     }
     bool segment_finishes() override;
     SweepCounters counters_after(uint64_t edges) override;
-    const PairList& buffer() override { return collector_.buffer(); }
+    const IndexPair& buffer_entry(uint32_t k) override { return collector_.buffer_entry(k); }
 
     // Steps the datapath to `edges` edges of the segment, or to its end.
     void advance_to(uint64_t edges);

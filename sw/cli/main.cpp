@@ -53,5 +53,7 @@ int sc_main(int argc, char** argv) {
 // sc_elab_and_sim then calls sc_main as libsystemc's main would.
 int main(int argc, char** argv) {
     setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
-    return sc_core::sc_elab_and_sim(argc, argv);
+    const int status = sc_core::sc_elab_and_sim(argc, argv);
+    cdvp::after_kernel_returns();
+    return status;
 }

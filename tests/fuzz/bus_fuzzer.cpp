@@ -313,6 +313,7 @@ extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
     sc_core::sc_report_handler::set_handler(cdvp::fail_on_report);
     cdvp::harness = new cdvp::Harness("harness");
     sc_core::sc_start(sc_core::SC_ZERO_TIME);  // elaborate
+    cdvp::after_kernel_returns();
     return 0;
 }
 
@@ -325,6 +326,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     h.go.notify(SC_ZERO_TIME);
     const sc_time limit = sc_time_stamp() + sc_time(cdvp::kInputTimeLimitMs, SC_MS);
     while (!h.finished && sc_time_stamp() < limit && sc_pending_activity()) sc_start(limit - sc_time_stamp());
+    cdvp::after_kernel_returns();
     if (!h.finished) cdvp::finding("an input did not finish within its simulated time bound");
     return 0;
 }
