@@ -1,0 +1,263 @@
+#include "models/fast_engine/pair_finder.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cdvp {
+
+namespace {
+
+constexpr std::size_t kBlock = BoxColumns::kBlock;
+// Cells per axis at most, and boxes per cell at least (on average): below
+// that the binning costs more than the sweep it saves.
+constexpr uint32_t kMaxCellsPerAxis = 1024;
+constexpr uint32_t kMinBoxesPerCell = 16;
+// A grid whose cell entries exceed this many per box (huge or infinite
+// boxes spanning many cells) is dropped for the plain sweep along x.
+constexpr uint64_t kMaxEntriesPerBox = 4;
+
+void read_box(const CoordinateWords& words, uint32_t i, float (&bounds)[kCoordinates]) {
+    for (uint32_t c = 0; c < kCoordinates; ++c) bounds[c] = ComparisonUnit::as_float(words[c][i]);
+}
+
+// Float bits mapped to unsigned integers in the floats' order (-0 just below
+// +0, which compare equal: either order is fine for the sweep).
+uint32_t ordered_key(float value) {
+    const uint32_t bits = ComparisonUnit::as_bits(value);
+    return (bits & 0x8000'0000u) != 0 ? ~bits : bits | 0x8000'0000u;
+}
+
+// Visits the set bits of a block's hit mask as box positions.
+template <typename Visit>
+void for_each_hit(uint32_t hits, std::size_t q0, Visit&& visit) {
+    while (hits != 0) {
+        visit(q0 + static_cast<std::size_t>(__builtin_ctz(hits)));
+        hits &= hits - 1;
+    }
+}
+
+}  // namespace
+
+// The y-z grid: cell of v on an axis = floor((v - origin) / size), clamped.
+struct PairFinder::Grid {
+    uint32_t cells[2] = {1, 1};  // y, z
+    double origin[2] = {0, 0};
+    double inverse_size[2] = {0, 0};
+
+    uint16_t cell(int axis, float value) const {
+        if (cells[axis] == 1) return 0;
+        const double at = (static_cast<double>(value) - origin[axis]) * inverse_size[axis];
+        return static_cast<uint16_t>(std::clamp(std::floor(at), 0.0, static_cast<double>(cells[axis] - 1)));
+    }
+};
+
+void PairFinder::find(uint32_t objects, const CoordinateWords& words, PairList& out) {
+    if (objects <= kBruteForceLimit) {
+        all_pairs(objects, words, out);
+    } else {
+        sweep(objects, words, out);
+    }
+}
+
+void PairFinder::all_pairs(uint32_t objects, const CoordinateWords& words, PairList& out) {
+    out.clear();
+    all_.resize(objects);
+    for (uint32_t i = 0; i < objects; ++i) {
+        float bounds[kCoordinates];
+        read_box(words, i, bounds);
+        all_.set(i, bounds);
+    }
+    for (uint32_t i = 0; i < objects; ++i) {
+        float a[kCoordinates];
+        all_.get(i, a);
+        for (std::size_t q0 = i + 1; q0 < objects; q0 += kBlock) {
+            const uint32_t hits = block_hits(all_, q0, a) & block_mask_before(q0, objects);
+            for_each_hit(hits, q0, [&](std::size_t j) { out.push_back({i, static_cast<uint32_t>(j)}); });
+        }
+    }
+}
+
+void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList& out) {
+    load_valid(objects, words);
+    sort_by_min_x();
+    bin(choose_grid());
+    unordered_.clear();
+    sweep_cells(unordered_);
+    order(objects, unordered_, out);
+}
+
+void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
+    valid_.resize(objects);
+    valid_index_.clear();
+    for (uint32_t i = 0; i < objects; ++i) {
+        float bounds[kCoordinates];
+        read_box(words, i, bounds);
+        bool has_nan = false;
+        for (float bound : bounds) has_nan |= std::isnan(bound);
+        if (has_nan) continue;  // every comparison with it is false: it meets nothing
+        valid_.set(valid_index_.size(), bounds);
+        valid_index_.push_back(i);
+    }
+}
+
+// LSD radix sort of (min x key, position), 11 bits a pass; a pass whose digit
+// is the same for every box is skipped.
+void PairFinder::sort_by_min_x() {
+    const std::size_t n = valid_index_.size();
+    std::vector<uint64_t>& items = sort_scratch_[0];
+    std::vector<uint64_t>& spare = sort_scratch_[1];
+    items.resize(n);
+    spare.resize(n);
+    const float* min_x = valid_.bound[kMinX].data();
+    for (std::size_t k = 0; k < n; ++k) items[k] = (uint64_t{ordered_key(min_x[k])} << 32) | k;
+    for (uint32_t shift = 32; shift < 64; shift += 11) {
+        std::vector<std::size_t> count(2048 + 1, 0);
+        for (uint64_t item : items) ++count[((item >> shift) & 2047) + 1];
+        if (n == 0 || count[((items[0] >> shift) & 2047) + 1] == n) continue;
+        for (std::size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
+        for (uint64_t item : items) spare[count[(item >> shift) & 2047]++] = item;
+        items.swap(spare);
+    }
+    by_min_x_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) by_min_x_[k] = static_cast<uint32_t>(items[k]);
+}
+
+// Cells about twice the mean box extent, so that most boxes touch one or two
+// cells per axis; none over kMaxCellsPerAxis a side or with fewer than
+// kMinBoxesPerCell boxes on average.
+PairFinder::Grid PairFinder::choose_grid() const {
+    Grid grid;
+    const std::size_t n = valid_index_.size();
+    const uint64_t cell_budget = n / kMinBoxesPerCell;
+    for (int axis = 0; axis < 2; ++axis) {
+        const float* lo = valid_.bound[kMinY + axis].data();
+        const float* hi = valid_.bound[kMaxY + axis].data();
+        double low = INFINITY, high = -INFINITY, extent = 0;
+        std::size_t finite = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            if (!std::isfinite(lo[k]) || !std::isfinite(hi[k])) continue;
+            low = std::min<double>(low, std::min(lo[k], hi[k]));
+            high = std::max<double>(high, std::max(lo[k], hi[k]));
+            extent += std::fabs(static_cast<double>(hi[k]) - lo[k]);
+            ++finite;
+        }
+        if (finite == 0 || !(high > low)) continue;
+        const double size = std::max(2.0 * extent / static_cast<double>(finite), (high - low) / kMaxCellsPerAxis);
+        const double cells = std::floor((high - low) / size);
+        grid.cells[axis] = static_cast<uint32_t>(std::clamp(cells, 1.0, static_cast<double>(kMaxCellsPerAxis)));
+        grid.origin[axis] = low;
+        grid.inverse_size[axis] = grid.cells[axis] / (high - low);
+    }
+    while (uint64_t{grid.cells[0]} * grid.cells[1] > std::max<uint64_t>(cell_budget, 1)) {
+        // Coarsen the finer axis first.
+        const int axis = grid.cells[0] >= grid.cells[1] ? 0 : 1;
+        grid.inverse_size[axis] *= static_cast<double>((grid.cells[axis] + 1) / 2) / grid.cells[axis];
+        grid.cells[axis] = (grid.cells[axis] + 1) / 2;
+    }
+    return grid;
+}
+
+// Lays the boxes out cell by cell, each cell in min-x order (a stable counting
+// sort over the x-sorted boxes).
+void PairFinder::bin(const Grid& chosen) {
+    const std::size_t n = valid_index_.size();
+    Grid grid = chosen;
+    spans_.resize(n);
+    uint64_t entries = 0;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        entries = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const float y[2] = {valid_.bound[kMinY][k], valid_.bound[kMaxY][k]};
+            const float z[2] = {valid_.bound[kMinZ][k], valid_.bound[kMaxZ][k]};
+            // The cells of the hull [min(lo, hi), max(lo, hi)]: two boxes that
+            // meet on an axis have intersecting hulls even when inverted.
+            spans_[k] = {grid.cell(0, std::min(y[0], y[1])), grid.cell(0, std::max(y[0], y[1])),
+                         grid.cell(1, std::min(z[0], z[1])), grid.cell(1, std::max(z[0], z[1]))};
+            entries += uint64_t{spans_[k].y1 - spans_[k].y0 + 1u} * (spans_[k].z1 - spans_[k].z0 + 1u);
+        }
+        if (entries <= kMaxEntriesPerBox * n) break;
+        grid = Grid{};  // huge boxes everywhere: one cell
+    }
+    cells_y_ = grid.cells[0];
+    cells_z_ = grid.cells[1];
+    cell_begin_.assign(std::size_t{cells_y_} * cells_z_ + 1, 0);
+    auto for_each_cell = [&](const CellSpan& span, auto&& visit) {
+        for (uint32_t y = span.y0; y <= span.y1; ++y) {
+            for (uint32_t z = span.z0; z <= span.z1; ++z) visit(y * cells_z_ + z);
+        }
+    };
+    for (const CellSpan& span : spans_) for_each_cell(span, [&](uint32_t cell) { ++cell_begin_[cell + 1]; });
+    for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
+    std::vector<uint32_t> next(cell_begin_.begin(), cell_begin_.end() - 1);
+    entries_.resize(entries);
+    entry_index_.resize(entries);
+    entry_first_cell_.resize(entries);
+    for (uint32_t position : by_min_x_) {
+        float bounds[kCoordinates];
+        valid_.get(position, bounds);
+        const CellSpan& span = spans_[position];
+        for_each_cell(span, [&](uint32_t cell) {
+            const uint32_t e = next[cell]++;
+            entries_.set(e, bounds);
+            entry_index_[e] = valid_index_[position];
+            entry_first_cell_[e] = (uint32_t{span.y0} << 16) | span.z0;
+        });
+    }
+}
+
+// Box pruning in each cell: box p meets only boxes q after it (min x order)
+// with min_x(q) <= max_x(p), a prefix of the cell's rest; the block test does
+// the six comparisons, so blocks running past the prefix add nothing.
+void PairFinder::sweep_cells(PairList& unordered) const {
+    const float* min_x = entries_.bound[kMinX].data();
+    for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
+        const uint32_t cell_y = cell / cells_z_, cell_z = cell % cells_z_;
+        const std::size_t end = cell_begin_[cell + 1];
+        for (std::size_t p = cell_begin_[cell]; p < end; ++p) {
+            float a[kCoordinates];
+            entries_.get(p, a);
+            const uint32_t first_p = entry_first_cell_[p];
+            for (std::size_t q0 = p + 1; q0 < end; q0 += kBlock) {
+                const uint32_t hits = block_hits(entries_, q0, a) & block_mask_before(q0, end);
+                for_each_hit(hits, q0, [&](std::size_t q) {
+                    // Report a pair only in the first cell both boxes touch.
+                    const uint32_t first_q = entry_first_cell_[q];
+                    if (std::max(first_p >> 16, first_q >> 16) != cell_y ||
+                        std::max(first_p & 0xFFFF, first_q & 0xFFFF) != cell_z) {
+                        return;
+                    }
+                    const uint32_t i = entry_index_[p], j = entry_index_[q];
+                    unordered.push_back(i < j ? IndexPair{i, j} : IndexPair{j, i});
+                });
+                if (q0 + kBlock >= end || !(min_x[q0 + kBlock - 1] <= a[kMaxX])) break;
+            }
+        }
+    }
+}
+
+// BoardCore's order: a counting sort on the first index, then each row by
+// the second (rows are short, except in scenes where everything meets).
+void PairFinder::order(uint32_t objects, const PairList& unordered, PairList& out) {
+    row_start_.assign(std::size_t{objects} + 1, 0);
+    for (const IndexPair& pair : unordered) ++row_start_[pair.first + 1];
+    for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
+    out.resize(unordered.size());
+    row_next_.assign(row_start_.begin(), row_start_.end() - 1);
+    for (const IndexPair& pair : unordered) out[row_next_[pair.first]++] = pair;
+    for (uint32_t r = 0; r < objects; ++r) {
+        auto begin = out.begin() + row_start_[r], end = out.begin() + row_start_[r + 1];
+        if (end - begin < 2) continue;
+        if (end - begin <= 16) {
+            for (auto it = begin + 1; it != end; ++it) {  // insertion sort
+                const IndexPair pair = *it;
+                auto hole = it;
+                for (; hole != begin && (hole - 1)->second > pair.second; --hole) *hole = *(hole - 1);
+                *hole = pair;
+            }
+        } else {
+            std::sort(begin, end, [](const IndexPair& a, const IndexPair& b) { return a.second < b.second; });
+        }
+    }
+}
+
+}  // namespace cdvp

@@ -1,0 +1,71 @@
+// Every pair the board's comparison unit accepts, found without the board's all-pairs sweep.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "models/common/aabb.h"
+#include "models/comparison_unit/comparison_unit.h"
+#include "models/fast_engine/box_block.h"
+
+namespace cdvp {
+
+// The six coordinate memories' contents as the host wrote them: words[c][i]
+// is the float32 bit pattern of bound c (Coordinate order) of box i.
+using CoordinateWords = std::array<const uint32_t*, kCoordinates>;
+
+// Finds exactly the pairs (i, j), i < j < objects, for which
+// ComparisonUnit::lane_hit holds, in BoardCore's order (i ascending, then j
+// ascending). Small scenes: all pairs over structure-of-arrays, eight boxes a
+// test. Larger ones: a sort on min x, boxes binned into a grid of y-z cells
+// and a sweep along x inside each cell (box pruning); a pair meeting in
+// several cells is reported by the first one only. Any bound may be any
+// float: a box with a NaN bound meets nothing and is left out before the
+// sort; inverted boxes (min > max) are tested as the comparators would.
+// Scratch memory is kept between calls; O(N + pairs).
+class PairFinder {
+public:
+    // At most this many boxes: all pairs (no sort pays off below it).
+    static constexpr uint32_t kBruteForceLimit = 384;
+
+    void find(uint32_t objects, const CoordinateWords& words, PairList& out);
+    // The two algorithms, for tests and benchmarks: the same pairs in the same order.
+    void all_pairs(uint32_t objects, const CoordinateWords& words, PairList& out);
+    void sweep(uint32_t objects, const CoordinateWords& words, PairList& out);
+
+    // Grid cells of the last sweep (1 when it swept along x alone).
+    uint32_t last_cells() const { return cells_y_ * cells_z_; }
+
+private:
+    struct Grid;
+    void load_valid(uint32_t objects, const CoordinateWords& words);
+    void sort_by_min_x();
+    Grid choose_grid() const;
+    void bin(const Grid& grid);
+    void sweep_cells(PairList& unordered) const;
+    void order(uint32_t objects, const PairList& unordered, PairList& out);
+
+    // Boxes without a NaN bound, in index order, and their indices.
+    BoxColumns valid_;
+    std::vector<uint32_t> valid_index_;
+    // Positions in valid_ sorted by min x.
+    std::vector<uint32_t> by_min_x_;
+    std::vector<uint64_t> sort_scratch_[2];
+    // Cell entries, cell by cell, each cell in min-x order.
+    uint32_t cells_y_ = 1, cells_z_ = 1;
+    std::vector<uint32_t> cell_begin_;
+    BoxColumns entries_;
+    std::vector<uint32_t> entry_index_;
+    std::vector<uint32_t> entry_first_cell_;  // (first y cell << 16) | first z cell of the entry's box
+    // Per valid box, the cells its y and z extents touch.
+    struct CellSpan {
+        uint16_t y0, y1, z0, z1;
+    };
+    std::vector<CellSpan> spans_;
+    PairList unordered_;
+    std::vector<uint64_t> row_start_, row_next_;
+    BoxColumns all_;
+};
+
+}  // namespace cdvp
