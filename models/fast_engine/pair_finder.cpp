@@ -87,39 +87,38 @@ void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList&
 }
 
 void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
-    valid_.resize(objects);
-    valid_index_.clear();
+    valid_.clear();
     for (uint32_t i = 0; i < objects; ++i) {
-        float bounds[kCoordinates];
-        read_box(words, i, bounds);
+        PackedBox box;
+        read_box(words, i, box.bound);
         bool has_nan = false;
-        for (float bound : bounds) has_nan |= std::isnan(bound);
+        for (float bound : box.bound) has_nan |= std::isnan(bound);
         if (has_nan) continue;  // every comparison with it is false: it meets nothing
-        valid_.set(valid_index_.size(), bounds);
-        valid_index_.push_back(i);
+        box.index = i;
+        box.first_cell = 0;
+        valid_.push_back(box);
     }
 }
 
 // LSD radix sort of (min x key, position), 11 bits a pass; a pass whose digit
 // is the same for every box is skipped.
 void PairFinder::sort_by_min_x() {
-    const std::size_t n = valid_index_.size();
+    const std::size_t n = valid_.size();
     std::vector<uint64_t>& items = sort_scratch_[0];
     std::vector<uint64_t>& spare = sort_scratch_[1];
     items.resize(n);
     spare.resize(n);
-    const float* min_x = valid_.bound[kMinX].data();
-    for (std::size_t k = 0; k < n; ++k) items[k] = (uint64_t{ordered_key(min_x[k])} << 32) | k;
+    for (std::size_t k = 0; k < n; ++k) items[k] = (uint64_t{ordered_key(valid_[k].bound[kMinX])} << 32) | k;
     for (uint32_t shift = 32; shift < 64; shift += 11) {
-        std::vector<std::size_t> count(2048 + 1, 0);
+        std::size_t count[2048 + 1] = {};
         for (uint64_t item : items) ++count[((item >> shift) & 2047) + 1];
         if (n == 0 || count[((items[0] >> shift) & 2047) + 1] == n) continue;
-        for (std::size_t d = 1; d < count.size(); ++d) count[d] += count[d - 1];
+        for (std::size_t d = 1; d <= 2048; ++d) count[d] += count[d - 1];
         for (uint64_t item : items) spare[count[(item >> shift) & 2047]++] = item;
         items.swap(spare);
     }
-    by_min_x_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) by_min_x_[k] = static_cast<uint32_t>(items[k]);
+    sorted_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) sorted_[k] = valid_[static_cast<uint32_t>(items[k])];
 }
 
 // Cells about twice the mean box extent, so that most boxes touch one or two
@@ -127,18 +126,16 @@ void PairFinder::sort_by_min_x() {
 // kMinBoxesPerCell boxes on average.
 PairFinder::Grid PairFinder::choose_grid() const {
     Grid grid;
-    const std::size_t n = valid_index_.size();
-    const uint64_t cell_budget = n / kMinBoxesPerCell;
+    const std::size_t n = sorted_.size();
     for (int axis = 0; axis < 2; ++axis) {
-        const float* lo = valid_.bound[kMinY + axis].data();
-        const float* hi = valid_.bound[kMaxY + axis].data();
         double low = INFINITY, high = -INFINITY, extent = 0;
         std::size_t finite = 0;
-        for (std::size_t k = 0; k < n; ++k) {
-            if (!std::isfinite(lo[k]) || !std::isfinite(hi[k])) continue;
-            low = std::min<double>(low, std::min(lo[k], hi[k]));
-            high = std::max<double>(high, std::max(lo[k], hi[k]));
-            extent += std::fabs(static_cast<double>(hi[k]) - lo[k]);
+        for (const PackedBox& box : sorted_) {
+            const float lo = box.bound[kMinY + axis], hi = box.bound[kMaxY + axis];
+            if (!std::isfinite(lo) || !std::isfinite(hi)) continue;
+            low = std::min<double>(low, std::min(lo, hi));
+            high = std::max<double>(high, std::max(lo, hi));
+            extent += std::fabs(static_cast<double>(hi) - lo);
             ++finite;
         }
         if (finite == 0 || !(high > low)) continue;
@@ -148,7 +145,7 @@ PairFinder::Grid PairFinder::choose_grid() const {
         grid.origin[axis] = low;
         grid.inverse_size[axis] = grid.cells[axis] / (high - low);
     }
-    while (uint64_t{grid.cells[0]} * grid.cells[1] > std::max<uint64_t>(cell_budget, 1)) {
+    while (uint64_t{grid.cells[0]} * grid.cells[1] > std::max<uint64_t>(n / kMinBoxesPerCell, 1)) {
         // Coarsen the finer axis first.
         const int axis = grid.cells[0] >= grid.cells[1] ? 0 : 1;
         grid.inverse_size[axis] *= static_cast<double>((grid.cells[axis] + 1) / 2) / grid.cells[axis];
@@ -157,22 +154,22 @@ PairFinder::Grid PairFinder::choose_grid() const {
     return grid;
 }
 
-// Lays the boxes out cell by cell, each cell in min-x order (a stable counting
-// sort over the x-sorted boxes).
+// Lays the boxes out cell by cell, each cell in min-x order: a stable counting
+// sort of the x-sorted boxes by cell, moving only positions (one write stream
+// per cell), then one sequential pass gathering the bounds.
 void PairFinder::bin(const Grid& chosen) {
-    const std::size_t n = valid_index_.size();
+    const std::size_t n = sorted_.size();
     Grid grid = chosen;
     spans_.resize(n);
     uint64_t entries = 0;
     for (int attempt = 0; attempt < 2; ++attempt) {
         entries = 0;
         for (std::size_t k = 0; k < n; ++k) {
-            const float y[2] = {valid_.bound[kMinY][k], valid_.bound[kMaxY][k]};
-            const float z[2] = {valid_.bound[kMinZ][k], valid_.bound[kMaxZ][k]};
+            const float* b = sorted_[k].bound;
             // The cells of the hull [min(lo, hi), max(lo, hi)]: two boxes that
             // meet on an axis have intersecting hulls even when inverted.
-            spans_[k] = {grid.cell(0, std::min(y[0], y[1])), grid.cell(0, std::max(y[0], y[1])),
-                         grid.cell(1, std::min(z[0], z[1])), grid.cell(1, std::max(z[0], z[1]))};
+            spans_[k] = {grid.cell(0, std::min(b[kMinY], b[kMaxY])), grid.cell(0, std::max(b[kMinY], b[kMaxY])),
+                         grid.cell(1, std::min(b[kMinZ], b[kMaxZ])), grid.cell(1, std::max(b[kMinZ], b[kMaxZ]))};
             entries += uint64_t{spans_[k].y1 - spans_[k].y0 + 1u} * (spans_[k].z1 - spans_[k].z0 + 1u);
         }
         if (entries <= kMaxEntriesPerBox * n) break;
@@ -186,23 +183,18 @@ void PairFinder::bin(const Grid& chosen) {
             for (uint32_t z = span.z0; z <= span.z1; ++z) visit(y * cells_z_ + z);
         }
     };
-    for (const CellSpan& span : spans_) for_each_cell(span, [&](uint32_t cell) { ++cell_begin_[cell + 1]; });
-    for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
-    std::vector<uint32_t> next(cell_begin_.begin(), cell_begin_.end() - 1);
-    entries_.resize(entries);
-    entry_index_.resize(entries);
-    entry_first_cell_.resize(entries);
-    for (uint32_t position : by_min_x_) {
-        float bounds[kCoordinates];
-        valid_.get(position, bounds);
-        const CellSpan& span = spans_[position];
-        for_each_cell(span, [&](uint32_t cell) {
-            const uint32_t e = next[cell]++;
-            entries_.set(e, bounds);
-            entry_index_[e] = valid_index_[position];
-            entry_first_cell_[e] = (uint32_t{span.y0} << 16) | span.z0;
-        });
+    for (std::size_t k = 0; k < n; ++k) {
+        sorted_[k].first_cell = (uint32_t{spans_[k].y0} << 16) | spans_[k].z0;
+        for_each_cell(spans_[k], [&](uint32_t cell) { ++cell_begin_[cell + 1]; });
     }
+    for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
+    cell_next_.assign(cell_begin_.begin(), cell_begin_.end() - 1);
+    entry_box_.resize(entries);
+    for (std::size_t k = 0; k < n; ++k) {
+        for_each_cell(spans_[k], [&](uint32_t cell) { entry_box_[cell_next_[cell]++] = static_cast<uint32_t>(k); });
+    }
+    entries_.resize(entries);
+    for (std::size_t e = 0; e < entries; ++e) entries_.set(e, sorted_[entry_box_[e]].bound);
 }
 
 // Box pruning in each cell: box p meets only boxes q after it (min x order)
@@ -216,17 +208,17 @@ void PairFinder::sweep_cells(PairList& unordered) const {
         for (std::size_t p = cell_begin_[cell]; p < end; ++p) {
             float a[kCoordinates];
             entries_.get(p, a);
-            const uint32_t first_p = entry_first_cell_[p];
             for (std::size_t q0 = p + 1; q0 < end; q0 += kBlock) {
                 const uint32_t hits = block_hits(entries_, q0, a) & block_mask_before(q0, end);
                 for_each_hit(hits, q0, [&](std::size_t q) {
                     // Report a pair only in the first cell both boxes touch.
-                    const uint32_t first_q = entry_first_cell_[q];
-                    if (std::max(first_p >> 16, first_q >> 16) != cell_y ||
-                        std::max(first_p & 0xFFFF, first_q & 0xFFFF) != cell_z) {
+                    const PackedBox& box_p = sorted_[entry_box_[p]];
+                    const PackedBox& box_q = sorted_[entry_box_[q]];
+                    if (std::max(box_p.first_cell >> 16, box_q.first_cell >> 16) != cell_y ||
+                        std::max(box_p.first_cell & 0xFFFF, box_q.first_cell & 0xFFFF) != cell_z) {
                         return;
                     }
-                    const uint32_t i = entry_index_[p], j = entry_index_[q];
+                    const uint32_t i = box_p.index, j = box_q.index;
                     unordered.push_back(i < j ? IndexPair{i, j} : IndexPair{j, i});
                 });
                 if (q0 + kBlock >= end || !(min_x[q0 + kBlock - 1] <= a[kMaxX])) break;

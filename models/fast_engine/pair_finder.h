@@ -39,6 +39,17 @@ public:
 
 private:
     struct Grid;
+    // One box with a line of its own: bounds, index, and the first y and z
+    // cells it touches ((y << 16) | z).
+    struct PackedBox {
+        float bound[kCoordinates];
+        uint32_t index;
+        uint32_t first_cell;
+    };
+    struct CellSpan {
+        uint16_t y0, y1, z0, z1;
+    };
+
     void load_valid(uint32_t objects, const CoordinateWords& words);
     void sort_by_min_x();
     Grid choose_grid() const;
@@ -46,23 +57,16 @@ private:
     void sweep_cells(PairList& unordered) const;
     void order(uint32_t objects, const PairList& unordered, PairList& out);
 
-    // Boxes without a NaN bound, in index order, and their indices.
-    BoxColumns valid_;
-    std::vector<uint32_t> valid_index_;
-    // Positions in valid_ sorted by min x.
-    std::vector<uint32_t> by_min_x_;
+    // Boxes without a NaN bound: in index order, then sorted by min x.
+    std::vector<PackedBox> valid_, sorted_;
     std::vector<uint64_t> sort_scratch_[2];
-    // Cell entries, cell by cell, each cell in min-x order.
+    // The grid's cells in order, each holding its boxes in min-x order:
+    // entry e is box sorted_[entry_box_[e]], its bounds also in entries_.
     uint32_t cells_y_ = 1, cells_z_ = 1;
-    std::vector<uint32_t> cell_begin_;
+    std::vector<CellSpan> spans_;  // per sorted box
+    std::vector<uint32_t> cell_begin_, cell_next_;
+    std::vector<uint32_t> entry_box_;
     BoxColumns entries_;
-    std::vector<uint32_t> entry_index_;
-    std::vector<uint32_t> entry_first_cell_;  // (first y cell << 16) | first z cell of the entry's box
-    // Per valid box, the cells its y and z extents touch.
-    struct CellSpan {
-        uint16_t y0, y1, z0, z1;
-    };
-    std::vector<CellSpan> spans_;
     PairList unordered_;
     std::vector<uint64_t> row_start_, row_next_;
     BoxColumns all_;
