@@ -17,7 +17,7 @@ namespace cdvp {
 // Bounds by coordinate (Coordinate order), one float per box. The arrays
 // carry kBlock entries of padding so that a block may start at any box.
 struct BoxColumns {
-    static constexpr std::size_t kBlock = 8;
+    static constexpr std::size_t kBlock = 8;  // BlockTest tests two groups of four
 
     std::vector<float> bound[kCoordinates];
 
@@ -32,33 +32,71 @@ struct BoxColumns {
     }
 };
 
-// Bit k set = ComparisonUnit::lane_hit(a, box q0 + k) for the kBlock boxes
-// from q0. Every comparison is evaluated (no branch), as IEEE float
-// comparisons: NaN never compares true, -0 equals +0, infinities are ordinary.
-inline uint32_t block_hits(const BoxColumns& boxes, std::size_t q0, const float (&a)[kCoordinates]) {
-    const float* const b[kCoordinates] = {boxes.bound[kMinX].data() + q0, boxes.bound[kMinY].data() + q0,
-                                          boxes.bound[kMinZ].data() + q0, boxes.bound[kMaxX].data() + q0,
-                                          boxes.bound[kMaxY].data() + q0, boxes.bound[kMaxZ].data() + q0};
+// The comparison unit's test of box a against kBlock boxes at a time: bit k
+// of hits(q0) = ComparisonUnit::lane_hit(a, box q0 + k). Every comparison is
+// evaluated (no branch), as IEEE float comparisons: NaN never compares true,
+// -0 equals +0, infinities are ordinary.
+class BlockTest {
+public:
+    BlockTest(const BoxColumns& boxes, const float (&a)[kCoordinates]) {
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
+            column_[c] = boxes.bound[c].data();
 #if defined(__SSE2__)
-    uint32_t hits = 0;
-    for (std::size_t half = 0; half < BoxColumns::kBlock; half += 4) {
-        __m128 all = _mm_castsi128_ps(_mm_set1_epi32(-1));
-        for (uint32_t axis = 0; axis < 3; ++axis) {
-            const __m128 b_min = _mm_loadu_ps(b[axis] + half), b_max = _mm_loadu_ps(b[axis + 3] + half);
-            // a.min <= b.max and b.min <= a.max
-            all = _mm_and_ps(all, _mm_cmple_ps(_mm_set1_ps(a[axis]), b_max));
-            all = _mm_and_ps(all, _mm_cmple_ps(b_min, _mm_set1_ps(a[axis + 3])));
-        }
-        hits |= static_cast<uint32_t>(_mm_movemask_ps(all)) << half;
-    }
-    return hits;
+            a_[c] = _mm_set1_ps(a[c]);
 #else
-    uint32_t hits = 0;
-    for (std::size_t k = 0; k < BoxColumns::kBlock; ++k) {
-        const float other[kCoordinates] = {b[0][k], b[1][k], b[2][k], b[3][k], b[4][k], b[5][k]};
-        hits |= static_cast<uint32_t>(ComparisonUnit::lane_hit(a, other)) << k;
+            a_[c] = a[c];
+#endif
+        }
     }
-    return hits;
+
+    uint32_t hits(std::size_t q0) const {
+#if defined(__SSE2__)
+        return four(q0) | (four(q0 + 4) << 4);
+#else
+        uint32_t hits = 0;
+        for (std::size_t k = 0; k < BoxColumns::kBlock; ++k) {
+            float b[kCoordinates];
+            for (uint32_t c = 0; c < kCoordinates; ++c) b[c] = column_[c][q0 + k];
+            hits |= static_cast<uint32_t>(ComparisonUnit::lane_hit(a_, b)) << k;
+        }
+        return hits;
+#endif
+    }
+
+private:
+#if defined(__SSE2__)
+    uint32_t four(std::size_t q) const {
+        // a.min <= b.max and b.min <= a.max on each axis.
+        __m128 all = _mm_and_ps(_mm_cmple_ps(a_[kMinX], _mm_loadu_ps(column_[kMaxX] + q)),
+                                _mm_cmple_ps(_mm_loadu_ps(column_[kMinX] + q), a_[kMaxX]));
+        all = _mm_and_ps(all, _mm_cmple_ps(a_[kMinY], _mm_loadu_ps(column_[kMaxY] + q)));
+        all = _mm_and_ps(all, _mm_cmple_ps(_mm_loadu_ps(column_[kMinY] + q), a_[kMaxY]));
+        all = _mm_and_ps(all, _mm_cmple_ps(a_[kMinZ], _mm_loadu_ps(column_[kMaxZ] + q)));
+        all = _mm_and_ps(all, _mm_cmple_ps(_mm_loadu_ps(column_[kMinZ] + q), a_[kMaxZ]));
+        return static_cast<uint32_t>(_mm_movemask_ps(all));
+    }
+    __m128 a_[kCoordinates];
+#else
+    float a_[kCoordinates];
+#endif
+    const float* column_[kCoordinates];
+};
+
+// Bit k set = bit `Bit` of flags[q0 + k] is set, for the kBlock words from q0.
+template <int Bit>
+inline uint32_t block_flag_bits(const uint32_t* flags, std::size_t q0) {
+#if defined(__SSE2__)
+    uint32_t bits = 0;
+    for (std::size_t half = 0; half < BoxColumns::kBlock; half += 4) {
+        const __m128i words = _mm_loadu_si128(reinterpret_cast<const __m128i*>(flags + q0 + half));
+        // The flag into each word's sign bit, gathered by movemask.
+        bits |= static_cast<uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(_mm_slli_epi32(words, 31 - Bit)))) << half;
+    }
+    return bits;
+#else
+    uint32_t bits = 0;
+    for (std::size_t k = 0; k < BoxColumns::kBlock; ++k) bits |= ((flags[q0 + k] >> Bit) & 1u) << k;
+    return bits;
 #endif
 }
 

@@ -47,7 +47,8 @@ struct PairFinder::Grid {
     uint16_t cell(int axis, float value) const {
         if (cells[axis] == 1) return 0;
         const double at = (static_cast<double>(value) - origin[axis]) * inverse_size[axis];
-        return static_cast<uint16_t>(std::clamp(std::floor(at), 0.0, static_cast<double>(cells[axis] - 1)));
+        // Clamped first, so truncation is floor (and infinities land in the end cells).
+        return static_cast<uint16_t>(std::min(std::max(at, 0.0), static_cast<double>(cells[axis] - 1)));
     }
 };
 
@@ -70,8 +71,9 @@ void PairFinder::all_pairs(uint32_t objects, const CoordinateWords& words, PairL
     for (uint32_t i = 0; i < objects; ++i) {
         float a[kCoordinates];
         all_.get(i, a);
+        const BlockTest test(all_, a);
         for (std::size_t q0 = i + 1; q0 < objects; q0 += kBlock) {
-            const uint32_t hits = block_hits(all_, q0, a) & block_mask_before(q0, objects);
+            const uint32_t hits = test.hits(q0) & block_mask_before(q0, objects);
             for_each_hit(hits, q0, [&](std::size_t j) { out.push_back({i, static_cast<uint32_t>(j)}); });
         }
     }
@@ -81,7 +83,6 @@ void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList&
     load_valid(objects, words);
     sort_by_min_x();
     bin(choose_grid());
-    unordered_.clear();
     sweep_cells(unordered_);
     order(objects, unordered_, out);
 }
@@ -95,7 +96,7 @@ void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
         for (float bound : box.bound) has_nan |= std::isnan(bound);
         if (has_nan) continue;  // every comparison with it is false: it meets nothing
         box.index = i;
-        box.first_cell = 0;
+        box.spare = 0;
         valid_.push_back(box);
     }
 }
@@ -183,10 +184,7 @@ void PairFinder::bin(const Grid& chosen) {
             for (uint32_t z = span.z0; z <= span.z1; ++z) visit(y * cells_z_ + z);
         }
     };
-    for (std::size_t k = 0; k < n; ++k) {
-        sorted_[k].first_cell = (uint32_t{spans_[k].y0} << 16) | spans_[k].z0;
-        for_each_cell(spans_[k], [&](uint32_t cell) { ++cell_begin_[cell + 1]; });
-    }
+    for (const CellSpan& span : spans_) for_each_cell(span, [&](uint32_t cell) { ++cell_begin_[cell + 1]; });
     for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
     cell_next_.assign(cell_begin_.begin(), cell_begin_.end() - 1);
     entry_box_.resize(entries);
@@ -194,33 +192,47 @@ void PairFinder::bin(const Grid& chosen) {
         for_each_cell(spans_[k], [&](uint32_t cell) { entry_box_[cell_next_[cell]++] = static_cast<uint32_t>(k); });
     }
     entries_.resize(entries);
-    for (std::size_t e = 0; e < entries; ++e) entries_.set(e, sorted_[entry_box_[e]].bound);
+    entry_index_.assign(entries + kBlock, 0);
+    entry_first_.assign(entries + kBlock, 0);
+    for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
+        const uint32_t y = cell / cells_z_, z = cell % cells_z_;
+        for (uint32_t e = cell_begin_[cell]; e < cell_begin_[cell + 1]; ++e) {
+            const PackedBox& box = sorted_[entry_box_[e]];
+            const CellSpan& span = spans_[entry_box_[e]];
+            entries_.set(e, box.bound);
+            entry_index_[e] = box.index;
+            entry_first_[e] = (span.y0 == y ? 1u : 0u) | (span.z0 == z ? 2u : 0u);
+        }
+    }
 }
 
 // Box pruning in each cell: box p meets only boxes q after it (min x order)
 // with min_x(q) <= max_x(p), a prefix of the cell's rest; the block test does
-// the six comparisons, so blocks running past the prefix add nothing.
+// the six comparisons, so blocks running past the prefix add nothing. Both
+// boxes are in this cell, so it is the first cell they share exactly when it
+// is the first on y of one of them and the first on z of one of them.
 void PairFinder::sweep_cells(PairList& unordered) const {
     const float* min_x = entries_.bound[kMinX].data();
+    const uint32_t* index = entry_index_.data();
+    const uint32_t* first = entry_first_.data();
+    unordered.clear();
     for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
-        const uint32_t cell_y = cell / cells_z_, cell_z = cell % cells_z_;
         const std::size_t end = cell_begin_[cell + 1];
         for (std::size_t p = cell_begin_[cell]; p < end; ++p) {
             float a[kCoordinates];
             entries_.get(p, a);
+            const BlockTest test(entries_, a);
+            const uint32_t i = index[p];
             for (std::size_t q0 = p + 1; q0 < end; q0 += kBlock) {
-                const uint32_t hits = block_hits(entries_, q0, a) & block_mask_before(q0, end);
-                for_each_hit(hits, q0, [&](std::size_t q) {
-                    // Report a pair only in the first cell both boxes touch.
-                    const PackedBox& box_p = sorted_[entry_box_[p]];
-                    const PackedBox& box_q = sorted_[entry_box_[q]];
-                    if (std::max(box_p.first_cell >> 16, box_q.first_cell >> 16) != cell_y ||
-                        std::max(box_p.first_cell & 0xFFFF, box_q.first_cell & 0xFFFF) != cell_z) {
-                        return;
-                    }
-                    const uint32_t i = box_p.index, j = box_q.index;
-                    unordered.push_back(i < j ? IndexPair{i, j} : IndexPair{j, i});
-                });
+                uint32_t hits = test.hits(q0) & block_mask_before(q0, end);
+                if (hits != 0) {
+                    if ((first[p] & 1) == 0) hits &= block_flag_bits<0>(first, q0);
+                    if ((first[p] & 2) == 0) hits &= block_flag_bits<1>(first, q0);
+                    for_each_hit(hits, q0, [&](std::size_t q) {
+                        const uint32_t j = index[q];
+                        unordered.push_back({std::min(i, j), std::max(i, j)});
+                    });
+                }
                 if (q0 + kBlock >= end || !(min_x[q0 + kBlock - 1] <= a[kMaxX])) break;
             }
         }

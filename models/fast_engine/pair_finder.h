@@ -39,12 +39,11 @@ public:
 
 private:
     struct Grid;
-    // One box with a line of its own: bounds, index, and the first y and z
-    // cells it touches ((y << 16) | z).
+    // One box in 32 bytes: bounds and index.
     struct PackedBox {
         float bound[kCoordinates];
         uint32_t index;
-        uint32_t first_cell;
+        uint32_t spare;  // pads the box to 32 bytes
     };
     struct CellSpan {
         uint16_t y0, y1, z0, z1;
@@ -54,19 +53,21 @@ private:
     void sort_by_min_x();
     Grid choose_grid() const;
     void bin(const Grid& grid);
-    void sweep_cells(PairList& unordered) const;
+    void sweep_cells(PairList& unordered) const;  // sized to the pairs found
     void order(uint32_t objects, const PairList& unordered, PairList& out);
 
     // Boxes without a NaN bound: in index order, then sorted by min x.
     std::vector<PackedBox> valid_, sorted_;
     std::vector<uint64_t> sort_scratch_[2];
     // The grid's cells in order, each holding its boxes in min-x order:
-    // entry e is box sorted_[entry_box_[e]], its bounds also in entries_.
+    // entry e is box sorted_[entry_box_[e]], with its bounds, its index and
+    // whether its cell is the box's first on y (bit 0) and on z (bit 1).
     uint32_t cells_y_ = 1, cells_z_ = 1;
     std::vector<CellSpan> spans_;  // per sorted box
     std::vector<uint32_t> cell_begin_, cell_next_;
     std::vector<uint32_t> entry_box_;
     BoxColumns entries_;
+    std::vector<uint32_t> entry_index_, entry_first_;  // kBlock words of padding each
     PairList unordered_;
     std::vector<uint64_t> row_start_, row_next_;
     BoxColumns all_;
