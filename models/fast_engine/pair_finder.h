@@ -27,7 +27,7 @@ using CoordinateWords = std::array<const uint32_t*, kCoordinates>;
 class PairFinder {
 public:
     // At most this many boxes: all pairs (no sort pays off below it).
-    static constexpr uint32_t kBruteForceLimit = 384;
+    static constexpr uint32_t kBruteForceLimit = 256;
 
     void find(uint32_t objects, const CoordinateWords& words, PairList& out);
     // The two algorithms, for tests and benchmarks: the same pairs in the same order.

@@ -12,6 +12,13 @@ namespace cdvp {
 namespace {
 constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
 uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
+// AddressGenerator::sweep_cycles with one 32-bit division (boxes < 2^32):
+// this runs once per hit slot.
+uint64_t sweep_cycles32(uint32_t objects, uint32_t lanes) {
+    if (objects < 2) return 0;
+    const uint32_t q = (objects - 1) / lanes, r = (objects - 1) - q * lanes;
+    return uint64_t{lanes} * q * (q + 1) / 2 + uint64_t{r} * (q + 1);
+}
 }  // namespace
 
 SweepTimeline::SweepTimeline(const BoardConfig& config)
@@ -69,18 +76,18 @@ BoardObservation SweepTimeline::observe(uint64_t edges) const {
 
 SweepTimeline::HeadSlot SweepTimeline::next_hit_slot(const Cursor& cursor) const {
     const std::vector<IndexPair>& pairs = *pairs_;
-    if (cursor.next_pair >= pairs.size()) return {sweep_cycles_, 0};  // the end marker
+    if (cursor.next_pair >= pairs.size()) return {sweep_cycles_, 0, true};  // the end marker
     const IndexPair& first = pairs[cursor.next_pair];
-    const uint64_t row = first.first;
-    const uint64_t step = (first.second - row - 1) / lanes_;
-    const uint64_t row_start = sweep_cycles_ - AddressGenerator::sweep_cycles(objects_ - row, m_);
+    const uint32_t row = first.first;
+    const uint32_t step = (first.second - row - 1) / lanes_;
+    const uint64_t row_start = sweep_cycles_ - sweep_cycles32(objects_ - row, lanes_);
     // The slot's hits: the following pairs of the same row within the same 2m-1 columns.
-    const uint64_t last_column = row + step * lanes_ + lanes_;
+    const uint64_t last_column = uint64_t{row} + uint64_t{step} * lanes_ + lanes_;
     uint32_t hits = 1;
     for (uint64_t k = cursor.next_pair + 1; k < pairs.size() && pairs[k].first == row && pairs[k].second <= last_column; ++k) {
         ++hits;
     }
-    return {row_start + step, hits};
+    return {row_start + step, hits, true};
 }
 
 void SweepTimeline::drain_edges(Cursor& cursor, uint64_t k, uint32_t stall_per_edge) const {
@@ -118,7 +125,8 @@ void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoi
             if (c.fifo == 0) c.phase = Phase::Done;
             continue;
         }
-        const HeadSlot head = next_hit_slot(c);
+        if (!c.head.known) c.head = next_hit_slot(c);
+        const HeadSlot& head = c.head;
         // Slot s reaches the collector on advance edge s + 1 + D.
         const uint64_t arrival = head.slot + line_delay_;
         if (c.advances < arrival) {  // empty slots and bubbles before it
@@ -137,6 +145,7 @@ void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoi
             c.fifo += head.hits;
             c.total += head.hits;
             c.next_pair += head.hits;
+            c.head.known = false;
             continue;
         }
         // Back-pressure: stall until an edge's drain leaves room, i.e. the

@@ -61,6 +61,12 @@ public:
     static constexpr uint32_t kCheckpointEvery = 16;
 
 private:
+    // The slot the pipeline delivers next that carries hits (or the end marker).
+    struct HeadSlot {
+        uint64_t slot = 0;
+        uint32_t hits = 0;  // 0 for the end marker
+        bool known = false;
+    };
     // Everything that determines the following edges.
     struct Cursor {
         uint64_t segment_edges = 0;
@@ -73,11 +79,7 @@ private:
         uint32_t buffer = 0;
         bool end_seen = false;
         BoardCore::Phase phase = BoardCore::Phase::Idle;
-    };
-    // The slot the pipeline delivers next that carries hits (or the end marker).
-    struct HeadSlot {
-        uint64_t slot;
-        uint32_t hits;  // 0 for the end marker
+        HeadSlot head;  // the slot of next_pair, once computed
     };
 
     HeadSlot next_hit_slot(const Cursor& cursor) const;
@@ -89,7 +91,7 @@ private:
     // Runs from `start` to the segment's end, keeping checkpoints.
     void run_segment(const Cursor& start);
 
-    uint64_t lanes_;
+    uint32_t lanes_;
     uint64_t line_delay_;  // D: edges from issue to the collector
     uint32_t fifo_depth_;
     uint32_t drain_per_cycle_;
