@@ -106,6 +106,18 @@ TEST(FastEngine, NanZerosInfinitiesAndDenormals) {
     }
 }
 
+// Draining more pairs a cycle than there are lanes: no back-pressure ever,
+// only the end-of-sweep drain and overflow pauses.
+TEST(FastEngine, DrainFasterThanTheLanes) {
+    std::mt19937 rng(11);
+    const WordScene scene = testing::overlapping_scene(120, rng);
+    for (uint32_t m : {1u, 4u, 31u}) {
+        expect_lockstep(make_config(m, 2 * m - 1, 64, 262144), scene, 0, rng);
+        expect_lockstep(make_config(m, 2 * m + 10, 2 * m + 1, 5), scene, 0, rng);
+        if (HasFailure()) return;
+    }
+}
+
 TEST(FastEngine, CompareLatencyAndDefaults) {
     std::mt19937 rng(8);
     const WordScene scene = testing::random_scene(400, 15.0f, 3.0f, rng);

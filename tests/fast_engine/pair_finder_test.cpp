@@ -52,6 +52,22 @@ TEST(PairFinder, SpreadScenesAreSweptInAGridOfCells) {
     EXPECT_EQ(pairs, expected);
 }
 
+// A few infinite, signed-zero, denormal, NaN and inverted bounds among many
+// ordinary boxes: the grid stays, and the odd boxes land in the right cells.
+TEST(PairFinder, SpecialValuesInsideAGrid) {
+    std::mt19937 rng(11);
+    for (int round = 0; round < 3; ++round) {
+        WordScene scene = testing::random_scene(6000, 120.0f, 3.0f, rng);
+        testing::sprinkle_special_values(scene, 0.003, rng);
+        PairFinder finder;
+        PairList pairs, expected;
+        finder.sweep(scene.size(), scene.view(), pairs);
+        EXPECT_GT(finder.last_cells(), 16u);
+        finder.all_pairs(scene.size(), scene.view(), expected);
+        EXPECT_EQ(pairs, expected);
+    }
+}
+
 // A box reaching to infinity on y and z touches every cell: with many such
 // boxes the grid would hold N x cells entries, so the sweep goes without it.
 TEST(PairFinder, BoxesSpanningEverythingDropTheGrid) {
