@@ -17,7 +17,7 @@ namespace cdvp {
 // Bounds by coordinate (Coordinate order), one float per box. The arrays
 // carry kBlock entries of padding so that a block may start at any box.
 struct BoxColumns {
-    static constexpr std::size_t kBlock = 8;  // BlockTest tests two groups of four
+    static constexpr std::size_t kBlock = 4;  // a multiple of 4: BlockTest tests groups of four
 
     std::vector<float> bound[kCoordinates];
 
@@ -51,7 +51,9 @@ public:
 
     uint32_t hits(std::size_t q0) const {
 #if defined(__SSE2__)
-        return four(q0) | (four(q0 + 4) << 4);
+        uint32_t hits = 0;
+        for (std::size_t group = 0; group < BoxColumns::kBlock; group += 4) hits |= four(q0 + group) << group;
+        return hits;
 #else
         uint32_t hits = 0;
         for (std::size_t k = 0; k < BoxColumns::kBlock; ++k) {
