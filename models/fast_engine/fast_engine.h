@@ -16,7 +16,7 @@
 //     at which it pauses or finishes;
 //   - buffer_entry(k): BoardCore's pair buffer entry k at any edge of the
 //     segment at which PAIR_COUNT > k.
-// Cost: O(N + pairs) time for the pairs (O(N^2 / 8) block tests at small N),
+// Cost: O(N + candidates + pairs) time for the pairs (all pairs up to 256 boxes),
 // O(hit cycles + pauses) for the timeline; O(N + pairs) memory. No SystemC.
 #pragma once
 

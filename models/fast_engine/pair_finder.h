@@ -17,7 +17,7 @@ using CoordinateWords = std::array<const uint32_t*, kCoordinates>;
 
 // Finds exactly the pairs (i, j), i < j < objects, for which
 // ComparisonUnit::lane_hit holds, in BoardCore's order (i ascending, then j
-// ascending). Small scenes: all pairs over structure-of-arrays, eight boxes a
+// ascending). Small scenes: all pairs over structure-of-arrays, four boxes a
 // test. Larger ones: a sort on min x, boxes binned into a grid of y-z cells
 // and a sweep along x inside each cell (box pruning); a pair meeting in
 // several cells is reported by the first one only. Any bound may be any
