@@ -74,9 +74,15 @@ BoardObservation SweepTimeline::observe(uint64_t edges) const {
     return seen;
 }
 
-SweepTimeline::HeadSlot SweepTimeline::next_hit_slot(const Cursor& cursor) const {
+// Fills cursor.head field by field (a returned struct here costs a store-forwarding stall).
+void SweepTimeline::locate_head(Cursor& cursor) const {
     const std::vector<IndexPair>& pairs = *pairs_;
-    if (cursor.next_pair >= pairs.size()) return {sweep_cycles_, 0, true};  // the end marker
+    cursor.head.known = true;
+    if (cursor.next_pair >= pairs.size()) {  // the end marker
+        cursor.head.slot = sweep_cycles_;
+        cursor.head.hits = 0;
+        return;
+    }
     const IndexPair& first = pairs[cursor.next_pair];
     const uint32_t row = first.first;
     const uint32_t step = (first.second - row - 1) / lanes_;
@@ -87,7 +93,8 @@ SweepTimeline::HeadSlot SweepTimeline::next_hit_slot(const Cursor& cursor) const
     for (uint64_t k = cursor.next_pair + 1; k < pairs.size() && pairs[k].first == row && pairs[k].second <= last_column; ++k) {
         ++hits;
     }
-    return {row_start + step, hits, true};
+    cursor.head.slot = row_start + step;
+    cursor.head.hits = hits;
 }
 
 void SweepTimeline::drain_edges(Cursor& cursor, uint64_t k, uint32_t stall_per_edge) const {
@@ -125,7 +132,7 @@ void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoi
             if (c.fifo == 0) c.phase = Phase::Done;
             continue;
         }
-        if (!c.head.known) c.head = next_hit_slot(c);
+        if (!c.head.known) locate_head(c);
         const HeadSlot& head = c.head;
         // Slot s reaches the collector on advance edge s + 1 + D.
         const uint64_t arrival = head.slot + line_delay_;
