@@ -118,8 +118,8 @@ void PairFinder::sort_by_min_x() {
         for (uint64_t item : items) spare[count[(item >> shift) & 2047]++] = item;
         items.swap(spare);
     }
-    sorted_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) sorted_[k] = valid_[static_cast<uint32_t>(items[k])];
+    by_min_x_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) by_min_x_[k] = static_cast<uint32_t>(items[k]);
 }
 
 // Cells about twice the mean box extent, so that most boxes touch one or two
@@ -127,11 +127,11 @@ void PairFinder::sort_by_min_x() {
 // kMinBoxesPerCell boxes on average.
 PairFinder::Grid PairFinder::choose_grid() const {
     Grid grid;
-    const std::size_t n = sorted_.size();
+    const std::size_t n = valid_.size();
     for (int axis = 0; axis < 2; ++axis) {
         double low = INFINITY, high = -INFINITY, extent = 0;
         std::size_t finite = 0;
-        for (const PackedBox& box : sorted_) {
+        for (const PackedBox& box : valid_) {
             const float lo = box.bound[kMinY + axis], hi = box.bound[kMaxY + axis];
             if (!std::isfinite(lo) || !std::isfinite(hi)) continue;
             low = std::min<double>(low, std::min(lo, hi));
@@ -157,16 +157,16 @@ PairFinder::Grid PairFinder::choose_grid() const {
 
 // Lays the boxes out cell by cell, each cell in min-x order: a stable counting
 // sort of the x-sorted boxes by cell, moving only positions (one write stream
-// per cell), then one sequential pass gathering the bounds.
+// per cell), then one pass gathering the bounds.
 void PairFinder::bin(const Grid& chosen) {
-    const std::size_t n = sorted_.size();
+    const std::size_t n = valid_.size();
     Grid grid = chosen;
     spans_.resize(n);
     uint64_t entries = 0;
     for (int attempt = 0; attempt < 2; ++attempt) {
         entries = 0;
         for (std::size_t k = 0; k < n; ++k) {
-            const float* b = sorted_[k].bound;
+            const float* b = valid_[k].bound;
             // The cells of the hull [min(lo, hi), max(lo, hi)]: two boxes that
             // meet on an axis have intersecting hulls even when inverted.
             spans_[k] = {grid.cell(0, std::min(b[kMinY], b[kMaxY])), grid.cell(0, std::max(b[kMinY], b[kMaxY])),
@@ -188,8 +188,8 @@ void PairFinder::bin(const Grid& chosen) {
     for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
     cell_next_.assign(cell_begin_.begin(), cell_begin_.end() - 1);
     entry_box_.resize(entries);
-    for (std::size_t k = 0; k < n; ++k) {
-        for_each_cell(spans_[k], [&](uint32_t cell) { entry_box_[cell_next_[cell]++] = static_cast<uint32_t>(k); });
+    for (uint32_t position : by_min_x_) {
+        for_each_cell(spans_[position], [&](uint32_t cell) { entry_box_[cell_next_[cell]++] = position; });
     }
     entries_.resize(entries);
     entry_index_.assign(entries + kBlock, 0);
@@ -197,7 +197,7 @@ void PairFinder::bin(const Grid& chosen) {
     for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
         const uint32_t y = cell / cells_z_, z = cell % cells_z_;
         for (uint32_t e = cell_begin_[cell]; e < cell_begin_[cell + 1]; ++e) {
-            const PackedBox& box = sorted_[entry_box_[e]];
+            const PackedBox& box = valid_[entry_box_[e]];
             const CellSpan& span = spans_[entry_box_[e]];
             entries_.set(e, box.bound);
             entry_index_[e] = box.index;

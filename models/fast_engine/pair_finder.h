@@ -56,14 +56,16 @@ private:
     void sweep_cells(PairList& unordered) const;  // sized to the pairs found
     void order(uint32_t objects, const PairList& unordered, PairList& out);
 
-    // Boxes without a NaN bound: in index order, then sorted by min x.
-    std::vector<PackedBox> valid_, sorted_;
+    // Boxes without a NaN bound, in index order, and their positions there
+    // sorted by min x.
+    std::vector<PackedBox> valid_;
+    std::vector<uint32_t> by_min_x_;
     std::vector<uint64_t> sort_scratch_[2];
     // The grid's cells in order, each holding its boxes in min-x order:
-    // entry e is box sorted_[entry_box_[e]], with its bounds, its index and
+    // entry e is box valid_[entry_box_[e]], with its bounds, its index and
     // whether its cell is the box's first on y (bit 0) and on z (bit 1).
     uint32_t cells_y_ = 1, cells_z_ = 1;
-    std::vector<CellSpan> spans_;  // per sorted box
+    std::vector<CellSpan> spans_;  // per valid box
     std::vector<uint32_t> cell_begin_, cell_next_;
     std::vector<uint32_t> entry_box_;
     BoxColumns entries_;
