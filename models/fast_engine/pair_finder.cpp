@@ -81,8 +81,10 @@ void PairFinder::all_pairs(uint32_t objects, const CoordinateWords& words, PairL
 
 void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList& out) {
     load_valid(objects, words);
+    find_spans(choose_grid());
+    cluster_by_first_cell();
     sort_by_min_x();
-    bin(choose_grid());
+    bin();
     sweep_cells(unordered_);
     order(objects, unordered_, out);
 }
@@ -96,30 +98,9 @@ void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
         for (float bound : box.bound) has_nan |= std::isnan(bound);
         if (has_nan) continue;  // every comparison with it is false: it meets nothing
         box.index = i;
-        box.spare = 0;
+        box.first_cell = 0;
         valid_.push_back(box);
     }
-}
-
-// LSD radix sort of (min x key, position), 11 bits a pass; a pass whose digit
-// is the same for every box is skipped.
-void PairFinder::sort_by_min_x() {
-    const std::size_t n = valid_.size();
-    std::vector<uint64_t>& items = sort_scratch_[0];
-    std::vector<uint64_t>& spare = sort_scratch_[1];
-    items.resize(n);
-    spare.resize(n);
-    for (std::size_t k = 0; k < n; ++k) items[k] = (uint64_t{ordered_key(valid_[k].bound[kMinX])} << 32) | k;
-    for (uint32_t shift = 32; shift < 64; shift += 11) {
-        std::size_t count[2048 + 1] = {};
-        for (uint64_t item : items) ++count[((item >> shift) & 2047) + 1];
-        if (n == 0 || count[((items[0] >> shift) & 2047) + 1] == n) continue;
-        for (std::size_t d = 1; d <= 2048; ++d) count[d] += count[d - 1];
-        for (uint64_t item : items) spare[count[(item >> shift) & 2047]++] = item;
-        items.swap(spare);
-    }
-    by_min_x_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) by_min_x_[k] = static_cast<uint32_t>(items[k]);
 }
 
 // Cells about twice the mean box extent, so that most boxes touch one or two
@@ -155,53 +136,89 @@ PairFinder::Grid PairFinder::choose_grid() const {
     return grid;
 }
 
-// Lays the boxes out cell by cell, each cell in min-x order: a stable counting
-// sort of the x-sorted boxes by cell, moving only positions (one write stream
-// per cell), then one pass gathering the bounds.
-void PairFinder::bin(const Grid& chosen) {
+// The cells of each box's y and z hulls [min(lo, hi), max(lo, hi)]: two boxes
+// that meet on an axis have intersecting hulls even when inverted.
+void PairFinder::find_spans(const Grid& chosen) {
     const std::size_t n = valid_.size();
     Grid grid = chosen;
     spans_.resize(n);
-    uint64_t entries = 0;
     for (int attempt = 0; attempt < 2; ++attempt) {
-        entries = 0;
+        entry_count_ = 0;
         for (std::size_t k = 0; k < n; ++k) {
             const float* b = valid_[k].bound;
-            // The cells of the hull [min(lo, hi), max(lo, hi)]: two boxes that
-            // meet on an axis have intersecting hulls even when inverted.
             spans_[k] = {grid.cell(0, std::min(b[kMinY], b[kMaxY])), grid.cell(0, std::max(b[kMinY], b[kMaxY])),
                          grid.cell(1, std::min(b[kMinZ], b[kMaxZ])), grid.cell(1, std::max(b[kMinZ], b[kMaxZ]))};
-            entries += uint64_t{spans_[k].y1 - spans_[k].y0 + 1u} * (spans_[k].z1 - spans_[k].z0 + 1u);
+            entry_count_ += uint64_t{spans_[k].y1 - spans_[k].y0 + 1u} * (spans_[k].z1 - spans_[k].z0 + 1u);
         }
-        if (entries <= kMaxEntriesPerBox * n) break;
+        if (entry_count_ <= kMaxEntriesPerBox * n) break;
         grid = Grid{};  // huge boxes everywhere: one cell
     }
     cells_y_ = grid.cells[0];
     cells_z_ = grid.cells[1];
+}
+
+// Boxes grouped by their first cell (a counting sort), so that the boxes of
+// one cell lie close together when the cells are filled: index order says
+// nothing about where a box is.
+void PairFinder::cluster_by_first_cell() {
+    const std::size_t n = valid_.size();
+    cell_begin_.assign(std::size_t{cells_y_} * cells_z_ + 1, 0);
+    auto first_cell = [&](const CellSpan& span) { return uint32_t{span.y0} * cells_z_ + span.z0; };
+    for (const CellSpan& span : spans_) ++cell_begin_[first_cell(span) + 1];
+    for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
+    cell_next_.assign(cell_begin_.begin(), cell_begin_.end() - 1);
+    clustered_.resize(n);
+    items_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const uint32_t position = cell_next_[first_cell(spans_[k])]++;
+        clustered_[position] = valid_[k];
+        clustered_[position].first_cell = (uint32_t{spans_[k].y0} << 16) | spans_[k].z0;
+        items_[position] = {ordered_key(valid_[k].bound[kMinX]), position, spans_[k]};
+    }
+}
+
+// LSD radix sort of the boxes' (min x key, position, cells), 11 bits a pass;
+// a pass whose digit is the same for every box is skipped.
+void PairFinder::sort_by_min_x() {
+    const std::size_t n = items_.size();
+    spare_items_.resize(n);
+    for (uint32_t shift = 0; shift < 32; shift += 11) {
+        std::size_t count[2048 + 1] = {};
+        for (const SortItem& item : items_) ++count[((item.key >> shift) & 2047) + 1];
+        if (n == 0 || count[((items_[0].key >> shift) & 2047) + 1] == n) continue;
+        for (std::size_t d = 1; d <= 2048; ++d) count[d] += count[d - 1];
+        for (const SortItem& item : items_) spare_items_[count[(item.key >> shift) & 2047]++] = item;
+        items_.swap(spare_items_);
+    }
+}
+
+// Lays the boxes out cell by cell, each cell in min-x order: a stable counting
+// sort of the x-sorted boxes by cell, moving only positions (one write stream
+// per cell), then one pass gathering the bounds.
+void PairFinder::bin() {
     cell_begin_.assign(std::size_t{cells_y_} * cells_z_ + 1, 0);
     auto for_each_cell = [&](const CellSpan& span, auto&& visit) {
         for (uint32_t y = span.y0; y <= span.y1; ++y) {
             for (uint32_t z = span.z0; z <= span.z1; ++z) visit(y * cells_z_ + z);
         }
     };
-    for (const CellSpan& span : spans_) for_each_cell(span, [&](uint32_t cell) { ++cell_begin_[cell + 1]; });
+    for (const SortItem& item : items_) for_each_cell(item.span, [&](uint32_t cell) { ++cell_begin_[cell + 1]; });
     for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
     cell_next_.assign(cell_begin_.begin(), cell_begin_.end() - 1);
-    entry_box_.resize(entries);
-    for (uint32_t position : by_min_x_) {
-        for_each_cell(spans_[position], [&](uint32_t cell) { entry_box_[cell_next_[cell]++] = position; });
+    entry_box_.resize(entry_count_);
+    for (const SortItem& item : items_) {
+        for_each_cell(item.span, [&](uint32_t cell) { entry_box_[cell_next_[cell]++] = item.position; });
     }
-    entries_.resize(entries);
-    entry_index_.assign(entries + kBlock, 0);
-    entry_first_.assign(entries + kBlock, 0);
+    entries_.resize(entry_count_);
+    entry_index_.assign(entry_count_ + kBlock, 0);
+    entry_first_.assign(entry_count_ + kBlock, 0);
     for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
         const uint32_t y = cell / cells_z_, z = cell % cells_z_;
         for (uint32_t e = cell_begin_[cell]; e < cell_begin_[cell + 1]; ++e) {
-            const PackedBox& box = valid_[entry_box_[e]];
-            const CellSpan& span = spans_[entry_box_[e]];
+            const PackedBox& box = clustered_[entry_box_[e]];
             entries_.set(e, box.bound);
             entry_index_[e] = box.index;
-            entry_first_[e] = (span.y0 == y ? 1u : 0u) | (span.z0 == z ? 2u : 0u);
+            entry_first_[e] = ((box.first_cell >> 16) == y ? 1u : 0u) | ((box.first_cell & 0xFFFF) == z ? 2u : 0u);
         }
     }
 }

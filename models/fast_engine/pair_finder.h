@@ -39,33 +39,41 @@ public:
 
 private:
     struct Grid;
-    // One box in 32 bytes: bounds and index.
+    // One box in 32 bytes: bounds, index, and its first y and z cells ((y << 16) | z).
     struct PackedBox {
         float bound[kCoordinates];
         uint32_t index;
-        uint32_t spare;  // pads the box to 32 bytes
+        uint32_t first_cell;
     };
     struct CellSpan {
         uint16_t y0, y1, z0, z1;
     };
+    // A box in the min-x sort: its ordered key, its position in clustered_ and its cells.
+    struct SortItem {
+        uint32_t key;
+        uint32_t position;
+        CellSpan span;
+    };
 
     void load_valid(uint32_t objects, const CoordinateWords& words);
-    void sort_by_min_x();
     Grid choose_grid() const;
-    void bin(const Grid& grid);
+    void find_spans(const Grid& grid);
+    void cluster_by_first_cell();
+    void sort_by_min_x();
+    void bin();
     void sweep_cells(PairList& unordered) const;  // sized to the pairs found
     void order(uint32_t objects, const PairList& unordered, PairList& out);
 
-    // Boxes without a NaN bound, in index order, and their positions there
-    // sorted by min x.
-    std::vector<PackedBox> valid_;
-    std::vector<uint32_t> by_min_x_;
-    std::vector<uint64_t> sort_scratch_[2];
+    // Boxes without a NaN bound in index order, their cells, then the same
+    // boxes grouped by first cell.
+    std::vector<PackedBox> valid_, clustered_;
+    std::vector<CellSpan> spans_;
+    std::vector<SortItem> items_, spare_items_;
     // The grid's cells in order, each holding its boxes in min-x order:
-    // entry e is box valid_[entry_box_[e]], with its bounds, its index and
+    // entry e is box clustered_[entry_box_[e]], with its bounds, its index and
     // whether its cell is the box's first on y (bit 0) and on z (bit 1).
     uint32_t cells_y_ = 1, cells_z_ = 1;
-    std::vector<CellSpan> spans_;  // per valid box
+    uint64_t entry_count_ = 0;
     std::vector<uint32_t> cell_begin_, cell_next_;
     std::vector<uint32_t> entry_box_;
     BoxColumns entries_;
