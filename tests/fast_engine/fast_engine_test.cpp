@@ -153,6 +153,31 @@ TEST(FastEngine, ObservingPastTheSegmentSeesItsEnd) {
     EXPECT_THROW(engine.resume(), std::logic_error);
 }
 
+// One engine over many frames (as a shell would keep it): each frame as a fresh engine sees it.
+TEST(FastEngine, ReusedAcrossFramesOfAnySize) {
+    std::mt19937 rng(12);
+    const BoardConfig config = make_config(6, 11, 2, 40);
+    FastEngine reused(config);
+    for (uint32_t n : {3000u, 5u, 700u, 0u, 1500u, 2u}) {
+        const WordScene scene = testing::random_scene(n, 3.0f * std::cbrt(static_cast<float>(n) + 1), 2.0f, rng);
+        FastEngine fresh(config);
+        reused.start(n, scene.view());
+        fresh.start(n, scene.view());
+        for (;;) {
+            const BoardObservation a = reused.observe(reused.segment_cycles()), b = fresh.observe(fresh.segment_cycles());
+            ASSERT_EQ(reused.segment_cycles(), fresh.segment_cycles()) << n;
+            ASSERT_EQ(a.cycles, b.cycles) << n;
+            ASSERT_EQ(a.stalls, b.stalls) << n;
+            ASSERT_EQ(a.buffer_count, b.buffer_count) << n;
+            ASSERT_EQ(reused.phase(), fresh.phase()) << n;
+            if (reused.phase() == BoardCore::Phase::Done) break;
+            reused.resume();
+            fresh.resume();
+        }
+        EXPECT_EQ(reused.pairs(), testing::lane_hit_pairs(scene)) << n;
+    }
+}
+
 // Beyond 65,536 boxes, where the board itself is too slow to step here: the
 // cycle identity and the pairs of the all-pairs search.
 TEST(FastEngine, BeyondSixtyFiveThousandBoxes) {
