@@ -61,7 +61,7 @@ private:
     void cluster_by_first_cell();
     void sort_by_min_x();
     void bin();
-    void sweep_cells(PairList& unordered) const;  // sized to the pairs found
+    void sweep_cells(PairList& unordered) const;
     void order(uint32_t objects, const PairList& unordered, PairList& out);
 
     // Boxes without a NaN bound in index order, their cells, then the same
