@@ -2,12 +2,18 @@
 // sweep) beside the all-pairs SoA baseline and the clocked BoardCore, on the
 // bouncing-spheres scene (sw/scene/spheres: 15% of the cube's volume filled,
 // so about the same pairs per box at every N). One iteration is one frame;
-// eight consecutive frames are played in turn.
+// eight consecutive frames are played in turn. A summary of CPU times per
+// frame and the ratios closes the output.
 //   fast_engine_bench [google benchmark flags]
+#include <unistd.h>
+
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cstdio>
 #include <map>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "models/fast_engine/fast_engine.h"
@@ -132,6 +138,46 @@ BENCHMARK(BM_FastEngineTimelineOnly)->Arg(500)->Arg(2000)->Arg(10000)->Arg(65536
 BENCHMARK(BM_SoaBaseline)->Arg(500)->Arg(2000)->Arg(10000)->Arg(65536)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ClockedBoardCore)->Arg(500)->Arg(2000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
+// The console table, keeping each run's CPU time per frame for the summary
+// (CPU time: the machine may be shared).
+class SummaryReporter : public benchmark::ConsoleReporter {
+public:
+    SummaryReporter() : ConsoleReporter(isatty(1) ? OO_ColorTabular : OO_Tabular) {}
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& run : runs) {
+            if (run.run_type == Run::RT_Iteration && run.iterations > 0) {
+                cpu_us_[run.benchmark_name()] = 1e6 * run.cpu_accumulated_time / static_cast<double>(run.iterations);
+            }
+        }
+    }
+    double cpu_us(const std::string& name) const {
+        auto it = cpu_us_.find(name);
+        return it == cpu_us_.end() ? 0.0 : it->second;
+    }
+
+private:
+    std::map<std::string, double> cpu_us_;
+};
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    SummaryReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    std::printf("CPU time per frame, fast engine (pairs + timeline) against:\n");
+    for (const char* n : {"500", "2000", "10000", "65536"}) {
+        const double fast = reporter.cpu_us(std::string("BM_FastEngine/") + n);
+        if (fast <= 0) continue;
+        std::printf("  N=%-6s fast engine %10.1f us", n, fast);
+        const std::pair<const char*, const char*> others[] = {{"BM_SoaBaseline/", "soa"},
+                                                              {"BM_ClockedBoardCore/", "clocked core"}};
+        for (const auto& [name, label] : others) {
+            const double us = reporter.cpu_us(name + std::string(n));
+            if (us > 0) std::printf("   %s %.1f us (%.1fx)", label, us, us / fast);
+        }
+        std::printf("\n");
+    }
+    return 0;
+}
