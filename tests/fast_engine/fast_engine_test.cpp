@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <random>
 
+#include "models/address_generator/address_generator.h"
 #include "tests/fast_engine/word_scenes.h"
 
 namespace cdvp {

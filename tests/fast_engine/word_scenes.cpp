@@ -7,7 +7,9 @@
 #include <sstream>
 #include <string>
 
+#include "models/address_generator/address_generator.h"
 #include "models/board/board_core.h"
+#include "models/board/clocked_engine.h"
 #include "models/fast_engine/fast_engine.h"
 #include "tests/support/core_driver.h"
 
@@ -116,13 +118,14 @@ PairList lane_hit_pairs(const WordScene& scene) {
 
 namespace {
 
-BoardObservation observe_core(const BoardCore& core) {
+BoardObservation observe_core(BoardCore& core) {
+    const SweepCounters counters = core.counters();
     BoardObservation seen;
-    seen.cycles = core.registers().cycles;
-    seen.stalls = core.registers().stalls;
-    seen.buffer_count = core.collector().buffer_count();
-    seen.total_pairs = core.collector().total_pairs();
-    seen.fifo_level = core.collector().fifo_level();
+    seen.cycles = counters.cycles;
+    seen.stalls = counters.stalls;
+    seen.buffer_count = counters.buffered;
+    seen.total_pairs = counters.total_pairs;
+    seen.fifo_level = static_cast<ClockedEngine&>(core.engine()).fifo_level();
     seen.phase = core.phase();
     return seen;
 }
@@ -197,18 +200,18 @@ uint32_t expect_lockstep(const BoardConfig& config, const WordScene& scene, uint
             return segment;
         }
         EXPECT_EQ(engine.phase(), core.phase()) << context;
-        const uint32_t buffered = core.collector().buffer_count();
+        const uint32_t buffered = core.buffered_pairs();
         for (uint32_t k = 0; k < buffered; ++k) {
-            if (!(engine.buffer_entry(k) == core.collector().buffer_entry(k))) {
+            if (!(engine.buffer_entry(k) == core.buffered_pair(k))) {
                 ADD_FAILURE() << context << ": segment " << segment << " buffer entry " << k << " differs";
                 return segment;
             }
-            from_core.push_back(core.collector().buffer_entry(k));
+            from_core.push_back(core.buffered_pair(k));
         }
         if (core.phase() == BoardCore::Phase::Done) {
             EXPECT_EQ(engine.pairs(), from_core) << context;
-            EXPECT_EQ(core.registers().cycles,
-                      AddressGenerator::sweep_cycles(n, config.m) + config.pipeline_latency() + core.registers().stalls);
+            EXPECT_EQ(core.counters().cycles,
+                      AddressGenerator::sweep_cycles(n, config.m) + config.pipeline_latency() + core.counters().stalls);
             return segment;
         }
         core.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
