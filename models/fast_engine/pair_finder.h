@@ -1,0 +1,86 @@
+// Every pair the board's comparison unit accepts, found without the board's all-pairs sweep.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "models/common/aabb.h"
+#include "models/comparison_unit/comparison_unit.h"
+#include "models/fast_engine/box_block.h"
+
+namespace cdvp {
+
+// The six coordinate memories' contents as the host wrote them: words[c][i]
+// is the float32 bit pattern of bound c (Coordinate order) of box i.
+using CoordinateWords = std::array<const uint32_t*, kCoordinates>;
+
+// Finds exactly the pairs (i, j), i < j < objects, for which
+// ComparisonUnit::lane_hit holds, in BoardCore's order (i ascending, then j
+// ascending). Small scenes: all pairs over structure-of-arrays, four boxes a
+// test. Larger ones: a sort on min x, boxes binned into a grid of y-z cells
+// and a sweep along x inside each cell (box pruning); a pair meeting in
+// several cells is reported by the first one only. Any bound may be any
+// float: a box with a NaN bound meets nothing and is left out before the
+// sort; inverted boxes (min > max) are tested as the comparators would.
+// Scratch memory is kept between calls; O(N + pairs).
+class PairFinder {
+public:
+    // At most this many boxes: all pairs (no sort pays off below it).
+    static constexpr uint32_t kBruteForceLimit = 256;
+
+    void find(uint32_t objects, const CoordinateWords& words, PairList& out);
+    // The two algorithms, for tests and benchmarks: the same pairs in the same order.
+    void all_pairs(uint32_t objects, const CoordinateWords& words, PairList& out);
+    void sweep(uint32_t objects, const CoordinateWords& words, PairList& out);
+
+    // Grid cells of the last sweep (1 when it swept along x alone).
+    uint32_t last_cells() const { return cells_y_ * cells_z_; }
+
+private:
+    struct Grid;
+    // One box in 32 bytes: bounds, index, and its first y and z cells ((y << 16) | z).
+    struct PackedBox {
+        float bound[kCoordinates];
+        uint32_t index;
+        uint32_t first_cell;
+    };
+    struct CellSpan {
+        uint16_t y0, y1, z0, z1;
+    };
+    // A box in the min-x sort: its ordered key, its position in clustered_ and its cells.
+    struct SortItem {
+        uint32_t key;
+        uint32_t position;
+        CellSpan span;
+    };
+
+    void load_valid(uint32_t objects, const CoordinateWords& words);
+    Grid choose_grid() const;
+    void find_spans(const Grid& grid);
+    void cluster_by_first_cell();
+    void sort_by_min_x();
+    void bin();
+    void sweep_cells(PairList& unordered) const;
+    void order(uint32_t objects, const PairList& unordered, PairList& out);
+
+    // Boxes without a NaN bound in index order, their cells, then the same
+    // boxes grouped by first cell.
+    std::vector<PackedBox> valid_, clustered_;
+    std::vector<CellSpan> spans_;
+    std::vector<SortItem> items_, spare_items_;
+    // The grid's cells in order, each holding its boxes in min-x order:
+    // entry e is box clustered_[entry_box_[e]], with its bounds, its index and
+    // whether its cell is the box's first on y (bit 0) and on z (bit 1).
+    uint32_t cells_y_ = 1, cells_z_ = 1;
+    uint64_t entry_count_ = 0;
+    std::vector<uint32_t> cell_begin_, cell_next_;
+    std::vector<uint32_t> entry_box_;
+    BoxColumns entries_;
+    std::vector<uint32_t> entry_index_, entry_first_;  // kBlock words of padding each
+    PairList unordered_;
+    std::vector<uint64_t> row_start_, row_next_;
+    BoxColumns all_;
+};
+
+}  // namespace cdvp

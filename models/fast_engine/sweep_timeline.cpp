@@ -1,0 +1,167 @@
+#include "models/fast_engine/sweep_timeline.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "models/address_generator/address_generator.h"
+#include "models/block_ram/block_ram.h"
+
+namespace cdvp {
+
+namespace {
+constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
+uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
+// AddressGenerator::sweep_cycles with one 32-bit division (boxes < 2^32):
+// this runs once per hit slot.
+uint64_t sweep_cycles32(uint32_t objects, uint32_t lanes) {
+    if (objects < 2) return 0;
+    const uint32_t q = (objects - 1) / lanes, r = (objects - 1) - q * lanes;
+    return uint64_t{lanes} * q * (q + 1) / 2 + uint64_t{r} * (q + 1);
+}
+}  // namespace
+
+SweepTimeline::SweepTimeline(const BoardConfig& config)
+    : lanes_((config.validate(), config.lanes())),
+      line_delay_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles),
+      fifo_depth_(config.collector.fifo_depth),
+      drain_per_cycle_(config.collector.drain_per_cycle),
+      buffer_depth_(config.collector.buffer_depth),
+      m_(config.m) {}
+
+void SweepTimeline::start(uint32_t objects, const std::vector<IndexPair>& pairs) {
+    objects_ = objects;
+    sweep_cycles_ = AddressGenerator::sweep_cycles(objects, m_);
+    pairs_ = &pairs;
+    buffer_begin_ = 0;
+    Cursor cursor;
+    cursor.phase = BoardCore::Phase::Running;
+    run_segment(cursor);
+}
+
+void SweepTimeline::resume() {
+    if (end_.phase != BoardCore::Phase::Paused) throw std::logic_error("resume: the sweep is not paused");
+    buffer_begin_ += end_.buffer;
+    Cursor cursor = end_;
+    cursor.buffer = 0;  // the host has read the buffer
+    cursor.segment_edges = 0;
+    cursor.phase = BoardCore::Phase::Running;
+    run_segment(cursor);
+}
+
+void SweepTimeline::run_segment(const Cursor& start) {
+    checkpoints_.assign(1, start);
+    end_ = start;
+    run(end_, kNever, &checkpoints_);
+}
+
+BoardObservation SweepTimeline::observe(uint64_t edges) const {
+    Cursor cursor = end_;
+    if (edges < end_.segment_edges) {
+        // The last checkpoint at or before `edges`; checkpoints_[0] is at 0.
+        auto after = std::upper_bound(checkpoints_.begin(), checkpoints_.end(), edges,
+                                      [](uint64_t e, const Cursor& c) { return e < c.segment_edges; });
+        cursor = *(after - 1);
+        run(cursor, edges, nullptr);
+    }
+    BoardObservation seen;
+    seen.cycles = cursor.cycles;
+    seen.stalls = cursor.stalls;
+    seen.buffer_count = cursor.buffer;
+    seen.total_pairs = cursor.total;
+    seen.fifo_level = cursor.fifo;
+    seen.phase = cursor.phase;
+    return seen;
+}
+
+// Fills cursor.head field by field (a returned struct here costs a store-forwarding stall).
+void SweepTimeline::locate_head(Cursor& cursor) const {
+    const std::vector<IndexPair>& pairs = *pairs_;
+    cursor.head.known = true;
+    if (cursor.next_pair >= pairs.size()) {  // the end marker
+        cursor.head.slot = sweep_cycles_;
+        cursor.head.hits = 0;
+        return;
+    }
+    const IndexPair& first = pairs[cursor.next_pair];
+    const uint32_t row = first.first;
+    const uint32_t step = (first.second - row - 1) / lanes_;
+    const uint64_t row_start = sweep_cycles_ - sweep_cycles32(objects_ - row, lanes_);
+    // The slot's hits: the following pairs of the same row within the same 2m-1 columns.
+    const uint64_t last_column = uint64_t{row} + uint64_t{step} * lanes_ + lanes_;
+    uint32_t hits = 1;
+    for (uint64_t k = cursor.next_pair + 1; k < pairs.size() && pairs[k].first == row && pairs[k].second <= last_column; ++k) {
+        ++hits;
+    }
+    cursor.head.slot = row_start + step;
+    cursor.head.hits = hits;
+}
+
+void SweepTimeline::drain_edges(Cursor& cursor, uint64_t k, uint32_t stall_per_edge) const {
+    const uint64_t room = buffer_depth_ - cursor.buffer;
+    const auto moved = static_cast<uint32_t>(std::min<uint64_t>({k * drain_per_cycle_, cursor.fifo, room}));
+    cursor.fifo -= moved;
+    cursor.buffer += moved;
+    cursor.segment_edges += k;
+    cursor.cycles += k;
+    cursor.stalls += k * stall_per_edge;
+    if (stall_per_edge == 0) cursor.advances += k;
+}
+
+void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoints) const {
+    using Phase = BoardCore::Phase;
+    const uint32_t drain = drain_per_cycle_;
+    uint32_t events = 0;
+    // Every pass runs at least one edge.
+    while (c.phase == Phase::Running && c.segment_edges < limit) {
+        if (checkpoints != nullptr && ++events % kCheckpointEvery == 0) checkpoints->push_back(c);
+        const uint64_t budget = limit - c.segment_edges;
+        const uint32_t room = buffer_depth_ - c.buffer;
+        if (c.fifo > 0 && room == 0) {
+            // A pair must move and the buffer is full: this edge pauses.
+            ++c.segment_edges;
+            ++c.cycles;
+            ++c.stalls;
+            c.phase = Phase::Paused;
+            continue;
+        }
+        // Edges until the buffer fills with pairs still in the FIFO (the next one pauses).
+        const uint64_t until_full = c.fifo > room ? ceil_div(room, drain) : kNever;
+        if (c.end_seen) {  // only the FIFO's last pairs are left: each edge is a stall
+            drain_edges(c, std::min({ceil_div(c.fifo, drain), until_full, budget}), 1);
+            if (c.fifo == 0) c.phase = Phase::Done;
+            continue;
+        }
+        if (!c.head.known) locate_head(c);
+        const HeadSlot& head = c.head;
+        // Slot s reaches the collector on advance edge s + 1 + D.
+        const uint64_t arrival = head.slot + line_delay_;
+        if (c.advances < arrival) {  // empty slots and bubbles before it
+            drain_edges(c, std::min({arrival - c.advances, until_full, budget}), 0);
+            continue;
+        }
+        const uint32_t moved = std::min({drain, c.fifo, room});
+        if (head.hits == 0) {  // the end marker
+            drain_edges(c, 1, 0);
+            c.end_seen = true;
+            if (c.fifo == 0) c.phase = Phase::Done;
+            continue;
+        }
+        if (c.fifo - moved + head.hits <= fifo_depth_) {  // the slot's hits enter the FIFO
+            drain_edges(c, 1, 0);
+            c.fifo += head.hits;
+            c.total += head.hits;
+            c.next_pair += head.hits;
+            c.head.known = false;
+            continue;
+        }
+        // Back-pressure: stall until an edge's drain leaves room, i.e. the
+        // first edge k with min(k * drain, fifo, room) >= need, or until the
+        // buffer fills first.
+        const uint64_t need = c.fifo + head.hits - fifo_depth_;
+        const uint64_t stall_edges = need <= room ? ceil_div(need, drain) - 1 : until_full;
+        drain_edges(c, std::min(stall_edges, budget), 1);
+    }
+}
+
+}  // namespace cdvp

@@ -1,0 +1,93 @@
+// The fast engine behind the board's engine seam against the clocked engine:
+// every BoardEngine query, segment by segment, and abort.
+#include "models/fast_engine/fast_board_engine.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "models/board/clocked_engine.h"
+#include "tests/fast_engine/word_scenes.h"
+
+namespace cdvp {
+namespace {
+
+CoordinateStore store_of(const testing::WordScene& scene) {
+    CoordinateStore store;
+    for (uint32_t c = 0; c < kCoordinates; ++c) store[c] = scene.words[c];
+    return store;
+}
+
+BoardConfig small_board(uint32_t m, uint32_t buffer) {
+    BoardConfig config;
+    config.m = m;
+    config.collector.fifo_depth = 2 * m - 1;
+    config.collector.buffer_depth = buffer;
+    return config;
+}
+
+// Both engines through the seam, with the clocked one asked first at each
+// edge (it steps there) and the fast one after.
+void expect_same_engines(const BoardConfig& config, const testing::WordScene& scene, std::mt19937& rng) {
+    const CoordinateStore store = store_of(scene);
+    ClockedEngine clocked(config, scene.size());
+    FastBoardEngine fast(config);
+    clocked.start(store, scene.size());
+    fast.start(store, scene.size());
+    for (int segment = 1;; ++segment) {
+        const uint64_t edges = fast.segment_edges();
+        std::uniform_int_distribution<uint64_t> pick(0, edges);
+        for (int probe = 0; probe < 40; ++probe) {
+            const uint64_t at = pick(rng);
+            ASSERT_EQ(clocked.ended_by(at), fast.ended_by(at)) << "segment " << segment << " edge " << at;
+            ASSERT_EQ(clocked.counters_after(at), fast.counters_after(at)) << "segment " << segment << " edge " << at;
+        }
+        ASSERT_EQ(clocked.segment_edges(), edges) << "segment " << segment;
+        ASSERT_EQ(clocked.segment_finishes(), fast.segment_finishes()) << "segment " << segment;
+        ASSERT_EQ(clocked.counters_after(edges + 5), fast.counters_after(edges + 5)) << "past the end";
+        ASSERT_EQ(clocked.buffer(), fast.buffer()) << "segment " << segment;
+        if (fast.segment_finishes()) return;
+        clocked.resume();
+        fast.resume();
+    }
+}
+
+TEST(FastBoardEngine, AnswersAsTheClockedEngine) {
+    std::mt19937 rng(21);
+    for (uint32_t n : {0u, 1u, 2u, 40u, 513u, 1200u}) {
+        const auto scene = testing::random_scene(n, 2.5f * std::cbrt(static_cast<float>(n) + 1), 2.0f, rng);
+        expect_same_engines(small_board(3, 7), scene, rng);
+        expect_same_engines(small_board(16, 262144), scene, rng);
+        if (HasFailure()) return;
+    }
+    expect_same_engines(small_board(2, 5), testing::overlapping_scene(200, rng), rng);
+}
+
+// ABORT at any edge: the buffer keeps what it held then, in both.
+TEST(FastBoardEngine, AbortKeepsTheBufferOfThatEdge) {
+    std::mt19937 rng(22);
+    const auto scene = testing::overlapping_scene(150, rng);
+    const CoordinateStore store = store_of(scene);
+    const BoardConfig config = small_board(4, 500);
+    for (int trial = 0; trial < 20; ++trial) {
+        ClockedEngine clocked(config, scene.size());
+        FastBoardEngine fast(config);
+        clocked.start(store, scene.size());
+        fast.start(store, scene.size());
+        if (trial % 2 == 1) {  // abort in the second segment
+            clocked.segment_edges();
+            clocked.resume();
+            fast.resume();
+        }
+        const uint64_t at = std::uniform_int_distribution<uint64_t>(0, fast.segment_edges() + 3)(rng);
+        clocked.abort(at);
+        fast.abort(at);
+        EXPECT_EQ(clocked.buffer(), fast.buffer()) << "abort at edge " << at;
+        EXPECT_EQ(clocked.counters_after(at), fast.counters_after(at)) << "abort at edge " << at;
+        EXPECT_FALSE(fast.segment_finishes());
+        EXPECT_TRUE(fast.ended_by(at));
+    }
+}
+
+}  // namespace
+}  // namespace cdvp

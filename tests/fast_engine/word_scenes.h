@@ -1,0 +1,47 @@
+// Scenes as the host writes them into the coordinate memories (float32 bit
+// patterns), and a lock-step run of BoardCore beside the fast engine.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "models/board/board_config.h"
+#include "models/fast_engine/pair_finder.h"
+
+namespace cdvp::testing {
+
+struct WordScene {
+    std::array<std::vector<uint32_t>, kCoordinates> words;
+
+    uint32_t size() const { return static_cast<uint32_t>(words[0].size()); }
+    CoordinateWords view() const;
+    static WordScene from_boxes(const std::vector<FloatBox>& boxes);
+};
+
+// Boxes with corners uniform in [0, extent)^3 and sides uniform in [0, size).
+WordScene random_scene(uint32_t n, float extent, float size, std::mt19937& rng);
+// Dense clumps: boxes scattered tightly around a few centres far apart.
+WordScene clustered_scene(uint32_t n, uint32_t clusters, std::mt19937& rng);
+// Every box contains the origin: every pair meets.
+WordScene overlapping_scene(uint32_t n, std::mt19937& rng);
+// Coordinates that are multiples of the smallest denormal, of either sign.
+WordScene denormal_scene(uint32_t n, std::mt19937& rng);
+// Replaces about `fraction` of the words with NaNs (quiet, signalling,
+// negative), zeros of both signs, infinities, denormals and FLT_MAX, and
+// inverts about as many boxes (min above max).
+void sprinkle_special_values(WordScene& scene, double fraction, std::mt19937& rng);
+
+// All pairs by the comparison unit's own test, in BoardCore's order.
+PairList lane_hit_pairs(const WordScene& scene);
+
+// Runs BoardCore edge by edge beside FastEngine on the same scene and
+// compares, in every segment, the registers after each probed edge, the edge
+// at which the segment ends, the phase and the whole pair buffer; then every
+// pair. probes_per_segment = 0 probes every edge, k > 0 k random edges.
+// Returns the number of segments (pauses + 1); failures are gtest failures.
+uint32_t expect_lockstep(const BoardConfig& config, const WordScene& scene, uint32_t probes_per_segment,
+                         std::mt19937& rng);
+
+}  // namespace cdvp::testing
