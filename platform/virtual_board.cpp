@@ -18,7 +18,7 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
                            const std::string& vcd_base)
     : sc_module(name),
       faults_(config.faults),
-      board_("board", config.board, capacity),
+      board_("board", config.board, capacity, config.fidelity),
       bridge_("bridge", bus_or_ideal(config.bus)),
       bus_("pci", bus_or_ideal(config.bus)),
       memory_("memory", BoardDriver::host_memory_bytes(capacity, config.board.collector.buffer_depth)),

@@ -24,6 +24,9 @@ struct PlatformConfig {
     DriverConfig driver;
     // Faults to inject (docs/faults.md); empty for none.
     std::vector<FaultSpec> faults;
+    // The board's engine: clocked (edge by edge) or fast (result-oriented);
+    // both give the same pairs, cycles and times. Waveforms need the clocked one.
+    Fidelity fidelity = Fidelity::kCycle;
     // How far the host CPU may run ahead of the rest of the simulation, in
     // ns; 0 synchronises at every access (exact). See HostCpu.
     double quantum_ns = 0.0;

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "models/board/clocked_engine.h"
+#include "models/fast_engine/fast_board_engine.h"
 
 namespace cdvp {
 
@@ -17,9 +18,9 @@ const char* to_string(Fidelity fidelity) {
 std::unique_ptr<BoardEngine> make_engine(Fidelity fidelity, const BoardConfig& config, uint32_t capacity) {
     switch (fidelity) {
         case Fidelity::kCycle: return std::make_unique<ClockedEngine>(config, capacity);
-        case Fidelity::kFast: break;
+        case Fidelity::kFast: return std::make_unique<FastBoardEngine>(config);
     }
-    throw std::invalid_argument(std::string("no ") + to_string(fidelity) + " engine in this build");
+    throw std::invalid_argument("unknown fidelity");
 }
 
 }  // namespace cdvp

@@ -17,10 +17,9 @@ void FastBoardEngine::resume() {
 }
 
 // The sweep stops at that edge (or where the segment ended before it); the
-// buffer keeps what it held then.
+// buffer keeps what it held then (the board reads only that many entries).
 void FastBoardEngine::abort(uint64_t edges) {
     end_edge_ = std::min(edges, end_edge_);
-    buffer_.resize(engine_.observe(end_edge_).buffer_count);
     aborted_ = true;
 }
 
@@ -37,9 +36,6 @@ SweepCounters FastBoardEngine::counters_after(uint64_t edges) {
 void FastBoardEngine::begin_segment() {
     end_edge_ = engine_.segment_cycles();
     aborted_ = false;
-    const uint32_t buffered = engine_.observe(end_edge_).buffer_count;
-    buffer_.clear();
-    for (uint32_t k = 0; k < buffered; ++k) buffer_.push_back(engine_.buffer_entry(k));
 }
 
 }  // namespace cdvp

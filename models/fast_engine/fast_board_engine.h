@@ -11,9 +11,7 @@
 namespace cdvp {
 
 // Answers every BoardEngine query as ClockedEngine does: the same segment
-// ends, counters after any edge, buffer contents and abort. It keeps the
-// current segment's buffer as a list (BoardEngine::buffer() hands out a
-// PairList): at most the pair buffer's depth.
+// ends, counters after any edge, buffer contents and abort.
 class FastBoardEngine : public BoardEngine {
 public:
     explicit FastBoardEngine(const BoardConfig& config) : engine_(config) {}
@@ -26,16 +24,15 @@ public:
     bool ended_by(uint64_t edges) override { return end_edge_ <= edges; }
     bool segment_finishes() override { return !aborted_ && engine_.phase() == BoardCore::Phase::Done; }
     SweepCounters counters_after(uint64_t edges) override;
-    const PairList& buffer() override { return buffer_; }
+    const IndexPair& buffer_entry(uint32_t k) override { return engine_.buffer_entry(k); }
 
     const FastEngine& engine() const { return engine_; }
 
 private:
-    // A new segment: its end, and the buffer it ends with.
+    // A new segment: where it ends.
     void begin_segment();
 
     FastEngine engine_;
-    PairList buffer_;
     uint64_t end_edge_ = 0;
     bool aborted_ = false;
 };

@@ -160,6 +160,21 @@ void check_simulated_time(const RunOptions& o, const po::variables_map& vm, cons
     throw InputError(message.str());
 }
 
+// --fidelity: fast unless waveforms are asked for, which need the clocked engine.
+Fidelity fidelity(const RunOptions& o, const po::variables_map& vm) {
+    if (o.fidelity != "fast" && o.fidelity != "cycle") {
+        throw InputError("--fidelity: expected cycle or fast, got '" + printable(o.fidelity) + "'");
+    }
+    const bool given = vm.count("fidelity") != 0 && !vm["fidelity"].defaulted();
+    if (vm.count("vcd") != 0) {
+        if (given && o.fidelity == "fast") {
+            throw InputError("--vcd: waveforms need the clocked engine; use --fidelity cycle (or leave --fidelity out)");
+        }
+        return Fidelity::kCycle;
+    }
+    return o.fidelity == "cycle" ? Fidelity::kCycle : Fidelity::kFast;
+}
+
 // The --inject specs; a fault that the driver's mode can never meet is refused
 // rather than silently never injected.
 std::vector<FaultSpec> fault_specs(const std::vector<std::string>& texts, const DriverConfig& driver) {
@@ -211,6 +226,7 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     if (vm.count("host-factor")) setup.host_factor = o.host_factor;
     setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
     setup.platform.quantum_ns = o.quantum_ns;
+    setup.platform.fidelity = fidelity(o, vm);
     std::stringstream names(o.baselines);
     for (std::string name; std::getline(names, name, ',');) {
         try {
@@ -287,6 +303,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.dma = setup.platform.driver.use_dma;
     run.interrupts = setup.platform.driver.use_interrupts;
     run.quantum_ns = setup.platform.quantum_ns;
+    run.fidelity = to_string(setup.platform.fidelity);
     for (const auto& b : setup.baselines) run.baseline_names.push_back(b->name());
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());

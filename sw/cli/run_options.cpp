@@ -40,7 +40,10 @@ po::options_description run_options(RunOptions& o) {
         ("drain-rate", number<uint32_t>(&o.board.collector.drain_per_cycle, 1, 64, "R"),
          "pairs moved from FIFO to pair buffer a cycle")
         ("pair-buffer", number<uint32_t>(&o.board.collector.buffer_depth, 1, address_map::kMaxBufferedPairs, "P"),
-         "pair buffer depth in pairs before the host drains it");
+         "pair buffer depth in pairs before the host drains it")
+        ("fidelity", po::value(&o.fidelity)->value_name("cycle|fast")->default_value(o.fidelity),
+         "the board's engine: fast computes pairs and cycles from the schedule, cycle clocks the datapath edge by "
+         "edge; the same pairs, cycles and times (--vcd needs cycle, and picks it when --fidelity is not given)");
     po::options_description host("Host, baselines and faults");
     host.add_options()
         ("transfer", po::value(&o.transfer)->value_name("dma|pio")->default_value(o.transfer),

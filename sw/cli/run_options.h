@@ -25,6 +25,7 @@ struct RunOptions {
     std::string baselines;
     std::vector<std::string> inject;  // fault specs, docs/faults.md
     double host_factor = 0;  // unset: the preset's
+    std::string fidelity = "fast";  // cycle when only --vcd is given
     double quantum_ns = 0;   // host CPU quantum; 0: synchronise at every access
     std::string pairs_out, report, vcd;
     bool quiet = false;

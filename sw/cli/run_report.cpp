@@ -15,6 +15,7 @@ nlohmann::json config_json(const RunSummary& run) {
             {"host_factor", run.host_factor},
             {"transfer", run.dma ? "dma" : "pio"},
             {"wait", run.interrupts ? "irq" : "poll"},
+            {"fidelity", run.fidelity},
             {"quantum_ns", run.quantum_ns},
             {"baselines", run.baseline_names},
             {"inject", run.inject},

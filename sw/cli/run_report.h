@@ -40,6 +40,7 @@ struct RunSummary {
     bool dma = true;
     bool interrupts = true;
     double quantum_ns = 0.0;
+    std::string fidelity = "cycle";
     std::vector<std::string> baseline_names;
     std::vector<std::string> inject;  // fault specs, as parsed
     std::vector<FrameStats> frames;

@@ -282,7 +282,9 @@ TEST(BoardCore, ASegmentComputedAheadAnswersForEveryEdge) {
             stepped.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
             ahead.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
         }
-        if (depth < 64) EXPECT_GT(segments, 10u) << "many overflow pauses";
+        if (depth < 64) {
+            EXPECT_GT(segments, 10u) << "many overflow pauses";
+        }
     }
 }
 
