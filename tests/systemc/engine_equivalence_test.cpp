@@ -1,0 +1,123 @@
+// The whole platform on either engine: the same scenes through the clocked
+// and the fast board give identical pairs in identical order, identical
+// cycles, stalls and pauses, and identical per-phase times (quantum 0), over
+// buses, transfer and wait modes, parallelism, FIFO and pair-buffer depths,
+// and a host polling at odd moments.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "platform/board_preset.h"
+#include "platform/virtual_board.h"
+#include "tests/support/core_driver.h"
+
+namespace cdvp {
+namespace {
+
+struct Variant {
+    const char* name;
+    uint32_t m;
+    uint32_t fifo_depth;  // 0: the preset's
+    uint32_t buffer_depth;
+    bool dma, irq;
+    double poll_gap_ns;
+};
+
+PlatformConfig platform_for(const Variant& v, Fidelity fidelity) {
+    const BoardPreset preset = load_board_preset("adm-xrc-ii");
+    PlatformConfig config{preset.board, preset.bus, preset.driver, {}};
+    config.board.m = v.m;
+    if (v.fifo_depth != 0) config.board.collector.fifo_depth = v.fifo_depth;
+    config.board.collector.buffer_depth = v.buffer_depth;
+    config.driver.use_dma = v.dma;
+    config.driver.use_interrupts = v.irq;
+    config.driver.poll_gap_ns = v.poll_gap_ns;
+    config.fidelity = fidelity;
+    return config;
+}
+
+void expect_same_frame(const FrameResult& cycle, const FrameResult& fast, const std::string& where) {
+    ASSERT_EQ(fast.pairs, cycle.pairs) << where << ": the same pairs in the same order";
+    const FramePhases& a = cycle.phases;
+    const FramePhases& b = fast.phases;
+    EXPECT_EQ(b.compute_cycles, a.compute_cycles) << where;
+    EXPECT_EQ(b.stall_cycles, a.stall_cycles) << where;
+    EXPECT_EQ(b.overflow_pauses, a.overflow_pauses) << where;
+    for (const auto& [x, y, phase] : {std::tuple{a.upload_ns, b.upload_ns, "upload"},
+                                      std::tuple{a.start_ns, b.start_ns, "start"},
+                                      std::tuple{a.compute_ns, b.compute_ns, "compute"},
+                                      std::tuple{a.irq_ns, b.irq_ns, "irq"},
+                                      std::tuple{a.readback_ns, b.readback_ns, "readback"},
+                                      std::tuple{a.driver_ns, b.driver_ns, "driver"},
+                                      std::tuple{a.total_ns, b.total_ns, "total"}}) {
+        EXPECT_EQ(y, x) << where << ": " << phase << " time";
+    }
+}
+
+struct Totals {
+    uint64_t pairs = 0, stalls = 0, pauses = 0;
+};
+
+// One platform pair per variant, elaborated before the first frame.
+Totals expect_equivalent(const std::vector<Variant>& variants, uint32_t capacity,
+                         const std::vector<std::vector<FloatBox>>& scenes) {
+    Totals totals;
+    std::vector<std::unique_ptr<VirtualBoard>> cycle, fast;
+    for (const Variant& v : variants) {
+        cycle.push_back(std::make_unique<VirtualBoard>((std::string(v.name) + "_cycle").c_str(),
+                                                       platform_for(v, Fidelity::kCycle), capacity));
+        fast.push_back(std::make_unique<VirtualBoard>((std::string(v.name) + "_fast").c_str(),
+                                                      platform_for(v, Fidelity::kFast), capacity));
+    }
+    for (std::size_t k = 0; k < variants.size(); ++k) {
+        for (std::size_t s = 0; s < scenes.size(); ++s) {
+            const FrameResult a = cycle[k]->run_frame(scenes[s]);
+            const FrameResult& b = fast[k]->run_frame(scenes[s]);
+            expect_same_frame(a, b, std::string(variants[k].name) + ", scene " + std::to_string(s) + " (" +
+                                        std::to_string(scenes[s].size()) + " boxes)");
+            if (::testing::Test::HasFatalFailure()) return totals;
+            totals.pairs += a.pairs.size();
+            totals.stalls += a.phases.stall_cycles;
+            totals.pauses += a.phases.overflow_pauses;
+        }
+    }
+    return totals;
+}
+
+TEST(EngineEquivalence, ScenesOfEverySizeOverModesAndParallelism) {
+    std::mt19937 rng(77);
+    std::vector<std::vector<FloatBox>> scenes;
+    for (uint32_t n : {0u, 1u, 2u, 37u, 511u, 512u, 513u, 600u}) {
+        scenes.push_back(testing::random_boxes(n, 1.2f * std::cbrt(static_cast<float>(n) + 1), 2.0f, rng));
+    }
+    const Totals t = expect_equivalent({{"dma_irq_m8", 8, 0, 262144, true, true, 0},
+                                        {"dma_poll_m3", 3, 5, 64, true, false, 37},
+                                        {"pio_irq_m1", 1, 1, 100, false, true, 0},
+                                        {"pio_poll_m32", 32, 63, 1000, false, false, 113}},
+                                       600, scenes);
+    EXPECT_GT(t.pairs, 4u * 1000u) << "scenes with pairs to find";
+    EXPECT_GT(t.pauses, 10u) << "some overflow pauses";
+    EXPECT_GT(t.stalls, 50u) << "some back-pressure and drain";
+}
+
+// Every box meets every other: the smallest FIFO holds the pipeline back and
+// pair buffers of 1 to 7 pause the board hundreds of times a frame.
+TEST(EngineEquivalence, AllOverlappingScenesWithTinyBuffers) {
+    std::mt19937 rng(78);
+    std::vector<std::vector<FloatBox>> scenes{std::vector<FloatBox>(45, FloatBox{{0, 0, 0}, {1, 1, 1}}),
+                                              testing::random_boxes(60, 1.0f, 2.0f, rng)};
+    std::vector<Variant> variants;
+    static const char* names[] = {"b1", "b2", "b3", "b4", "b5", "b6", "b7"};
+    for (uint32_t depth = 1; depth <= 7; ++depth) {
+        const uint32_t m = 1 + depth % 4;
+        variants.push_back({names[depth - 1], m, 2 * m - 1, depth, depth % 2 == 0, depth % 3 != 0, 17.0 * depth});
+    }
+    const Totals t = expect_equivalent(variants, 60, scenes);
+    EXPECT_GT(t.pauses, 1000u) << "hundreds of overflow pauses a frame";
+}
+
+}  // namespace
+}  // namespace cdvp
