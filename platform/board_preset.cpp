@@ -111,7 +111,7 @@ public:
         const json& object = section.empty() ? root_ : this->section(section);
         for (const auto& [key, value] : object.items()) {
             if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
-                fail(qualified(section, key) + ": unknown key; did you mean '" + nearest(key, keys) + "'?");
+                fail(qualified(section, excerpt(key)) + ": unknown key; did you mean '" + nearest(key, keys) + "'?");
             }
         }
     }
@@ -122,7 +122,7 @@ public:
         if (field == nullptr) fail(name + ": missing;" + std::string(kForm).substr(1));
         if (!field->is_object()) fail(name + kForm);
         for (const auto& [key, value] : field->items()) {
-            if (key != "value" && key != "source") fail(name + kForm + ", found '" + key + "'");
+            if (key != "value" && key != "source") fail(name + kForm + ", found '" + excerpt(key) + "'");
         }
         const auto value = field->find("value");
         const auto source = field->find("source");
@@ -256,7 +256,7 @@ std::shared_ptr<const BusTiming> read_bus(const PresetReader& r) {
         };
         return read_bus_fields<PcieTiming>(r, kFields);
     }
-    r.fail("bus.type: expected \"pci\" or \"pcie\", got \"" + type + "\"");
+    r.fail("bus.type: expected \"pci\" or \"pcie\", got \"" + excerpt(type) + "\"");
 }
 
 // "FILE:LINE:COLUMN" of a byte offset (nlohmann counts from 1).
@@ -322,7 +322,7 @@ std::string read_preset_text(const std::string& path, bool is_path, const std::s
         if (is_path) throw InputError(path + ": cannot open: " + std::strerror(errno));
         std::string known;
         for (const std::string& n : board_preset_names()) known += (known.empty() ? "" : ", ") + n;
-        throw InputError("--board: unknown board '" + name + "'; expected one of: " + known);
+        throw InputError("--board: unknown board '" + excerpt(name) + "'; expected one of: " + known);
     }
     if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot open: not a regular file");
     if (static_cast<std::size_t>(status.st_size) > kMaxPresetBytes) {

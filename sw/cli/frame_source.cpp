@@ -50,6 +50,7 @@ public:
         while (std::optional<Frame> frame = check.next_frame()) {
             max_objects_ = std::max(max_objects_, frame->boxes.size());
             digests_.push_back(frame_digest(*frame));
+            numbers_.push_back(frame->number);
             if (!rereadable) kept_.push_back(std::move(*frame));
         }
         if (rereadable) {
@@ -81,6 +82,12 @@ public:
         return frame;
     }
     std::size_t frame_count() const override { return digests_.size(); }
+    std::optional<uint64_t> last_frame() const override {
+        return numbers_.empty() ? std::nullopt : std::optional<uint64_t>(numbers_.back());
+    }
+    bool has_frame(uint64_t number) const override {
+        return std::binary_search(numbers_.begin(), numbers_.end(), number);  // ascending, as the reader checks
+    }
     std::size_t max_objects() const override { return max_objects_; }
     std::string describe() const override { return "trace " + path_; }
 
@@ -93,6 +100,7 @@ private:
     std::ifstream in_;
     std::optional<TraceReader> reader_;
     std::vector<uint64_t> digests_;  // one a frame, from the first reading
+    std::vector<uint64_t> numbers_;  // the frames' numbers, from the first reading
     std::vector<Frame> kept_;        // a pipe's frames
     std::size_t delivered_ = 0;
     std::size_t max_objects_ = 0;
@@ -109,6 +117,10 @@ public:
     }
     void feed(const PairList& pairs) override { scene_.step(pairs); }
     std::size_t frame_count() const override { return frames_; }
+    std::optional<uint64_t> last_frame() const override {
+        return frames_ == 0 ? std::nullopt : std::optional<uint64_t>(frames_ - 1);
+    }
+    bool has_frame(uint64_t number) const override { return number < frames_; }
     std::size_t max_objects() const override { return config_.objects; }
     std::string describe() const override {
         return "spheres objects=" + std::to_string(config_.objects) + " seed=" + std::to_string(config_.seed);

@@ -24,6 +24,10 @@ public:
     virtual std::size_t frame_count() const = 0;
     // The most boxes any frame holds: the board's memory depth.
     virtual std::size_t max_objects() const = 0;
+    // The number of the last frame (nothing: no frames), and whether a
+    // number is one of the frames' (a trace may skip numbers).
+    virtual std::optional<uint64_t> last_frame() const = 0;
+    virtual bool has_frame(uint64_t number) const = 0;
     // For the report: what the frames come from.
     virtual std::string describe() const = 0;
 };

@@ -45,7 +45,7 @@ int sc_main(int argc, char** argv) {
         return 0;
     }
     if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
-    std::cerr << "cdvp: unknown command '" << cdvp::printable(command) << "'; expected one of: run (see cdvp --help)\n";
+    std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command) << "'; expected one of: run (see cdvp --help)\n";
     return 2;
 }
 

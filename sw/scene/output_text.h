@@ -1,6 +1,7 @@
 // Text from users (file names, keys, values) inside one-line messages.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace cdvp {
@@ -24,6 +25,18 @@ inline std::string printable(const std::string& text) {
         }
     }
     return out;
+}
+
+// A user-supplied value (an option's argument, a preset string, a trace
+// field) quoted in a message: printable(), cut to its first kExcerptBytes
+// bytes followed by "... (N bytes)" when longer, so that a 100 KB value still
+// gives a short one-line message. The cut never splits a UTF-8 sequence.
+constexpr std::size_t kExcerptBytes = 60;
+inline std::string excerpt(const std::string& text) {
+    if (text.size() <= kExcerptBytes) return printable(text);
+    std::size_t cut = kExcerptBytes;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    return printable(text.substr(0, cut)) + "... (" + std::to_string(text.size()) + " bytes)";
 }
 
 }  // namespace cdvp

@@ -217,7 +217,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"RunTooLongForSystemC", nullptr, "--scene spheres --objects 4000000 --m 1",
                  "SystemC's 64-bit femtosecond time allows"},
         BadInput{"ModelTooLargeForMemory", nullptr, "--scene spheres --objects 4194304 --m 32",
-                 "--objects/--m: the board model for 4194304 objects at m=32 needs 3.0 GiB of block RAM words"},
+                 "the board model for 4194304 objects (--objects) at --m 32 needs 3.0 GiB of block RAM words"},
         // Words: no stray arguments, no abbreviations, no empty paths or names.
         BadInput{"StrayArgument", nullptr, "extra", "unexpected argument 'extra'"},
         BadInput{"AbbreviatedOption", nullptr, "--rep r.json", "unrecognised option '--rep'"},
