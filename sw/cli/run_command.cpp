@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <iomanip>
@@ -29,6 +30,7 @@
 #include "sw/cli/run_report.h"
 #include "sw/scene/conversion.h"
 #include "sw/scene/output_set.h"
+#include "sw/scene/output_target.h"
 #include "sw/scene/output_text.h"
 #include "sw/scene/pairs_csv.h"
 
@@ -59,6 +61,8 @@ void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out
     if (vm.count("pairs-out")) pairs = out.files.add_output("--pairs-out", o.pairs_out);
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
     if (vm.count("vcd")) vcd = out.files.add_output("--vcd", o.vcd, ".vcd", false);
+    // The summary is an output too: committed with the files or not at all.
+    if (!o.quiet) out.files.add_standard_output("standard output");
     out.files.open();
     if (pairs) out.pairs = &out.files.file(*pairs);
     if (report) out.report = &out.files.file(*report);
@@ -175,7 +179,7 @@ std::map<std::string, BaselineTime> run_baselines(Setup& setup, const std::vecto
 }
 
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out) {
-    RunSummary run;
+    RunConfig run;
     run.config = setup.platform.board;
     run.source = source.describe();
     run.capacity = static_cast<uint32_t>(source.max_objects());
@@ -190,6 +194,14 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.block_rams = platform.board().core().block_rams();
     run.bus = platform.bus_timing().describe();
     if (out.pairs) write_pairs_header(out.pairs->stream());
+    // Every output is written a frame at a time: memory stays flat however
+    // long the run.
+    std::optional<ReportWriter> report;
+    if (out.report) {
+        report.emplace(out.report->stream());
+        report->begin(run);
+    }
+    RunTotals totals;
 
     Progress progress(source.frame_count(), !o.quiet);
     const auto wall_start = std::chrono::steady_clock::now();
@@ -213,31 +225,47 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
                          AddressGenerator::sweep_cycles(boxes.size(), run.config.m), result.phases, {}};
         if (!setup.baselines.empty()) stats.baselines = run_baselines(setup, boxes, sorted(result.pairs), frame->number);
-        run.frames.push_back(std::move(stats));
+        if (report) report->frame(stats);
+        totals.add(stats);
         source.feed(result.pairs);
-        progress.update(run.frames.size());
+        progress.update(totals.frames());
     }
-    run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     platform.close_trace();
 
-    if (out.report) out.report->stream() << report_json(run).dump(2) << '\n';
+    if (report) report->end(totals);
+    if (!o.quiet) {
+        std::ostringstream summary;
+        print_summary(summary, run, totals, wall_seconds);
+        out.files.set_standard_output(summary.str());
+    }
     // Reported by value, not thrown: see OutputFile::try_finish.
     if (const std::optional<std::string> error = out.files.try_commit()) {
         std::cerr << "cdvp run: " << printable(*error) << '\n';
         return 2;
     }
-    if (!o.quiet) print_summary(std::cout, run);
     return 0;
 }
 
 }  // namespace
 
+int print_to_stdout(const std::string& program, const std::string& text) {
+    if (standard_descriptor_was_closed(STDOUT_FILENO)) {
+        std::cerr << program << ": standard output: closed when cdvp started; expected it open\n";
+        return kExitBadInput;
+    }
+    errno = 0;
+    std::cout << text << std::flush;
+    if (std::cout) return kExitDone;
+    std::cerr << program << ": standard output: cannot write: " << std::strerror(errno != 0 ? errno : EIO) << '\n';
+    return kExitBadInput;
+}
+
 int run_command(int argc, char** argv) {
     // After "--" every argument is positional, so a "--help" there is a stray word.
     for (int k = 1; k < argc && std::strcmp(argv[k], "--") != 0; ++k) {
         if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
-            std::cout << run_options_help() << '\n';
-            return 0;
+            return print_to_stdout("cdvp run", run_options_help() + '\n');
         }
     }
     try {
