@@ -117,6 +117,19 @@ TEST_F(CliStreams, ADescriptorOntoAnInputIsRefusedBeforeAnyWork) {
     EXPECT_EQ(slurp(dir_ / "out.txt").find(slurp(trace("small.expected.csv"))), 0u);
 }
 
+// A file size limit (ulimit -f) kills a write past it with SIGXFSZ: the run
+// ends with 128+25 and leaves no temporary, even for the VCD, whose writer
+// would not notice a failed write.
+TEST_F(CliStreams, AFileSizeLimitEndsTheRunWithNoOutput) {
+    const std::string command = "cd '" + dir_.string() + "' && ulimit -c 0 && ulimit -f 16 && '" CDVP_BINARY
+                                "' run --scene spheres --objects 100 --frames 200 --m 2 -q --pairs-out p.csv "
+                                "--report r.json --vcd w.vcd 2> /dev/null";
+    const int raw = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(raw)) << raw;
+    EXPECT_EQ(WEXITSTATUS(raw), 128 + SIGXFSZ);
+    EXPECT_EQ(files(), std::vector<std::string>{"in.csv"});
+}
+
 bool any_temporary(const fs::path& dir) {
     for (const auto& entry : fs::recursive_directory_iterator(dir)) {
         if (entry.path().filename().string().find(".part-") != std::string::npos) return true;
