@@ -1,5 +1,7 @@
 #include "sw/cli/run_checks.h"
 
+#include <limits.h>
+
 #include <algorithm>
 #include <cstring>
 #include <iomanip>
@@ -69,6 +71,16 @@ void check_model_memory(const RunOptions& o, const po::variables_map& vm, const 
 }
 
 }  // namespace
+
+void check_path_lengths(const RunOptions& o, const po::variables_map& vm) {
+    const std::pair<const char*, const std::string*> paths[] = {
+        {"trace", &o.trace}, {"board", &o.board_name}, {"pairs-out", &o.pairs_out}, {"report", &o.report}, {"vcd", &o.vcd}};
+    for (const auto& [flag, path] : paths) {
+        if (vm.count(flag) == 0 || path->size() < PATH_MAX) continue;
+        throw InputError(std::string("--") + flag + ": expected a path of at most " + std::to_string(PATH_MAX - 1) +
+                         " bytes, got '" + excerpt(*path) + "'");
+    }
+}
 
 ValueOrigins ValueOrigins::of(const RunOptions& o, const po::variables_map& vm, const std::string& preset_path) {
     const std::string m = std::to_string(o.board.m);

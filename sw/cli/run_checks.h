@@ -29,6 +29,10 @@ struct ValueOrigins {
                            const std::string& preset_path);
 };
 
+// A path longer than the system's PATH_MAX can name no file; refused quoting
+// its start, so that no later message repeats it whole. Throws InputError.
+void check_path_lengths(const RunOptions& o, const boost::program_options::variables_map& vm);
+
 // BoardConfig::validate() with the message naming the flag that set the
 // failing value, else the preset file and key. Throws InputError.
 void validate_board(const BoardConfig& config, const boost::program_options::variables_map& vm,

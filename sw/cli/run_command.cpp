@@ -271,6 +271,7 @@ int run_command(int argc, char** argv) {
     try {
         RunOptions o;
         const po::variables_map vm = parse_run_options(argc, argv, o);
+        check_path_lengths(o, vm);
         // Outputs first: a path that cannot be written, or that names an
         // input or another output, is refused before any work.
         Outputs out;

@@ -37,9 +37,13 @@ TEST_F(Cli, HugeValuesAreQuotedShortInEveryMessage) {
         {small + "--baseline " + kHuge, "--baseline: unknown baseline 'xxxx"},
         {small + "--inject " + kHuge, "--inject: 'xxxx"},
         {small + "--inject retry@frame=" + kHuge, "--inject: 'retry@frame=xxxx"},
-        {small + "--board " + kHuge, "--board: unknown board 'xxxx"},
+        {small + "--board " + kHuge, "--board: expected a path of at most 4095 bytes, got 'xxxx"},
         {small + kHuge, "unexpected argument 'xxxx"},
         {small + "--" + kHuge, "unrecognised option '--xxxx"},
+        {"--trace " + kHuge, "--trace: expected a path of at most 4095 bytes, got 'xxxx"},
+        {small + "--report " + kHuge, "--report: expected a path of at most 4095 bytes, got 'xxxx"},
+        {small + "--vcd " + kHuge + "/w.vcd", "--vcd: expected a path of at most 4095 bytes, got 'xxxx"},
+        {small + "--board " + kHuge + ".json", "--board: expected a path of at most 4095 bytes, got 'xxxx"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.start);
