@@ -34,7 +34,7 @@ std::string objects_origin(const RunOptions& o, const po::variables_map& vm, uin
 // whose generous estimate exceeds half of that is refused up front instead
 // of overflowing the kernel's clock mid-run.
 void check_simulated_time(const RunOptions& o, const po::variables_map& vm, const BoardConfig& board,
-                          uint64_t max_objects, uint64_t frame_count) {
+                          const ValueOrigins& origins, uint64_t max_objects, uint64_t frame_count) {
     constexpr double kBudgetSeconds = 9223.0;   // 2^63 fs
     constexpr double kPerBoxSeconds = 10e-6;    // PIO of a box on the slowest bus, with margin
     constexpr double kPerFrameSeconds = 1e-3;   // driver calls, interrupts, status reads, with margin
@@ -44,10 +44,14 @@ void check_simulated_time(const RunOptions& o, const po::variables_map& vm, cons
                                  static_cast<double>(max_objects) * kPerBoxSeconds + kPerFrameSeconds;
     const double total = frames * frame_seconds;
     if (total <= kBudgetSeconds) return;
+    const std::string frames_origin =
+        vm.count("trace") ? "the frames of --trace " + excerpt(o.trace)
+                          : std::string(from_flag(vm, "frames") ? "--frames" : "the default of --frames");
     std::ostringstream message;
-    message << (vm.count("trace") ? "--trace: " + o.trace + ": frames" : std::string("--objects/--frames: a run"))
-            << " of up to " << max_objects << " objects at m=" << board.m << " would simulate about " << std::fixed << std::setprecision(0)
-            << total << " s, more than the " << kBudgetSeconds
+    message << "a run of " << frame_count << (frame_count == 1 ? " frame (" : " frames (") << frames_origin << ") of up to "
+            << objects_origin(o, vm, max_objects) << " at " << origins.m << " and " << origins.clock
+            << " would simulate about " << std::fixed << std::setprecision(0) << total << " s, more than the "
+            << kBudgetSeconds
             << " s SystemC's 64-bit femtosecond time allows: use fewer objects or frames, or a larger m";
     throw InputError(message.str());
 }
@@ -82,9 +86,15 @@ void check_path_lengths(const RunOptions& o, const po::variables_map& vm) {
     }
 }
 
-ValueOrigins ValueOrigins::of(const RunOptions& o, const po::variables_map& vm, const std::string& preset_path) {
+ValueOrigins ValueOrigins::of(const RunOptions& o, const po::variables_map& vm, const std::string& preset_path,
+                              double clock_mhz) {
     const std::string m = std::to_string(o.board.m);
-    return {preset_path, from_flag(vm, "m") ? "--m " + m : "m=" + m + " (the default of --m)"};
+    std::ostringstream clock;
+    clock << clock_mhz;
+    const std::string clock_origin = from_flag(vm, "clock-mhz") ? "--clock-mhz " + clock.str()
+                                     : preset_path.empty()      ? clock.str() + " MHz (the default of --clock-mhz)"
+                                                                : clock.str() + " MHz (" + preset_path + ": board.clock_mhz)";
+    return {preset_path, from_flag(vm, "m") ? "--m " + m : "m=" + m + " (the default of --m)", clock_origin};
 }
 
 // Board settings are checked by the model; its message names the setting as
@@ -148,7 +158,7 @@ void check_inject_frames(const std::vector<FaultSpec>& specs, std::optional<uint
 void check_scene_fits(const RunOptions& o, const po::variables_map& vm, const BoardConfig& board, uint32_t block_rams,
                       const ValueOrigins& origins, uint64_t max_objects, uint64_t frame_count) {
     check_model_memory(o, vm, board, origins, max_objects);
-    check_simulated_time(o, vm, board, max_objects, frame_count);
+    check_simulated_time(o, vm, board, origins, max_objects, frame_count);
     const uint32_t primitives = CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
     const uint64_t needed = uint64_t{kCoordinates} * board.m * primitives;
     const uint64_t per_m = uint64_t{kCoordinates} * std::max<uint32_t>(1, primitives);

@@ -24,9 +24,10 @@ namespace cdvp {
 struct ValueOrigins {
     std::string preset_path;  // empty: no --board
     std::string m;            // "--m 8" or "m=8 (the default of --m)"
+    std::string clock;        // "--clock-mhz 66", "66 MHz (PRESET: board.clock_mhz)" or "... (the default ...)"
 
     static ValueOrigins of(const RunOptions& o, const boost::program_options::variables_map& vm,
-                           const std::string& preset_path);
+                           const std::string& preset_path, double clock_mhz);
 };
 
 // A path longer than the system's PATH_MAX can name no file; refused quoting

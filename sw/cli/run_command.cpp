@@ -140,7 +140,7 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
         setup.block_rams = preset.block_rams;
         preset_path = preset.path;
     }
-    setup.origins = ValueOrigins::of(o, vm, preset_path);
+    setup.origins = ValueOrigins::of(o, vm, preset_path, setup.platform.board.clock_mhz);
     validate_board(setup.platform.board, vm, setup.origins);
     if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, got '" + excerpt(o.transfer) + "'");
     if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, got '" + excerpt(o.wait) + "'");

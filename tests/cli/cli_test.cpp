@@ -215,7 +215,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"ZeroHostFactor", nullptr, "--host-factor 0", "--host-factor: expected a number from 0.001 to 1000"},
         BadInput{"NegativeHostFactor", nullptr, "--host-factor -1", "got '-1'"},
         BadInput{"RunTooLongForSystemC", nullptr, "--scene spheres --objects 4000000 --m 1",
-                 "SystemC's 64-bit femtosecond time allows"},
+                 "a run of 1 frame (the default of --frames) of up to 4000000 objects (--objects) at --m 1 and "
+                 "66 MHz (the default of --clock-mhz) would simulate about 121252 s, more than the 9223 s SystemC's "
+                 "64-bit femtosecond time allows"},
         BadInput{"ModelTooLargeForMemory", nullptr, "--scene spheres --objects 4194304 --m 32",
                  "the board model for 4194304 objects (--objects) at --m 32 needs 3.0 GiB of block RAM words"},
         // Words: no stray arguments, no abbreviations, no empty paths or names.
