@@ -153,8 +153,14 @@ TEST_F(CliStreams, SigintStopsARunWaitingForAFifoReader) {
               "--report", "r.json", static_cast<char*>(nullptr));
         _exit(127);
     }
-    // The run takes milliseconds; then it waits in open() for a reader.
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    // The run takes milliseconds; then it waits in open() for a reader, which
+    // the kernel shows as the wait channel "wait_for_partner" (where /proc
+    // shows none, two seconds are ample).
+    const fs::path wchan = "/proc/" + std::to_string(pid) + "/wchan";
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    while (slurp(wchan) != "wait_for_partner" && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
     ASSERT_EQ(kill(pid, SIGINT), 0);
     int status = 0;
     pid_t done = 0;
