@@ -38,7 +38,8 @@ TraceLimits board_trace_limits();
 // The frames of a trace file, all checked up front (bad input fails before
 // anything is simulated or written), then read again one frame at a time so
 // memory holds the largest frame, not the file. A frame with more boxes than
-// the board's address map holds fails as bad input naming its line.
+// the board's address map holds fails as bad input naming its line. A pipe
+// is first copied to an unlinked temporary file, so it too is read twice.
 std::unique_ptr<FrameSource> trace_source(const std::string& path, const TraceLimits& limits = board_trace_limits());
 
 // The paper's application: spheres bouncing off the walls and each other,
