@@ -155,6 +155,10 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
         } catch (const std::invalid_argument& e) {
             throw InputError(std::string("--baseline: ") + e.what());
         }
+        // Each is timed once a frame; a repeat would be run twice and reported once.
+        for (std::size_t k = 0; k + 1 < setup.baselines.size(); ++k) {
+            if (setup.baselines[k]->name() == name) throw InputError("--baseline: '" + name + "' given twice");
+        }
     }
     return setup;
 }

@@ -181,6 +181,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"SmallFifo", nullptr, "--m 8 --fifo-depth 4", "--fifo-depth: expected 2m-1 = 15"},
         BadInput{"UnknownBoard", nullptr, "--board nope", "--board: unknown board 'nope'; expected one of: adm-xrc-ii"},
         BadInput{"UnknownBaseline", nullptr, "--baseline sap,fast", "--baseline: unknown baseline 'fast'"},
+        BadInput{"RepeatedBaseline", nullptr, "--baseline sap,dbvt,sap", "--baseline: 'sap' given twice"},
         BadInput{"BadTransfer", nullptr, "--transfer usb", "--transfer: expected dma or pio"},
         BadInput{"BadWait", nullptr, "--wait sleep", "--wait: expected irq or poll"},
         BadInput{"TooManyBlockRams", nullptr, "--board adm-xrc-ii --m 30", "(largest m that fits: 24)"},
