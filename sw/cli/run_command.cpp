@@ -2,11 +2,9 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
-#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -18,8 +16,6 @@
 #include <boost/program_options.hpp>
 
 #include "models/address_generator/address_generator.h"
-#include "models/control_registers/control_registers.h"
-#include "models/block_ram/block_ram.h"
 #include "platform/board_preset.h"
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
