@@ -63,6 +63,15 @@ void VirtualBoard::close_trace() {
 const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes) { return run_frame(boxes, frames_); }
 
 const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes, uint64_t number) {
+    FrameFault fault;
+    const FrameResult* result = try_run_frame(boxes, number, fault);
+    if (result != nullptr) return *result;
+    if (fault.kind == FrameFault::Kind::kTimeLimit) throw SimulatedTimeLimit(fault.message);
+    throw DeviceFault(fault.message);
+}
+
+const FrameResult* VirtualBoard::try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number,
+                                               FrameFault& fault) {
     if (boxes.size() > board_.core().capacity()) {
         throw std::invalid_argument("frame of " + std::to_string(boxes.size()) +
                                     " boxes exceeds the board's capacity of " +
@@ -73,8 +82,9 @@ const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes, u
     cpu_.submit(boxes);
     sc_start();  // returns when no activity is left: the frame is complete
     if (!cpu_.finished()) throw std::runtime_error("the simulation stopped before the frame completed");
-    if (cpu_.error()) std::rethrow_exception(cpu_.error());
-    return cpu_.result();
+    if (cpu_.internal_error()) std::rethrow_exception(cpu_.internal_error());
+    fault = cpu_.fault();
+    return fault ? nullptr : &cpu_.result();
 }
 
 }  // namespace cdvp

@@ -40,12 +40,14 @@ public:
                  const std::string& vcd_base = "");
     ~VirtualBoard() override;
 
-    // Runs one frame; rethrows what the driver threw (DeviceFault when the
-    // simulated system faulted, SimulatedTimeLimit), never with partial pairs.
+    // Runs the frame numbered 'number' (a trace's own frame number: the
+    // number --inject's frame=N selects). Returns the result, or null with
+    // fault set when the simulated system faulted; never partial pairs.
+    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    // The same, throwing DeviceFault or SimulatedTimeLimit for a fault (for
+    // callers that never run under AddressSanitizer's checks of the main
+    // stack, such as tests). Without a number, frames are numbered 0, 1, 2, ...
     const FrameResult& run_frame(const std::vector<FloatBox>& boxes);
-    // The same, for the frame numbered 'number' (a trace's own frame number):
-    // the number --inject's frame=N selects. Without it, frames are numbered
-    // 0, 1, 2, ... in the order they run.
     const FrameResult& run_frame(const std::vector<FloatBox>& boxes, uint64_t number);
     // Frames run so far.
     uint64_t frames_run() const { return frames_; }

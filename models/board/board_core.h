@@ -1,95 +1,99 @@
-// The board's datapath and control as plain C++: one step() per clock edge.
+// The board as plain C++: its host-visible side (registers, coordinate store,
+// pair buffer window, status) in front of an engine that computes sweeps.
 #pragma once
 
 #include <cstdint>
-#include <vector>
+#include <memory>
 
-#include "models/address_generator/address_generator.h"
 #include "models/board/board_config.h"
-#include "models/comparison_unit/comparison_unit.h"
+#include "models/board/board_engine.h"
+#include "models/common/register_bank.h"
 #include "models/control_registers/control_registers.h"
-#include "models/coordinate_memory/coordinate_memory.h"
-#include "models/pair_collector/pair_collector.h"
 
 namespace cdvp {
 
-// Wires the blocks of the seed's microarchitecture:
-//   address generator -> six 2m-port coordinate memories (1 cycle)
-//   -> comparison unit (compare latency) -> pair FIFO -> pair buffer.
-// The SystemC shell (CollisionBoard) calls step() on each clock edge while
-// running() and forwards host accesses to the register and memory methods.
+// Time is counted in clock edges of the current segment (from START or RESUME
+// to the next pause or done): the SystemC shell calls advance_to() with the
+// edges elapsed before every host access and at the segment's end, which
+// segment_edges() gives. Status bits derive from one phase variable.
 class BoardCore {
 public:
     enum class Phase : uint8_t { Idle, Running, Paused, Done };
 
-    // What travels down the pipeline: the row, the first column and the valid
-    // lanes of one address-generator cycle, with the lane hits once compared.
-    struct Slot {
-        enum Kind : uint8_t { kBubble, kSweep, kEnd } kind = kBubble;
-        uint32_t row = 0;
-        uint32_t first_column = 0;
-        uint32_t valid_lanes = 0;
-        uint64_t hits = 0;
-    };
-
     // capacity: boxes the coordinate memories hold (their depth).
-    BoardCore(const BoardConfig& config, uint32_t capacity);
+    BoardCore(const BoardConfig& config, uint32_t capacity, Fidelity fidelity = Fidelity::kCycle);
 
     const BoardConfig& config() const { return config_; }
     uint32_t capacity() const { return capacity_; }
     // Block RAM primitives of the six coordinate memories.
     uint32_t block_rams() const;
+    BoardEngine& engine() { return *engine_; }
+    const RegisterBank& register_bank() const { return bank_; }
 
     // Host side. A read returns false for an unmapped offset.
-    bool read_register(uint32_t offset, uint32_t& value) const;
+    bool read_register(uint32_t offset, uint32_t& value);
     enum class Write : uint8_t { kDone, kUnmapped, kRefused };
     // A refused write (OBJECT_COUNT during a sweep) also sets ERROR.
     Write write_register(uint32_t offset, uint32_t value);
     // Coordinate memory writes are refused (kRefused, ERROR set) while busy,
     // kUnmapped past capacity.
     Write write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word);
+    uint32_t read_coordinate(Coordinate coordinate, uint32_t index) const { return store_[coordinate][index]; }
+    // The pair buffer as the host reads it now.
+    uint32_t buffered_pairs();
+    const IndexPair& buffered_pair(uint32_t index) { return engine_->buffer()[index]; }
     // Reports an error status (ERROR with this cause, and the interrupt);
     // a sweep under way goes on.
     void raise_error(ControlRegisters::BoardError cause);
-    uint32_t read_coordinate(Coordinate coordinate, uint32_t index) const;
-    const PairCollector& collector() const { return collector_; }
-    const ControlRegisters& registers() const { return regs_; }
+
+    // The status as the host sees it now.
+    struct Status {
+        bool busy, done, overflow, error;
+        uint32_t error_cause;
+        bool irq_pending;
+        uint32_t bits() const;
+    };
+    Status status() const;
+    // The interrupt line: high from done, overflow or an error until the host
+    // acknowledges (so a shared line can fall between events).
+    bool interrupt() const { return irq_pending_; }
+    SweepCounters counters();
 
     // Clock side.
     Phase phase() const { return phase_; }
     bool running() const { return phase_ == Phase::Running; }
-    // One clock edge; every edge counts as a cycle. An edge that finds the
-    // pair buffer full pauses the board (and counts as a stall).
-    void step();
-
-    // Observation for tracing (cheap accessors; no per-cycle copies).
-    const AddressGenerator::Issue& last_issue() const { return last_issue_; }
-    const Slot& compare_output() const { return line_[head_]; }
-    bool stalled() const { return stalled_; }
+    // Counts START and RESUME commands taken: a new segment began when it changes.
+    uint64_t segments_started() const { return segments_started_; }
+    uint64_t edges() const { return edges_; }
+    // Edges of the current segment in all (the engine computes them).
+    uint64_t segment_edges() { return engine_->segment_edges(); }
+    // The clock has run to `edges` edges of the segment; at its last edge the
+    // board pauses or finishes. Never goes back.
+    void advance_to(uint64_t edges);
+    // One clock edge.
+    void step() { advance_to(edges_ + 1); }
 
 private:
+    void declare_registers();
     void start();
     void resume();
     void abort();
-    Slot issue();
-    void finish();
 
     BoardConfig config_;
     uint32_t capacity_;
-    ControlRegisters regs_;
-    CoordinateMemories memories_;
-    AddressGenerator address_generator_;
-    ComparisonUnit comparison_unit_;
-    PairCollector collector_;
+    std::unique_ptr<BoardEngine> engine_;
+    RegisterBank bank_;
+    CoordinateStore store_;
 
     Phase phase_ = Phase::Idle;
-    // Block RAM stage plus compare stages; head_ is the slot leaving this cycle.
-    std::vector<Slot> line_;
-    uint32_t head_ = 0;
-    bool end_issued_ = false;  // the address generator sent its end marker
-    bool end_seen_ = false;    // the end marker reached the collector
-    bool stalled_ = false;
-    AddressGenerator::Issue last_issue_{};
+    uint32_t object_count_ = 0;
+    bool error_ = false;
+    uint32_t error_cause_ = ControlRegisters::kNoError;
+    bool irq_pending_ = false;
+    uint64_t segments_started_ = 0;
+    uint64_t edges_ = 0;
+    // The counters while the clock is stopped (paused, done, aborted).
+    SweepCounters held_;
 };
 
 }  // namespace cdvp

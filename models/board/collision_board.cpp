@@ -1,6 +1,7 @@
 #include "models/board/collision_board.h"
 
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 #include "models/common/address_range.h"
@@ -10,16 +11,17 @@ namespace cdvp {
 
 using namespace sc_core;
 
-CollisionBoard::CollisionBoard(const sc_module_name& name, const BoardConfig& config, uint32_t capacity)
+CollisionBoard::CollisionBoard(const sc_module_name& name, const BoardConfig& config, uint32_t capacity,
+                               Fidelity fidelity)
     : sc_module(name),
       socket("socket"),
       irq("irq"),
-      core_(config, capacity),
+      core_(config, capacity, fidelity),
       period_(1.0 / config.clock_mhz, SC_US) {
     socket.register_b_transport(this, &CollisionBoard::b_transport);
     socket.register_transport_dbg(this, &CollisionBoard::transport_dbg);
-    SC_METHOD(clock_edge);
-    sensitive << wake_;
+    SC_METHOD(on_clock_event);
+    sensitive << clock_event_;
     dont_initialize();
     SC_METHOD(clock_fall);
     sensitive << fall_;
@@ -39,7 +41,8 @@ int bits_for(uint64_t max) {
 }  // namespace
 
 void CollisionBoard::trace(sc_trace_file* file) {
-    tracing_ = true;
+    traced_engine_ = dynamic_cast<ClockedEngine*>(&core_.engine());
+    if (traced_engine_ == nullptr) throw std::logic_error("waveforms need the clocked engine");
     const std::string p = std::string(name()) + ".";
     const BoardConfig& config = core_.config();
     // Address ports may point one window past the last box (invalid lanes).
@@ -65,17 +68,18 @@ void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& /*d
         payload.set_response_status(shape);
         return;
     }
+    sync();
+    const uint64_t segments_before = core_.segments_started();
     payload.set_response_status(
         access(payload.get_command(), payload.get_address(), payload.get_data_ptr(), payload.get_data_length()));
-    if (payload.get_command() == tlm::TLM_WRITE_COMMAND) {
-        wake_clock_if_needed();
-        irq_changed_.notify(SC_ZERO_TIME);
-    }
+    if (payload.get_command() == tlm::TLM_WRITE_COMMAND) schedule_clock(segments_before);
+    irq_changed_.notify(SC_ZERO_TIME);  // a command or the synchronisation may have moved the line
 }
 
 unsigned int CollisionBoard::transport_dbg(tlm::tlm_generic_payload& payload) {
     // Debug reads only: a debug write must not start the clock behind the simulation's back.
     if (payload.get_command() != tlm::TLM_READ_COMMAND) return 0;
+    sync();
     const bool ok = access(tlm::TLM_READ_COMMAND, payload.get_address(), payload.get_data_ptr(),
                            payload.get_data_length()) == tlm::TLM_OK_RESPONSE;
     return ok ? payload.get_data_length() : 0;
@@ -138,11 +142,10 @@ tlm::tlm_response_status CollisionBoard::access(tlm::tlm_command command, uint64
     if (range_within(address, length, am::kPairBuffer, am::kPairBufferSize)) {
         if (write) return tlm::TLM_COMMAND_ERROR_RESPONSE;
         const uint64_t first = (address - am::kPairBuffer) / 4;
-        const auto& collector = core_.collector();
         // Only the pairs the buffer holds: reading more is an address error.
-        if ((first + words + 1) / 2 > collector.buffer_count()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+        if ((first + words + 1) / 2 > core_.buffered_pairs()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
         for (uint64_t k = 0; k < words; ++k) {
-            const IndexPair& pair = collector.buffer_entry(static_cast<uint32_t>((first + k) / 2));
+            const IndexPair& pair = core_.buffered_pair(static_cast<uint32_t>((first + k) / 2));
             set_word(k, (first + k) % 2 == 0 ? pair.first : pair.second);
         }
         return tlm::TLM_OK_RESPONSE;
@@ -150,31 +153,46 @@ tlm::tlm_response_status CollisionBoard::access(tlm::tlm_command command, uint64
     return tlm::TLM_ADDRESS_ERROR_RESPONSE;
 }
 
-void CollisionBoard::wake_clock_if_needed() {
-    if (core_.running() && !clock_running_) {
-        clock_running_ = true;
-        wake_.notify(period_);  // the first edge comes one period after the command
+void CollisionBoard::sync() {
+    if (!core_.running()) return;
+    core_.advance_to((sc_time_stamp() - segment_start_).value() / period_.value());
+}
+
+void CollisionBoard::schedule_clock(uint64_t segments_before) {
+    if (core_.segments_started() == segments_before) {
+        if (!core_.running()) clock_event_.cancel();  // aborted, or the command was refused
+        return;
+    }
+    segment_start_ = sc_time_stamp();
+    clock_event_.cancel();
+    if (traced_engine_ != nullptr) {
+        clock_event_.notify(period_);  // the first edge comes one period after the command
+        return;
+    }
+    const uint64_t edges = core_.segment_edges();
+    // A segment that would end past the simulator's last instant never ends;
+    // the driver's own time limit reports it.
+    if (edges <= (sc_max_time() - sc_time_stamp()).value() / period_.value()) {
+        clock_event_.notify(sc_time::from_value(edges * period_.value()));
     }
 }
 
-void CollisionBoard::clock_edge() {
-    if (!core_.running()) {  // aborted since the last edge
-        clock_running_ = false;
-        return;
+void CollisionBoard::on_clock_event() {
+    sync();
+    if (traced_engine_ != nullptr) {
+        sample_trace();
+        if (core_.running()) {
+            const uint64_t next = core_.edges() + 1;
+            clock_event_.notify(segment_start_ + sc_time::from_value(next * period_.value()) - sc_time_stamp());
+            return;
+        }
     }
-    core_.step();
-    if (tracing_) sample_trace();
-    if (core_.running()) {
-        next_trigger(period_);
-        return;
-    }
-    clock_running_ = false;  // done or paused: the clock stops until the host acts
     irq_changed_.notify(SC_ZERO_TIME);
 }
 
 // The interrupt line's only driver, so both the host's commands and the
 // clocked process can change it.
-void CollisionBoard::drive_irq() { irq.write(core_.registers().interrupt()); }
+void CollisionBoard::drive_irq() { irq.write(core_.interrupt()); }
 
 void CollisionBoard::clock_fall() { waves_.clk = false; }
 
@@ -182,18 +200,19 @@ void CollisionBoard::sample_trace() {
     waves_.clk = true;
     fall_.notify(period_ / 2);
     waves_.state = static_cast<uint32_t>(core_.phase());
-    const AddressGenerator::Issue& issue = core_.last_issue();
+    const ClockedEngine& engine = *traced_engine_;
+    const AddressGenerator::Issue& issue = engine.last_issue();
     waves_.address[0] = issue.row;
     for (size_t port = 1; port < waves_.address.size(); ++port) {
         waves_.address[port] = issue.first_column + static_cast<uint32_t>(port) - 1;
     }
-    const BoardCore::Slot& out = core_.compare_output();
-    waves_.lane_valid = out.kind == BoardCore::Slot::kSweep ? (~0ull >> (64 - out.valid_lanes)) : 0;
-    waves_.lane_hit = out.kind == BoardCore::Slot::kSweep ? out.hits : 0;
-    waves_.fifo_level = core_.collector().fifo_level();
-    waves_.stall = core_.stalled();
-    waves_.done = core_.registers().done;
-    waves_.pair_count = core_.collector().buffer_count();
+    const ClockedEngine::Slot& out = engine.compare_output();
+    waves_.lane_valid = out.kind == ClockedEngine::Slot::kSweep ? (~0ull >> (64 - out.valid_lanes)) : 0;
+    waves_.lane_hit = out.kind == ClockedEngine::Slot::kSweep ? out.hits : 0;
+    waves_.fifo_level = engine.fifo_level();
+    waves_.stall = engine.stalled();
+    waves_.done = core_.phase() == BoardCore::Phase::Done;
+    waves_.pair_count = core_.buffered_pairs();
 }
 
 }  // namespace cdvp

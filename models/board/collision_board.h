@@ -1,5 +1,9 @@
 // SystemC shell of the collision board: TLM-2.0 target socket, interrupt line,
-// and a gated board clock that ticks only while a sweep runs.
+// and the board's clock. The clock is computed from simulated time, as a timer
+// peripheral computes its counter: one event per segment (START or RESUME to
+// the next pause or done), and before each host access the board is brought
+// to the edges elapsed since the segment began. Only while waveforms are
+// traced does an event fire at every edge.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +14,7 @@
 #include <tlm_utils/simple_target_socket.h>
 
 #include "models/board/board_core.h"
+#include "models/board/clocked_engine.h"
 #include "models/common/fault_plan.h"
 
 namespace cdvp {
@@ -23,7 +28,8 @@ public:
     // High while done or overflow: the host has work.
     sc_core::sc_out<bool> irq;
 
-    CollisionBoard(const sc_core::sc_module_name& name, const BoardConfig& config, uint32_t capacity);
+    CollisionBoard(const sc_core::sc_module_name& name, const BoardConfig& config, uint32_t capacity,
+                   Fidelity fidelity = Fidelity::kCycle);
 
     const BoardCore& core() const { return core_; }
     // Faults to inject (board-error); null for none. Not owned.
@@ -32,7 +38,8 @@ public:
 
     using sc_core::sc_module::trace;
     // Adds the board's waveforms to a trace file (before the first sc_start).
-    // Without this call the clocked process does no tracing work at all.
+    // Needs the clocked engine (throws std::logic_error otherwise). Without
+    // this call the board does no per-edge work at all.
     void trace(sc_core::sc_trace_file* file);
 
 private:
@@ -41,19 +48,23 @@ private:
     // Returns the TLM response for an access of len bytes at address.
     tlm::tlm_response_status access(tlm::tlm_command command, uint64_t address, unsigned char* data,
                                     unsigned int length);
-    void clock_edge();  // one board clock edge while running
-    void clock_fall();  // traced clock only: the falling edge
+    // Brings the board to the edges elapsed since the segment began.
+    void sync();
+    // After a host command: schedules the clock for a new segment, or stops it.
+    void schedule_clock(uint64_t segments_before);
+    void on_clock_event();  // the segment's end (or, traced, one rising edge)
+    void clock_fall();      // traced clock only: the falling edge
     void drive_irq();
-    void wake_clock_if_needed();
     void sample_trace();
 
     BoardCore core_;
     sc_core::sc_time period_;
-    sc_core::sc_event wake_;  // a command started or resumed the sweep
+    sc_core::sc_time segment_start_;  // when the last START or RESUME was taken
+    sc_core::sc_event clock_event_;
     sc_core::sc_event fall_;
     sc_core::sc_event irq_changed_;
-    bool clock_running_ = false;
     FaultPlan* faults_ = nullptr;
+    ClockedEngine* traced_engine_ = nullptr;  // set by trace()
 
     // Waveform mirrors, updated each cycle only when traced.
     struct Waves {
@@ -67,7 +78,6 @@ private:
         bool done = false;
         uint32_t pair_count = 0;
     };
-    bool tracing_ = false;
     Waves waves_;
 };
 

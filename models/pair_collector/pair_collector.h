@@ -46,8 +46,13 @@ public:
     uint32_t buffer_count() const { return static_cast<uint32_t>(buffer_.size()); }
     uint32_t buffer_depth() const { return buffer_depth_; }
     const IndexPair& buffer_entry(uint32_t index) const { return buffer_[index]; }
+    const PairList& buffer() const { return buffer_; }
     // The host has read the buffer: it may be refilled.
     void clear_buffer() { buffer_.clear(); }
+    // Keeps the first `count` entries (an aborted sweep's buffer at the abort).
+    void truncate_buffer(uint32_t count) {
+        if (count < buffer_.size()) buffer_.resize(count);
+    }
 
     // Pairs found since reset (all that ever entered the FIFO).
     uint64_t total_pairs() const { return total_pairs_; }

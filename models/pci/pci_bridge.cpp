@@ -12,22 +12,6 @@ namespace cdvp {
 using namespace sc_core;
 using D = DmaRegisters;
 
-const char* describe(DmaFault fault) {
-    switch (fault) {
-        case DmaFault::kNone: return "no fault";
-        case DmaFault::kBadLength: return "bad length (zero, not a multiple of 4, or above 16 MiB)";
-        case DmaFault::kMisaligned: return "misaligned address";
-        case DmaFault::kMasterAbort: return "master abort (no host memory claimed the address)";
-        case DmaFault::kTargetAbort: return "target abort (the board rejected the address)";
-        case DmaFault::kBoardRefused: return "the board refused the access";
-        case DmaFault::kDescriptorFault: return "descriptor fetch failed (master abort)";
-        case DmaFault::kChainLoop: return "descriptor chain loops";
-        case DmaFault::kChainTooLong: return "descriptor chain longer than 1024";
-        case DmaFault::kStartWhileBusy: return "START while a transfer was under way";
-    }
-    return "unknown fault";
-}
-
 PciBridge::PciBridge(const sc_module_name& name, std::shared_ptr<const BusTiming> timing)
     : sc_module(name),
       pci_target("pci_target"),
@@ -39,6 +23,7 @@ PciBridge::PciBridge(const sc_module_name& name, std::shared_ptr<const BusTiming
       buffer_(kBurstBytes) {
     pci_target.register_b_transport(this, &PciBridge::b_transport);
     pci_target.register_transport_dbg(this, &PciBridge::transport_dbg);
+    declare_registers();
     SC_THREAD(dma_engine);
     SC_METHOD(drive_inta);
     sensitive << fpga_irq << inta_changed_;
@@ -64,61 +49,71 @@ tlm::tlm_response_status PciBridge::access_registers(tlm::tlm_generic_payload& p
     if (!range_within(address, 4, D::kBase, D::kSize)) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
     const auto offset = static_cast<uint32_t>(address - D::kBase);
     uint32_t value = 0;
+    RegisterResult result;
     if (payload.get_command() == tlm::TLM_READ_COMMAND) {
-        switch (offset) {
-            case D::kHostAddressLo: value = static_cast<uint32_t>(dma_.host_address); break;
-            case D::kHostAddressHi: value = static_cast<uint32_t>(dma_.host_address >> 32); break;
-            case D::kLocalAddress: value = dma_.local_address; break;
-            case D::kBytes: value = dma_.bytes; break;
-            case D::kControl: value = 0; break;
-            case D::kStatus: value = dma_.status(); break;
-            case D::kChainLo: value = static_cast<uint32_t>(dma_.chain_address); break;
-            case D::kChainHi: value = static_cast<uint32_t>(dma_.chain_address >> 32); break;
-            case D::kErrorCause: value = static_cast<uint32_t>(dma_.cause); break;
-            case D::kErrorAddressLo: value = static_cast<uint32_t>(dma_.fault_address); break;
-            case D::kErrorAddressHi: value = static_cast<uint32_t>(dma_.fault_address >> 32); break;
-            default: return tlm::TLM_ADDRESS_ERROR_RESPONSE;
-        }
+        result = registers_.read(offset, value);
         std::memcpy(payload.get_data_ptr(), &value, 4);
-        return tlm::TLM_OK_RESPONSE;
+    } else {
+        std::memcpy(&value, payload.get_data_ptr(), 4);
+        result = registers_.write(offset, value);
     }
-    std::memcpy(&value, payload.get_data_ptr(), 4);
+    switch (result) {
+        case RegisterResult::kDone: return tlm::TLM_OK_RESPONSE;
+        case RegisterResult::kRefused: return tlm::TLM_COMMAND_ERROR_RESPONSE;
+        case RegisterResult::kUnmapped: break;
+    }
+    return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+}
+
+void PciBridge::declare_registers() {
+    using A = RegisterAccess;
+    auto low = [](const uint64_t& field) { return [&field] { return static_cast<uint32_t>(field); }; };
+    auto high = [](const uint64_t& field) { return [&field] { return static_cast<uint32_t>(field >> 32); }; };
     // The set-up registers are locked while a transfer runs: it reads them.
-    auto settable = [this] { return !dma_.busy; };
-    switch (offset) {
-        case D::kHostAddressLo:
-        case D::kHostAddressHi:
-        case D::kLocalAddress:
-        case D::kBytes:
-        case D::kChainLo:
-        case D::kChainHi:
-            if (!settable()) return tlm::TLM_COMMAND_ERROR_RESPONSE;
-            if (offset == D::kHostAddressLo) dma_.host_address = (dma_.host_address & ~0xffffffffull) | value;
-            if (offset == D::kHostAddressHi) dma_.host_address = (dma_.host_address & 0xffffffffull) | uint64_t{value} << 32;
-            if (offset == D::kLocalAddress) dma_.local_address = value;
-            if (offset == D::kBytes) dma_.bytes = value;
-            if (offset == D::kChainLo) dma_.chain_address = (dma_.chain_address & ~0xffffffffull) | value;
-            if (offset == D::kChainHi) dma_.chain_address = (dma_.chain_address & 0xffffffffull) | uint64_t{value} << 32;
-            return tlm::TLM_OK_RESPONSE;
-        case D::kStatus:
-            if (value & D::kDone) dma_.done = false;
-            if (value & D::kError) {
-                dma_.error = false;
-                dma_.cause = DmaFault::kNone;
-                dma_.fault_address = 0;
-            }
-            inta_changed_.notify(SC_ZERO_TIME);
-            return tlm::TLM_OK_RESPONSE;
-        case D::kControl:
-            write_control(value);
-            return tlm::TLM_OK_RESPONSE;
-        case D::kErrorCause:
-        case D::kErrorAddressLo:
-        case D::kErrorAddressHi:
-            return tlm::TLM_OK_RESPONSE;  // read-only: writes are ignored
-        default:
-            return tlm::TLM_ADDRESS_ERROR_RESPONSE;
-    }
+    auto setup = [this](auto assign) {
+        return [this, assign](uint32_t v) {
+            if (dma_.busy) return RegisterResult::kRefused;
+            assign(v);
+            return RegisterResult::kDone;
+        };
+    };
+    auto set_low = [](uint64_t& field) { return [&field](uint32_t v) { field = (field & ~0xffffffffull) | v; }; };
+    auto set_high = [](uint64_t& field) {
+        return [&field](uint32_t v) { field = (field & 0xffffffffull) | uint64_t{v} << 32; };
+    };
+    registers_.add("DMA_HOST_ADDRESS_LO", D::kHostAddressLo, A::kReadWrite, low(dma_.host_address),
+                   setup(set_low(dma_.host_address)));
+    registers_.add("DMA_HOST_ADDRESS_HI", D::kHostAddressHi, A::kReadWrite, high(dma_.host_address),
+                   setup(set_high(dma_.host_address)));
+    registers_.add("DMA_LOCAL_ADDRESS", D::kLocalAddress, A::kReadWrite, [this] { return dma_.local_address; },
+                   setup([this](uint32_t v) { dma_.local_address = v; }));
+    registers_.add("DMA_BYTES", D::kBytes, A::kReadWrite, [this] { return dma_.bytes; },
+                   setup([this](uint32_t v) { dma_.bytes = v; }));
+    registers_.add("DMA_CONTROL", D::kControl, A::kWriteOnly, {}, [this](uint32_t v) {
+        write_control(v);
+        return RegisterResult::kDone;
+    });
+    registers_.add("DMA_STATUS", D::kStatus, A::kReadWrite, [this] { return dma_.status(); }, [this](uint32_t v) {
+        // Write one to clear.
+        if (v & D::kDone) dma_.done = false;
+        if (v & D::kError) clear_error();
+        inta_changed_.notify(SC_ZERO_TIME);
+        return RegisterResult::kDone;
+    });
+    registers_.add("DMA_CHAIN_LO", D::kChainLo, A::kReadWrite, low(dma_.chain_address),
+                   setup(set_low(dma_.chain_address)));
+    registers_.add("DMA_CHAIN_HI", D::kChainHi, A::kReadWrite, high(dma_.chain_address),
+                   setup(set_high(dma_.chain_address)));
+    registers_.add("DMA_ERROR_CAUSE", D::kErrorCause, A::kReadOnly,
+                   [this] { return static_cast<uint32_t>(dma_.cause); });
+    registers_.add("DMA_ERROR_ADDRESS_LO", D::kErrorAddressLo, A::kReadOnly, low(dma_.fault_address));
+    registers_.add("DMA_ERROR_ADDRESS_HI", D::kErrorAddressHi, A::kReadOnly, high(dma_.fault_address));
+}
+
+void PciBridge::clear_error() {
+    dma_.error = false;
+    dma_.cause = DmaFault::kNone;
+    dma_.fault_address = 0;
 }
 
 void PciBridge::write_control(uint32_t value) {
@@ -127,9 +122,8 @@ void PciBridge::write_control(uint32_t value) {
             abort_requested_ = true;
             abort_.notify(SC_ZERO_TIME);
         }
-        dma_.done = dma_.error = false;
-        dma_.cause = DmaFault::kNone;
-        dma_.fault_address = 0;
+        dma_.done = false;
+        clear_error();
         inta_changed_.notify(SC_ZERO_TIME);
         return;
     }

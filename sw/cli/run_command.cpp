@@ -207,18 +207,14 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     const auto wall_start = std::chrono::steady_clock::now();
     while (std::optional<Frame> frame = source.next()) {
         const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
-        // A simulated fault is caught here, so the platform is torn down by an
-        // ordinary return (see OutputFile::try_finish); the outputs' destructors
-        // discard their temporaries.
-        const FrameResult* frame_result = nullptr;
-        try {
-            frame_result = &platform.run_frame(boxes, frame->number);
-        } catch (const DeviceFault& e) {
-            std::cerr << "cdvp run: frame " << frame->number << ": " << printable(e.what()) << '\n';
-            return kExitDeviceFault;
-        } catch (const SimulatedTimeLimit& e) {
-            std::cerr << "cdvp run: frame " << frame->number << ": " << printable(e.what()) << '\n';
-            return 2;
+        // A simulated fault comes back by value, so the platform is torn down
+        // by an ordinary return (see OutputFile::try_finish); the outputs'
+        // destructors discard their temporaries.
+        FrameFault fault;
+        const FrameResult* frame_result = platform.try_run_frame(boxes, frame->number, fault);
+        if (frame_result == nullptr) {
+            std::cerr << "cdvp run: frame " << frame->number << ": " << printable(fault.message) << '\n';
+            return fault.kind == FrameFault::Kind::kDevice ? kExitDeviceFault : kExitBadInput;
         }
         const FrameResult& result = *frame_result;
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));

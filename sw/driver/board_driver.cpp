@@ -8,14 +8,11 @@
 
 #include "models/address_generator/address_generator.h"
 #include "models/comparison_unit/comparison_unit.h"
-#include "models/common/transaction.h"
 #include "models/control_registers/control_registers.h"
-#include "models/pci/pci_bridge.h"
-#include "platform/host_memory.h"
+#include "models/pci/dma_registers.h"
 
 namespace cdvp {
 
-using namespace sc_core;
 using R = ControlRegisters;
 using D = DmaRegisters;
 
@@ -40,9 +37,9 @@ std::string mebibytes(uint64_t bytes) {
     return text;
 }
 
-std::string microseconds(const sc_time& t) {
+std::string microseconds(SimTime t) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.6g us", t.to_seconds() * 1e6);
+    std::snprintf(text, sizeof text, "%.6g us", ns_from_fs(t) * 1e-3);
     return text;
 }
 
@@ -59,34 +56,32 @@ uint64_t BoardDriver::host_memory_bytes(uint32_t capacity, uint32_t buffer_depth
     return descriptor_area(capacity, buffer_depth) + kCoordinates * sizeof(DmaDescriptor);
 }
 
-BoardDriver::BoardDriver(Transport pio, HostMemory& memory, const sc_event& interrupt, const sc_time& period,
-                         const DriverConfig& config, std::shared_ptr<const BusTiming> bus)
-    : pio_(std::move(pio)),
-      memory_(memory),
-      interrupt_(interrupt),
-      period_(period),
+BoardDriver::BoardDriver(HostPort& port, SimTime period_fs, const DriverConfig& config,
+                         std::shared_ptr<const BusTiming> bus)
+    : port_(port),
+      period_(period_fs),
       config_(config),
       bus_(bus ? std::move(bus) : std::make_shared<IdealBusTiming>()) {}
 
-void BoardDriver::pio(tlm::tlm_command command, uint64_t address, void* data, unsigned int length) {
-    tlm::tlm_generic_payload p;
-    prepare_transaction(p, command, address, data, length);
-    sc_time delay = SC_ZERO_TIME;
-    pio_(p, delay);
-    wait(delay);
-    if (p.is_response_error()) {
-        throw DeviceFault(std::string("board ") + (command == tlm::TLM_READ_COMMAND ? "read" : "write") + " at " +
-                          hex(address) + " failed: " + p.get_response_string());
+void BoardDriver::pio_read(uint64_t address, void* data, uint32_t length) {
+    if (const std::string error = port_.read(address, data, length); !error.empty()) {
+        throw DeviceFault("board read at " + hex(address) + " failed: " + error);
+    }
+}
+
+void BoardDriver::pio_write(uint64_t address, const void* data, uint32_t length) {
+    if (const std::string error = port_.write(address, data, length); !error.empty()) {
+        throw DeviceFault("board write at " + hex(address) + " failed: " + error);
     }
 }
 
 uint32_t BoardDriver::read(uint64_t address) {
     uint32_t value = 0;
-    pio(tlm::TLM_READ_COMMAND, address, &value, 4);
+    pio_read(address, &value, 4);
     return value;
 }
 
-void BoardDriver::write(uint64_t address, uint32_t value) { pio(tlm::TLM_WRITE_COMMAND, address, &value, 4); }
+void BoardDriver::write(uint64_t address, uint32_t value) { pio_write(address, &value, 4); }
 
 uint64_t BoardDriver::read_counter(uint32_t low_offset) {
     const uint64_t low = read(low_offset);
@@ -98,31 +93,31 @@ void BoardDriver::open() {
     capacity_ = read(R::kCapacity);
     buffer_depth_ = read(R::kPairBufferDepth);
     parallelism_ = read(R::kParallelism);
-    if (memory_.size() < host_memory_bytes(capacity_, buffer_depth_)) {
+    if (port_.memory_size() < host_memory_bytes(capacity_, buffer_depth_)) {
         throw std::runtime_error("host memory too small for the board's capacity and pair buffer");
     }
 }
 
 void BoardDriver::charge(Phase phase) {
-    spent_[phase] += (sc_time_stamp() - mark_).to_seconds() * 1e9;
-    mark_ = sc_time_stamp();
+    spent_[phase] += ns_from_fs(port_.now() - mark_);
+    mark_ = port_.now();
 }
 
 void BoardDriver::cpu_work(double ns) {
-    if (ns > 0) wait(sc_time(ns, SC_NS));
+    if (ns > 0) port_.wait(fs_from_ns(ns));
     charge(kDriver);
 }
 
 // Between two polls: the configured gap, and never no time at all (on an
 // untimed bus a poll costs nothing, and the loop would not let time pass).
 void BoardDriver::poll_pause() {
-    const sc_time gap(config_.poll_gap_ns, SC_NS);
-    wait(gap > SC_ZERO_TIME ? gap : period_);
+    const SimTime gap = fs_from_ns(config_.poll_gap_ns);
+    port_.wait(gap > 0 ? gap : period_);
 }
 
-sc_time BoardDriver::timeout_for(double expected_ns) const {
+SimTime BoardDriver::timeout_for(double expected_ns) const {
     const double ns = config_.timeout_floor_ns + config_.timeout_factor * expected_ns;
-    const double left_ns = (sc_max_time() - sc_time_stamp()).to_seconds() * 1e9;
+    const double left_ns = ns_from_fs(port_.end_of_time() - port_.now());
     if (!(ns < 0.99 * left_ns)) {  // a margin for rounding near 2^64 fs
         char text[160];
         std::snprintf(text, sizeof text,
@@ -131,19 +126,19 @@ sc_time BoardDriver::timeout_for(double expected_ns) const {
                       ns * 1e-9, left_ns * 1e-9);
         throw SimulatedTimeLimit(text);
     }
-    return sc_time(ns, SC_NS);
+    return fs_from_ns(ns);
 }
 
 // By interrupt: each interrupt (the line is shared) or the timeout is
 // followed by one status read. By polling: status reads until the deadline.
-uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, const sc_time& timeout, const char* what) {
-    const sc_time deadline = sc_time_stamp() + timeout;
+uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what) {
+    const SimTime deadline = port_.now() + timeout;
     for (;;) {
-        if (config_.use_interrupts) wait(deadline - sc_time_stamp(), interrupt_);
-        noticed_ = sc_time_stamp();  // the handler runs: the status read is readback work
+        if (config_.use_interrupts) port_.wait_for_interrupt(deadline - port_.now());
+        noticed_ = port_.now();  // the handler runs: the status read is readback work
         const uint32_t value = read(status_address);
-        if (!config_.use_interrupts) noticed_ = sc_time_stamp();  // a poll notices when its read returns
-        const bool late = sc_time_stamp() >= deadline;
+        if (!config_.use_interrupts) noticed_ = port_.now();  // a poll notices when its read returns
+        const bool late = port_.now() >= deadline;
         if (value & bits) {
             if (late && config_.use_interrupts) ++timeouts_recovered_;  // the interrupt was lost
             return value;
@@ -159,7 +154,7 @@ uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, const sc_
 // Starts the bridge's DMA engine (registers already set) and waits for it
 // by interrupt or polling; a fault the engine reports fails the frame.
 void BoardDriver::run_dma(uint32_t control, double expected_ns) {
-    const sc_time timeout = timeout_for(expected_ns + bus_->interrupt_ns());
+    const SimTime timeout = timeout_for(expected_ns + bus_->interrupt_ns());
     write(D::kBase + D::kControl,
           control | D::kStart | (config_.use_interrupts ? uint32_t{D::kInterruptOnDone} : 0u));
     const uint32_t status = wait_for(D::kBase + D::kStatus, D::kDone | D::kError, timeout, "DMA");
@@ -170,9 +165,9 @@ void BoardDriver::run_dma(uint32_t control, double expected_ns) {
 void BoardDriver::dma_fault() {
     const auto cause = static_cast<DmaFault>(read(D::kBase + D::kErrorCause));
     const uint64_t address = read_counter(D::kBase + D::kErrorAddressLo);
-    if (cause == DmaFault::kMasterAbort && address >= memory_.size()) {
+    if (cause == DmaFault::kMasterAbort && address >= port_.memory_size()) {
         throw DeviceFault("DMA fault: host address " + hex(address) + " beyond host memory (" +
-                          mebibytes(memory_.size()) + ")");
+                          mebibytes(port_.memory_size()) + ")");
     }
     throw DeviceFault(std::string("DMA fault: ") + describe(cause) + " at address " + hex(address));
 }
@@ -190,7 +185,7 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
     const auto n = static_cast<uint32_t>(boxes.size());
     if (n == 0) return;
     for (uint32_t c = 0; c < kCoordinates; ++c) {
-        auto* words = reinterpret_cast<uint32_t*>(memory_.data(coordinate_area(capacity_, c)));
+        auto* words = reinterpret_cast<uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
         for (uint32_t i = 0; i < n; ++i) {
             words[i] = ComparisonUnit::as_bits(c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3]);
         }
@@ -201,14 +196,14 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
     if (!config_.use_dma) {
         cpu_work(config_.call_ns + config_.ns_per_box * n);  // packing, done natively above
         for (uint32_t c = 0; c < kCoordinates; ++c) {
-            pio(tlm::TLM_WRITE_COMMAND, local(c), memory_.data(coordinate_area(capacity_, c)), 4 * n);
+            pio_write(local(c), port_.memory(coordinate_area(capacity_, c)), 4 * n);
         }
         charge(kUpload);
         return;
     }
     // One scatter-gather chain of six descriptors: one set-up, one interrupt.
     const uint64_t chain = descriptor_area(capacity_, buffer_depth_);
-    auto* descriptors = reinterpret_cast<DmaDescriptor*>(memory_.data(chain));
+    auto* descriptors = reinterpret_cast<DmaDescriptor*>(port_.memory(chain));
     for (uint32_t c = 0; c < kCoordinates; ++c) {
         const uint64_t next = c + 1 < kCoordinates ? chain + (c + 1) * sizeof(DmaDescriptor) : 0;
         descriptors[c] = DmaDescriptor{coordinate_area(capacity_, c), next, local(c), 4 * n};
@@ -222,10 +217,10 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
 }
 
 uint32_t BoardDriver::wait_for_board(uint32_t objects) {
-    const sc_time started = mark_;
+    const SimTime started = mark_;
     const double worst_ns =
-        (period_ * static_cast<double>(worst_case_run_cycles(objects, parallelism_, buffer_depth_))).to_seconds() * 1e9;
-    const sc_time timeout = timeout_for(worst_ns + bus_->interrupt_ns());
+        ns_from_fs(period_) * static_cast<double>(worst_case_run_cycles(objects, parallelism_, buffer_depth_));
+    const SimTime timeout = timeout_for(worst_ns + bus_->interrupt_ns());
     const uint32_t status = wait_for(R::kStatus, R::kDone | R::kOverflow | R::kError, timeout, "board");
     mark_ = noticed_;
     if (config_.use_interrupts) write(R::kControl, R::kAcknowledge);
@@ -235,8 +230,8 @@ uint32_t BoardDriver::wait_for_board(uint32_t objects) {
     // The segment from the command to noticing the board is its compute time
     // (cycles x period) plus the notification's lag.
     const uint64_t cycles = read_counter(R::kCyclesLo);
-    const double segment = (mark_ - started).to_seconds() * 1e9;
-    const double compute = (period_ * static_cast<double>(cycles - cycles_seen_)).to_seconds() * 1e9;
+    const double segment = ns_from_fs(mark_ - started);
+    const double compute = ns_from_fs(period_ * (cycles - cycles_seen_));
     cycles_seen_ = cycles;
     spent_[kCompute] += compute;
     spent_[kIrq] += segment - compute;
@@ -250,10 +245,10 @@ void BoardDriver::read_pairs(PairList& pairs) {
     if (config_.use_dma) {
         dma(area, static_cast<uint32_t>(address_map::kPairBuffer), 8 * count, true);
     } else {
-        pio(tlm::TLM_READ_COMMAND, address_map::kPairBuffer, memory_.data(area), 8 * count);
+        pio_read(address_map::kPairBuffer, port_.memory(area), 8 * count);
     }
     charge(kReadback);
-    const auto* words = reinterpret_cast<const uint32_t*>(memory_.data(area));
+    const auto* words = reinterpret_cast<const uint32_t*>(port_.memory(area));
     for (uint32_t k = 0; k < count; ++k) pairs.push_back({words[2 * k], words[2 * k + 1]});
     cpu_work(config_.ns_per_pair * count);
 }
@@ -277,8 +272,8 @@ void BoardDriver::recover() {
         write(D::kBase + D::kControl, D::kAbort);
         write(R::kControl, R::kAbort);
         // Let an aborted transfer's engine settle before the next frame.
-        wait(SC_ZERO_TIME);
-        wait(SC_ZERO_TIME);
+        port_.wait(0);
+        port_.wait(0);
     } catch (const DeviceFault&) {
         // The next frame's accesses report the board's state.
     }
@@ -287,7 +282,7 @@ void BoardDriver::recover() {
 FramePhases BoardDriver::frame(const std::vector<FloatBox>& boxes, PairList& pairs) {
     pairs.clear();
     for (double& s : spent_) s = 0;
-    const sc_time frame_start = sc_time_stamp();
+    const SimTime frame_start = port_.now();
     mark_ = frame_start;
     cycles_seen_ = 0;
     timeouts_recovered_ = 0;
@@ -323,7 +318,7 @@ FramePhases BoardDriver::frame(const std::vector<FloatBox>& boxes, PairList& pai
     phases.irq_ns = spent_[kIrq];
     phases.readback_ns = spent_[kReadback];
     phases.driver_ns = spent_[kDriver];
-    phases.total_ns = (sc_time_stamp() - frame_start).to_seconds() * 1e9;
+    phases.total_ns = ns_from_fs(port_.now() - frame_start);
     phases.timeouts_recovered = timeouts_recovered_;
     return phases;
 }

@@ -1,5 +1,5 @@
-// The host driver of the collision board: runs in a host CPU thread of the
-// simulation, reaches the board over the PCI bus and stages data in host RAM.
+// The host driver of the collision board: host software that reaches the
+// board over the PCI bus and stages data in host RAM, all through a HostPort.
 #pragma once
 
 #include <cstdint>
@@ -9,15 +9,11 @@
 #include <string>
 #include <vector>
 
-#include <systemc>
-#include <tlm>
-
 #include "models/common/aabb.h"
 #include "models/pci/bus_timing.h"
+#include "sw/driver/host_port.h"
 
 namespace cdvp {
-
-class HostMemory;
 
 // The simulated system faulted (a DMA or bus fault, a board error status, a
 // driver timeout): the input was fine. The frame produced no pairs.
@@ -69,25 +65,21 @@ struct FramePhases {
 
 class BoardDriver {
 public:
-    // The CPU's path to the board's BAR (blocking transport).
-    using Transport = std::function<void(tlm::tlm_generic_payload&, sc_core::sc_time&)>;
-
-    // interrupt: notified when the interrupt handler runs; period: the board's clock period.
+    // port: the host the driver runs on; period_fs: the board's clock period;
     // bus: the timing the timeouts are derived from.
-    BoardDriver(Transport pio, HostMemory& memory, const sc_core::sc_event& interrupt, const sc_core::sc_time& period,
-                const DriverConfig& config, std::shared_ptr<const BusTiming> bus);
+    BoardDriver(HostPort& port, SimTime period_fs, const DriverConfig& config, std::shared_ptr<const BusTiming> bus);
 
     // Host RAM the driver needs for a board of this capacity and pair buffer.
     static uint64_t host_memory_bytes(uint32_t capacity, uint32_t buffer_depth);
 
-    // Checks the board's identity and reads its capacity (call from a thread).
+    // Checks the board's identity and reads its capacity.
     void open();
     uint32_t capacity() const { return capacity_; }
 
     // One frame: every overlapping pair into pairs (board order), or an
     // exception (DeviceFault when the simulated system faulted) and no pairs;
     // after a fault the driver aborts the DMA engine and the board, so the
-    // next frame starts clean. Call from a SystemC thread.
+    // next frame starts clean.
     FramePhases run_frame(const std::vector<FloatBox>& boxes, PairList& pairs);
 
 private:
@@ -98,16 +90,17 @@ private:
 
     uint32_t read(uint64_t address);
     void write(uint64_t address, uint32_t value);
-    void pio(tlm::tlm_command command, uint64_t address, void* data, unsigned int length);
+    void pio_read(uint64_t address, void* data, uint32_t length);
+    void pio_write(uint64_t address, const void* data, uint32_t length);
     FramePhases frame(const std::vector<FloatBox>& boxes, PairList& pairs);
     // Stops the DMA engine and the board and clears their status (best effort).
     void recover();
     // How long a wait whose worst case is expected_ns may take; refuses a
     // deadline past the simulator's clock.
-    sc_core::sc_time timeout_for(double expected_ns) const;
+    SimTime timeout_for(double expected_ns) const;
     // Waits for the interrupt or a poll to find any of bits in the register's
     // value, until the timeout; returns the value. what names the wait.
-    uint32_t wait_for(uint64_t status_address, uint32_t bits, const sc_core::sc_time& timeout, const char* what);
+    uint32_t wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what);
     void run_dma(uint32_t control, double expected_ns);
     void dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host);
     [[noreturn]] void dma_fault();
@@ -118,18 +111,16 @@ private:
     uint32_t wait_for_board(uint32_t objects);
     void read_pairs(PairList& pairs);
 
-    Transport pio_;
-    HostMemory& memory_;
-    const sc_core::sc_event& interrupt_;
-    sc_core::sc_time period_;
+    HostPort& port_;
+    SimTime period_;
     DriverConfig config_;
     uint32_t capacity_ = 0;
     uint32_t buffer_depth_ = 0;
     uint32_t parallelism_ = 1;
     uint64_t cycles_seen_ = 0;
     double spent_[kPhases] = {};
-    sc_core::sc_time mark_;
-    sc_core::sc_time noticed_;  // when the last wait_for noticed its event
+    SimTime mark_ = 0;
+    SimTime noticed_ = 0;  // when the last wait_for noticed its event
     std::shared_ptr<const BusTiming> bus_;
     uint32_t timeouts_recovered_ = 0;
 };

@@ -1,5 +1,6 @@
 // The board's datapath against the plain C++ reference, without a kernel.
 #include "models/board/board_core.h"
+#include "models/address_generator/address_generator.h"
 
 #include <gtest/gtest.h>
 
@@ -164,36 +165,36 @@ TEST(BoardCore, RegistersAndRefusedCommands) {
 
     core.write_register(ControlRegisters::kObjectCount, 11);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
-    EXPECT_TRUE(core.registers().error) << "more objects than the memories hold";
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kTooManyObjects);
-    EXPECT_TRUE(core.registers().interrupt()) << "an error interrupts like done";
+    EXPECT_TRUE(core.status().error) << "more objects than the memories hold";
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kTooManyObjects);
+    EXPECT_TRUE(core.interrupt()) << "an error interrupts like done";
     EXPECT_FALSE(core.running());
 
     core.write_register(ControlRegisters::kObjectCount, 10);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
-    EXPECT_FALSE(core.registers().error);
+    EXPECT_FALSE(core.status().error);
     EXPECT_TRUE(core.running());
     ASSERT_TRUE(core.read_register(ControlRegisters::kStatus, value));
     EXPECT_EQ(value, uint32_t{ControlRegisters::kBusy});
     EXPECT_EQ(core.write_coordinate(kMinX, 0, 0), Write::kRefused) << "memories are locked while busy";
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kWriteWhileBusy);
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kWriteWhileBusy);
     EXPECT_EQ(core.write_register(ControlRegisters::kObjectCount, 3), Write::kRefused) << "the sweep's count is fixed";
     ASSERT_TRUE(core.read_register(ControlRegisters::kObjectCount, value));
     EXPECT_EQ(value, 10u) << "read-back equals the count the sweep uses";
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
-    EXPECT_TRUE(core.registers().error) << "start while busy";
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kStartWhileBusy);
+    EXPECT_TRUE(core.status().error) << "start while busy";
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kStartWhileBusy);
     while (core.running()) core.step();
     EXPECT_EQ(core.phase(), BoardCore::Phase::Done);
-    EXPECT_TRUE(core.registers().interrupt());
+    EXPECT_TRUE(core.interrupt());
     core.write_register(ControlRegisters::kControl, ControlRegisters::kAcknowledge);
-    EXPECT_FALSE(core.registers().interrupt()) << "acknowledged: the shared line may fall";
-    EXPECT_TRUE(core.registers().done) << "acknowledging keeps the status";
+    EXPECT_FALSE(core.interrupt()) << "acknowledged: the shared line may fall";
+    EXPECT_TRUE(core.status().done) << "acknowledging keeps the status";
     ASSERT_TRUE(core.read_register(ControlRegisters::kCyclesLo, value));
-    EXPECT_EQ(value, AddressGenerator::sweep_cycles(10, 2) + config.pipeline_latency() + core.registers().stalls);
+    EXPECT_EQ(value, AddressGenerator::sweep_cycles(10, 2) + config.pipeline_latency() + core.counters().stalls);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
-    EXPECT_TRUE(core.registers().error) << "resume without a pause";
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kResumeNotPaused);
+    EXPECT_TRUE(core.status().error) << "resume without a pause";
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kResumeNotPaused);
 }
 
 TEST(BoardCore, AbortStopsASweepAndClearsEveryStatusBit) {
@@ -204,12 +205,12 @@ TEST(BoardCore, AbortStopsASweepAndClearsEveryStatusBit) {
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
     core.step();
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
-    ASSERT_TRUE(core.registers().error);
+    ASSERT_TRUE(core.status().error);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
     EXPECT_EQ(core.phase(), BoardCore::Phase::Idle);
-    EXPECT_EQ(core.registers().status(), 0u);
-    EXPECT_EQ(core.registers().error_cause, ControlRegisters::kNoError);
-    EXPECT_FALSE(core.registers().interrupt());
+    EXPECT_EQ(core.status().bits(), 0u);
+    EXPECT_EQ(core.status().error_cause, ControlRegisters::kNoError);
+    EXPECT_FALSE(core.interrupt());
     EXPECT_EQ(core.write_register(ControlRegisters::kObjectCount, 4), BoardCore::Write::kDone) << "idle again";
 }
 
@@ -230,6 +231,79 @@ TEST(BoardConfig, RejectsAbsurdSettings) {
     BoardConfig ok;
     EXPECT_NO_THROW(ok.validate());
     EXPECT_EQ(ok.pipeline_latency(), 4u);
+}
+
+}  // namespace
+}  // namespace cdvp
+
+namespace cdvp {
+namespace {
+
+void load(BoardCore& core, const std::vector<FloatBox>& boxes) {
+    for (uint32_t i = 0; i < boxes.size(); ++i) {
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
+            const float v = c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3];
+            core.write_coordinate(static_cast<Coordinate>(c), i, ComparisonUnit::as_bits(v));
+        }
+    }
+    core.write_register(ControlRegisters::kObjectCount, static_cast<uint32_t>(boxes.size()));
+    core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
+}
+
+// A board whose engine computed each segment ahead answers, at every edge,
+// exactly what a board stepped edge by edge shows: the host may look at any time.
+TEST(BoardCore, ASegmentComputedAheadAnswersForEveryEdge) {
+    std::mt19937 rng(23);
+    for (uint32_t depth : {1u, 5u, 64u}) {
+        BoardConfig config;
+        config.m = 3;
+        config.collector.fifo_depth = 5;
+        config.collector.buffer_depth = depth;
+        const auto boxes = random_boxes(90, 6.0f, 3.0f, rng);
+        BoardCore stepped(config, 90), ahead(config, 90);
+        load(stepped, boxes);
+        load(ahead, boxes);
+        uint32_t segments = 0;
+        for (;;) {
+            ++segments;
+            const uint64_t edges = ahead.segment_edges();
+            for (uint64_t e = 1; e <= edges; ++e) {
+                stepped.step();
+                ahead.advance_to(e);
+                ASSERT_EQ(ahead.counters(), stepped.counters()) << "edge " << e << " of segment " << segments;
+                ASSERT_EQ(ahead.status().bits(), stepped.status().bits()) << "edge " << e;
+            }
+            ASSERT_FALSE(stepped.running()) << "the stepped board ends its segment at the same edge";
+            ASSERT_EQ(ahead.buffered_pairs(), stepped.buffered_pairs());
+            for (uint32_t k = 0; k < ahead.buffered_pairs(); ++k) {
+                ASSERT_EQ(ahead.buffered_pair(k), stepped.buffered_pair(k));
+            }
+            if (stepped.phase() == BoardCore::Phase::Done) break;
+            stepped.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
+            ahead.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
+        }
+        if (depth < 64) EXPECT_GT(segments, 10u) << "many overflow pauses";
+    }
+}
+
+// ABORT in the middle of a segment computed ahead keeps what the buffer held then.
+TEST(BoardCore, AbortAfterComputingAheadKeepsTheBufferOfThatEdge) {
+    BoardConfig config;
+    config.m = 2;
+    const std::vector<FloatBox> boxes(60, FloatBox{{0, 0, 0}, {1, 1, 1}});
+    BoardCore stepped(config, 60), ahead(config, 60);
+    load(stepped, boxes);
+    load(ahead, boxes);
+    ASSERT_GT(ahead.segment_edges(), 500u);
+    for (int e = 0; e < 400; ++e) stepped.step();
+    ahead.advance_to(400);
+    const SweepCounters before = stepped.counters();
+    ahead.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
+    stepped.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
+    EXPECT_EQ(ahead.phase(), BoardCore::Phase::Idle);
+    EXPECT_EQ(ahead.counters(), before);
+    ASSERT_EQ(ahead.buffered_pairs(), before.buffered);
+    for (uint32_t k = 0; k < before.buffered; ++k) EXPECT_EQ(ahead.buffered_pair(k), stepped.buffered_pair(k));
 }
 
 }  // namespace

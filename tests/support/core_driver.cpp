@@ -5,9 +5,8 @@
 namespace cdvp::testing {
 
 namespace {
-void drain(const BoardCore& core, PairList& out) {
-    const PairCollector& c = core.collector();
-    for (uint32_t k = 0; k < c.buffer_count(); ++k) out.push_back(c.buffer_entry(k));
+void drain(BoardCore& core, PairList& out) {
+    for (uint32_t k = 0; k < core.buffered_pairs(); ++k) out.push_back(core.buffered_pair(k));
 }
 }  // namespace
 
@@ -36,8 +35,8 @@ CoreRun run_core(BoardCore& core, const std::vector<FloatBox>& boxes) {
         }
     }
     drain(core, run.pairs);
-    run.cycles = core.registers().cycles;
-    run.stalls = core.registers().stalls;
+    run.cycles = core.counters().cycles;
+    run.stalls = core.counters().stalls;
     return run;
 }
 

@@ -1,0 +1,25 @@
+#include "models/board/board_engine.h"
+
+#include <stdexcept>
+
+#include "models/board/clocked_engine.h"
+
+namespace cdvp {
+
+const char* to_string(Fidelity fidelity) {
+    switch (fidelity) {
+        case Fidelity::kCycle: return "cycle";
+        case Fidelity::kFast: return "fast";
+    }
+    return "unknown";
+}
+
+std::unique_ptr<BoardEngine> make_engine(Fidelity fidelity, const BoardConfig& config, uint32_t capacity) {
+    switch (fidelity) {
+        case Fidelity::kCycle: return std::make_unique<ClockedEngine>(config, capacity);
+        case Fidelity::kFast: break;
+    }
+    throw std::invalid_argument(std::string("no ") + to_string(fidelity) + " engine in this build");
+}
+
+}  // namespace cdvp

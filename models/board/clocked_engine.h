@@ -1,0 +1,99 @@
+// The clocked engine: the seed's datapath stepped one clock edge at a time.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "models/address_generator/address_generator.h"
+#include "models/board/board_engine.h"
+#include "models/coordinate_memory/coordinate_memory.h"
+#include "models/pair_collector/pair_collector.h"
+
+namespace cdvp {
+
+// Wires the blocks of the seed's microarchitecture:
+//   address generator -> six 2m-port coordinate memories (1 cycle)
+//   -> comparison unit (compare latency) -> pair FIFO -> pair buffer.
+// Nothing outside the board sees it between host accesses, so a segment may
+// be stepped ahead in bulk (segment_edges()) while what each edge changed is
+// kept: counters_after() then answers for any earlier edge. For waveforms the
+// shell steps it edge by edge instead (advance_to()) and reads the probes.
+class ClockedEngine : public BoardEngine {
+public:
+    // What travels down the pipeline: the row, the first column and the valid
+    // lanes of one address-generator cycle, with the lane hits once compared.
+    struct Slot {
+        enum Kind : uint8_t { kBubble, kSweep, kEnd } kind = kBubble;
+        uint32_t row = 0;
+        uint32_t first_column = 0;
+        uint32_t valid_lanes = 0;
+        uint64_t hits = 0;
+    };
+
+    // capacity: the coordinate memories' depth in boxes.
+    ClockedEngine(const BoardConfig& config, uint32_t capacity);
+
+    std::string name() const override { return "cycle"; }
+    void start(const CoordinateStore& store, uint32_t objects) override;
+    void resume() override;
+    void abort(uint64_t edges) override;
+    uint64_t segment_edges() override;
+    bool ended_by(uint64_t edges) override {
+        advance_to(edges);
+        return state_ != State::kRunning && edges_ <= edges;
+    }
+    bool segment_finishes() override;
+    SweepCounters counters_after(uint64_t edges) override;
+    const PairList& buffer() override { return collector_.buffer(); }
+
+    // Steps the datapath to `edges` edges of the segment, or to its end.
+    void advance_to(uint64_t edges);
+    uint64_t edges_run() const { return edges_; }
+    bool segment_over() const { return state_ != State::kRunning; }
+
+    // Probes for waveforms: the last edge's addresses, compare output and stall.
+    const AddressGenerator::Issue& last_issue() const { return last_issue_; }
+    const Slot& compare_output() const { return line_[head_]; }
+    bool stalled() const { return stalled_; }
+    uint32_t fifo_level() const { return collector_.fifo_level(); }
+    // Block RAM primitives of the six coordinate memories.
+    uint32_t block_rams() const { return kCoordinates * memories_[0].block_rams(); }
+
+private:
+    enum class State : uint8_t { kIdle, kRunning, kPaused, kDone };
+    void step();
+    Slot issue();
+    void stall();
+    uint64_t stalls_through(uint64_t edges) const;
+
+    BoardConfig config_;
+    CoordinateMemories memories_;
+    AddressGenerator address_generator_;
+    ComparisonUnit comparison_unit_;
+    PairCollector collector_;
+
+    State state_ = State::kIdle;
+    // Block RAM stage plus compare stages; head_ is the slot leaving this cycle.
+    std::vector<Slot> line_;
+    uint32_t head_ = 0;
+    bool end_issued_ = false;  // the address generator sent its end marker
+    bool end_seen_ = false;    // the end marker reached the collector
+    bool stalled_ = false;
+    AddressGenerator::Issue last_issue_{};
+
+    // The segment so far: edges run, and the edge (1-based) at which each
+    // buffer entry was written, each pair entered the FIFO and each run of
+    // stall edges began (with its length).
+    uint64_t edges_ = 0;
+    SweepCounters at_segment_start_;
+    std::vector<uint64_t> buffered_at_;
+    std::vector<uint64_t> pushed_at_;
+    struct StallRun {
+        uint64_t first_edge;
+        uint64_t length;
+        uint64_t stalls_before;  // stall edges of the segment before this run
+    };
+    std::vector<StallRun> stall_runs_;
+};
+
+}  // namespace cdvp

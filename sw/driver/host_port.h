@@ -1,0 +1,42 @@
+// What the board driver needs of the host it runs on, and nothing more:
+// programmed I/O on the board's BAR, the host memory the board's DMA engine
+// reaches, the current time, waiting, and the interrupt. The platform's host
+// CPU implements it; the driver includes nothing of the platform or SystemC.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace cdvp {
+
+// Simulated time in femtoseconds (the kernel's resolution).
+using SimTime = uint64_t;
+constexpr double kFsPerNs = 1e6;
+// Nanoseconds as a count of femtoseconds, rounded to the nearest.
+inline SimTime fs_from_ns(double ns) { return static_cast<SimTime>(ns * kFsPerNs + 0.5); }
+inline double ns_from_fs(SimTime fs) { return static_cast<double>(fs) / kFsPerNs; }
+
+class HostPort {
+public:
+    virtual ~HostPort() = default;
+
+    // One programmed-I/O access of whole words at a BAR address; the time the
+    // bus took has passed when it returns. Returns the bus's error text, or
+    // an empty string when the access completed.
+    virtual std::string read(uint64_t address, void* data, uint32_t length) = 0;
+    virtual std::string write(uint64_t address, const void* data, uint32_t length) = 0;
+
+    // Host memory as the CPU sees it (no bus involved): bytes from address on.
+    virtual unsigned char* memory(uint64_t address) = 0;
+    virtual uint64_t memory_size() const = 0;
+
+    virtual SimTime now() const = 0;
+    // The latest time the simulator can represent.
+    virtual SimTime end_of_time() const = 0;
+    // Lets `duration` of host time pass.
+    virtual void wait(SimTime duration) = 0;
+    // Waits until the interrupt handler runs or `timeout` passes, whichever comes first.
+    virtual void wait_for_interrupt(SimTime timeout) = 0;
+};
+
+}  // namespace cdvp
