@@ -9,7 +9,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <set>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -17,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/control_registers/control_registers.h"
+#include "platform/preset_json.h"
 #include "sw/scene/output_text.h"
 #include "sw/scene/scene.h"
 
@@ -111,7 +111,7 @@ public:
         const json& object = section.empty() ? root_ : this->section(section);
         for (const auto& [key, value] : object.items()) {
             if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
-                fail(qualified(section, key) + ": unknown key; did you mean '" + nearest(key, keys) + "'?");
+                fail(qualified(section, excerpt(key)) + ": unknown key; did you mean '" + nearest(key, keys) + "'?");
             }
         }
     }
@@ -122,7 +122,7 @@ public:
         if (field == nullptr) fail(name + ": missing;" + std::string(kForm).substr(1));
         if (!field->is_object()) fail(name + kForm);
         for (const auto& [key, value] : field->items()) {
-            if (key != "value" && key != "source") fail(name + kForm + ", found '" + key + "'");
+            if (key != "value" && key != "source") fail(name + kForm + ", found '" + excerpt(key) + "'");
         }
         const auto value = field->find("value");
         const auto source = field->find("source");
@@ -256,64 +256,7 @@ std::shared_ptr<const BusTiming> read_bus(const PresetReader& r) {
         };
         return read_bus_fields<PcieTiming>(r, kFields);
     }
-    r.fail("bus.type: expected \"pci\" or \"pcie\", got \"" + type + "\"");
-}
-
-// "FILE:LINE:COLUMN" of a byte offset (nlohmann counts from 1).
-std::string position(const std::string& path, const std::string& text, std::size_t byte) {
-    const std::size_t end = std::min(byte == 0 ? 0 : byte - 1, text.size());
-    std::size_t line = 1, column = 1;
-    for (std::size_t k = 0; k < end; ++k) {
-        if (text[k] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
-    return path + ":" + std::to_string(line) + ":" + std::to_string(column);
-}
-
-// Parses the preset text, refusing a key given twice in one object (JSON
-// leaves that open; nlohmann would keep the last silently).
-json parse_preset(const std::string& path, const std::string& text) {
-    struct Level {
-        std::set<std::string> keys;
-        std::string current;
-    };
-    std::vector<Level> levels;
-    std::string duplicate;
-    const json::parser_callback_t check_keys = [&](int, json::parse_event_t event, json& parsed) {
-        if (event == json::parse_event_t::object_start) levels.emplace_back();
-        if (event == json::parse_event_t::object_end && !levels.empty()) levels.pop_back();
-        if (event == json::parse_event_t::key && !levels.empty()) {
-            const std::string key = parsed.get<std::string>();
-            if (!levels.back().keys.insert(key).second && duplicate.empty()) {
-                for (std::size_t k = 0; k + 1 < levels.size(); ++k) duplicate += levels[k].current + ".";
-                duplicate += key;
-            }
-            levels.back().current = key;
-        }
-        return true;
-    };
-    json root;
-    try {
-        root = json::parse(text, check_keys);
-    } catch (const json::parse_error& e) {
-        std::string what = e.what();
-        const std::size_t detail = what.find("syntax error");
-        throw InputError(position(path, text, e.byte) + ": invalid JSON: " +
-                         (detail == std::string::npos ? what : what.substr(detail)));
-    } catch (const json::exception& e) {
-        // A number beyond double's range (out_of_range 406) and the like: the
-        // library gives no position, so the message names the file alone.
-        const std::string what = e.what();
-        const std::size_t detail = what.find("] ");
-        throw InputError(path + ": invalid JSON: " + (detail == std::string::npos ? what : what.substr(detail + 2)));
-    }
-    if (!duplicate.empty()) throw InputError(path + ": " + duplicate + ": key given twice");
-    if (!root.is_object()) throw InputError(path + ": expected a JSON object");
-    return root;
+    r.fail("bus.type: expected \"pci\" or \"pcie\", got \"" + excerpt(type) + "\"");
 }
 
 std::string read_preset_text(const std::string& path, bool is_path, const std::string& name) {
@@ -322,7 +265,7 @@ std::string read_preset_text(const std::string& path, bool is_path, const std::s
         if (is_path) throw InputError(path + ": cannot open: " + std::strerror(errno));
         std::string known;
         for (const std::string& n : board_preset_names()) known += (known.empty() ? "" : ", ") + n;
-        throw InputError("--board: unknown board '" + name + "'; expected one of: " + known);
+        throw InputError("--board: unknown board '" + excerpt(name) + "'; expected one of: " + known);
     }
     if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot open: not a regular file");
     if (static_cast<std::size_t>(status.st_size) > kMaxPresetBytes) {

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <sstream>
 
+#include "sw/scene/output_text.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {
@@ -18,7 +19,7 @@ std::string valid_kinds() {
 }
 
 [[noreturn]] void fail(const std::string& spec, const std::string& what) {
-    throw InputError("--inject: '" + spec + "': " + what);
+    throw InputError("--inject: '" + excerpt(spec) + "': " + what);
 }
 
 // A positive decimal integer up to max, all of text.
@@ -28,7 +29,7 @@ uint64_t parse_count(const std::string& spec, const std::string& key, const std:
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, value);
     if (text.empty() || ec != std::errc() || ptr != end || value < min || value > max) {
-        fail(spec, key + ": expected an integer from " + std::to_string(min) + " to " + std::to_string(max) + ", found '" + text + "'");
+        fail(spec, key + ": expected an integer from " + std::to_string(min) + " to " + std::to_string(max) + ", found '" + excerpt(text) + "'");
     }
     return value;
 }
@@ -46,7 +47,7 @@ FaultSpec parse_one(const std::string& spec) {
             known = true;
         }
     }
-    if (!known) fail(spec, "unknown fault kind '" + kind_text + "'; expected one of: " + valid_kinds());
+    if (!known) fail(spec, "unknown fault kind '" + excerpt(kind_text) + "'; expected one of: " + valid_kinds());
     bool has_count = false;
     std::stringstream where(spec.substr(at + 1));
     for (std::string item; std::getline(where, item, ',');) {
@@ -60,7 +61,7 @@ FaultSpec parse_one(const std::string& spec) {
             parsed.count = static_cast<uint32_t>(parse_count(spec, key, value, 1, kMaxCount));
             has_count = true;
         } else {
-            fail(spec, "unexpected '" + item + "'; expected frame=N and optionally n=K, once each");
+            fail(spec, "unexpected '" + excerpt(item) + "'; expected frame=N and optionally n=K, once each");
         }
     }
     if (!has_frame) fail(spec, "expected frame=N after '@'");

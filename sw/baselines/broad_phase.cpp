@@ -5,6 +5,7 @@
 #include "sw/baselines/brute_force.h"
 #include "sw/baselines/bullet_broad_phase.h"
 #include "sw/baselines/soa_broad_phase.h"
+#include "sw/scene/output_text.h"
 
 namespace cdvp {
 
@@ -32,7 +33,7 @@ std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name) {
     for (const std::string& known : broad_phase_names()) {
         expected += (expected.empty() ? "" : ", ") + known;
     }
-    throw std::invalid_argument("unknown baseline '" + name + "'; expected one of: " + expected);
+    throw std::invalid_argument("unknown baseline '" + excerpt(name) + "'; expected one of: " + expected);
 }
 
 }  // namespace cdvp

@@ -1,6 +1,11 @@
 #include "sw/cli/frame_source.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -34,35 +39,77 @@ uint64_t frame_digest(const Frame& frame) {
     return hash;
 }
 
+// A pipe's bytes (a FIFO, /dev/stdin, a process substitution) copied to an
+// unlinked temporary file in $TMPDIR, so that the trace can be read twice
+// like a file without its frames in memory. Unlinked at once: nothing is left
+// behind, whatever ends the process. Throws InputError.
+class Spool {
+public:
+    explicit Spool(const std::string& path) {
+        const char* tmp = std::getenv("TMPDIR");
+        const std::string directory = tmp != nullptr && tmp[0] != '\0' ? tmp : "/tmp";
+        fd_ = open(directory.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+        if (fd_ < 0) {  // a file system without O_TMPFILE
+            std::string name = directory + "/cdvp-trace.XXXXXX";
+            fd_ = mkstemp(name.data());
+            if (fd_ >= 0) unlink(name.c_str());
+        }
+        if (fd_ < 0) fail(path, "cannot create a temporary file in " + directory, errno);
+        std::ifstream in = open_input(path);
+        std::vector<char> buffer(1 << 16);
+        while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0) {
+            const char* data = buffer.data();
+            for (std::size_t left = static_cast<std::size_t>(in.gcount()); left > 0;) {
+                const ssize_t put = write(fd_, data, left);
+                if (put < 0 && errno == EINTR) continue;
+                if (put < 0) fail(path, "cannot copy the pipe to a temporary file in " + directory, errno);
+                data += put;
+                left -= static_cast<std::size_t>(put);
+            }
+        }
+        if (in.bad()) fail(path, "cannot read", errno);
+    }
+    ~Spool() { close(fd_); }
+    Spool(const Spool&) = delete;
+    Spool& operator=(const Spool&) = delete;
+    // A path that opens the file anew, at its start.
+    std::string path() const { return "/proc/self/fd/" + std::to_string(fd_); }
+
+private:
+    [[noreturn]] void fail(const std::string& path, const std::string& what, int err) {
+        if (fd_ >= 0) close(fd_);
+        throw InputError(path + ": " + what + ": " + std::strerror(err));
+    }
+    int fd_ = -1;
+};
+
 // The trace is read twice: once up front, so that bad input fails before
 // anything is simulated or written and the frame count and the largest frame
 // are known; then frame by frame while the board runs, so memory holds one
 // frame, not the file. Each frame of the second reading must equal the
 // first's (by digest), or the run fails as bad input. A pipe cannot be read
-// twice; its frames are kept.
+// twice: it is spooled to a temporary file first.
 class TraceSource : public FrameSource {
 public:
     TraceSource(const std::string& path, const TraceLimits& limits) : path_(path) {
         std::error_code ec;
-        const bool rereadable = std::filesystem::is_regular_file(path, ec);
-        in_ = open_input(path);
+        if (!std::filesystem::is_regular_file(path, ec) && !std::filesystem::is_directory(path, ec) &&
+            std::filesystem::exists(path, ec)) {
+            spool_.emplace(path);
+        }
+        const std::string readable = spool_ ? spool_->path() : path;
+        in_ = open_input(readable);
         TraceReader check(in_, path_, limits);
         while (std::optional<Frame> frame = check.next_frame()) {
             max_objects_ = std::max(max_objects_, frame->boxes.size());
             digests_.push_back(frame_digest(*frame));
-            if (!rereadable) kept_.push_back(std::move(*frame));
+            numbers_.push_back(frame->number);
         }
-        if (rereadable) {
-            in_ = open_input(path);
-            // Bounds memory should the file grow in between.
-            reader_.emplace(in_, path_, TraceLimits{max_objects_, "the largest frame of the first reading"});
-        }
+        in_ = open_input(readable);
+        // Bounds memory should the file grow in between.
+        reader_.emplace(in_, path_, TraceLimits{max_objects_, "the largest frame of the first reading"});
     }
     std::optional<Frame> next() override {
-        if (!reader_) {
-            if (delivered_ == kept_.size()) return std::nullopt;
-            return std::move(kept_[delivered_++]);
-        }
         std::optional<Frame> frame;
         try {
             frame = reader_->next_frame();
@@ -81,6 +128,12 @@ public:
         return frame;
     }
     std::size_t frame_count() const override { return digests_.size(); }
+    std::optional<uint64_t> last_frame() const override {
+        return numbers_.empty() ? std::nullopt : std::optional<uint64_t>(numbers_.back());
+    }
+    bool has_frame(uint64_t number) const override {
+        return std::binary_search(numbers_.begin(), numbers_.end(), number);  // ascending, as the reader checks
+    }
     std::size_t max_objects() const override { return max_objects_; }
     std::string describe() const override { return "trace " + path_; }
 
@@ -90,10 +143,11 @@ private:
     }
 
     std::string path_;
+    std::optional<Spool> spool_;  // a pipe's copy
     std::ifstream in_;
     std::optional<TraceReader> reader_;
     std::vector<uint64_t> digests_;  // one a frame, from the first reading
-    std::vector<Frame> kept_;        // a pipe's frames
+    std::vector<uint64_t> numbers_;  // the frames' numbers, from the first reading
     std::size_t delivered_ = 0;
     std::size_t max_objects_ = 0;
 };
@@ -109,6 +163,10 @@ public:
     }
     void feed(const PairList& pairs) override { scene_.step(pairs); }
     std::size_t frame_count() const override { return frames_; }
+    std::optional<uint64_t> last_frame() const override {
+        return frames_ == 0 ? std::nullopt : std::optional<uint64_t>(frames_ - 1);
+    }
+    bool has_frame(uint64_t number) const override { return number < frames_; }
     std::size_t max_objects() const override { return config_.objects; }
     std::string describe() const override {
         return "spheres objects=" + std::to_string(config_.objects) + " seed=" + std::to_string(config_.seed);

@@ -24,6 +24,10 @@ public:
     virtual std::size_t frame_count() const = 0;
     // The most boxes any frame holds: the board's memory depth.
     virtual std::size_t max_objects() const = 0;
+    // The number of the last frame (nothing: no frames), and whether a
+    // number is one of the frames' (a trace may skip numbers).
+    virtual std::optional<uint64_t> last_frame() const = 0;
+    virtual bool has_frame(uint64_t number) const = 0;
     // For the report: what the frames come from.
     virtual std::string describe() const = 0;
 };
@@ -34,7 +38,8 @@ TraceLimits board_trace_limits();
 // The frames of a trace file, all checked up front (bad input fails before
 // anything is simulated or written), then read again one frame at a time so
 // memory holds the largest frame, not the file. A frame with more boxes than
-// the board's address map holds fails as bad input naming its line.
+// the board's address map holds fails as bad input naming its line. A pipe
+// is first copied to an unlinked temporary file, so it too is read twice.
 std::unique_ptr<FrameSource> trace_source(const std::string& path, const TraceLimits& limits = board_trace_limits());
 
 // The paper's application: spheres bouncing off the walls and each other,

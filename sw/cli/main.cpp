@@ -8,6 +8,7 @@
 
 #include "platform/kernel.h"
 #include "sw/cli/run_command.h"
+#include "sw/scene/output_target.h"
 #include "sw/scene/output_text.h"
 
 namespace {
@@ -36,22 +37,21 @@ int sc_main(int argc, char** argv) {
         return 2;
     }
     if (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
-        std::cout << kUsage;
-        return 0;
+        return cdvp::print_to_stdout("cdvp", kUsage);
     }
     const std::string command = argv[1];
     if (command == "--version") {
-        std::cout << "cdvp 0.1.0\n";
-        return 0;
+        return cdvp::print_to_stdout("cdvp", "cdvp 0.1.0\n");
     }
     if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
-    std::cerr << "cdvp: unknown command '" << cdvp::printable(command) << "'; expected one of: run (see cdvp --help)\n";
+    std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command) << "'; expected one of: run (see cdvp --help)\n";
     return 2;
 }
 
 // Our own entry point so the SystemC banner is off before the kernel starts;
 // sc_elab_and_sim then calls sc_main as libsystemc's main would.
 int main(int argc, char** argv) {
+    cdvp::reserve_standard_descriptors();
     setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
     const int status = sc_core::sc_elab_and_sim(argc, argv);
     cdvp::after_kernel_returns();

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sw/scene/output_text.h"
+
 namespace cdvp {
 
 namespace {
@@ -24,7 +26,7 @@ std::string describe_range(uint64_t min, uint64_t max) { return std::to_string(m
 
 uint64_t parse_integer_text(const std::string& text, uint64_t min, uint64_t max) {
     const auto refuse = [&] {
-        throw std::invalid_argument("expected an integer from " + describe_range(min, max) + ", got '" + text + "'");
+        throw std::invalid_argument("expected an integer from " + describe_range(min, max) + ", got '" + excerpt(text) + "'");
     };
     // Digits only: no sign, no blanks, no fraction or exponent.
     if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) refuse();
@@ -36,7 +38,7 @@ uint64_t parse_integer_text(const std::string& text, uint64_t min, uint64_t max)
 
 double parse_real_text(const std::string& text, double min, double max) {
     const auto refuse = [&] {
-        throw std::invalid_argument("expected a number from " + describe_range(min, max) + ", got '" + text + "'");
+        throw std::invalid_argument("expected a number from " + describe_range(min, max) + ", got '" + excerpt(text) + "'");
     };
     // strtod skips leading blanks and reads "nan", "inf" and hex: a decimal
     // number starts with a digit, a sign or a point.

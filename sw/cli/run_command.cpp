@@ -2,10 +2,9 @@
 
 #include <unistd.h>
 
-#include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstring>
-#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -17,17 +16,17 @@
 #include <boost/program_options.hpp>
 
 #include "models/address_generator/address_generator.h"
-#include "models/control_registers/control_registers.h"
-#include "models/block_ram/block_ram.h"
 #include "platform/board_preset.h"
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
 #include "sw/baselines/broad_phase.h"
 #include "sw/cli/frame_source.h"
+#include "sw/cli/run_checks.h"
 #include "sw/cli/run_options.h"
 #include "sw/cli/run_report.h"
 #include "sw/scene/conversion.h"
 #include "sw/scene/output_set.h"
+#include "sw/scene/output_target.h"
 #include "sw/scene/output_text.h"
 #include "sw/scene/pairs_csv.h"
 
@@ -58,36 +57,12 @@ void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out
     if (vm.count("pairs-out")) pairs = out.files.add_output("--pairs-out", o.pairs_out);
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
     if (vm.count("vcd")) vcd = out.files.add_output("--vcd", o.vcd, ".vcd", false);
+    // The summary is an output too: committed with the files or not at all.
+    if (!o.quiet) out.files.add_standard_output("standard output");
     out.files.open();
     if (pairs) out.pairs = &out.files.file(*pairs);
     if (report) out.report = &out.files.file(*report);
     if (vcd) out.vcd = &out.files.file(*vcd);
-}
-
-// Board settings are checked by the model; its message names the setting as
-// the preset does ("fifo_depth: expected ..."). The error names where the
-// value came from: the flag if one set it, else the preset file and key.
-void validate_board(const BoardConfig& config, const po::variables_map& vm, const std::string& preset_path) {
-    try {
-        config.validate();
-    } catch (const std::invalid_argument& e) {
-        static const std::pair<const char*, const char*> kFlags[] = {
-            {"m", "m"}, {"clock_mhz", "clock-mhz"}, {"compare_latency_cycles", "compare-latency"},
-            {"fifo_depth", "fifo-depth"}, {"drain_per_cycle", "drain-rate"}, {"pair_buffer_depth", "pair-buffer"}};
-        std::string message = e.what();
-        for (const auto& [setting, flag] : kFlags) {
-            const std::string prefix = std::string(setting) + ":";
-            if (message.rfind(prefix, 0) != 0) continue;
-            const std::string rest = message.substr(prefix.size() - 1);
-            // m is never a preset's: the board's parallelism is the user's choice.
-            const bool from_flag =
-                preset_path.empty() || std::strcmp(setting, "m") == 0 || vm.count(flag) == 0 || !vm[flag].defaulted();
-            message = from_flag ? std::string("--") + flag + rest
-                                : preset_path + ": board." + setting + rest + " (with --m " + std::to_string(config.m) + ")";
-            break;
-        }
-        throw InputError(message);
-    }
 }
 
 void check_source_options(const RunOptions& o, const po::variables_map& vm) {
@@ -98,7 +73,7 @@ void check_source_options(const RunOptions& o, const po::variables_map& vm) {
             if (!vm[flag].defaulted()) throw InputError(std::string("--") + flag + " goes with --scene, not --trace");
         }
     } else if (o.scene != "spheres") {
-        throw InputError("--scene: expected 'spheres', got '" + o.scene + "'");
+        throw InputError("--scene: expected 'spheres', got '" + excerpt(o.scene) + "'");
     }
 }
 
@@ -135,30 +110,9 @@ struct Setup {
     std::string host = "this machine";
     double host_factor = 1.0;
     uint32_t block_rams = 0;  // the FPGA's; 0: unbounded
+    ValueOrigins origins;
     std::vector<std::unique_ptr<BroadPhase>> baselines;
 };
-
-// SystemC counts time in 64-bit femtoseconds (2^64 fs = 5.1 hours). A run
-// whose generous estimate exceeds half of that is refused up front instead
-// of overflowing the kernel's clock mid-run.
-void check_simulated_time(const RunOptions& o, const po::variables_map& vm, const BoardConfig& board,
-                          uint64_t max_objects, uint64_t frame_count) {
-    constexpr double kBudgetSeconds = 9223.0;   // 2^63 fs
-    constexpr double kPerBoxSeconds = 10e-6;    // PIO of a box on the slowest bus, with margin
-    constexpr double kPerFrameSeconds = 1e-3;   // driver calls, interrupts, status reads, with margin
-    const double frames = static_cast<double>(frame_count);
-    const double frame_seconds = static_cast<double>(AddressGenerator::sweep_cycles(max_objects, board.m)) /
-                                     (board.clock_mhz * 1e6) +
-                                 static_cast<double>(max_objects) * kPerBoxSeconds + kPerFrameSeconds;
-    const double total = frames * frame_seconds;
-    if (total <= kBudgetSeconds) return;
-    std::ostringstream message;
-    message << (vm.count("trace") ? "--trace: " + o.trace + ": frames" : std::string("--objects/--frames: a run"))
-            << " of up to " << max_objects << " objects at m=" << board.m << " would simulate about " << std::fixed << std::setprecision(0)
-            << total << " s, more than the " << kBudgetSeconds
-            << " s SystemC's 64-bit femtosecond time allows: use fewer objects or frames, or a larger m";
-    throw InputError(message.str());
-}
 
 // --fidelity: fast unless waveforms are asked for, which need the clocked engine.
 Fidelity fidelity(const RunOptions& o, const po::variables_map& vm) {
@@ -173,27 +127,6 @@ Fidelity fidelity(const RunOptions& o, const po::variables_map& vm) {
         return Fidelity::kCycle;
     }
     return o.fidelity == "cycle" ? Fidelity::kCycle : Fidelity::kFast;
-}
-
-// The --inject specs; a fault that the driver's mode can never meet is refused
-// rather than silently never injected.
-std::vector<FaultSpec> fault_specs(const std::vector<std::string>& texts, const DriverConfig& driver) {
-    std::vector<FaultSpec> specs;
-    for (const std::string& text : texts) {
-        for (const FaultSpec& spec : parse_fault_specs(text)) {
-            const bool needs_dma = spec.kind == FaultKind::kTargetAbort || spec.kind == FaultKind::kMasterAbort ||
-                                   spec.kind == FaultKind::kRetry || spec.kind == FaultKind::kDisconnect ||
-                                   spec.kind == FaultKind::kDmaHang;
-            if (needs_dma && !driver.use_dma) {
-                throw InputError("--inject: '" + to_string(spec) + "' faults a DMA; it needs --transfer dma");
-            }
-            if (spec.kind == FaultKind::kLostIrq && !driver.use_interrupts) {
-                throw InputError("--inject: '" + to_string(spec) + "' loses an interrupt; it needs --wait irq");
-            }
-            specs.push_back(spec);
-        }
-    }
-    return specs;
 }
 
 Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
@@ -218,9 +151,10 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
         setup.block_rams = preset.block_rams;
         preset_path = preset.path;
     }
-    validate_board(setup.platform.board, vm, preset_path);
-    if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, got '" + o.transfer + "'");
-    if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, got '" + o.wait + "'");
+    setup.origins = ValueOrigins::of(o, vm, preset_path, setup.platform.board.clock_mhz);
+    validate_board(setup.platform.board, vm, setup.origins);
+    if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, got '" + excerpt(o.transfer) + "'");
+    if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, got '" + excerpt(o.wait) + "'");
     setup.platform.driver.use_dma = o.transfer == "dma";
     setup.platform.driver.use_interrupts = o.wait == "irq";
     if (vm.count("host-factor")) setup.host_factor = o.host_factor;
@@ -234,43 +168,12 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
         } catch (const std::invalid_argument& e) {
             throw InputError(std::string("--baseline: ") + e.what());
         }
+        // Each is timed once a frame; a repeat would be run twice and reported once.
+        for (std::size_t k = 0; k + 1 < setup.baselines.size(); ++k) {
+            if (setup.baselines[k]->name() == name) throw InputError("--baseline: '" + name + "' given twice");
+        }
     }
     return setup;
-}
-
-// The model keeps every block RAM word: six coordinate memories of m
-// copies each (2m ports from dual-port RAMs). A fixed bound keeps a large
-// --objects and --m from exhausting this machine's memory instead of
-// failing clearly, whatever the machine.
-void check_model_memory(const BoardConfig& board, uint64_t max_objects) {
-    constexpr uint64_t kMaxModelBytes = uint64_t{2} << 30;
-    const uint64_t words = uint64_t{BlockRam::kWords} * CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
-    const uint64_t bytes = uint64_t{kCoordinates} * board.m * words * sizeof(uint32_t);
-    if (bytes <= kMaxModelBytes) return;
-    std::ostringstream message;
-    message << "--objects/--m: the board model for " << max_objects << " objects at m=" << board.m << " needs "
-            << std::fixed << std::setprecision(1) << static_cast<double>(bytes) / (1 << 30)
-            << " GiB of block RAM words (6 coordinate memories x m copies); at most 2 GiB: use fewer objects or a "
-               "smaller m";
-    throw InputError(message.str());
-}
-
-// The scene must fit the board's block RAMs, this machine's memory and
-// SystemC's time.
-void check_scene_fits(const RunOptions& o, const po::variables_map& vm, const Setup& setup, uint64_t max_objects,
-                      uint64_t frame_count) {
-    check_model_memory(setup.platform.board, max_objects);
-    check_simulated_time(o, vm, setup.platform.board, max_objects, frame_count);
-    const uint64_t needed = uint64_t{kCoordinates} * setup.platform.board.m *
-                            CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
-    if (setup.block_rams != 0 && needed > setup.block_rams) {
-        const uint64_t per_m = uint64_t{kCoordinates} * std::max<uint32_t>(1, CascadedBlockRam::primitives_for(
-                                                                                   static_cast<uint32_t>(max_objects)));
-        throw InputError("--m: m=" + std::to_string(setup.platform.board.m) + " needs " + std::to_string(needed) +
-                         " block RAMs for " + std::to_string(max_objects) + " objects; " + setup.board + " has " +
-                         std::to_string(setup.block_rams) + " (largest m that fits: " +
-                         std::to_string(setup.block_rams / per_m) + ")");
-    }
 }
 
 // Times each baseline natively on the frame and checks it finds the board's pairs.
@@ -293,7 +196,7 @@ std::map<std::string, BaselineTime> run_baselines(Setup& setup, const std::vecto
 }
 
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out) {
-    RunSummary run;
+    RunConfig run;
     run.config = setup.platform.board;
     run.source = source.describe();
     run.capacity = static_cast<uint32_t>(source.max_objects());
@@ -310,6 +213,14 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.block_rams = platform.board().core().block_rams();
     run.bus = platform.bus_timing().describe();
     if (out.pairs) write_pairs_header(out.pairs->stream());
+    // Every output is written a frame at a time: memory stays flat however
+    // long the run.
+    std::optional<ReportWriter> report;
+    if (out.report) {
+        report.emplace(out.report->stream());
+        report->begin(run);
+    }
+    RunTotals totals;
 
     Progress progress(source.frame_count(), !o.quiet);
     const auto wall_start = std::chrono::steady_clock::now();
@@ -319,7 +230,10 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         // by an ordinary return (see OutputFile::try_finish); the outputs'
         // destructors discard their temporaries.
         FrameFault fault;
+        const auto sim_start = std::chrono::steady_clock::now();
         const FrameResult* frame_result = platform.try_run_frame(boxes, frame->number, fault);
+        const double sim_wall_ns =
+            std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - sim_start).count();
         if (frame_result == nullptr) {
             std::cerr << "cdvp run: frame " << frame->number << ": " << printable(fault.message) << '\n';
             return fault.kind == FrameFault::Kind::kDevice ? kExitDeviceFault : kExitBadInput;
@@ -327,37 +241,55 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         const FrameResult& result = *frame_result;
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
-                         AddressGenerator::sweep_cycles(boxes.size(), run.config.m), result.phases, {}};
+                         AddressGenerator::sweep_cycles(boxes.size(), run.config.m), result.phases, {}, sim_wall_ns};
         if (!setup.baselines.empty()) stats.baselines = run_baselines(setup, boxes, sorted(result.pairs), frame->number);
-        run.frames.push_back(std::move(stats));
+        if (report) report->frame(stats);
+        totals.add(stats);
         source.feed(result.pairs);
-        progress.update(run.frames.size());
+        progress.update(totals.frames());
     }
-    run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     platform.close_trace();
 
-    if (out.report) out.report->stream() << report_json(run).dump(2) << '\n';
+    if (report) report->end(totals);
+    if (!o.quiet) {
+        std::ostringstream summary;
+        print_summary(summary, run, totals, wall_seconds);
+        out.files.set_standard_output(summary.str());
+    }
     // Reported by value, not thrown: see OutputFile::try_finish.
     if (const std::optional<std::string> error = out.files.try_commit()) {
         std::cerr << "cdvp run: " << printable(*error) << '\n';
         return 2;
     }
-    if (!o.quiet) print_summary(std::cout, run);
     return 0;
 }
 
 }  // namespace
 
+int print_to_stdout(const std::string& program, const std::string& text) {
+    if (standard_descriptor_was_closed(STDOUT_FILENO)) {
+        std::cerr << program << ": standard output: closed when cdvp started; expected it open\n";
+        return kExitBadInput;
+    }
+    errno = 0;
+    std::cout << text << std::flush;
+    if (std::cout) return kExitDone;
+    std::cerr << program << ": standard output: cannot write: " << std::strerror(errno != 0 ? errno : EIO) << '\n';
+    return kExitBadInput;
+}
+
 int run_command(int argc, char** argv) {
-    for (int k = 1; k < argc; ++k) {
+    // After "--" every argument is positional, so a "--help" there is a stray word.
+    for (int k = 1; k < argc && std::strcmp(argv[k], "--") != 0; ++k) {
         if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
-            std::cout << run_options_help() << '\n';
-            return 0;
+            return print_to_stdout("cdvp run", run_options_help() + '\n');
         }
     }
     try {
         RunOptions o;
         const po::variables_map vm = parse_run_options(argc, argv, o);
+        check_path_lengths(o, vm);
         // Outputs first: a path that cannot be written, or that names an
         // input or another output, is refused before any work.
         Outputs out;
@@ -366,10 +298,27 @@ int run_command(int argc, char** argv) {
         Setup setup = make_setup(o, vm);
         // A generated scene is checked before it is generated (millions of
         // spheres take a while to place), a trace once it is read.
-        if (vm.count("scene")) check_scene_fits(o, vm, setup, o.objects, o.frames);
+        const BoardConfig& board = setup.platform.board;
+        if (vm.count("scene")) {
+            check_scene_fits(o, vm, board, setup.block_rams, setup.origins, o.objects, o.frames);
+            const std::optional<uint64_t> last = o.frames > 0 ? std::optional<uint64_t>(o.frames - 1) : std::nullopt;
+            check_inject_frames(setup.platform.faults, last, [](uint64_t) { return true; },
+                                "--frames " + std::to_string(o.frames));
+        }
         std::unique_ptr<FrameSource> source = open_source(o, vm);
-        check_scene_fits(o, vm, setup, source->max_objects(), source->frame_count());
+        check_scene_fits(o, vm, board, setup.block_rams, setup.origins, source->max_objects(), source->frame_count());
+        check_inject_frames(setup.platform.faults, source->last_frame(),
+                            [&source](uint64_t n) { return source->has_frame(n); }, source->describe());
         return simulate(o, *source, setup, out);
+    } catch (po::error_with_option_name& e) {
+        // boost quotes an unknown option as typed: keep a huge one short.
+        const std::string name = e.get_option_name();
+        if (name.size() > kExcerptBytes) {
+            e.set_option_name("");  // boost then quotes the original token
+            e.set_original_token(excerpt(name));
+        }
+        std::cerr << "cdvp run: " << printable(e.what()) << " (see cdvp run --help)\n";
+        return 2;
     } catch (const po::error& e) {
         std::cerr << "cdvp run: " << printable(e.what()) << " (see cdvp run --help)\n";
         return 2;

@@ -1,6 +1,8 @@
 // `cdvp run`: simulate frames on the virtual board.
 #pragma once
 
+#include <string>
+
 namespace cdvp {
 
 // Exit statuses of cdvp (README: exit status; docs/numerics.md).
@@ -11,5 +13,9 @@ constexpr int kExitDeviceFault = 3;  // the simulated system faulted (bus, DMA, 
 
 // Returns the process exit status (above).
 int run_command(int argc, char** argv);
+
+// Prints 'text' (help, version) on standard output: kExitDone, or
+// kExitBadInput with one line on stderr when it cannot be written.
+int print_to_stdout(const std::string& program, const std::string& text);
 
 }  // namespace cdvp

@@ -4,6 +4,7 @@
 
 #include "models/control_registers/control_registers.h"
 #include "sw/cli/number_option.h"
+#include "sw/scene/output_text.h"
 #include "sw/scene/scene.h"
 
 namespace po = boost::program_options;
@@ -86,7 +87,7 @@ po::variables_map parse_run_options(int argc, char** argv, RunOptions& options) 
             .style(po::command_line_style::default_style & ~po::command_line_style::allow_guessing)
             .run();
     for (const std::string& stray : po::collect_unrecognized(parsed.options, po::include_positional)) {
-        throw InputError("unexpected argument '" + stray + "'");
+        throw InputError("unexpected argument '" + excerpt(stray) + "'");
     }
     po::variables_map vm;
     po::store(parsed, vm);

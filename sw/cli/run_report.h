@@ -1,4 +1,7 @@
-// The JSON report of `cdvp run` and its terminal summary.
+// The JSON report of `cdvp run` and its terminal summary. Both are written
+// without keeping the run's frames: the report a frame at a time, the summary
+// from running totals and the first few frames, so memory stays flat however
+// many frames a run has.
 #pragma once
 
 #include <cstdint>
@@ -6,8 +9,6 @@
 #include <ostream>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "models/board/board_config.h"
 #include "sw/driver/board_driver.h"
@@ -26,9 +27,11 @@ struct FrameStats {
     uint64_t sweep_cycles = 0;  // S(N, m)
     FramePhases phases;         // simulated; compute_cycles, stall_cycles, overflow_pauses inside
     std::map<std::string, BaselineTime> baselines;
+    double sim_wall_ns = 0;     // the simulator's own wall time for the frame (no file I/O, no baselines)
 };
 
-struct RunSummary {
+// What the run is: its scene, board, bus, host and driver settings.
+struct RunConfig {
     BoardConfig config;
     uint32_t capacity = 0;
     uint32_t block_rams = 0;
@@ -43,12 +46,60 @@ struct RunSummary {
     std::string fidelity = "cycle";
     std::vector<std::string> baseline_names;
     std::vector<std::string> inject;  // fault specs, as parsed
-    std::vector<FrameStats> frames;
-    double wall_seconds = 0.0;
 };
 
-nlohmann::json report_json(const RunSummary& run);
+// The frames of a run folded as they come: counts and sums for the totals
+// and the steady-state means (which leave out the first frame when there are
+// more), and the first rows of the summary's table.
+class RunTotals {
+public:
+    static constexpr std::size_t kRowsShown = 10;
+    static constexpr int kPhases = 7;  // upload, start, compute, irq, readback, driver, total
+
+    void add(const FrameStats& frame);
+
+    uint64_t frames() const { return frames_; }
+    uint64_t frames_in_means() const { return frames_ > 1 ? frames_ - 1 : frames_; }
+    const std::vector<FrameStats>& shown() const { return shown_; }
+    uint64_t pairs() const { return pairs_; }
+    uint64_t cycles() const { return cycles_; }
+    uint64_t stalls() const { return stalls_; }
+    uint64_t last_objects() const { return last_objects_; }
+    // Mean of phase k (kPhaseNames order) over the frames in the means.
+    double mean_phase(int k) const;
+    std::map<std::string, BaselineTime> mean_baselines() const;
+
+private:
+    // Sums over the first frame and over the frames after it, kept apart so
+    // the means add the same frames in the same order whatever the count.
+    struct Sums {
+        double phases[kPhases] = {};
+        std::map<std::string, BaselineTime> baselines;
+    };
+    uint64_t frames_ = 0, pairs_ = 0, cycles_ = 0, stalls_ = 0, last_objects_ = 0;
+    Sums first_, rest_;
+    std::vector<FrameStats> shown_;
+};
+
+// The phase keys of a frame in the report, in RunTotals' order.
+extern const char* const kPhaseNames[RunTotals::kPhases];
+
+// Writes the report as the run goes: begin() the configuration, frame() each
+// frame, end() the summary. The text is what nlohmann's dump(2) gives for the
+// whole document, followed by a line end.
+class ReportWriter {
+public:
+    explicit ReportWriter(std::ostream& out) : out_(out) {}
+    void begin(const RunConfig& run);
+    void frame(const FrameStats& frame);
+    void end(const RunTotals& totals);
+
+private:
+    std::ostream& out_;
+    bool any_frame_ = false;
+};
+
 // The short table printed after a run.
-void print_summary(std::ostream& out, const RunSummary& run);
+void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, double wall_seconds);
 
 }  // namespace cdvp

@@ -11,13 +11,12 @@
 #include <string>
 #include <utility>
 
+#include "sw/scene/output_text.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {
 
 namespace {
-
-constexpr std::size_t kMaxQuoted = 40;
 
 bool is_blank_char(char c) {
     return c == ' ' || c == '\t';
@@ -35,18 +34,7 @@ std::string_view trim(std::string_view s) {
 
 }  // namespace
 
-std::string shorten_found(std::string_view text) {
-    std::string out;
-    std::size_t n = text.size() > kMaxQuoted ? kMaxQuoted - 3 : text.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        unsigned char c = static_cast<unsigned char>(text[i]);
-        out += (c < 0x20 || c == 0x7f) ? '?' : text[i];
-    }
-    if (n < text.size()) {
-        out += "...";
-    }
-    return out;
-}
+std::string shorten_found(std::string_view text) { return excerpt(std::string(text)); }
 
 std::string quote_found(std::string_view text) {
     return "'" + shorten_found(text) + "'";

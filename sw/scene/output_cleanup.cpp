@@ -50,7 +50,8 @@ void install_handlers() {
 
 }  // namespace
 
-const int TemporaryRegistry::kSignals[4] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+const int TemporaryRegistry::kSignals[12] = {SIGINT,  SIGTERM, SIGHUP,  SIGPIPE, SIGQUIT,   SIGALRM,
+                                             SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF};
 
 int TemporaryRegistry::hold(const std::string& path) {
     if (path.size() >= PATH_MAX) throw std::length_error(path + ": path too long for a temporary");

@@ -1,7 +1,9 @@
-// Temporaries that must not outlive the process: when it is killed by
-// SIGINT, SIGTERM, SIGHUP or SIGPIPE, a signal handler unlinks every
-// registered path and re-raises the signal, so the process still ends with
-// the conventional status 128+signal.
+// Temporaries that must not outlive the process: when it is killed by a
+// signal whose default action ends it (SIGINT, SIGTERM, SIGHUP, SIGPIPE,
+// SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU and SIGXFSZ from ulimit, SIGVTALRM,
+// SIGPROF), a signal handler unlinks every registered path and re-raises the
+// signal, so the process still ends with the conventional status 128+signal.
+// SIGKILL cannot be caught: its temporaries stay (named *.part-*).
 #pragma once
 
 #include <csignal>
@@ -19,7 +21,7 @@ public:
     // Forgets the slot (the path was renamed or removed); -1 is ignored.
     static void release(int slot) noexcept;
     // The signals whose default action the handler keeps.
-    static const int kSignals[4];
+    static const int kSignals[12];
 };
 
 // Blocks the cleanup signals for its lifetime, so that a commit's renames

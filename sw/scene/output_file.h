@@ -1,8 +1,8 @@
 // An output file that appears at its final path only once complete: data go
 // to a temporary file beside the file the path leads to (through symbolic
 // links), renamed over it by commit(). Temporaries are removed when the
-// object is destroyed uncommitted and when the process is killed by SIGINT,
-// SIGTERM, SIGHUP or SIGPIPE (see output_cleanup.h).
+// object is destroyed uncommitted and when the process is killed by a
+// catchable signal (see output_cleanup.h).
 #pragma once
 
 #include <fstream>

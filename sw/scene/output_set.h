@@ -30,11 +30,22 @@ public:
     void open();
     OutputFile& file(std::size_t index) { return files_.at(index); }
 
-    // Finishes every file, then publishes them all: a device is written
-    // first, then each regular file renamed into place. If any step fails,
-    // the renames already done are undone (the old files restored from
-    // their hard-link backups, new ones removed) before the InputError
-    // propagates. Signals are held back meanwhile.
+    // Standard output as one more output of the run (the summary): checked
+    // by open() like the others (open when cdvp started; a regular file
+    // behind it is no input and no other output, unless written through the
+    // same descriptor), and written by commit() after the devices and before
+    // any rename, so a summary that cannot be printed publishes no file.
+    void add_standard_output(std::string label);
+    void set_standard_output(std::string text);
+
+    // Finishes every file, then publishes them all: devices, FIFOs and
+    // descriptors are written first, then standard output, then each regular
+    // file renamed into place. If any step fails, the renames already done
+    // are undone (the old files restored from their hard-link backups, new
+    // ones removed) before the InputError propagates. Signals are held back
+    // during the renames only, so a run stuck on a FIFO without a reader can
+    // still be interrupted; one arriving during the renames is delivered
+    // after them, with every output in place.
     void commit();
     // The same without exceptions (see OutputFile::try_finish): the error
     // message ("LABEL: PATH: cannot write: REASON"), or nothing on success.
@@ -47,6 +58,8 @@ private:
     };
     std::vector<Declared> inputs_, outputs_;
     std::deque<OutputFile> files_;  // deque: file() references stay valid
+    std::optional<std::string> stdout_label_;
+    std::string stdout_text_;
 };
 
 }  // namespace cdvp

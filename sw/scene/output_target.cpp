@@ -1,5 +1,6 @@
 #include "sw/scene/output_target.h"
 
+#include <fcntl.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -19,6 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kMaxLinkHops = 40;  // as the kernel's ELOOP limit
+
+bool g_closed_at_start[3] = {false, false, false};
 
 [[noreturn]] void refuse(const std::string& given, const std::string& reason) {
     throw InputError(given + ": cannot write: " + reason);
@@ -49,9 +52,27 @@ void require_writable_directory(const std::string& given, const std::string& dir
 
 }  // namespace
 
+void reserve_standard_descriptors() {
+    for (int fd = 0; fd < 3; ++fd) {
+        if (fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+        // open() takes the lowest free number: this one.
+        if (open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY) == fd) g_closed_at_start[fd] = true;
+    }
+}
+
+bool standard_descriptor_was_closed(int descriptor) {
+    return descriptor >= 0 && descriptor < 3 && g_closed_at_start[descriptor];
+}
+
 OutputTarget resolve_output_target(const std::string& given) {
     if (given.empty()) refuse(given, "empty path");
-    if (given == "-") return resolve_output_target("/dev/stdout");  // the usual spelling of standard output
+    if (given == "-") {  // the usual spelling of standard output
+        try {
+            return resolve_output_target("/dev/stdout");
+        } catch (const InputError& e) {
+            throw InputError("-" + std::string(e.what()).substr(std::strlen("/dev/stdout")));
+        }
+    }
     if (given.back() == '/') refuse(given, "names a directory, expected a file");
     std::string path = given;
     for (int hops = 0;; ++hops) {
@@ -84,6 +105,9 @@ OutputTarget resolve_output_target(const std::string& given) {
                 target.path = path;
                 if (real_parent == "/proc/" + std::to_string(getpid()) + "/fd") {
                     target.descriptor = std::atoi(fs::path(path).filename().c_str());
+                    if (standard_descriptor_was_closed(target.descriptor)) {
+                        refuse(given, "descriptor " + std::to_string(target.descriptor) + " was closed when cdvp started");
+                    }
                 }
                 if (stat(path.c_str(), &target.status) != 0) refuse(given, std::strerror(errno));
                 if (access(path.c_str(), W_OK) != 0) refuse(given, std::strerror(errno));

@@ -27,6 +27,13 @@ struct OutputTarget {
     int descriptor = -1;
 };
 
+// Standard input, output and error closed when the process started (as by
+// `>&-`) are opened on /dev/null, so that no file the process opens takes
+// their numbers and receives what is meant for them; an output that names
+// one of them (/dev/stdout, "-") is then refused. Call first thing in main().
+void reserve_standard_descriptors();
+bool standard_descriptor_was_closed(int descriptor);
+
 // Resolves 'given' ("-" is standard output) and checks it can be written: not a directory, in an
 // existing writable directory, no symbolic-link loop. Throws InputError
 // "GIVEN: cannot write: REASON".

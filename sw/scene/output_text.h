@@ -1,19 +1,26 @@
 // Text from users (file names, keys, values) inside one-line messages.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace cdvp {
 
 // 'text' safe to print on one line: control characters (a newline in a file
-// name, say) become escapes such as \n, \t and \x1b; everything else is kept.
+// name, say) become escapes such as \n, \t and \x1b, and C1 controls in
+// UTF-8 \u0085 and the like; everything else is kept.
 inline std::string printable(const std::string& text) {
     static const char kHex[] = "0123456789abcdef";
     std::string out;
     out.reserve(text.size());
-    for (const char c : text) {
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const char c = text[k];
         const auto byte = static_cast<unsigned char>(c);
-        if (c == '\n') {
+        const auto next = k + 1 < text.size() ? static_cast<unsigned char>(text[k + 1]) : 0;
+        if (byte == 0xc2 && next >= 0x80 && next <= 0x9f) {  // a C1 control in UTF-8 (CSI, NEL, ...)
+            out += std::string("\\u00") + kHex[next >> 4] + kHex[next & 15];
+            ++k;
+        } else if (c == '\n') {
             out += "\\n";
         } else if (c == '\t') {
             out += "\\t";
@@ -24,6 +31,18 @@ inline std::string printable(const std::string& text) {
         }
     }
     return out;
+}
+
+// A user-supplied value (an option's argument, a preset string, a trace
+// field) quoted in a message: printable(), cut to its first kExcerptBytes
+// bytes followed by "... (N bytes)" when longer, so that a 100 KB value still
+// gives a short one-line message. The cut never splits a UTF-8 sequence.
+constexpr std::size_t kExcerptBytes = 60;
+inline std::string excerpt(const std::string& text) {
+    if (text.size() <= kExcerptBytes) return printable(text);
+    std::size_t cut = kExcerptBytes;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    return printable(text.substr(0, cut)) + "... (" + std::to_string(text.size()) + " bytes)";
 }
 
 }  // namespace cdvp

@@ -68,10 +68,27 @@ TEST_F(CliFaults, FatalFaultsExitThreeNamingTheFrameAndLeaveNoOutput) {
     }
 }
 
-TEST_F(CliFaults, AFaultInAFrameThatNeverRunsChangesNothing) {
-    const std::string clean = clean_pairs();
-    ASSERT_EQ(run(kScene + " --inject dma-hang@frame=4 --pairs-out p.csv").status, 0);
-    EXPECT_EQ(slurp(dir_ / "p.csv"), clean);
+TEST_F(CliFaults, AFaultInAFrameThatNeverRunsIsRefusedBeforeAnyWork) {
+    const Result r = run(kScene + " --inject dma-hang@frame=4 --pairs-out p.csv --report r.json");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "cdvp run: --inject: 'dma-hang@frame=4': frame 4 is past the run's last frame 3 (--frames 4)\n");
+    EXPECT_EQ(files(), std::vector<std::string>{});
+    const Result none = run("run --scene spheres --frames 0 --inject retry@frame=0 --quiet");
+    EXPECT_EQ(none.status, 2);
+    EXPECT_EQ(none.err, "cdvp run: --inject: 'retry@frame=0': frame 0 never runs: the run has no frames (--frames 0)\n");
+}
+
+TEST_F(CliFaults, ATraceFrameNumberTheTraceDoesNotHoldIsRefused) {
+    write("t.csv", "frame,id,min_x,min_y,min_z,max_x,max_y,max_z\n"
+                   "5,1,0,0,0,1,1,1\n5,2,0,0,0,1,1,1\n9,1,0,0,0,1,1,1\n9,2,0,0,0,1,1,1\n");
+    EXPECT_EQ(run("run --trace t.csv --quiet --inject retry@frame=9").status, 0) << "the trace's own numbers";
+    const Result past = run("run --trace t.csv --quiet --inject retry@frame=10 --pairs-out p.csv");
+    EXPECT_EQ(past.status, 2);
+    EXPECT_EQ(past.err, "cdvp run: --inject: 'retry@frame=10': frame 10 is past the run's last frame 9 (trace t.csv)\n");
+    const Result gap = run("run --trace t.csv --quiet --inject retry@frame=7 --pairs-out p.csv");
+    EXPECT_EQ(gap.status, 2);
+    EXPECT_EQ(gap.err, "cdvp run: --inject: 'retry@frame=7': frame 7 is not one of the run's frames (trace t.csv)\n");
+    EXPECT_EQ(files(), std::vector<std::string>{"t.csv"});
 }
 
 TEST_F(CliFaults, SpecsTheDriverCannotMeetAreBadInput) {

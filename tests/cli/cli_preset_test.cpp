@@ -45,6 +45,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadPreset{"BadJson", "\"host\": {", "\"host\" {", "", ":32:10: invalid JSON: syntax error"},
         BadPreset{"FifoTooSmallForM", "\"fifo_depth\": {\"value\": 512", "\"fifo_depth\": {\"value\": 4", "--m 8",
                   ": board.fifo_depth: expected 2m-1 = 15 (one cycle's hits) to 1048576 pairs, got 4 (with --m 8)"},
+        BadPreset{"ControlCharacterInName", "\"name\": \"adm-xrc-ii\"", "\"name\": \"adm\\u001b[2J\"", "",
+                  ": name: control character \\x1b in a string; expected printable text"},
+        BadPreset{"RawControlCharacterInHostName", "\"name\": \"pentium4-1.8\"", "\"name\": \"p4\x07\"", "",
+                  ": host.name: control character \\x07 in a string; expected printable text"},
         BadPreset{"ModelRule", "\"width_bits\": {\"value\": 32", "\"width_bits\": {\"value\": 48", "",
                   ": bus.width_bits: expected 32 or 64, got 48"}),
     [](const ::testing::TestParamInfo<BadPreset>& info) { return info.param.name; });

@@ -181,6 +181,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"SmallFifo", nullptr, "--m 8 --fifo-depth 4", "--fifo-depth: expected 2m-1 = 15"},
         BadInput{"UnknownBoard", nullptr, "--board nope", "--board: unknown board 'nope'; expected one of: adm-xrc-ii"},
         BadInput{"UnknownBaseline", nullptr, "--baseline sap,fast", "--baseline: unknown baseline 'fast'"},
+        BadInput{"RepeatedBaseline", nullptr, "--baseline sap,dbvt,sap", "--baseline: 'sap' given twice"},
         BadInput{"BadTransfer", nullptr, "--transfer usb", "--transfer: expected dma or pio"},
         BadInput{"BadWait", nullptr, "--wait sleep", "--wait: expected irq or poll"},
         BadInput{"TooManyBlockRams", nullptr, "--board adm-xrc-ii --m 30", "(largest m that fits: 24)"},
@@ -215,9 +216,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"ZeroHostFactor", nullptr, "--host-factor 0", "--host-factor: expected a number from 0.001 to 1000"},
         BadInput{"NegativeHostFactor", nullptr, "--host-factor -1", "got '-1'"},
         BadInput{"RunTooLongForSystemC", nullptr, "--scene spheres --objects 4000000 --m 1",
-                 "SystemC's 64-bit femtosecond time allows"},
+                 "a run of 1 frame (the default of --frames) of up to 4000000 objects (--objects) at --m 1 and "
+                 "66 MHz (the default of --clock-mhz) would simulate about 121252 s, more than the 9223 s SystemC's "
+                 "64-bit femtosecond time allows"},
         BadInput{"ModelTooLargeForMemory", nullptr, "--scene spheres --objects 4194304 --m 32",
-                 "--objects/--m: the board model for 4194304 objects at m=32 needs 3.0 GiB of block RAM words"},
+                 "the board model for 4194304 objects (--objects) at --m 32 needs 3.0 GiB of block RAM words"},
         // Words: no stray arguments, no abbreviations, no empty paths or names.
         BadInput{"StrayArgument", nullptr, "extra", "unexpected argument 'extra'"},
         BadInput{"AbbreviatedOption", nullptr, "--rep r.json", "unrecognised option '--rep'"},

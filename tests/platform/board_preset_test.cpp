@@ -143,11 +143,47 @@ TEST_F(PresetFile, OnlyASmallRegularFileIsAPreset) {
 
 TEST_F(PresetFile, ErrorsStayOnOneLineWhateverTheFileHolds) {
     json changed = preset("adm-xrc-ii");
-    changed["bus"]["type"] = "pci\ncontinued";
-    EXPECT_EQ(path_ + ": bus.type: expected \"pci\" or \"pcie\", got \"pci\\ncontinued\"", error_for(changed.dump()));
+    changed["bus"]["type"] = "pc\x01i";
+    EXPECT_EQ(path_ + ": bus.type: control character \\x01 in a string; expected printable text",
+              error_for(changed.dump()));
     changed = preset("adm-xrc-ii");
     changed["host"]["tab\tkey"] = 1;
-    EXPECT_EQ(path_ + ": host.tab\\tkey: unknown key; did you mean 'name'?", error_for(changed.dump()));
+    EXPECT_EQ(path_ + ": host.tab\\tkey: control character \\t in a key; expected printable text",
+              error_for(changed.dump()));
+}
+
+// Escaped (\u0007) or raw, C0, DEL or C1: a control character in any string
+// of a preset is refused naming the key, and the message never holds the raw
+// byte. Whitespace between tokens is ordinary.
+TEST_F(PresetFile, ControlCharactersInStringsAreRefusedNamingTheKey) {
+    const std::string text = read(boards_directory() + "/adm-xrc-ii.json");
+    const std::string name = "\"name\": \"adm-xrc-ii\"";
+    ASSERT_NE(text.find(name), std::string::npos);
+    struct Case {
+        std::string name_value, shown;
+    };
+    const Case cases[] = {
+        {"\"adm\\u001b[31m\"", "\\x1b"},   // escaped ESC
+        {"\"adm\x1b[31m\"", "\\x1b"},        // raw ESC
+        {"\"two\nlines\"", "\\n"},           // raw newline inside the string
+        {"\"tab\\there\"", "\\t"},          // escaped tab
+        {"\"del\x7f\"", "\\x7f"},            // DEL
+        {"\"c1\\u0085\"", "\\u0085"},         // NEL, a C1 control
+    };
+    for (const Case& c : cases) {
+        std::string changed = text;
+        changed.replace(changed.find(name), name.size(), "\"name\": " + c.name_value);
+        const std::string error = error_for(changed);
+        EXPECT_EQ(path_ + ": name: control character " + c.shown + " in a string; expected printable text", error);
+        for (const char byte : error) EXPECT_FALSE(static_cast<unsigned char>(byte) < 0x20 || byte == 0x7f) << error;
+        EXPECT_EQ(std::string::npos, error.find("\xc2\x85")) << error;
+    }
+    std::string spaced = text;
+    spaced.replace(spaced.find(name), name.size(), "\"name\"\t:\r\n \"adm-xrc-ii\"");
+    EXPECT_EQ("accepted", error_for(spaced)) << "tabs and line ends between tokens are whitespace";
+    std::string stray = text;
+    stray.replace(stray.find(name), name.size(), "\"name\": \x01\"adm\"");
+    EXPECT_NE(std::string::npos, error_for(stray).find(": invalid JSON: ")) << "outside a string: a syntax error";
 }
 
 TEST_F(PresetFile, RangesReadInFull) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "sw/scene/output_cleanup.h"
 #include "sw/scene/scene.h"
 #include "tests/scene/temp_dir.h"
 
@@ -247,6 +249,8 @@ int status_of_child_killed_with_output(const std::string& path, int signal_numbe
     const pid_t child = fork();
     if (child == 0) {
         if (ignore_first) signal(signal_number, SIG_IGN);  // as nohup does
+        const struct rlimit no_core {0, 0};
+        setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT, SIGXCPU and SIGXFSZ dump core
         {
             OutputFile file(path);
             file.stream() << "partial" << std::flush;
@@ -260,7 +264,7 @@ int status_of_child_killed_with_output(const std::string& path, int signal_numbe
 }
 
 TEST(OutputFile, KillingSignalsRemoveTheTemporaryAndKeepTheirStatus) {
-    for (int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
+    for (int signal_number : TemporaryRegistry::kSignals) {
         test::TempDir dir;
         const int status = status_of_child_killed_with_output(dir.file("out.csv"), signal_number, false);
         ASSERT_TRUE(WIFSIGNALED(status)) << signal_number;

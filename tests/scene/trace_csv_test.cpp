@@ -134,7 +134,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"BlankBeforeHeader", "\n" H ROW, "a.csv:1: ", "found ''"},
         BadInput{"LongHeaderTruncated",
                  "frame,id,min_x,min_y,min_z,max_x,max_y,max_z,extra,columns,to,make,long\n",
-                 "a.csv:1: ", "...'"},
+                 "a.csv:1: ", "... (71 bytes)'"},
         BadInput{"TooFewFields", H ROW "0,2,0,0,0,1,1\n", "a.csv:3: ",
                  "expected 8 comma-separated fields, found 7"},
         BadInput{"TooManyFields", H "0,2,0,0,0,1,1,1,\n", "a.csv:2: ", "found 9"},

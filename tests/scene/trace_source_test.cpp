@@ -1,5 +1,5 @@
 // The CLI's trace source: checked up front, then read again frame by frame
-// (a pipe is read once and kept), with the board's per-frame limit.
+// (a pipe through an unlinked copy), with the board's per-frame limit.
 #include "sw/cli/frame_source.h"
 
 #include <gtest/gtest.h>
@@ -52,16 +52,28 @@ TEST(TraceSource, RegularFileIsReadFrameByFrame) {
     expect_frames(*source, read_trace_csv(path));
 }
 
-TEST(TraceSource, PipeIsReadOnceAndKept) {
+// A pipe is copied to an unlinked file in $TMPDIR and read twice from it, so
+// memory holds a frame, not the pipe's frames, and nothing is left behind.
+TEST(TraceSource, PipeIsSpooledToAnUnlinkedFileAndReadTwice) {
     test::TempDir dir;
+    test::TempDir spool;
+    const char* previous = std::getenv("TMPDIR");
+    const std::string saved = previous != nullptr ? previous : "";
+    setenv("TMPDIR", spool.file("").c_str(), 1);
     const std::string path = dir.file("fifo");
     ASSERT_EQ(0, mkfifo(path.c_str(), 0600));
     const std::string text = trace_text(3, 40);
     std::thread writer([&] { test::spit(path, text); });
     std::unique_ptr<FrameSource> source = trace_source(path);
     writer.join();
+    EXPECT_EQ(0u, spool.count()) << "the copy has no name";
     std::istringstream in(text);
     expect_frames(*source, parse_trace_csv(in, "text"));
+    if (previous != nullptr) {
+        setenv("TMPDIR", saved.c_str(), 1);
+    } else {
+        unsetenv("TMPDIR");
+    }
 }
 
 // Each change is at the end of a file larger than a stream buffer, so the

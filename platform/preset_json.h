@@ -1,0 +1,16 @@
+// A board preset's JSON text, parsed strictly: invalid JSON reported with
+// line and column, a key given twice refused, and no control character in
+// any key or string (escaped or raw), so that preset text reaches messages,
+// the summary and the report as printable text.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace cdvp {
+
+// Throws InputError "PATH: ..." naming the position or the key.
+nlohmann::json parse_preset(const std::string& path, const std::string& text);
+
+}  // namespace cdvp

@@ -1,0 +1,100 @@
+// Hostile command lines, presets and traces: every refusal is one short line
+// on stderr naming where the bad value came from, exit status 2, no output.
+#include <gtest/gtest.h>
+
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+// A shell word expanding to 100,000 'x's.
+const std::string kHuge = "\"$(head -c 100000 /dev/zero | tr '\\0' x)\"";
+
+void expect_refused(const Result& r, const std::string& start) {
+    EXPECT_EQ(r.status, 2) << r.err.substr(0, 300);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err.rfind("cdvp run: " + start, 0), 0u) << r.err.substr(0, 300);
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line";
+}
+
+TEST_F(Cli, ArgumentsAfterDoubleDashArePositionalSoHelpThereIsStray) {
+    const Result r = run("run --scene spheres -- --help");
+    expect_refused(r, "unexpected argument '--help'");
+    EXPECT_EQ(run("run --help --").status, 0) << "before '--' it is still help";
+}
+
+TEST_F(Cli, HugeValuesAreQuotedShortInEveryMessage) {
+    const std::string small = "--trace " + trace("small.csv") + " --pairs-out p.csv ";
+    struct Case {
+        std::string args, start;
+    };
+    const Case cases[] = {
+        {small + "--m " + kHuge, "--m: expected an integer from 1 to 32, got 'xxxx"},
+        {small + "--clock-mhz " + kHuge, "--clock-mhz: expected a number from 1 to 1000, got 'xxxx"},
+        {"--scene " + kHuge, "--scene: expected 'spheres', got 'xxxx"},
+        {small + "--transfer " + kHuge, "--transfer: expected dma or pio, got 'xxxx"},
+        {small + "--wait " + kHuge, "--wait: expected irq or poll, got 'xxxx"},
+        {small + "--baseline " + kHuge, "--baseline: unknown baseline 'xxxx"},
+        {small + "--inject " + kHuge, "--inject: 'xxxx"},
+        {small + "--inject retry@frame=" + kHuge, "--inject: 'retry@frame=xxxx"},
+        {small + "--board " + kHuge, "--board: expected a path of at most 4095 bytes, got 'xxxx"},
+        {small + kHuge, "unexpected argument 'xxxx"},
+        {small + "--" + kHuge, "unrecognised option '--xxxx"},
+        {"--trace " + kHuge, "--trace: expected a path of at most 4095 bytes, got 'xxxx"},
+        {small + "--report " + kHuge, "--report: expected a path of at most 4095 bytes, got 'xxxx"},
+        {small + "--vcd " + kHuge + "/w.vcd", "--vcd: expected a path of at most 4095 bytes, got 'xxxx"},
+        {small + "--board " + kHuge + ".json", "--board: expected a path of at most 4095 bytes, got 'xxxx"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.start);
+        const Result r = run("run " + c.args);
+        expect_refused(r, c.start);
+        EXPECT_NE(r.err.find(std::string(50, 'x') + "... (1000"), std::string::npos) << r.err.substr(0, 300);
+        EXPECT_LT(r.err.size(), 300u);
+        EXPECT_EQ(files(), std::vector<std::string>{});
+    }
+}
+
+TEST_F(Cli, HugeTraceFieldAndPresetStringAreQuotedShort) {
+    // A trace line holds at most 4096 bytes.
+    write("t.csv", "frame,id,min_x,min_y,min_z,max_x,max_y,max_z\n0,1," + std::string(4000, '7') + "x,0,0,1,1,1\n");
+    const Result field = run("run --trace t.csv --quiet");
+    expect_refused(field, "t.csv:2: field 'min_x': expected a decimal number, found '7777");
+    EXPECT_NE(field.err.find(std::string(60, '7') + "... (4001 bytes)'"), std::string::npos) << field.err.substr(0, 300);
+    EXPECT_LT(field.err.size(), 300u);
+
+    std::string text = slurp(preset("adm-xrc-ii"));
+    text.replace(text.find("\"pci\""), 5, "\"" + std::string(100000, 'p') + "\"");
+    write("board.json", text);
+    const Result type = run("run --trace " + trace("small.csv") + " --board board.json --quiet");
+    expect_refused(type, "board.json: bus.type: expected \"pci\" or \"pcie\", got \"pppp");
+    EXPECT_NE(type.err.find(std::string(60, 'p') + "... (100000 bytes)\""), std::string::npos);
+    EXPECT_LT(type.err.size(), 300u);
+}
+
+TEST_F(Cli, TooFewBlockRamsBlameThePresetKeyAndNameWhereMAndNCameFrom) {
+    const Result flag_m = run("run --scene spheres --objects 500 --board adm-xrc-ii --m 30 --quiet");
+    expect_refused(flag_m, preset("adm-xrc-ii") + ": board.block_rams: 144 block RAMs are too few for --m 30 at 500 "
+                           "objects (--objects): they need 6 x m x ceil(N/512) = 180 (largest m that fits: 24)\n");
+
+    std::string text = slurp(preset("adm-xrc-ii"));
+    text.replace(text.find("\"value\": 144"), 12, "\"value\": 40");
+    write("board.json", text);
+    const Result default_m = run("run --trace " + trace("small.csv") + " --board board.json --quiet");
+    expect_refused(default_m, "board.json: board.block_rams: 40 block RAMs are too few for m=8 (the default of --m) "
+                              "at ");
+    EXPECT_NE(default_m.err.find(" objects (the largest frame of --trace "), std::string::npos) << default_m.err;
+    EXPECT_NE(default_m.err.find("(largest m that fits: 6)"), std::string::npos) << default_m.err;
+}
+
+TEST_F(Cli, FifoDepthCheckNamesWhereMCameFrom) {
+    std::string text = slurp(preset("adm-xrc-ii"));
+    text.replace(text.find("\"fifo_depth\": {\"value\": 512"), 27, "\"fifo_depth\": {\"value\": 4");
+    write("board.json", text);
+    const Result r = run("run --trace " + trace("small.csv") + " --board board.json --quiet");
+    expect_refused(r, "board.json: board.fifo_depth: expected 2m-1 = 15 (one cycle's hits) to 1048576 pairs, got 4 "
+                      "(with m=8 (the default of --m))\n");
+}
+
+}  // namespace
+}  // namespace cdvp::test

@@ -1,0 +1,107 @@
+// Signals at random moments of runs with several outputs: whatever the
+// moment, the outputs are all the new ones or all the old ones, and no
+// temporary or backup is left. CDVP_SIGNAL_STRESS_ITERATIONS sets the count
+// (scripts/signal-stress.sh runs many).
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+// The report's sim_wall_ns lines are measured, so two runs differ there only.
+std::string without_wall_times(const std::string& report) {
+    std::istringstream lines(report);
+    std::string line, kept;
+    while (std::getline(lines, line)) {
+        if (line.find("\"sim_wall_ns\"") == std::string::npos) kept += line + '\n';
+    }
+    return kept;
+}
+
+const std::vector<std::string> kOutputs = {"pairs.csv", "r.json", "w.vcd"};
+
+pid_t start_run(const fs::path& dir) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+        if (chdir(dir.c_str()) != 0) _exit(127);
+        const int null = open("/dev/null", O_RDWR);
+        dup2(null, 0);
+        dup2(null, 1);
+        dup2(null, 2);
+        execl(CDVP_BINARY, CDVP_BINARY, "run", "--scene", "spheres", "--objects", "60", "--frames", "150", "--m", "2",
+              "-q", "--pairs-out", "pairs.csv", "--report", "r.json", "--vcd", "w.vcd", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    return pid;
+}
+
+int iterations() {
+    const char* text = std::getenv("CDVP_SIGNAL_STRESS_ITERATIONS");
+    return text != nullptr ? std::max(1, std::atoi(text)) : 6;
+}
+
+TEST_F(Cli, SignalsAtRandomMomentsLeaveAllOutputsOrNone) {
+    // A clean run: its outputs, and how long it takes.
+    const auto clean_start = std::chrono::steady_clock::now();
+    const pid_t clean = start_run(dir_);
+    int status = 0;
+    ASSERT_EQ(waitpid(clean, &status, 0), clean);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+    const auto duration = std::chrono::steady_clock::now() - clean_start;
+    const std::string new_pairs = slurp(dir_ / "pairs.csv"), new_report = slurp(dir_ / "r.json");
+
+    std::mt19937_64 random(std::random_device{}());
+    const int signals[] = {SIGINT, SIGTERM, SIGHUP};
+    int completed = 0, none = 0, all_then_signalled = 0;
+    for (int k = 0; k < iterations(); ++k) {
+        for (const std::string& name : kOutputs) write(name, "old\n");
+        // Anywhere from the start to a little past the clean run's end,
+        // half of the tries in its last fifth, where the commit is.
+        const double fraction = k % 2 == 0 ? std::uniform_real_distribution<double>(0.0, 1.1)(random)
+                                           : std::uniform_real_distribution<double>(0.8, 1.05)(random);
+        const int signal_number = signals[random() % 3];
+        const pid_t pid = start_run(dir_);
+        ASSERT_GT(pid, 0);
+        std::this_thread::sleep_for(std::chrono::duration_cast<std::chrono::microseconds>(duration * fraction));
+        kill(pid, signal_number);
+        ASSERT_EQ(waitpid(pid, &status, 0), pid);
+        SCOPED_TRACE("try " + std::to_string(k) + ": signal " + std::to_string(signal_number) + " at " +
+                     std::to_string(fraction) + " of the run");
+        const bool signalled = WIFSIGNALED(status);
+        ASSERT_TRUE(signalled ? WTERMSIG(status) == signal_number : WIFEXITED(status) && WEXITSTATUS(status) == 0)
+            << status;
+        std::vector<std::string> expected = kOutputs;
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(files(), expected) << "no temporary or backup left";
+        std::size_t old_count = 0;
+        for (const std::string& name : kOutputs) old_count += slurp(dir_ / name) == "old\n" ? 1 : 0;
+        if (old_count == kOutputs.size()) {
+            EXPECT_TRUE(signalled);
+            ++none;
+            continue;
+        }
+        EXPECT_EQ(old_count, 0u) << "a mix of old and new outputs";
+        EXPECT_EQ(slurp(dir_ / "pairs.csv"), new_pairs);
+        EXPECT_EQ(without_wall_times(slurp(dir_ / "r.json")), without_wall_times(new_report));
+        EXPECT_NE(slurp(dir_ / "w.vcd").find("$enddefinitions"), std::string::npos);
+        ++(signalled ? all_then_signalled : completed);
+    }
+    std::cout << "signal stress: " << iterations() << " runs: " << none << " killed with no output, "
+              << all_then_signalled << " killed after committing every output, " << completed
+              << " finished before the signal\n";
+}
+
+}  // namespace
+}  // namespace cdvp::test
