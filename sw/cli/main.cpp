@@ -7,6 +7,7 @@
 #include <systemc>
 
 #include "platform/kernel.h"
+#include "sw/cli/fidelity_command.h"
 #include "sw/cli/run_command.h"
 #include "sw/scene/output_target.h"
 #include "sw/scene/output_text.h"
@@ -20,7 +21,8 @@ constexpr const char* kUsage =
     "collision detection (all-pairs AABB tests, after Woulfe, Dingliana and Manzke, 2007).\n"
     "\n"
     "Commands:\n"
-    "  run       simulate scene frames on the cycle-level board; write pairs, a report, waveforms\n"
+    "  run       simulate scene frames on the virtual board; write pairs, a report, waveforms\n"
+    "  fidelity  run a scene at every modelling level: simulator speed against timing error\n"
     "\n"
     "Run 'cdvp <command> --help' for a command's options; 'cdvp --version' prints the version.\n"
     "\n"
@@ -44,7 +46,9 @@ int sc_main(int argc, char** argv) {
         return cdvp::print_to_stdout("cdvp", "cdvp 0.1.0\n");
     }
     if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
-    std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command) << "'; expected one of: run (see cdvp --help)\n";
+    if (command == "fidelity") return cdvp::fidelity_command(argc - 1, argv + 1);
+    std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
+              << "'; expected one of: run, fidelity (see cdvp --help)\n";
     return 2;
 }
 

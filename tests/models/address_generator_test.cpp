@@ -28,7 +28,9 @@ TEST(AddressGenerator, EveryPairExactlyOnceInSweepCycles) {
                 ASSERT_LT(is.row, is.first_column);
                 ASSERT_LE(is.first_column + is.valid_lanes - 1, n - 1) << "valid lane past N-1";
                 // Lanes are invalid exactly when their address is past N-1.
-                if (is.valid_lanes < ag.lanes()) ASSERT_EQ(is.first_column + is.valid_lanes, n);
+                if (is.valid_lanes < ag.lanes()) {
+                    ASSERT_EQ(is.first_column + is.valid_lanes, n);
+                }
                 for (uint32_t k = 0; k < is.valid_lanes; ++k) ++seen[is.row * n + is.first_column + k];
                 ag.advance();
                 ++cycles;

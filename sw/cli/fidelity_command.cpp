@@ -1,0 +1,317 @@
+#include "sw/cli/fidelity_command.h"
+
+#include <spawn.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sw/cli/run_command.h"
+#include "sw/scene/output_cleanup.h"
+#include "sw/scene/output_set.h"
+#include "sw/scene/output_text.h"
+#include "sw/scene/scene.h"
+
+extern char** environ;
+
+namespace cdvp {
+
+namespace {
+
+constexpr const char* kHelp =
+    "Usage: cdvp fidelity (--trace FILE | --scene spheres [--objects N] [--frames F] [--seed S])\n"
+    "                     [board and host options of cdvp run] --out DIR [-q]\n"
+    "\n"
+    "Runs the scene at every modelling level: the clocked engine, and the fast engine with the host\n"
+    "CPU's quantum at 0, 100 ns, 1 us, 10 us and 100 us. Writes DIR/fidelity.csv (per level: the\n"
+    "simulator's wall time per frame, the simulated time of each phase, its error against the clocked\n"
+    "engine at quantum 0 in percent of that level's frame time, and whether the pairs are identical)\n"
+    "and DIR/fidelity.png (wall time per frame against timing error, drawn by gnuplot).\n"
+    "\n"
+    "Every option of 'cdvp run' that sets the scene, board, bus or host is accepted and passed on;\n"
+    "--fidelity, --quantum-ns, --report, --pairs-out, --vcd, --inject and --baseline are set per level\n"
+    "or do not apply. -q prints nothing but errors; without it the table is printed and, on a terminal,\n"
+    "the level being run.\n";
+
+struct Level {
+    const char* fidelity;
+    double quantum_ns;
+};
+constexpr std::array<Level, 6> kLevels{{{"cycle", 0}, {"fast", 0}, {"fast", 100}, {"fast", 1000},
+                                        {"fast", 10000}, {"fast", 100000}}};
+
+constexpr std::array<const char*, 7> kPhases{"upload_ns", "start_ns", "compute_ns", "irq_ns",
+                                             "readback_ns", "driver_ns", "total_ns"};
+
+struct LevelResult {
+    double wall_ns_per_frame = 0;  // median over frames
+    std::array<double, kPhases.size()> phase_ns{};  // means over frames
+    std::string pairs;  // the pairs CSV, to compare with the reference's
+    uint64_t frames = 0;
+};
+
+// A file in $TMPDIR for a child's output, removed on every way out.
+class ScratchFile {
+public:
+    explicit ScratchFile(const std::string& suffix) {
+        const char* dir = std::getenv("TMPDIR");
+        std::string pattern = std::string(dir != nullptr && *dir != '\0' ? dir : "/tmp") + "/cdvp-fidelity-XXXXXX" + suffix;
+        const int fd = mkstemps(pattern.data(), static_cast<int>(suffix.size()));
+        if (fd < 0) throw std::runtime_error("cannot create a temporary file in $TMPDIR: " + std::string(std::strerror(errno)));
+        close(fd);
+        path_ = pattern;
+        slot_ = TemporaryRegistry::hold(path_);
+    }
+    ~ScratchFile() {
+        unlink(path_.c_str());
+        TemporaryRegistry::release(slot_);
+    }
+    ScratchFile(const ScratchFile&) = delete;
+    ScratchFile& operator=(const ScratchFile&) = delete;
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+    int slot_ = -1;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// Runs argv as a child with its stderr into err_path; returns its wait status.
+int spawn(const std::vector<std::string>& args, const std::string& err_path, const char* stdout_path) {
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_path.c_str(), O_WRONLY | O_TRUNC, 0600);
+    if (stdout_path != nullptr) {
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, stdout_path, O_WRONLY | O_TRUNC, 0600);
+    }
+    pid_t pid = 0;
+    const int error = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0) throw std::runtime_error(args[0] + ": cannot start: " + std::strerror(error));
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    return status;
+}
+
+std::string self_path() {
+    std::string path(4096, '\0');
+    const ssize_t n = readlink("/proc/self/exe", path.data(), path.size() - 1);
+    if (n <= 0) throw std::runtime_error("cannot find the cdvp executable (/proc/self/exe)");
+    path.resize(static_cast<std::size_t>(n));
+    return path;
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const std::size_t mid = values.size() / 2;
+    return values.size() % 2 == 1 ? values[mid] : (values[mid - 1] + values[mid]) / 2;
+}
+
+LevelResult read_level(const std::string& report_path, const std::string& pairs_path) {
+    const nlohmann::json report = nlohmann::json::parse(slurp(report_path));
+    LevelResult result;
+    std::vector<double> walls;
+    for (const auto& frame : report.at("frames")) {
+        walls.push_back(frame.at("sim_wall_ns").get<double>());
+        for (std::size_t k = 0; k < kPhases.size(); ++k) result.phase_ns[k] += frame.at(kPhases[k]).get<double>();
+    }
+    result.frames = walls.size();
+    if (!walls.empty()) {
+        for (double& p : result.phase_ns) p /= static_cast<double>(walls.size());
+    }
+    result.wall_ns_per_frame = median(walls);
+    result.pairs = slurp(pairs_path);
+    return result;
+}
+
+// Error of a phase against the reference, in percent of the reference's
+// frame time (a phase may be zero, so not of its own value).
+double error_percent(const LevelResult& level, const LevelResult& reference, std::size_t phase) {
+    const double total = reference.phase_ns.back();
+    if (total == 0) return 0;
+    return 100.0 * std::fabs(level.phase_ns[phase] - reference.phase_ns[phase]) / total;
+}
+
+std::string csv_text(const std::vector<LevelResult>& results) {
+    std::ostringstream csv;
+    csv << "level,fidelity,quantum_ns,frames,wall_ns_per_frame";
+    for (const char* phase : kPhases) csv << ',' << phase;
+    for (const char* phase : kPhases) csv << ",error_" << std::string(phase, std::strlen(phase) - 3) << "_percent";
+    csv << ",pairs_identical\n";
+    csv << std::setprecision(10);
+    for (std::size_t k = 0; k < results.size(); ++k) {
+        const LevelResult& r = results[k];
+        csv << k << ',' << kLevels[k].fidelity << ',' << kLevels[k].quantum_ns << ',' << r.frames << ','
+            << r.wall_ns_per_frame;
+        for (double ns : r.phase_ns) csv << ',' << ns;
+        for (std::size_t p = 0; p < kPhases.size(); ++p) csv << ',' << error_percent(r, results[0], p);
+        csv << ',' << (r.pairs == results[0].pairs ? "yes" : "no") << '\n';
+    }
+    return csv.str();
+}
+
+std::string table_text(const std::vector<LevelResult>& results) {
+    std::ostringstream t;
+    t << "level           wall/frame   total (sim)     error   pairs\n";
+    for (std::size_t k = 0; k < results.size(); ++k) {
+        const LevelResult& r = results[k];
+        std::ostringstream name;
+        name << kLevels[k].fidelity << " q=" << kLevels[k].quantum_ns << "ns";
+        t << std::left << std::setw(16) << name.str() << std::right << std::fixed << std::setprecision(3)
+          << std::setw(9) << r.wall_ns_per_frame / 1e6 << " ms" << std::setw(11) << r.phase_ns.back() / 1e3
+          << " us" << std::setw(9) << std::setprecision(4) << error_percent(r, results[0], kPhases.size() - 1)
+          << " %   " << (r.pairs == results[0].pairs ? "identical" : "DIFFER") << '\n';
+    }
+    return t.str();
+}
+
+// gnuplot draws the CSV: wall time per frame (log) against the total's
+// error, one coloured point per level named in the key (levels with equal
+// errors stack on one vertical, so labels beside the points would collide).
+std::string plot_script(const std::string& csv_path, const std::string& png_path) {
+    std::ostringstream gp;
+    gp << "set terminal pngcairo noenhanced size 900,560 font 'sans,10'\n"
+       << "set output '" << png_path << "'\n"
+       << "set datafile separator ','\nset datafile columnheaders\n"
+       << "set title 'cdvp: simulator speed against timing error (reference: cycle engine, quantum 0)'\n"
+       << "set xlabel 'error of the simulated frame time (%)'\n"
+       << "set ylabel 'simulator wall time per frame (ms)'\n"
+       << "set logscale y\nset grid\nset key outside right\n"
+       << "set offsets graph 0.1, graph 0.1, graph 0.2, graph 0.2\n"
+       << "names = '";
+    for (const Level& level : kLevels) gp << level.fidelity << "/quantum=" << level.quantum_ns << "ns ";
+    gp << "'\n"
+       << "plot for [i=1:" << kLevels.size() << "] '" << csv_path
+       << "' every ::(i-1)::(i-1) using 19:($5/1e6) with points pt 7 ps 1.8 title word(names, i)\n";
+    return gp.str();
+}
+
+// The options that fidelity sets itself or that do not apply to it.
+bool reserved(const std::string& arg) {
+    for (const char* option : {"--fidelity", "--quantum-ns", "--report", "--pairs-out", "--vcd", "--inject",
+                               "--baseline"}) {
+        if (arg == option || arg.rfind(std::string(option) + "=", 0) == 0) return true;
+    }
+    return false;
+}
+
+int fidelity_levels(int argc, char** argv) {
+    std::vector<std::string> forwarded;
+    std::string out_dir;
+    bool quiet = false;
+    for (int k = 1; k < argc; ++k) {
+        const std::string arg = argv[k];
+        if (arg == "--help" || arg == "-h") return print_to_stdout("cdvp fidelity", kHelp);
+        if (arg == "-q" || arg == "--quiet") {
+            quiet = true;
+        } else if (arg == "--out") {
+            if (k + 1 == argc) throw InputError("--out: expected a directory");
+            out_dir = argv[++k];
+        } else if (reserved(arg)) {
+            throw InputError(excerpt(arg) + ": set by cdvp fidelity for each level, or not for it; leave it out");
+        } else {
+            forwarded.push_back(arg);
+        }
+    }
+    if (out_dir.empty()) throw InputError("--out DIR is required (see cdvp fidelity --help)");
+    if (mkdir(out_dir.c_str(), 0777) != 0 && errno != EEXIST) {
+        throw InputError("--out: " + excerpt(out_dir) + ": cannot create: " + std::strerror(errno));
+    }
+    struct stat status {};
+    if (stat(out_dir.c_str(), &status) != 0 || !S_ISDIR(status.st_mode)) {
+        throw InputError("--out: " + excerpt(out_dir) + ": expected a directory");
+    }
+    OutputSet files;
+    const std::size_t csv = files.add_output("--out", out_dir + "/fidelity.csv");
+    const std::size_t png = files.add_output("--out", out_dir + "/fidelity.png", "", false);
+    if (!quiet) files.add_standard_output("standard output");
+    files.open();
+
+    const std::string self = self_path();
+    const bool show_progress = !quiet && isatty(STDERR_FILENO);
+    std::vector<LevelResult> results;
+    for (std::size_t k = 0; k < kLevels.size(); ++k) {
+        if (show_progress) {
+            std::cerr << "\rcdvp fidelity: level " << k + 1 << " of " << kLevels.size() << " (" << kLevels[k].fidelity
+                      << ", quantum " << kLevels[k].quantum_ns << " ns)   " << std::flush;
+        }
+        ScratchFile report(".json"), pairs(".csv"), errors(".err");
+        std::vector<std::string> args{self, "run"};
+        args.insert(args.end(), forwarded.begin(), forwarded.end());
+        std::ostringstream quantum;
+        quantum << kLevels[k].quantum_ns;
+        args.insert(args.end(), {"--fidelity", kLevels[k].fidelity, "--quantum-ns", quantum.str(), "--report",
+                                 report.path(), "--pairs-out", pairs.path(), "-q"});
+        const int wait_status = spawn(args, errors.path(), nullptr);
+        if (show_progress) std::cerr << '\r' << std::string(60, ' ') << '\r';
+        if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
+        if (WEXITSTATUS(wait_status) != 0) {
+            // The level's own one-line error, under this command's name.
+            std::string message = slurp(errors.path());
+            if (message.rfind("cdvp run: ", 0) == 0) message = "cdvp fidelity: " + message.substr(10);
+            std::cerr << message;
+            return WEXITSTATUS(wait_status);
+        }
+        results.push_back(read_level(report.path(), pairs.path()));
+    }
+
+    const std::string csv_body = csv_text(results);
+    files.file(csv).stream() << csv_body << std::flush;
+    ScratchFile script(".gp"), plot_errors(".err");
+    std::ofstream(script.path()) << plot_script(files.file(csv).temp_path(), files.file(png).temp_path());
+    const int plotted = spawn({"gnuplot", script.path()}, plot_errors.path(), nullptr);
+    if (!WIFEXITED(plotted) || WEXITSTATUS(plotted) != 0) {
+        std::cerr << "cdvp fidelity: gnuplot failed to draw " << out_dir << "/fidelity.png: "
+                  << printable(slurp(plot_errors.path())) << '\n';
+        return kExitInternal;
+    }
+    if (!quiet) files.set_standard_output(table_text(results));
+    if (const std::optional<std::string> error = files.try_commit()) {
+        std::cerr << "cdvp fidelity: " << printable(*error) << '\n';
+        return kExitBadInput;
+    }
+    return kExitDone;
+}
+
+}  // namespace
+
+int fidelity_command(int argc, char** argv) {
+    try {
+        return fidelity_levels(argc, argv);
+    } catch (const InputError& e) {
+        std::cerr << "cdvp fidelity: " << printable(e.what()) << '\n';
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "cdvp fidelity: failed: " << printable(e.what()) << '\n';
+        return kExitInternal;
+    }
+}
+
+}  // namespace cdvp

@@ -1,0 +1,76 @@
+// `cdvp fidelity`: every level run, the CSV and the plot written together,
+// bad input refused like `cdvp run` refuses it.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+    std::vector<std::vector<std::string>> rows;
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        std::vector<std::string> fields;
+        std::istringstream cells(line);
+        std::string cell;
+        while (std::getline(cells, cell, ',')) fields.push_back(cell);
+        rows.push_back(fields);
+    }
+    return rows;
+}
+
+TEST_F(Cli, FidelityRunsEveryLevelAndWritesTheTableAndThePlot) {
+    const Result r = run("fidelity --scene spheres --objects 80 --frames 3 --board adm-xrc-ii --m 2 --pair-buffer 9 "
+                         "--wait poll --out results");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    const auto rows = csv_rows(slurp(dir_ / "results" / "fidelity.csv"));
+    ASSERT_EQ(rows.size(), 7u) << "a header and six levels";
+    const std::vector<std::string>& header = rows[0];
+    auto column = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    ASSERT_LT(column("error_total_percent"), header.size());
+    ASSERT_LT(column("pairs_identical"), header.size());
+    EXPECT_EQ(rows[1][column("fidelity")], "cycle");
+    EXPECT_EQ(rows[6][column("quantum_ns")], "100000");
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+        EXPECT_EQ(rows[k][column("frames")], "3");
+        EXPECT_GT(std::stod(rows[k][column("wall_ns_per_frame")]), 0.0);
+        EXPECT_GT(std::stod(rows[k][column("total_ns")]), 0.0);
+        EXPECT_EQ(rows[k][column("pairs_identical")], "yes") << "level " << k;
+    }
+    EXPECT_EQ(std::stod(rows[2][column("error_total_percent")]), 0.0) << "the fast engine at quantum 0 is exact";
+    const std::string png = slurp(dir_ / "results" / "fidelity.png");
+    ASSERT_GT(png.size(), 1000u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+    EXPECT_NE(r.out.find("cycle q=0ns"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("identical"), std::string::npos) << r.out;
+}
+
+TEST_F(Cli, FidelityRefusesBadInputWithOneLineAndWritesNothing) {
+    struct Case {
+        const char* args;
+        const char* message;
+    } cases[] = {
+        {"fidelity --scene spheres --objects 10", "cdvp fidelity: --out DIR is required"},
+        {"fidelity --scene spheres --objects 10 --out r --vcd w.vcd", "cdvp fidelity: --vcd: set by cdvp fidelity"},
+        {"fidelity --scene spheres --objects 10 --out r --m 0", "cdvp fidelity: --m"},
+        {"fidelity --trace missing.csv --out r", "cdvp fidelity: missing.csv: cannot open"},
+    };
+    for (const Case& c : cases) {
+        const Result r = run(c.args);
+        EXPECT_EQ(r.status, 2) << c.args << ": " << r.err;
+        EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << c.args << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
+        EXPECT_FALSE(fs::exists(dir_ / "r" / "fidelity.csv")) << c.args;
+        EXPECT_FALSE(fs::exists(dir_ / "r" / "fidelity.png")) << c.args;
+    }
+}
+
+}  // namespace
+}  // namespace cdvp::test
