@@ -141,8 +141,8 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
     const BoardConfig& c = run.config;
     char line[512];
     // Names may be long and come from files: printed whole and escaped.
-    std::snprintf(line, sizeof line, ": m=%u (%u lanes), %.6g MHz, L=%u cycles, %u block RAMs\n", c.m, c.lanes(),
-                  c.clock_mhz, c.pipeline_latency(), run.block_rams);
+    std::snprintf(line, sizeof line, ": m=%u (%u lanes), %.6g MHz, L=%u cycles, %u block RAMs, %s engine\n", c.m,
+                  c.lanes(), c.clock_mhz, c.pipeline_latency(), run.block_rams, run.fidelity.c_str());
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
     out << "  frame  objects     pairs  S(N,m)+L  compute_cycles  stall_cycles  compute_us  total_us\n";
     for (const FrameStats& f : totals.shown()) {
