@@ -17,8 +17,7 @@
 
 #include "models/control_registers/control_registers.h"
 #include "platform/preset_json.h"
-#include "sw/scene/output_text.h"
-#include "sw/scene/scene.h"
+#include "models/common/user_text.h"
 
 namespace cdvp {
 

@@ -3,8 +3,7 @@
 #include <charconv>
 #include <sstream>
 
-#include "sw/scene/output_text.h"
-#include "sw/scene/scene.h"
+#include "models/common/user_text.h"
 
 namespace cdvp {
 

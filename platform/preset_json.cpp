@@ -5,8 +5,7 @@
 #include <set>
 #include <vector>
 
-#include "sw/scene/output_text.h"
-#include "sw/scene/scene.h"
+#include "models/common/user_text.h"
 
 namespace cdvp {
 

@@ -4,10 +4,22 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "models/address_generator/address_generator.h"
 #include "models/block_ram/block_ram.h"
+#include "models/comparison_unit/comparison_unit.h"
 #include "models/control_registers/control_registers.h"
 
 namespace cdvp {
+
+uint64_t BoardConfig::sweep_cycles(uint64_t objects) const { return AddressGenerator::sweep_cycles(objects, m); }
+
+uint64_t BoardConfig::block_rams(uint64_t capacity) const {
+    return uint64_t{kCoordinates} * m * CascadedBlockRam::primitives_for(static_cast<uint32_t>(capacity));
+}
+
+uint64_t BoardConfig::block_ram_bytes(uint64_t capacity) const {
+    return block_rams(capacity) * BlockRam::kWords * sizeof(uint32_t);
+}
 
 uint32_t BoardConfig::pipeline_latency() const {
     return BlockRam::kReadLatencyCycles + compare.latency_cycles + kCollectorLatencyCycles;

@@ -26,6 +26,14 @@ struct BoardConfig {
     // L: block RAM read + compare pipeline + collector stage. A sweep takes
     // S(N,m) + L + stall cycles from start to done.
     uint32_t pipeline_latency() const;
+    // What a board of this configuration is, so that no caller reaches into
+    // its blocks: S(N,m), the address generator's cycles for N boxes; the
+    // block RAM primitives of the six coordinate memories for `capacity`
+    // boxes (6 x m x ceil(N/512)); and the bytes of block RAM words the
+    // clocked model keeps for them.
+    uint64_t sweep_cycles(uint64_t objects) const;
+    uint64_t block_rams(uint64_t capacity) const;
+    uint64_t block_ram_bytes(uint64_t capacity) const;
     // Clock period in picoseconds (the simulation's time resolution).
     double period_ps() const { return 1e6 / clock_mhz; }
     // Throws std::invalid_argument with one line "SETTING: expected ..., got ...",

@@ -32,9 +32,7 @@ BoardCore::BoardCore(const BoardConfig& config, uint32_t capacity, Fidelity fide
     declare_registers();
 }
 
-uint32_t BoardCore::block_rams() const {
-    return kCoordinates * config_.m * CascadedBlockRam::primitives_for(capacity_);
-}
+uint32_t BoardCore::block_rams() const { return static_cast<uint32_t>(config_.block_rams(capacity_)); }
 
 void BoardCore::declare_registers() {
     using R = ControlRegisters;

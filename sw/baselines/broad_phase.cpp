@@ -5,7 +5,7 @@
 #include "sw/baselines/brute_force.h"
 #include "sw/baselines/bullet_broad_phase.h"
 #include "sw/baselines/soa_broad_phase.h"
-#include "sw/scene/output_text.h"
+#include "models/common/user_text.h"
 
 namespace cdvp {
 

@@ -25,7 +25,7 @@
 #include "sw/cli/run_command.h"
 #include "sw/scene/output_cleanup.h"
 #include "sw/scene/output_set.h"
-#include "sw/scene/output_text.h"
+#include "models/common/user_text.h"
 #include "sw/scene/scene.h"
 
 extern char** environ;

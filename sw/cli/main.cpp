@@ -10,7 +10,7 @@
 #include "sw/cli/fidelity_command.h"
 #include "sw/cli/run_command.h"
 #include "sw/scene/output_target.h"
-#include "sw/scene/output_text.h"
+#include "models/common/user_text.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sw/scene/output_text.h"
+#include "models/common/user_text.h"
 
 namespace cdvp {
 

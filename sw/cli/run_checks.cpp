@@ -8,11 +8,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "models/address_generator/address_generator.h"
-#include "models/block_ram/block_ram.h"
 #include "models/control_registers/control_registers.h"
 #include "platform/fault_injection.h"
-#include "sw/scene/output_text.h"
+#include "models/common/user_text.h"
 #include "sw/scene/scene.h"
 
 namespace po = boost::program_options;
@@ -39,7 +37,7 @@ void check_simulated_time(const RunOptions& o, const po::variables_map& vm, cons
     constexpr double kPerBoxSeconds = 10e-6;    // PIO of a box on the slowest bus, with margin
     constexpr double kPerFrameSeconds = 1e-3;   // driver calls, interrupts, status reads, with margin
     const double frames = static_cast<double>(frame_count);
-    const double frame_seconds = static_cast<double>(AddressGenerator::sweep_cycles(max_objects, board.m)) /
+    const double frame_seconds = static_cast<double>(board.sweep_cycles(max_objects)) /
                                      (board.clock_mhz * 1e6) +
                                  static_cast<double>(max_objects) * kPerBoxSeconds + kPerFrameSeconds;
     const double total = frames * frame_seconds;
@@ -63,8 +61,7 @@ void check_simulated_time(const RunOptions& o, const po::variables_map& vm, cons
 void check_model_memory(const RunOptions& o, const po::variables_map& vm, const BoardConfig& board,
                         const ValueOrigins& origins, uint64_t max_objects) {
     constexpr uint64_t kMaxModelBytes = uint64_t{2} << 30;
-    const uint64_t words = uint64_t{BlockRam::kWords} * CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
-    const uint64_t bytes = uint64_t{kCoordinates} * board.m * words * sizeof(uint32_t);
+    const uint64_t bytes = board.block_ram_bytes(max_objects);
     if (bytes <= kMaxModelBytes) return;
     std::ostringstream message;
     message << "the board model for " << objects_origin(o, vm, max_objects) << " at " << origins.m << " needs "
@@ -159,9 +156,10 @@ void check_scene_fits(const RunOptions& o, const po::variables_map& vm, const Bo
                       const ValueOrigins& origins, uint64_t max_objects, uint64_t frame_count) {
     check_model_memory(o, vm, board, origins, max_objects);
     check_simulated_time(o, vm, board, origins, max_objects, frame_count);
-    const uint32_t primitives = CascadedBlockRam::primitives_for(static_cast<uint32_t>(max_objects));
-    const uint64_t needed = uint64_t{kCoordinates} * board.m * primitives;
-    const uint64_t per_m = uint64_t{kCoordinates} * std::max<uint32_t>(1, primitives);
+    const uint64_t needed = board.block_rams(max_objects);
+    BoardConfig one = board;
+    one.m = 1;
+    const uint64_t per_m = std::max<uint64_t>(1, one.block_rams(max_objects));
     if (block_rams == 0 || needed <= block_rams) return;
     // The FPGA's block RAM count is only ever a preset's.
     const uint64_t largest = block_rams / per_m;

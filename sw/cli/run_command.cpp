@@ -15,7 +15,6 @@
 
 #include <boost/program_options.hpp>
 
-#include "models/address_generator/address_generator.h"
 #include "platform/board_preset.h"
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
@@ -27,7 +26,7 @@
 #include "sw/scene/conversion.h"
 #include "sw/scene/output_set.h"
 #include "sw/scene/output_target.h"
-#include "sw/scene/output_text.h"
+#include "models/common/user_text.h"
 #include "sw/scene/pairs_csv.h"
 
 namespace po = boost::program_options;
@@ -210,7 +209,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     for (const auto& b : setup.baselines) run.baseline_names.push_back(b->name());
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
-    run.block_rams = platform.board().core().block_rams();
+    run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
     run.bus = platform.bus_timing().describe();
     if (out.pairs) write_pairs_header(out.pairs->stream());
     // Every output is written a frame at a time: memory stays flat however
@@ -241,7 +240,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         const FrameResult& result = *frame_result;
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
-                         AddressGenerator::sweep_cycles(boxes.size(), run.config.m), result.phases, {}, sim_wall_ns};
+                         run.config.sweep_cycles(boxes.size()), result.phases, {}, sim_wall_ns};
         if (!setup.baselines.empty()) stats.baselines = run_baselines(setup, boxes, sorted(result.pairs), frame->number);
         if (report) report->frame(stats);
         totals.add(stats);

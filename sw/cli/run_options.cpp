@@ -4,7 +4,7 @@
 
 #include "models/control_registers/control_registers.h"
 #include "sw/cli/number_option.h"
-#include "sw/scene/output_text.h"
+#include "models/common/user_text.h"
 #include "sw/scene/scene.h"
 
 namespace po = boost::program_options;

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sw/scene/output_text.h"
+#include "models/common/user_text.h"
 
 namespace cdvp {
 

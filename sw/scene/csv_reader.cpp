@@ -11,7 +11,7 @@
 #include <string>
 #include <utility>
 
-#include "sw/scene/output_text.h"
+#include "models/common/user_text.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "models/common/user_text.h"
+
 namespace cdvp {
 
 // A box in scene units (double). Bounds may be +-inf; never NaN; min <= max.
@@ -21,11 +23,5 @@ struct Frame {
     std::vector<Box> boxes;
 };
 
-// Bad user input (a file, a flag). what() is one line: "FILE:LINE: message"
-// for file input, so the CLI prints it as is and exits with status 2.
-class InputError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 }  // namespace cdvp

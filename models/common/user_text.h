@@ -1,10 +1,19 @@
-// Text from users (file names, keys, values) inside one-line messages.
+// Bad input from users, and their text (file names, keys, values) inside
+// one-line messages. Every layer refuses bad input this way.
 #pragma once
 
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 
 namespace cdvp {
+
+// Bad user input (a file, a flag). what() is one line: "FILE:LINE: message"
+// for file input, so the CLI prints it as is and exits with status 2.
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
 
 // 'text' safe to print on one line: control characters (a newline in a file
 // name, say) become escapes such as \n, \t and \x1b, and C1 controls in
