@@ -117,23 +117,6 @@ TEST_F(CliOutputs, ReplacedOutputKeepsItsMode) {
     EXPECT_EQ(fs::perms(0640), fs::status(dir_ / "p.csv").permissions() & fs::perms::all);
 }
 
-// Starts `cdvp ARGS` in 'dir' with no shell in between, output discarded.
-pid_t spawn(const fs::path& dir, const std::vector<std::string>& args) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-        if (chdir(dir.c_str()) != 0) _exit(127);
-        const int null = open("/dev/null", O_RDWR);
-        dup2(null, 0);
-        dup2(null, 1);
-        dup2(null, 2);
-        std::vector<char*> argv{const_cast<char*>(CDVP_BINARY)};
-        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        execv(CDVP_BINARY, argv.data());
-        _exit(127);
-    }
-    return pid;
-}
 
 bool has_temporary(const fs::path& dir) {
     for (const auto& entry : fs::directory_iterator(dir)) {

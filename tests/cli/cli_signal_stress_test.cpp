@@ -33,18 +33,8 @@ std::string without_wall_times(const std::string& report) {
 const std::vector<std::string> kOutputs = {"pairs.csv", "r.json", "w.vcd"};
 
 pid_t start_run(const fs::path& dir) {
-    const pid_t pid = fork();
-    if (pid == 0) {
-        if (chdir(dir.c_str()) != 0) _exit(127);
-        const int null = open("/dev/null", O_RDWR);
-        dup2(null, 0);
-        dup2(null, 1);
-        dup2(null, 2);
-        execl(CDVP_BINARY, CDVP_BINARY, "run", "--scene", "spheres", "--objects", "60", "--frames", "150", "--m", "2",
-              "-q", "--pairs-out", "pairs.csv", "--report", "r.json", "--vcd", "w.vcd", static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    return pid;
+    return spawn(dir, {"run", "--scene", "spheres", "--objects", "60", "--frames", "150", "--m", "2", "-q",
+                       "--pairs-out", "pairs.csv", "--report", "r.json", "--vcd", "w.vcd"});
 }
 
 int iterations() {

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,5 +69,23 @@ protected:
 
     fs::path dir_;
 };
+
+// Starts `cdvp ARGS` in 'dir' with no shell in between, output discarded.
+inline pid_t spawn(const fs::path& dir, const std::vector<std::string>& args) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+        if (chdir(dir.c_str()) != 0) _exit(127);
+        const int null = open("/dev/null", O_RDWR);
+        dup2(null, 0);
+        dup2(null, 1);
+        dup2(null, 2);
+        std::vector<char*> argv{const_cast<char*>(CDVP_BINARY)};
+        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(CDVP_BINARY, argv.data());
+        _exit(127);
+    }
+    return pid;
+}
 
 }  // namespace cdvp::test
