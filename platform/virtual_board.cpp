@@ -44,9 +44,12 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
         trace_ = sc_create_vcd_trace_file(vcd_base.c_str());
         if (trace_ == nullptr) throw std::runtime_error(vcd_base + ".vcd: cannot create waveform file");
         trace_->set_time_unit(1, SC_FS);  // the kernel's resolution: every edge lands exactly
-        board_.trace(trace_);
-        sc_trace(trace_, fpga_irq_, std::string(this->name()) + ".irq");
-        sc_trace(trace_, inta_, std::string(this->name()) + ".inta");
+        WaveList waves(trace_, "interrupts");
+        waves.add(fpga_irq_, std::string(this->name()) + ".irq");
+        waves.add(inta_, std::string(this->name()) + ".inta");
+        bridge_.trace(waves);
+        board_.trace(waves);
+        traced_ = waves.signals();
     }
 }
 
@@ -80,6 +83,7 @@ const FrameResult* VirtualBoard::try_run_frame(const std::vector<FloatBox>& boxe
                                     " boxes exceeds the board's capacity of " +
                                     std::to_string(board_.core().capacity()));
     }
+    if (trace_ != nullptr) board_.set_tracing(number >= trace_first_ && number <= trace_last_);
     faults_.begin_frame(number);
     ++frames_;
     cpu_.submit(boxes);
@@ -89,6 +93,32 @@ const FrameResult* VirtualBoard::try_run_frame(const std::vector<FloatBox>& boxe
     if (cpu_.internal_error()) std::rethrow_exception(cpu_.internal_error());
     fault = cpu_.fault();
     return fault ? nullptr : &cpu_.result();
+}
+
+void VirtualBoard::set_trace_window(uint64_t first, uint64_t last) {
+    trace_first_ = first;
+    trace_last_ = last;
+}
+
+// GTKWave's save-file format: a group opens with flags 0x800200 and its
+// title, closes with 0x1000200; @28 shows a bit, @22 a vector in hex. A
+// vector is named with its bit range, as the VCD declares it.
+void VirtualBoard::write_gtkw(std::ostream& out, const std::string& vcd_path) const {
+    out << "[dumpfile] \"" << vcd_path << "\"\n[timestart] 0\n";
+    std::string open_group;
+    auto close = [&] {
+        if (!open_group.empty()) out << "@1000200\n-" << open_group << '\n';
+    };
+    for (const TracedSignal& signal : traced_) {
+        if (signal.group != open_group) {
+            close();
+            open_group = signal.group;
+            out << "@800200\n-" << open_group << '\n';
+        }
+        if (signal.width == 1) out << "@28\n" << signal.name << '\n';
+        else out << "@22\n" << signal.name << '[' << signal.width - 1 << ":0]\n";
+    }
+    close();
 }
 
 }  // namespace cdvp

@@ -2,13 +2,16 @@
 // collision board (PCI bridge, local bus, FPGA), joined by the PCI bus.
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include <systemc>
 
 #include "models/board/collision_board.h"
+#include "models/common/wave_list.h"
 #include "models/pci/pci_bridge.h"
 #include "models/pci/pci_bus.h"
 #include "platform/host_cpu.h"
@@ -60,6 +63,11 @@ public:
     const FaultPlan& faults() const { return faults_; }
     // Flushes and closes the waveform file (also done by the destructor).
     void close_trace();
+    // Traces only frames numbered first..last (a window): the others run as
+    // untraced ones do, and their signals keep their values.
+    void set_trace_window(uint64_t first, uint64_t last);
+    // A GTKWave save file for the waveforms: every traced signal, grouped by block.
+    void write_gtkw(std::ostream& out, const std::string& vcd_path) const;
 
     const CollisionBoard& board() const { return board_; }
     const PciBridge& bridge() const { return bridge_; }
@@ -76,6 +84,9 @@ private:
     sc_core::sc_signal<bool> fpga_irq_;
     sc_core::sc_signal<bool> inta_;
     sc_core::sc_trace_file* trace_ = nullptr;
+    std::vector<TracedSignal> traced_;
+    uint64_t trace_first_ = 0;
+    uint64_t trace_last_ = UINT64_MAX;
 };
 
 }  // namespace cdvp

@@ -33,6 +33,9 @@ CollisionBoard::CollisionBoard(const sc_module_name& name, const BoardConfig& co
 
 namespace {
 // Bits needed to show values 0..max in a waveform.
+// The controller's states as the waveforms name them, in Phase order.
+constexpr const char* kStateNames[] = {"idle", "running", "paused", "done"};
+
 int bits_for(uint64_t max) {
     int bits = 1;
     while (bits < 64 && (max >> bits) != 0) ++bits;
@@ -40,25 +43,37 @@ int bits_for(uint64_t max) {
 }
 }  // namespace
 
-void CollisionBoard::trace(sc_trace_file* file) {
+void CollisionBoard::trace(WaveList& waves) {
     traced_engine_ = dynamic_cast<ClockedEngine*>(&core_.engine());
     if (traced_engine_ == nullptr) throw std::logic_error("waveforms need the clocked engine");
     const std::string p = std::string(name()) + ".";
     const BoardConfig& config = core_.config();
+    waves.group("board: control");
+    waves.add(waves_.clk, p + "clk");
+    waves.add(waves_.state, p + "control.state", 2);
+    for (std::size_t k = 0; k < waves_.in_state.size(); ++k) {
+        waves.add(waves_.in_state[k], p + "control." + kStateNames[k]);
+    }
+    waves.add(waves_.stall, p + "control.stall");
+    waves.group("board: address generator");
     // Address ports may point one window past the last box (invalid lanes).
     const int address_bits = bits_for(uint64_t{core_.capacity()} + config.lanes());
-    sc_trace(file, waves_.clk, p + "clk");
-    sc_trace(file, waves_.state, p + "state", 2);
     for (size_t port = 0; port < waves_.address.size(); ++port) {
-        sc_trace(file, waves_.address[port], p + "address_" + std::to_string(port), address_bits);
+        waves.add(waves_.address[port], p + "address_generator.address_" + std::to_string(port), address_bits);
     }
+    waves.group("board: comparison unit");
     const int lanes = static_cast<int>(config.lanes());
-    sc_trace(file, waves_.lane_valid, p + "lane_valid", lanes);
-    sc_trace(file, waves_.lane_hit, p + "lane_hit", lanes);
-    sc_trace(file, waves_.fifo_level, p + "fifo_level", bits_for(config.collector.fifo_depth));
-    sc_trace(file, waves_.stall, p + "stall");
-    sc_trace(file, waves_.done, p + "done");
-    sc_trace(file, waves_.pair_count, p + "pair_count", bits_for(config.collector.buffer_depth));
+    waves.add(waves_.lane_valid, p + "comparison.lane_valid", lanes);
+    waves.add(waves_.lane_hit, p + "comparison.lane_hit", lanes);
+    waves.group("board: pair collector");
+    waves.add(waves_.fifo_level, p + "collector.fifo_level", bits_for(config.collector.fifo_depth));
+    waves.add(waves_.pair_count, p + "collector.pair_count", bits_for(config.collector.buffer_depth));
+}
+
+void CollisionBoard::set_tracing(bool on) {
+    if (traced_engine_ == nullptr || on == tracing_on_) return;
+    tracing_on_ = on;
+    if (core_.running()) throw std::logic_error("tracing switched during a sweep");
 }
 
 void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
@@ -169,7 +184,7 @@ void CollisionBoard::schedule_clock(uint64_t segments_before, const sc_time& at)
     segment_start_ = at;
     clock_event_.cancel();
     const sc_time lead = at - sc_time_stamp();
-    if (traced_engine_ != nullptr) {
+    if (clocked_edge_by_edge()) {
         clock_event_.notify(lead + period_);  // the first edge comes one period after the command
         return;
     }
@@ -183,7 +198,7 @@ void CollisionBoard::schedule_clock(uint64_t segments_before, const sc_time& at)
 
 void CollisionBoard::on_clock_event() {
     sync(sc_time_stamp());
-    if (traced_engine_ != nullptr) {
+    if (clocked_edge_by_edge()) {
         sample_trace();
         if (core_.running()) {
             const uint64_t next = core_.edges() + 1;
@@ -204,6 +219,7 @@ void CollisionBoard::sample_trace() {
     waves_.clk = true;
     fall_.notify(period_ / 2);
     waves_.state = static_cast<uint32_t>(core_.phase());
+    for (std::size_t k = 0; k < waves_.in_state.size(); ++k) waves_.in_state[k] = waves_.state == k;
     const ClockedEngine& engine = *traced_engine_;
     const AddressGenerator::Issue& issue = engine.last_issue();
     waves_.address[0] = issue.row;
@@ -215,7 +231,6 @@ void CollisionBoard::sample_trace() {
     waves_.lane_hit = out.kind == ClockedEngine::Slot::kSweep ? out.hits : 0;
     waves_.fifo_level = engine.fifo_level();
     waves_.stall = engine.stalled();
-    waves_.done = core_.phase() == BoardCore::Phase::Done;
     waves_.pair_count = core_.buffered_pairs();
 }
 

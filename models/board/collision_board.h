@@ -6,6 +6,7 @@
 // traced does an event fire at every edge.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "models/board/board_core.h"
 #include "models/board/clocked_engine.h"
 #include "models/common/fault_plan.h"
+#include "models/common/wave_list.h"
 
 namespace cdvp {
 
@@ -37,10 +39,14 @@ public:
     const sc_core::sc_time& period() const { return period_; }
 
     using sc_core::sc_module::trace;
-    // Adds the board's waveforms to a trace file (before the first sc_start).
-    // Needs the clocked engine (throws std::logic_error otherwise). Without
-    // this call the board does no per-edge work at all.
-    void trace(sc_core::sc_trace_file* file);
+    // Adds the board's waveforms, scoped by block, to a trace file (before
+    // the first sc_start). Needs the clocked engine (throws std::logic_error
+    // otherwise). Without this call the board does no per-edge work at all.
+    void trace(WaveList& waves);
+    // Traced boards only: whether the following sweeps are clocked edge by
+    // edge and sampled (a window of frames), or run as untraced ones do.
+    // Switch between sweeps only.
+    void set_tracing(bool on);
 
 private:
     void b_transport(tlm::tlm_generic_payload& payload, sc_core::sc_time& delay);
@@ -57,6 +63,7 @@ private:
     void clock_fall();      // traced clock only: the falling edge
     void drive_irq();
     void sample_trace();
+    bool clocked_edge_by_edge() const { return traced_engine_ != nullptr && tracing_on_; }
 
     BoardCore core_;
     sc_core::sc_time period_;
@@ -66,17 +73,18 @@ private:
     sc_core::sc_event irq_changed_;
     FaultPlan* faults_ = nullptr;
     ClockedEngine* traced_engine_ = nullptr;  // set by trace()
+    bool tracing_on_ = true;
 
     // Waveform mirrors, updated each cycle only when traced.
     struct Waves {
         bool clk = false;
         uint32_t state = 0;  // 0 idle, 1 running, 2 paused (overflow), 3 done
+        std::array<bool, 4> in_state{};  // one bit per state, by name
         std::vector<uint32_t> address;  // 2m memory ports
         uint64_t lane_valid = 0;
         uint64_t lane_hit = 0;
         uint32_t fifo_level = 0;
         bool stall = false;
-        bool done = false;
         uint32_t pair_count = 0;
     };
     Waves waves_;

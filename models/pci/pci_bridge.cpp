@@ -233,6 +233,7 @@ PciBridge::Fault PciBridge::transfer_segment(uint64_t host_address, uint32_t loc
     }
     ns += transaction_ns(bytes, direction);
     ++segments_;
+    waves_.bytes += bytes;
     return {};
 }
 
@@ -257,6 +258,7 @@ PciBridge::Fault PciBridge::run_transfer(double& ns) {
         if (!visited.insert(next).second) return {DmaFault::kChainLoop, next};
         DmaDescriptor d{};
         if (Fault f = fetch_descriptor(next, d)) return f;
+        ++waves_.descriptors;
         ns += transaction_ns(sizeof d, Direction::kToBoard);
         if (Fault f = transfer_segment(d.host_address, d.local_address, d.bytes, dma_.to_host, ns)) return f;
         next = d.next;
@@ -266,6 +268,8 @@ PciBridge::Fault PciBridge::run_transfer(double& ns) {
 
 void PciBridge::finish(const Fault& fault) {
     ++transfers_;
+    waves_.busy = false;
+    waves_.error = static_cast<bool>(fault);
     dma_.busy = false;
     dma_.done = !fault;
     if (fault) {  // otherwise a refused START's error stays visible
@@ -282,6 +286,7 @@ void PciBridge::finish(const Fault& fault) {
 void PciBridge::dma_engine() {
     for (;;) {
         wait(dma_start_);
+        waves_ = Waves{true, dma_.to_host, false, 0, 0};
         if (!abort_requested_) {
             if (fault_due(faults_, FaultKind::kDmaHang)) {
                 wait(abort_);  // never completes: only the host's ABORT ends it
@@ -297,10 +302,21 @@ void PciBridge::dma_engine() {
         }
         // Aborted: idle, with the status the host cleared by aborting.
         ++transfers_;
+        waves_.busy = false;
         dma_.busy = false;
         abort_requested_ = false;
         inta_changed_.notify(SC_ZERO_TIME);
     }
+}
+
+void PciBridge::trace(WaveList& waves) const {
+    const std::string p = std::string(name()) + ".dma.";
+    waves.group("bridge: DMA engine");
+    waves.add(waves_.busy, p + "busy");
+    waves.add(waves_.to_host, p + "to_host");
+    waves.add(waves_.bytes, p + "bytes", 32);
+    waves.add(waves_.descriptors, p + "descriptors", 11);
+    waves.add(waves_.error, p + "error");
 }
 
 void PciBridge::drive_inta() {

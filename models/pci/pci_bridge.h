@@ -15,6 +15,7 @@
 
 #include "models/common/fault_plan.h"
 #include "models/common/register_bank.h"
+#include "models/common/wave_list.h"
 #include "models/pci/dma_registers.h"
 #include "models/pci/bus_timing.h"
 
@@ -41,6 +42,10 @@ public:
     // Bus transactions repeated after a retry or a disconnect.
     uint64_t repeated_transactions() const { return repeated_; }
     const DmaRegisters& dma_registers() const { return dma_; }
+
+    // Adds the DMA engine's waveforms (busy, direction, bytes, descriptors,
+    // error) to a trace file, before the first sc_start.
+    void trace(WaveList& waves) const;
 
     // Bytes moved per local-bus or host transaction: the engine's only buffer.
     static constexpr uint32_t kBurstBytes = 4096;
@@ -83,6 +88,12 @@ private:
     uint64_t segments_ = 0;
     uint64_t repeated_ = 0;
     std::vector<unsigned char> buffer_;
+    // Waveform values: the transfer under way, kept current whether traced or not.
+    struct Waves {
+        bool busy = false, to_host = false, error = false;
+        uint32_t bytes = 0;        // bytes of the transfer (every segment of a chain)
+        uint32_t descriptors = 0;  // descriptors fetched (0 in register mode)
+    } waves_;
 };
 
 }  // namespace cdvp

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstring>
 #include <iostream>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -41,6 +42,7 @@ struct Outputs {
     OutputFile* pairs = nullptr;
     OutputFile* report = nullptr;
     OutputFile* vcd = nullptr;
+    OutputFile* gtkw = nullptr;  // GTKWave save file beside a VCD written to a file
     std::string vcd_base() const {
         if (vcd == nullptr) return {};
         const std::string& t = vcd->temp_path();
@@ -48,20 +50,55 @@ struct Outputs {
     }
 };
 
+// The save file beside a VCD written to a file ("w.vcd" -> "w.gtkw"); none
+// for a device or descriptor.
+std::string gtkw_path(const std::string& vcd) {
+    if (vcd == "-" || vcd.rfind("/dev/", 0) == 0) return {};
+    const std::size_t dot = vcd.size() >= 4 ? vcd.size() - 4 : std::string::npos;
+    return (dot != std::string::npos && vcd.compare(dot, 4, ".vcd") == 0 ? vcd.substr(0, dot) : vcd) + ".gtkw";
+}
+
 // Declares the inputs and outputs and checks them together before any work.
 void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out) {
     if (vm.count("trace")) out.files.add_input("--trace", o.trace);
     if (vm.count("board") && !o.board_name.empty()) out.files.add_input("--board", board_preset_path(o.board_name));
-    std::optional<std::size_t> pairs, report, vcd;
+    std::optional<std::size_t> pairs, report, vcd, gtkw;
     if (vm.count("pairs-out")) pairs = out.files.add_output("--pairs-out", o.pairs_out);
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
-    if (vm.count("vcd")) vcd = out.files.add_output("--vcd", o.vcd, ".vcd", false);
+    if (vm.count("vcd")) {
+        vcd = out.files.add_output("--vcd", o.vcd, ".vcd", false);
+        if (const std::string save = gtkw_path(o.vcd); !save.empty()) {
+            gtkw = out.files.add_output("--vcd (its GTKWave save file)", save);
+        }
+    }
     // The summary is an output too: committed with the files or not at all.
     if (!o.quiet) out.files.add_standard_output("standard output");
     out.files.open();
     if (pairs) out.pairs = &out.files.file(*pairs);
     if (report) out.report = &out.files.file(*report);
     if (vcd) out.vcd = &out.files.file(*vcd);
+    if (gtkw) out.gtkw = &out.files.file(*gtkw);
+}
+
+// --vcd-frames A:B, frame numbers as the run numbers them.
+std::pair<uint64_t, uint64_t> vcd_window(const RunOptions& o, const po::variables_map& vm) {
+    if (vm.count("vcd-frames") == 0) return {0, UINT64_MAX};
+    if (vm.count("vcd") == 0) throw InputError("--vcd-frames: traces a window of frames into --vcd; give --vcd too");
+    const std::string& text = o.vcd_frames;
+    const std::size_t colon = text.find(':');
+    auto number = [&](const std::string& digits, uint64_t& value) {
+        if (digits.empty() || digits.size() > 19 || digits.find_first_not_of("0123456789") != std::string::npos) {
+            return false;
+        }
+        value = std::stoull(digits);
+        return true;
+    };
+    uint64_t first = 0, last = 0;
+    if (colon == std::string::npos || !number(text.substr(0, colon), first) || !number(text.substr(colon + 1), last) ||
+        first > last) {
+        throw InputError("--vcd-frames: expected A:B, frame numbers with A <= B, got '" + excerpt(text) + "'");
+    }
+    return {first, last};
 }
 
 void check_source_options(const RunOptions& o, const po::variables_map& vm) {
@@ -111,6 +148,7 @@ struct Setup {
     uint32_t block_rams = 0;  // the FPGA's; 0: unbounded
     ValueOrigins origins;
     std::vector<std::unique_ptr<BroadPhase>> baselines;
+    std::pair<uint64_t, uint64_t> trace_window{0, UINT64_MAX};  // --vcd-frames
 };
 
 // --fidelity: fast unless waveforms are asked for, which need the clocked engine.
@@ -160,6 +198,7 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
     setup.platform.quantum_ns = o.quantum_ns;
     setup.platform.fidelity = fidelity(o, vm);
+    setup.trace_window = vcd_window(o, vm);
     std::stringstream names(o.baselines);
     for (std::string name; std::getline(names, name, ',');) {
         try {
@@ -211,6 +250,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
     run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
     run.bus = platform.bus_timing().describe();
+    platform.set_trace_window(setup.trace_window.first, setup.trace_window.second);
     if (out.pairs) write_pairs_header(out.pairs->stream());
     // Every output is written a frame at a time: memory stays flat however
     // long the run.
@@ -249,6 +289,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     }
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     platform.close_trace();
+    if (out.gtkw) platform.write_gtkw(out.gtkw->stream(), std::filesystem::absolute(o.vcd).string());
 
     if (report) report->end(totals);
     if (!o.quiet) {

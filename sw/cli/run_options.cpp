@@ -65,7 +65,11 @@ po::options_description run_options(RunOptions& o) {
     output.add_options()
         ("pairs-out", po::value(&o.pairs_out)->value_name("FILE"), "overlapping pairs CSV (frame,a,b)")
         ("report", po::value(&o.report)->value_name("FILE"), "JSON report: configuration and per-frame cycles")
-        ("vcd", po::value(&o.vcd)->value_name("FILE"), "board waveforms (VCD, opens in GTKWave)")
+        ("vcd", po::value(&o.vcd)->value_name("FILE"),
+         "waveforms of the board, bridge DMA and interrupts (VCD), with a GTKWave save file beside it "
+         "(FILE minus .vcd, plus .gtkw) that groups the signals by block")
+        ("vcd-frames", po::value(&o.vcd_frames)->value_name("A:B"),
+         "trace only frames A to B (as the run numbers them); the others run untraced")
         ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors")
         ("help,h", po::bool_switch(&o.help), "show this help");
     po::options_description all(

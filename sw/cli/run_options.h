@@ -28,6 +28,7 @@ struct RunOptions {
     std::string fidelity = "fast";  // cycle when only --vcd is given
     double quantum_ns = 0;   // host CPU quantum; 0: synchronise at every access
     std::string pairs_out, report, vcd;
+    std::string vcd_frames;  // A:B
     bool quiet = false;
     bool help = false;
 };
