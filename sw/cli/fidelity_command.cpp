@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -241,9 +242,9 @@ int fidelity_levels(int argc, char** argv) {
         }
     }
     if (out_dir.empty()) throw InputError("--out DIR is required (see cdvp fidelity --help)");
-    if (mkdir(out_dir.c_str(), 0777) != 0 && errno != EEXIST) {
-        throw InputError("--out: " + excerpt(out_dir) + ": cannot create: " + std::strerror(errno));
-    }
+    std::error_code error;
+    std::filesystem::create_directories(out_dir, error);  // with its parents, as mkdir -p
+    if (error) throw InputError("--out: " + excerpt(out_dir) + ": cannot create: " + error.message());
     struct stat status {};
     if (stat(out_dir.c_str(), &status) != 0 || !S_ISDIR(status.st_mode)) {
         throw InputError("--out: " + excerpt(out_dir) + ": expected a directory");

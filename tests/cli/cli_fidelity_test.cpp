@@ -25,10 +25,10 @@ std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
 
 TEST_F(Cli, FidelityRunsEveryLevelAndWritesTheTableAndThePlot) {
     const Result r = run("fidelity --scene spheres --objects 80 --frames 3 --board adm-xrc-ii --m 2 --pair-buffer 9 "
-                         "--wait poll --out results");
+                         "--wait poll --out results/fidelity");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
-    const auto rows = csv_rows(slurp(dir_ / "results" / "fidelity.csv"));
+    const auto rows = csv_rows(slurp(dir_ / "results" / "fidelity" / "fidelity.csv"));
     ASSERT_EQ(rows.size(), 7u) << "a header and six levels";
     const std::vector<std::string>& header = rows[0];
     auto column = [&](const std::string& name) {
@@ -45,7 +45,7 @@ TEST_F(Cli, FidelityRunsEveryLevelAndWritesTheTableAndThePlot) {
         EXPECT_EQ(rows[k][column("pairs_identical")], "yes") << "level " << k;
     }
     EXPECT_EQ(std::stod(rows[2][column("error_total_percent")]), 0.0) << "the fast engine at quantum 0 is exact";
-    const std::string png = slurp(dir_ / "results" / "fidelity.png");
+    const std::string png = slurp(dir_ / "results" / "fidelity" / "fidelity.png");
     ASSERT_GT(png.size(), 1000u);
     EXPECT_EQ(png.substr(1, 3), "PNG");
     EXPECT_NE(r.out.find("cycle q=0ns"), std::string::npos) << r.out;
