@@ -214,6 +214,45 @@ std::string plot_script(const std::string& csv_path, const std::string& png_path
     return gp.str();
 }
 
+// The directories a run creates for --out (as mkdir -p), removed again
+// unless the run succeeds (they are empty then: the outputs' temporaries
+// have gone first).
+class CreatedDirectories {
+public:
+    void create(const std::string& path) {
+        std::vector<std::filesystem::path> missing;
+        for (std::filesystem::path p = std::filesystem::absolute(path); !p.empty() && !std::filesystem::exists(p);
+             p = p.parent_path()) {
+            missing.push_back(p);
+            if (p == p.parent_path()) break;
+        }
+        for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+            std::error_code error;
+            if (!std::filesystem::create_directory(*it, error) && error) {
+                throw InputError("--out: " + excerpt(path) + ": cannot create: " + error.message());
+            }
+            made_.push_back(*it);
+        }
+    }
+    void keep() { made_.clear(); }
+    ~CreatedDirectories() {
+        std::error_code ignored;
+        for (auto it = made_.rbegin(); it != made_.rend(); ++it) std::filesystem::remove(*it, ignored);
+    }
+
+private:
+    std::vector<std::filesystem::path> made_;
+};
+
+// The value of a forwarded option ("--trace FILE" or "--trace=FILE"), or "".
+std::string option_value(const std::vector<std::string>& args, const std::string& option) {
+    for (std::size_t k = 0; k < args.size(); ++k) {
+        if (args[k] == option && k + 1 < args.size()) return args[k + 1];
+        if (args[k].rfind(option + "=", 0) == 0) return args[k].substr(option.size() + 1);
+    }
+    return {};
+}
+
 // The options that fidelity sets itself or that do not apply to it.
 bool reserved(const std::string& arg) {
     for (const char* option : {"--fidelity", "--quantum-ns", "--report", "--pairs-out", "--vcd", "--inject",
@@ -242,18 +281,21 @@ int fidelity_levels(int argc, char** argv) {
         }
     }
     if (out_dir.empty()) throw InputError("--out DIR is required (see cdvp fidelity --help)");
-    std::error_code error;
-    std::filesystem::create_directories(out_dir, error);  // with its parents, as mkdir -p
-    if (error) throw InputError("--out: " + excerpt(out_dir) + ": cannot create: " + error.message());
     struct stat status {};
-    if (stat(out_dir.c_str(), &status) != 0 || !S_ISDIR(status.st_mode)) {
+    if (stat(out_dir.c_str(), &status) == 0 && !S_ISDIR(status.st_mode)) {
         throw InputError("--out: " + excerpt(out_dir) + ": expected a directory");
     }
+    // Declared first, so they go last: temporaries are removed before the
+    // directories this run made, and a failed run leaves neither.
+    CreatedDirectories made;
     OutputSet files;
-    const std::size_t csv = files.add_output("--out", out_dir + "/fidelity.csv");
-    const std::size_t png = files.add_output("--out", out_dir + "/fidelity.png", "", false);
-    if (!quiet) files.add_standard_output("standard output");
-    files.open();
+    for (const char* input : {"--trace", "--board"}) {
+        const std::string path = option_value(forwarded, input);
+        // A board given by name is a shipped preset; only a path can be an output's target.
+        if (!path.empty() && (std::string(input) == "--trace" || path.find('/') != std::string::npos)) {
+            files.add_input(input, path);
+        }
+    }
 
     const std::string self = self_path();
     const bool show_progress = !quiet && isatty(STDERR_FILENO);
@@ -283,6 +325,11 @@ int fidelity_levels(int argc, char** argv) {
         results.push_back(read_level(report.path(), pairs.path()));
     }
 
+    made.create(out_dir);
+    const std::size_t csv = files.add_output("--out", out_dir + "/fidelity.csv");
+    const std::size_t png = files.add_output("--out", out_dir + "/fidelity.png", "", false);
+    if (!quiet) files.add_standard_output("standard output");
+    files.open();
     const std::string csv_body = csv_text(results);
     files.file(csv).stream() << csv_body << std::flush;
     ScratchFile script(".gp"), plot_errors(".err");
@@ -298,6 +345,7 @@ int fidelity_levels(int argc, char** argv) {
         std::cerr << "cdvp fidelity: " << printable(*error) << '\n';
         return kExitBadInput;
     }
+    made.keep();
     return kExitDone;
 }
 

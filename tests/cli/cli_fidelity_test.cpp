@@ -59,7 +59,7 @@ TEST_F(Cli, FidelityRefusesBadInputWithOneLineAndWritesNothing) {
     } cases[] = {
         {"fidelity --scene spheres --objects 10", "cdvp fidelity: --out DIR is required"},
         {"fidelity --scene spheres --objects 10 --out r --vcd w.vcd", "cdvp fidelity: --vcd: set by cdvp fidelity"},
-        {"fidelity --scene spheres --objects 10 --out r --m 0", "cdvp fidelity: --m"},
+        {"fidelity --scene spheres --objects 10 --out r/deeper --m 0", "cdvp fidelity: --m"},
         {"fidelity --trace missing.csv --out r", "cdvp fidelity: missing.csv: cannot open"},
     };
     for (const Case& c : cases) {
@@ -67,9 +67,23 @@ TEST_F(Cli, FidelityRefusesBadInputWithOneLineAndWritesNothing) {
         EXPECT_EQ(r.status, 2) << c.args << ": " << r.err;
         EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << c.args << ": " << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
-        EXPECT_FALSE(fs::exists(dir_ / "r" / "fidelity.csv")) << c.args;
-        EXPECT_FALSE(fs::exists(dir_ / "r" / "fidelity.png")) << c.args;
+        EXPECT_FALSE(fs::exists(dir_ / "r")) << c.args << ": a failed run leaves no directory either";
     }
+}
+
+TEST_F(Cli, FidelityNeverWritesOverItsInputs) {
+    fs::create_directories(dir_ / "d");
+    const std::string original = slurp(trace("small.csv"));
+    write("d/fidelity.csv", original);
+    const Result r = run("fidelity --trace d/fidelity.csv --out d");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("--trace"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(slurp(dir_ / "d" / "fidelity.csv"), original) << "the input is untouched";
+    EXPECT_FALSE(fs::exists(dir_ / "d" / "fidelity.png"));
+    const Result file = run("fidelity --scene spheres --objects 10 --out d/fidelity.csv");
+    EXPECT_EQ(file.status, 2);
+    EXPECT_EQ(file.err.rfind("cdvp fidelity: --out: d/fidelity.csv: expected a directory", 0), 0u) << file.err;
 }
 
 }  // namespace
