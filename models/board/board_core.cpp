@@ -1,5 +1,6 @@
 #include "models/board/board_core.h"
 
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -89,6 +90,17 @@ BoardCore::Write BoardCore::write_coordinate(Coordinate coordinate, uint32_t ind
         return Write::kRefused;
     }
     store_[coordinate][index] = word;
+    return Write::kDone;
+}
+
+BoardCore::Write BoardCore::write_coordinates(Coordinate coordinate, uint32_t first, const unsigned char* words,
+                                             uint32_t count) {
+    if (first > capacity_ || count > capacity_ - first) return Write::kUnmapped;
+    if (status().busy) {
+        raise_error(ControlRegisters::kWriteWhileBusy);
+        return Write::kRefused;
+    }
+    std::memcpy(store_[coordinate].data() + first, words, std::size_t{count} * sizeof(uint32_t));
     return Write::kDone;
 }
 

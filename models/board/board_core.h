@@ -38,6 +38,9 @@ public:
     // Coordinate memory writes are refused (kRefused, ERROR set) while busy,
     // kUnmapped past capacity.
     Write write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word);
+    // A run of `count` words (little-endian, as on the bus) from box `first`
+    // on: a burst's worth, checked once; refused whole while busy.
+    Write write_coordinates(Coordinate coordinate, uint32_t first, const unsigned char* words, uint32_t count);
     uint32_t read_coordinate(Coordinate coordinate, uint32_t index) const { return store_[coordinate][index]; }
     // The pair buffer as the host reads it now.
     uint32_t buffered_pairs();

@@ -147,12 +147,11 @@ tlm::tlm_response_status CollisionBoard::access(tlm::tlm_command command, uint64
         const uint64_t first = offset % am::kWindowSize / 4;
         // One window per access, and only the boxes the memories hold.
         if (first + words > core_.capacity()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
-        for (uint64_t k = 0; k < words; ++k) {
-            const auto index = static_cast<uint32_t>(first + k);
-            if (!write) set_word(k, core_.read_coordinate(coordinate, index));
-            else if (const auto r = core_.write_coordinate(coordinate, index, word_at(k)); r != BoardCore::Write::kDone)
-                return response_for(r);
+        if (write) {
+            return response_for(core_.write_coordinates(coordinate, static_cast<uint32_t>(first), data,
+                                                        static_cast<uint32_t>(words)));
         }
+        for (uint64_t k = 0; k < words; ++k) set_word(k, core_.read_coordinate(coordinate, static_cast<uint32_t>(first + k)));
         return tlm::TLM_OK_RESPONSE;
     }
     if (range_within(address, length, am::kPairBuffer, am::kPairBufferSize)) {
