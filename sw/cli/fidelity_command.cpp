@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -297,6 +298,28 @@ int fidelity_levels(int argc, char** argv) {
         }
     }
 
+    // Every level reads the trace from the start: a pipe (or any trace that
+    // is not a regular file) is copied once, and the levels read the copy.
+    std::optional<ScratchFile> spooled;
+    std::string spooled_from;  // the trace as the user named it
+    for (std::size_t k = 0; k < forwarded.size(); ++k) {
+        const bool joined = forwarded[k].rfind("--trace=", 0) == 0;
+        if (forwarded[k] != "--trace" && !joined) continue;
+        const std::string path = joined ? forwarded[k].substr(8) : (k + 1 < forwarded.size() ? forwarded[k + 1] : "");
+        struct stat trace_status {};
+        if (path.empty() || stat(path.c_str(), &trace_status) != 0 || S_ISREG(trace_status.st_mode)) break;
+        spooled.emplace(".csv");
+        spooled_from = path;
+        std::ifstream in(path, std::ios::binary);
+        std::ofstream out(spooled->path(), std::ios::binary);
+        if (!in) throw InputError("--trace: " + excerpt(path) + ": cannot open");
+        if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();  // an empty one stays empty
+        if (!out.flush()) throw std::runtime_error("cannot copy the trace to $TMPDIR");
+        if (joined) forwarded[k] = "--trace=" + spooled->path();
+        else forwarded[k + 1] = spooled->path();
+        break;
+    }
+
     const std::string self = self_path();
     const bool show_progress = !quiet && isatty(STDERR_FILENO);
     std::vector<LevelResult> results;
@@ -319,6 +342,11 @@ int fidelity_levels(int argc, char** argv) {
             // The level's own one-line error, under this command's name.
             std::string message = slurp(errors.path());
             if (message.rfind("cdvp run: ", 0) == 0) message = "cdvp fidelity: " + message.substr(10);
+            if (spooled) {  // the copy's name means nothing to the user
+                for (std::size_t at; (at = message.find(spooled->path())) != std::string::npos;) {
+                    message.replace(at, spooled->path().size(), spooled_from);
+                }
+            }
             std::cerr << message;
             return WEXITSTATUS(wait_status);
         }

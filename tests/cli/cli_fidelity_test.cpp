@@ -1,5 +1,7 @@
 // `cdvp fidelity`: every level run, the CSV and the plot written together,
 // bad input refused like `cdvp run` refuses it.
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -69,6 +71,17 @@ TEST_F(Cli, FidelityRefusesBadInputWithOneLineAndWritesNothing) {
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
         EXPECT_FALSE(fs::exists(dir_ / "r")) << c.args << ": a failed run leaves no directory either";
     }
+}
+
+// A trace from a pipe is read once and given to every level.
+TEST_F(Cli, FidelityReadsATraceFromAPipeOnce) {
+    ASSERT_EQ(mkfifo((dir_ / "pipe").c_str(), 0600), 0);
+    const Result r = run("fidelity --trace pipe --out r -q",
+                         "(cat '" + trace("small.csv") + "' > pipe &) ;");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string csv = slurp(dir_ / "r" / "fidelity.csv");
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7) << csv;
+    EXPECT_EQ(csv.find(",no\n"), std::string::npos) << "every level saw the same frames: " << csv;
 }
 
 TEST_F(Cli, FidelityNeverWritesOverItsInputs) {
