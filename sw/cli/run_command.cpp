@@ -80,6 +80,19 @@ void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out
     if (gtkw) out.gtkw = &out.files.file(*gtkw);
 }
 
+// A --vcd-frames window that starts after the run's last frame would trace
+// nothing: refused, as an --inject for such a frame is.
+void check_trace_window(const std::pair<uint64_t, uint64_t>& window, std::optional<uint64_t> last,
+                        const std::string& source) {
+    if (window.first == 0 && window.second == UINT64_MAX) return;
+    if (!last || window.first > *last) {
+        throw InputError("--vcd-frames: " + std::to_string(window.first) + ":" + std::to_string(window.second) +
+                         (last ? " starts after the run's last frame " + std::to_string(*last)
+                               : std::string(" asks for frames of a run with none")) +
+                         " (" + excerpt(source) + ")");
+    }
+}
+
 // --vcd-frames A:B, frame numbers as the run numbers them.
 std::pair<uint64_t, uint64_t> vcd_window(const RunOptions& o, const po::variables_map& vm) {
     if (vm.count("vcd-frames") == 0) return {0, UINT64_MAX};
@@ -349,6 +362,7 @@ int run_command(int argc, char** argv) {
         check_scene_fits(o, vm, board, setup.block_rams, setup.origins, source->max_objects(), source->frame_count());
         check_inject_frames(setup.platform.faults, source->last_frame(),
                             [&source](uint64_t n) { return source->has_frame(n); }, source->describe());
+        check_trace_window(setup.trace_window, source->last_frame(), source->describe());
         return simulate(o, *source, setup, out);
     } catch (po::error_with_option_name& e) {
         // boost quotes an unknown option as typed: keep a huge one short.

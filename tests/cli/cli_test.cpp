@@ -98,7 +98,7 @@ TEST_F(Cli, WaveformsOfAWindowOfFrames) {
     EXPECT_LT(one * 2, all) << "one frame of four traced";
     EXPECT_GT(one, 10000u) << "the window's frame is traced";
     for (const char* bad : {"--vcd-frames 1:1", "--vcd one.vcd --vcd-frames 3:1", "--vcd one.vcd --vcd-frames 2",
-                            "--vcd one.vcd --vcd-frames -1:2"}) {
+                            "--vcd one.vcd --vcd-frames -1:2", "--vcd one.vcd --vcd-frames 4:9"}) {
         const Result r = run(scene + " " + bad);
         EXPECT_EQ(r.status, 2) << bad;
         EXPECT_EQ(r.err.rfind("cdvp run: --vcd-frames: ", 0), 0u) << bad << ": " << r.err;
