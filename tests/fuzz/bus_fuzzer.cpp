@@ -34,6 +34,13 @@ using D = DmaRegisters;
 namespace am = address_map;
 
 constexpr uint32_t kCapacity = 64;
+// bus_fast_fuzzer builds this file with the fast engine behind the board's
+// registers: the same invariants must hold for it.
+#ifdef CDVP_FUZZ_FAST_ENGINE
+constexpr Fidelity kFidelity = Fidelity::kFast;
+#else
+constexpr Fidelity kFidelity = Fidelity::kCycle;
+#endif
 constexpr uint64_t kHostBytes = 1 << 16;
 constexpr std::size_t kMaxOps = 256;
 constexpr double kInputTimeLimitMs = 200;  // simulated; a program that is not done by then hung
@@ -86,7 +93,7 @@ struct Harness : sc_module {
     Harness(const sc_module_name& name)
         : sc_module(name),
           pio("pio"),
-          board("board", fuzz_board(), kCapacity),
+          board("board", fuzz_board(), kCapacity, kFidelity),
           bridge("bridge", std::make_shared<PcieTiming>(fast_bus())),
           memory("memory", kHostBytes) {
         pio.bind(bridge.pci_target);
