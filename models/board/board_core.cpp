@@ -112,7 +112,7 @@ uint32_t BoardCore::Status::bits() const {
 
 BoardCore::Status BoardCore::status() const {
     return Status{phase_ == Phase::Running || phase_ == Phase::Paused, phase_ == Phase::Done,
-                  phase_ == Phase::Paused, error_, error_cause_, irq_pending_};
+                  phase_ == Phase::Paused, error_, error_cause_};
 }
 
 SweepCounters BoardCore::counters() { return running() ? engine_->counters_after(edges_) : held_; }

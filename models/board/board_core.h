@@ -53,7 +53,6 @@ public:
     struct Status {
         bool busy, done, overflow, error;
         uint32_t error_cause;
-        bool irq_pending;
         uint32_t bits() const;
     };
     Status status() const;

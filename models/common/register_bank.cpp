@@ -20,6 +20,10 @@ const RegisterBank::Register* RegisterBank::find(uint32_t offset) const {
     return nullptr;
 }
 
+RegisterBank::Register* RegisterBank::find_mutable(uint32_t offset) {
+    return const_cast<Register*>(find(offset));
+}
+
 RegisterResult RegisterBank::read(uint32_t offset, uint32_t& value) const {
     const Register* r = find(offset);
     if (r == nullptr) return RegisterResult::kUnmapped;
@@ -29,7 +33,7 @@ RegisterResult RegisterBank::read(uint32_t offset, uint32_t& value) const {
 }
 
 RegisterResult RegisterBank::write(uint32_t offset, uint32_t value) {
-    auto* r = const_cast<Register*>(find(offset));
+    Register* r = find_mutable(offset);
     if (r == nullptr) return RegisterResult::kUnmapped;
     if (r->access == RegisterAccess::kReadOnly) return RegisterResult::kDone;
     if (r->on_write) return r->on_write(value);

@@ -48,6 +48,7 @@ public:
     const std::vector<Register>& registers() const { return registers_; }
 
 private:
+    Register* find_mutable(uint32_t offset);
     std::vector<Register> registers_;  // in declaration order; banks are small
 };
 

@@ -22,7 +22,8 @@ constexpr uint32_t kMaxObjects = kWindowSize / 4;
 constexpr uint32_t kMaxBufferedPairs = kPairBufferSize / 8;
 }  // namespace address_map
 
-// Registers as members. All registers are 32 bits wide; 64-bit counters are
+// The register map: offsets, bits and error causes (BoardCore declares the
+// registers themselves). All registers are 32 bits wide; 64-bit counters are
 // split into _LO/_HI words (read LO first; the board is idle when the host
 // reads them, so no latch is needed).
 struct ControlRegisters {
@@ -58,16 +59,6 @@ struct ControlRegisters {
     };
     static constexpr uint32_t kIdValue = 0xCD7B'0001;  // "cdvp", register map version 1
 
-    uint32_t object_count = 0;
-    bool busy = false;      // a sweep is under way (running or paused)
-    bool done = false;      // the last sweep finished; every pair is in the buffer
-    bool overflow = false;  // paused: the pair buffer is full, drain it and resume
-    bool error = false;     // a command or access was refused; error_cause says which
-    uint32_t error_cause = 0;  // a BoardError
-    bool irq_pending = false;  // set on done or overflow; START, RESUME or ACKNOWLEDGE clear it
-    uint64_t cycles = 0;
-    uint64_t stalls = 0;
-
     static const char* describe(uint32_t cause) {
         switch (cause) {
             case kNoError: return "no error";
@@ -79,14 +70,6 @@ struct ControlRegisters {
             default: return "unknown cause";
         }
     }
-
-    uint32_t status() const {
-        return (busy ? uint32_t{kBusy} : 0u) | (done ? uint32_t{kDone} : 0u) |
-               (overflow ? uint32_t{kOverflow} : 0u) | (error ? uint32_t{kError} : 0u);
-    }
-    // The interrupt line: high from done or overflow until the host
-    // acknowledges (so a shared interrupt line can fall between events).
-    bool interrupt() const { return irq_pending; }
 };
 
 }  // namespace cdvp

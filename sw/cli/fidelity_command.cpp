@@ -245,13 +245,23 @@ private:
     std::vector<std::filesystem::path> made_;
 };
 
-// The value of a forwarded option ("--trace FILE" or "--trace=FILE"), or "".
-std::string option_value(const std::vector<std::string>& args, const std::string& option) {
+// Where a forwarded option's value is ("--trace FILE" or "--trace=FILE"):
+// the argument that holds it and where in it the value starts.
+struct OptionValue {
+    std::size_t index;
+    std::size_t offset;
+};
+std::optional<OptionValue> find_option(const std::vector<std::string>& args, const std::string& option) {
     for (std::size_t k = 0; k < args.size(); ++k) {
-        if (args[k] == option && k + 1 < args.size()) return args[k + 1];
-        if (args[k].rfind(option + "=", 0) == 0) return args[k].substr(option.size() + 1);
+        if (args[k] == option && k + 1 < args.size()) return OptionValue{k + 1, 0};
+        if (args[k].rfind(option + "=", 0) == 0) return OptionValue{k, option.size() + 1};
     }
-    return {};
+    return std::nullopt;
+}
+
+std::string option_value(const std::vector<std::string>& args, const std::string& option) {
+    const std::optional<OptionValue> at = find_option(args, option);
+    return at ? args[at->index].substr(at->offset) : std::string();
 }
 
 // The options that fidelity sets itself or that do not apply to it.
@@ -302,22 +312,19 @@ int fidelity_levels(int argc, char** argv) {
     // is not a regular file) is copied once, and the levels read the copy.
     std::optional<ScratchFile> spooled;
     std::string spooled_from;  // the trace as the user named it
-    for (std::size_t k = 0; k < forwarded.size(); ++k) {
-        const bool joined = forwarded[k].rfind("--trace=", 0) == 0;
-        if (forwarded[k] != "--trace" && !joined) continue;
-        const std::string path = joined ? forwarded[k].substr(8) : (k + 1 < forwarded.size() ? forwarded[k + 1] : "");
+    if (const std::optional<OptionValue> at = find_option(forwarded, "--trace")) {
+        const std::string path = forwarded[at->index].substr(at->offset);
         struct stat trace_status {};
-        if (path.empty() || stat(path.c_str(), &trace_status) != 0 || S_ISREG(trace_status.st_mode)) break;
-        spooled.emplace(".csv");
-        spooled_from = path;
-        std::ifstream in(path, std::ios::binary);
-        std::ofstream out(spooled->path(), std::ios::binary);
-        if (!in) throw InputError("--trace: " + excerpt(path) + ": cannot open");
-        if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();  // an empty one stays empty
-        if (!out.flush()) throw std::runtime_error("cannot copy the trace to $TMPDIR");
-        if (joined) forwarded[k] = "--trace=" + spooled->path();
-        else forwarded[k + 1] = spooled->path();
-        break;
+        if (!path.empty() && stat(path.c_str(), &trace_status) == 0 && !S_ISREG(trace_status.st_mode)) {
+            spooled.emplace(".csv");
+            spooled_from = path;
+            std::ifstream in(path, std::ios::binary);
+            std::ofstream out(spooled->path(), std::ios::binary);
+            if (!in) throw InputError("--trace: " + excerpt(path) + ": cannot open");
+            if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();  // an empty one stays empty
+            if (!out.flush()) throw std::runtime_error("cannot copy the trace to $TMPDIR");
+            forwarded[at->index].replace(at->offset, std::string::npos, spooled->path());
+        }
     }
 
     const std::string self = self_path();

@@ -157,9 +157,7 @@ void check_scene_fits(const RunOptions& o, const po::variables_map& vm, const Bo
     check_model_memory(o, vm, board, origins, max_objects);
     check_simulated_time(o, vm, board, origins, max_objects, frame_count);
     const uint64_t needed = board.block_rams(max_objects);
-    BoardConfig one = board;
-    one.m = 1;
-    const uint64_t per_m = std::max<uint64_t>(1, one.block_rams(max_objects));
+    const uint64_t per_m = needed / board.m;  // block RAMs grow linearly with m
     if (block_rams == 0 || needed <= block_rams) return;
     // The FPGA's block RAM count is only ever a preset's.
     const uint64_t largest = block_rams / per_m;
