@@ -70,6 +70,13 @@ protected:
     fs::path dir_;
 };
 
+// Bad input refused: status 2 and one line on stderr that starts with 'start'.
+inline void expect_refusal(const Result& r, const std::string& start, const std::string& context = "") {
+    EXPECT_EQ(r.status, 2) << context << ": " << r.err.substr(0, 300);
+    EXPECT_EQ(r.err.rfind(start, 0), 0u) << context << ": " << r.err.substr(0, 300);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << context << ": one line";
+}
+
 // Starts `cdvp ARGS` in 'dir' with no shell in between, output discarded.
 inline pid_t spawn(const fs::path& dir, const std::vector<std::string>& args) {
     const pid_t pid = fork();
