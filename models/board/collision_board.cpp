@@ -89,7 +89,8 @@ void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& del
     payload.set_response_status(
         access(payload.get_command(), payload.get_address(), payload.get_data_ptr(), payload.get_data_length()));
     if (payload.get_command() == tlm::TLM_WRITE_COMMAND) schedule_clock(segments_before, at);
-    irq_changed_.notify(delay);  // a command or the synchronisation may have moved the line
+    // A command or the synchronisation may have moved the line.
+    if (core_.interrupt() != irq.read()) irq_changed_.notify(delay);
 }
 
 unsigned int CollisionBoard::transport_dbg(tlm::tlm_generic_payload& payload) {
