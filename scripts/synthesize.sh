@@ -5,7 +5,8 @@
 #
 #   scripts/synthesize.sh                  every row, in parallel (GNU parallel), CSV on stdout
 #   scripts/synthesize.sh --row FAMILY PIECE FORMAT M
-#                                          one row (e.g. xc2v compare_lane float32 -)
+#                                          one row (e.g. xc2v compare_lane float32 -,
+#                                          xc2v pair_collector distributed 8)
 #   scripts/synthesize.sh --check FAMILY PIECE FORMAT M
 #                                          re-synthesises one row and compares it with the stored one
 #
@@ -17,20 +18,29 @@ stored="$root/models/resources/synthesis.csv"
 header="family,piece,format,m,address_bits,fifo_depth,luts,lutram_luts,flip_flops,carry_cells,block_rams_18k,multipliers"
 address_bits=16   # up to 65,536 boxes: the board's largest scene
 fifo_depth=512    # the pair FIFO's default depth (models/pair_collector)
-families="xc2v xc7"
+families="xc2v xcup"
 ms="1 2 3 4 6 8 12 16 24 32"
 
 die() { echo "synthesize.sh: $*" >&2; exit 2; }
 
-# Yosys's cell statistics (text) -> the CSV's resource columns. LUT RAM and
-# shift registers count the LUTs they occupy (Xilinx UG070 and UG474).
+# Yosys's cell statistics (text) -> the CSV's resource columns. Distributed
+# RAM and shift registers count the LUTs they occupy: on Virtex-II a 4-input
+# LUT holds 16 bits and a dual-port RAM twice its single-port LUTs (Xilinx
+# UG002); on UltraScale+ a 6-input LUT holds 64 bits (UG574).
 count_cells() {
-    awk '
+    awk -v family="$1" '
+        BEGIN {
+            bits = family == "xc2v" ? 16 : 64
+            split("RAM16X1S:16:1 RAM32X1S:32:1 RAM64X1S:64:1 RAM128X1S:128:1 RAM256X1S:256:1 " \
+                  "RAM16X1D:16:2 RAM32X1D:32:2 RAM64X1D:64:2 RAM128X1D:128:2 RAM32M:64:4 RAM64M:64:4 " \
+                  "RAM32M16:64:8 RAM64M8:64:8", kinds, " ")
+            for (i in kinds) {
+                split(kinds[i], f, ":")
+                per_cell[f[1]] = f[3] * (f[2] > bits ? f[2] / bits : 1)
+            }
+        }
         $1 ~ /^LUT[1-6]$/                     { luts += $2 }
-        $1 ~ /^RAM16X1S$|^RAM32X1S$|^RAM64X1S$/ { lutram += $2 }
-        $1 ~ /^RAM16X1D$|^RAM32X1D$|^RAM64X1D$/ { lutram += 2 * $2 }
-        $1 ~ /^RAM128X1S$/                    { lutram += 2 * $2 }
-        $1 ~ /^RAM128X1D$|^RAM32M$|^RAM64M$/  { lutram += 4 * $2 }
+        $1 in per_cell                        { lutram += per_cell[$1] * $2 }
         $1 ~ /^SRL16E?$|^SRLC16E$|^SRLC32E$/  { lutram += $2 }
         $1 ~ /^FD/                            { ffs += $2 }
         $1 ~ /^MUXCY$|^XORCY$|^CARRY4$|^CARRY8$/ { carry += $2 }
@@ -56,7 +66,12 @@ row() {
             params="-set M $m -set AW $address_bits" ;;
         pair_collector)
             sources="$root/models/pair_collector/rtl/pair_collector.v"
-            params="-set M $m -set AW $address_bits -set DEPTH $fifo_depth" ;;
+            case $format in
+                block_ram) params="-set DISTRIBUTED 0" ;;
+                distributed) params="-set DISTRIBUTED 1" ;;
+                *) die "the pair collector's format is its memory: block_ram or distributed, not '$format'" ;;
+            esac
+            params="$params -set M $m -set AW $address_bits -set DEPTH $fifo_depth" ;;
         board_control)
             sources="$root/models/control_registers/rtl/board_control.v"
             params="" ;;
@@ -73,7 +88,7 @@ row() {
     [[ $piece == pair_collector ]] && depth=$fifo_depth
     local bits=-
     [[ $piece == address_generator || $piece == pair_collector ]] && bits=$address_bits
-    echo "$family,$piece,$format,$m,$bits,$depth,$(count_cells <"$log")"
+    echo "$family,$piece,$format,$m,$bits,$depth,$(count_cells "$family" <"$log")"
 }
 
 all_rows() {
@@ -83,7 +98,8 @@ all_rows() {
         for k in $(seq 8 32); do echo "$family compare_lane fixed$k -"; done
         for m in $ms; do
             echo "$family address_generator - $m"
-            echo "$family pair_collector - $m"
+            echo "$family pair_collector block_ram $m"
+            echo "$family pair_collector distributed $m"
         done
     done
 }

@@ -258,7 +258,8 @@ TEST(PairCollectorRtl, PassesEveryPairOnInRowThenColumnOrderUnderBackPressure) {
         sim.write_vectors(lines);
         const std::vector<std::string> results =
             sim.run("tb_pair_collector", {"models/pair_collector/rtl/pair_collector.v"},
-                    {{"M", std::to_string(m)}, {"DEPTH", "16"}}, "+count=" + std::to_string(lines.size()));
+                    {{"M", std::to_string(m)}, {"DEPTH", "16"}, {"DISTRIBUTED", m == 2 ? "1" : "0"}},
+                    "+count=" + std::to_string(lines.size()));
         ASSERT_EQ(results, expected) << "m = " << m;
     }
 }

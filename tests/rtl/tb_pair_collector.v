@@ -5,26 +5,24 @@ module tb_pair_collector;
     parameter M = 2;
     parameter AW = 16;
     parameter DEPTH = 16;
-    parameter DRAIN = 1;
+    parameter DISTRIBUTED = 0;
     localparam LANES = 2 * M - 1;
     reg [LANES+2*AW:0] vectors [0:65535];   // {drain, hits, row, first}
     reg clk = 0, clear = 1, ready = 0;
     reg [LANES-1:0] hits;
     reg [AW-1:0] row = 0, first = 0;
     wire room;
-    wire [DRAIN-1:0] out_valid;
-    wire [DRAIN*2*AW-1:0] out_pairs;
-    integer count, v, d, idle, out;
-    pair_collector #(.M(M), .AW(AW), .DEPTH(DEPTH), .DRAIN(DRAIN)) dut (
+    wire out_valid;
+    wire [2*AW-1:0] out_pair;
+    integer count, v, idle, out;
+    pair_collector #(.M(M), .AW(AW), .DEPTH(DEPTH), .DISTRIBUTED(DISTRIBUTED)) dut (
         .clk(clk), .clear(clear), .hits(hits), .row(row), .first(first), .drain_ready(ready),
-        .room(room), .out_valid(out_valid), .out_pairs(out_pairs));
+        .room(room), .out_valid(out_valid), .out_pair(out_pair));
     task edge_and_log;
         begin
             #1 clk = 1;
             #1 clk = 0;
-            for (d = 0; d < DRAIN; d = d + 1)
-                if (out_valid[d])
-                    $fwrite(out, "%0h %0h\n", out_pairs[d*2*AW+AW +: AW], out_pairs[d*2*AW +: AW]);
+            if (out_valid) $fwrite(out, "%0h %0h\n", out_pair[2*AW-1 -: AW], out_pair[AW-1:0]);
         end
     endtask
     initial begin
@@ -43,7 +41,7 @@ module tb_pair_collector;
         end
         hits = 0;
         ready = 1;
-        for (idle = 0; idle < DEPTH + 4; idle = idle + 1) edge_and_log;
+        for (idle = 0; idle < 2 * DEPTH + 4; idle = idle + 1) edge_and_log;
         $fclose(out);
         $finish;
     end
