@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -249,12 +250,16 @@ void BoardBroadphase::collect_cached_pairs() {
     cached_keys_.reserve(static_cast<std::size_t>(pairs.size()));
     const Slot* first = slots_.get();
     const Slot* end = first + capacity_;
+    // std::less orders any two pointers, even ones into other broad phases' storage.
+    const auto ours = [&](const btBroadphaseProxy* proxy) {
+        const auto* slot = static_cast<const Slot*>(proxy);
+        return !std::less<const Slot*>()(slot, first) && std::less<const Slot*>()(slot, end);
+    };
     for (int k = 0; k < pairs.size(); ++k) {
-        const auto* a = static_cast<const Slot*>(pairs[k].m_pProxy0);
-        const auto* b = static_cast<const Slot*>(pairs[k].m_pProxy1);
         // A shared cache may hold other broad phases' pairs: leave them alone.
-        if (a < first || a >= end || b < first || b >= end) continue;
-        cached_keys_.push_back(pair_key(static_cast<int>(a - first), static_cast<int>(b - first)));
+        if (!ours(pairs[k].m_pProxy0) || !ours(pairs[k].m_pProxy1)) continue;
+        cached_keys_.push_back(pair_key(static_cast<int>(static_cast<const Slot*>(pairs[k].m_pProxy0) - first),
+                                        static_cast<int>(static_cast<const Slot*>(pairs[k].m_pProxy1) - first)));
     }
     std::sort(cached_keys_.begin(), cached_keys_.end());
 }

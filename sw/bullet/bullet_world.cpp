@@ -19,7 +19,7 @@ double ns_between(Clock::time_point start, Clock::time_point end) {
 }
 
 constexpr btScalar kStep = btScalar(1.0 / 60.0);
-constexpr int kMaxProxies = 16384;  // btSimpleBroadphase's and btAxisSweep3's default handles
+constexpr uint64_t kDefaultHandles = 16384;  // btSimpleBroadphase's and btAxisSweep3's default
 
 }  // namespace
 
@@ -42,10 +42,15 @@ BroadphaseKind broadphase_kind(const std::string& name) {
 }
 
 std::unique_ptr<btBroadphaseInterface> make_broadphase(BroadphaseKind kind, const btVector3& world_min,
-                                                       const btVector3& world_max, BoardLink* link) {
+                                                       const btVector3& world_max, uint32_t proxies,
+                                                       BoardLink* link) {
+    const uint64_t handles = std::max<uint64_t>(kDefaultHandles, 2 * uint64_t{proxies});
+    if (handles > INT32_MAX) throw std::invalid_argument("too many proxies for Bullet's broad phases");
     switch (kind) {
-        case BroadphaseKind::kSimple: return std::make_unique<btSimpleBroadphase>(kMaxProxies);
-        case BroadphaseKind::kSap: return std::make_unique<btAxisSweep3>(world_min, world_max, kMaxProxies);
+        case BroadphaseKind::kSimple: return std::make_unique<btSimpleBroadphase>(static_cast<int>(handles));
+        case BroadphaseKind::kSap:
+            if (handles == kDefaultHandles) return std::make_unique<btAxisSweep3>(world_min, world_max);
+            return std::make_unique<bt32BitAxisSweep3>(world_min, world_max, static_cast<unsigned>(handles));
         case BroadphaseKind::kDbvt: return std::make_unique<btDbvtBroadphase>();
         case BroadphaseKind::kBoard:
             if (link == nullptr) throw std::invalid_argument("the board broad phase needs a board link");

@@ -22,9 +22,12 @@ const char* to_string(BroadphaseKind kind);
 BroadphaseKind broadphase_kind(const std::string& name);
 
 // World bounds are btAxisSweep3's quantization range (ignored by the others);
-// the board needs its link (shared, outliving the broad phase).
+// proxies: how many the scene starts with (btSimpleBroadphase and btAxisSweep3
+// get room for twice as many, at least their default 16,384); the board needs
+// its link (shared, outliving the broad phase), whose capacity bounds it.
 std::unique_ptr<btBroadphaseInterface> make_broadphase(BroadphaseKind kind, const btVector3& world_min,
-                                                       const btVector3& world_max, BoardLink* link);
+                                                       const btVector3& world_max, uint32_t proxies,
+                                                       BoardLink* link);
 
 // Wall times of one step, in ns (steady clock).
 struct StepTimes {

@@ -195,7 +195,7 @@ SceneLayout scene_layout(const SceneSpec& spec) {
 std::unique_ptr<BulletWorld> make_scene_world(const SceneSpec& spec, BroadphaseKind kind, BoardLink* link) {
     const SceneLayout layout = scene_layout(spec);
     auto world =
-        std::make_unique<BulletWorld>(make_broadphase(kind, layout.world_min, layout.world_max, link));
+        std::make_unique<BulletWorld>(make_broadphase(kind, layout.world_min, layout.world_max, layout.proxies, link));
     world->world().setGravity(kGravity);
     std::mt19937_64 rng(spec.seed);
     const uint32_t n = objects_of(spec);
