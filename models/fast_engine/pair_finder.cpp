@@ -87,8 +87,8 @@ void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList&
     cluster_by_first_cell();
     sort_by_min_x();
     bin();
-    sweep_cells(unordered_);
-    order(objects, unordered_, out);
+    sweep_cells();
+    order(objects, emit_pairs(), out);
 }
 
 void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
@@ -276,55 +276,76 @@ void PairFinder::for_each_cell(const CellSpan& span, Visit&& visit) const {
 
 // Box pruning in each cell: box p meets only boxes q after it (min x order)
 // with min_x(q) <= max_x(p), a prefix of the cell's rest; the block test does
-// the six comparisons, so blocks running past the prefix add nothing. Both
-// boxes are in this cell, so it is the first cell they share exactly when it
-// is the first on y of one of them and the first on z of one of them.
-void PairFinder::sweep_cells(PairList& unordered) const {
+// the six comparisons, so blocks running past the prefix add nothing. About
+// half the blocks tested hold a hit, too irregular for the branch predictor,
+// so the sweep only records blocks with hits (without a branch) and
+// emit_pairs() turns them into pairs afterwards.
+void PairFinder::sweep_cells() {
     const float* min_x = entries_.bound[kMinX].data();
-    const uint32_t* index = entry_index_.data();
-    const uint32_t* first = entry_first_.data();
-    unordered.clear();
+    hit_blocks_.resize(std::max<std::size_t>(hit_blocks_.size(), entry_count_ + 1));
+    std::size_t recorded = 0;
     for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
         const std::size_t end = cell_begin_[cell + 1];
         for (std::size_t p = cell_begin_[cell]; p < end; ++p) {
             float a[kCoordinates];
             entries_.get(p, a);
             const BlockTest test(entries_, a);
-            const uint32_t i = index[p];
             for (std::size_t q0 = p + 1; q0 < end; q0 += kBlock) {
-                uint32_t hits = test.hits(q0) & block_mask_before(q0, end);
-                if (hits != 0) {
-                    if ((first[p] & 1) == 0) hits &= block_flag_bits<0>(first, q0);
-                    if ((first[p] & 2) == 0) hits &= block_flag_bits<1>(first, q0);
-                    for_each_hit(hits, q0, [&](std::size_t q) {
-                        const uint32_t j = index[q];
-                        unordered.push_back({std::min(i, j), std::max(i, j)});
-                    });
-                }
+                const uint32_t hits = test.hits(q0) & block_mask_before(q0, end);
+                if (recorded + 1 == hit_blocks_.size()) hit_blocks_.resize(2 * hit_blocks_.size());
+                hit_blocks_[recorded] = {static_cast<uint32_t>(p), static_cast<uint32_t>(q0), hits};
+                recorded += hits != 0 ? 1 : 0;
                 if (q0 + kBlock >= end || !(min_x[q0 + kBlock - 1] <= a[kMaxX])) break;
             }
         }
     }
+    hit_block_count_ = recorded;
+}
+
+// Both boxes of a hit are in the block's cell, so it is the first cell they
+// share exactly when it is the first on y of one of them and the first on z
+// of one of them; the others are dropped. Every lane is written and the end
+// moves on by the lane's hit bit: no branch per hit.
+std::size_t PairFinder::emit_pairs() {
+    const uint32_t* index = entry_index_.data();
+    const uint32_t* first = entry_first_.data();
+    unordered_.resize(std::max<std::size_t>(unordered_.size(), kBlock * (hit_block_count_ + 1)));
+    IndexPair* out = unordered_.data();
+    std::size_t found = 0;
+    for (std::size_t r = 0; r < hit_block_count_; ++r) {
+        const HitBlock& block = hit_blocks_[r];
+        const uint32_t own = first[block.p];
+        const uint32_t any_y = (own & 1) != 0 ? ~0u : 0u, any_z = (own & 2) != 0 ? ~0u : 0u;
+        const uint32_t hits = block.hits & (any_y | block_flag_bits<0>(first, block.q0)) &
+                              (any_z | block_flag_bits<1>(first, block.q0));
+        const uint32_t i = index[block.p];
+        for (std::size_t k = 0; k < kBlock; ++k) {
+            const uint32_t j = index[block.q0 + k];  // padding past the cell's end: never counted
+            out[found].first = std::min(i, j);
+            out[found].second = std::max(i, j);
+            found += (hits >> k) & 1u;
+        }
+    }
+    return found;
 }
 
 // BoardCore's order: a stable counting sort on the second index, then one on
 // the first (LSD radix with one digit per index): no comparisons, no branch
 // on the data.
-void PairFinder::order(uint32_t objects, const PairList& unordered, PairList& out) {
-    by_second_.resize(unordered.size());
-    out.resize(unordered.size());
-    counting_sort(objects, unordered, by_second_, [](const IndexPair& pair) { return pair.second; });
-    counting_sort(objects, by_second_, out, [](const IndexPair& pair) { return pair.first; });
+void PairFinder::order(uint32_t objects, std::size_t found, PairList& out) {
+    by_second_.resize(found);
+    out.resize(found);
+    counting_sort(objects, unordered_.data(), found, by_second_.data(), [](const IndexPair& pair) { return pair.second; });
+    counting_sort(objects, by_second_.data(), found, out.data(), [](const IndexPair& pair) { return pair.first; });
 }
 
 template <typename Key>
-void PairFinder::counting_sort(uint32_t objects, const PairList& from, PairList& to, Key key) {
+void PairFinder::counting_sort(uint32_t objects, const IndexPair* from, std::size_t count, IndexPair* to, Key key) {
     row_next_.assign(std::size_t{objects} + 1, 0);
     uint64_t* next = row_next_.data();
-    for (const IndexPair& pair : from) ++next[key(pair) + 1];
+    for (std::size_t k = 0; k < count; ++k) ++next[key(from[k]) + 1];
     for (std::size_t r = 1; r < row_next_.size(); ++r) next[r] += next[r - 1];
-    IndexPair* placed = to.data();
-    for (const IndexPair& pair : from) placed[next[key(pair)]++] = pair;
+    for (std::size_t k = 0; k < count; ++k) to[next[key(from[k])]++] = from[k];
 }
 
 }  // namespace cdvp

@@ -77,10 +77,13 @@ private:
     template <typename Visit>
     void for_each_cell(const CellSpan& span, Visit&& visit) const;
     void bin();
-    void sweep_cells(PairList& unordered) const;
-    void order(uint32_t objects, const PairList& unordered, PairList& out);
+    void sweep_cells();
+    // Writes the pairs of the recorded hit blocks into unordered_: how many.
+    std::size_t emit_pairs();
+    // Sorts the first `found` pairs of unordered_ into out, BoardCore's order.
+    void order(uint32_t objects, std::size_t found, PairList& out);
     template <typename Key>
-    void counting_sort(uint32_t objects, const PairList& from, PairList& to, Key key);
+    void counting_sort(uint32_t objects, const IndexPair* from, std::size_t count, IndexPair* to, Key key);
 
     // Boxes without a NaN bound, in index order or grouped by first cell.
     std::vector<PackedBox> valid_, clustered_;
@@ -95,7 +98,13 @@ private:
     std::vector<uint32_t> entry_box_;
     BoxColumns entries_;
     std::vector<uint32_t> entry_index_, entry_first_;  // kBlock words of padding each
-    PairList unordered_, by_second_;
+    // A block of kBlock boxes from entry q0 with hits against entry p.
+    struct HitBlock {
+        uint32_t p, q0, hits;
+    };
+    std::vector<HitBlock> hit_blocks_;  // the first hit_block_count_ are this sweep's
+    std::size_t hit_block_count_ = 0;
+    PairList unordered_, by_second_;  // unordered_ keeps its largest size: only a prefix is used
     std::vector<uint64_t> row_next_;
     BoxColumns all_;
 };
