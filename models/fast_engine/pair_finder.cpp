@@ -92,17 +92,18 @@ void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList&
 }
 
 void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
-    valid_.clear();
+    valid_.resize(objects);
+    std::size_t kept = 0;
     for (uint32_t i = 0; i < objects; ++i) {
-        PackedBox box;
+        PackedBox& box = valid_[kept];
         read_box(words, i, box.bound);
         bool has_nan = false;
         for (float bound : box.bound) has_nan |= std::isnan(bound);
-        if (has_nan) continue;  // every comparison with it is false: it meets nothing
         box.index = i;
         box.first_cell = 0;
-        valid_.push_back(box);
+        kept += has_nan ? 0 : 1;  // every comparison with a NaN is false: it meets nothing
     }
+    valid_.resize(kept);
 }
 
 // Cells about twice the mean box extent, so that most boxes touch one or two
