@@ -53,6 +53,11 @@ po::options_description run_options(RunOptions& o) {
          "how the driver waits for the board: interrupt or polling")
         ("baseline", po::value(&o.baselines)->value_name("LIST"),
          "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa")
+        ("warmup", number<uint64_t>(&o.warmup, 0, kMaxFrames, "W"),
+         "frames at the start of each run left out of the timing statistics (allocation, first insertion)")
+        ("repeat", number<uint32_t>(&o.repeat, 1, 1000, "R"),
+         "time the baselines over the frames R times, fresh instances each run; figures are medians over runs "
+         "(the board's simulated times are deterministic and simulated once)")
         ("host-factor", number<double>(&o.host_factor, 0.001, 1000, "F", false),
          "host-speed factor: native software time x F = time on the modelled host (default: the board preset's)")
         ("quantum-ns", number<double>(&o.quantum_ns, 0, 1e9, "Q"),
