@@ -29,7 +29,8 @@ po::options_description run_options(RunOptions& o) {
     po::options_description board("Board");
     board.add_options()
         ("board", po::value(&o.board_name)->value_name("NAME"),
-         "board preset from platform/boards (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) or a .json path; "
+         "board preset (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) from $CDVP_BOARDS, else share/cdvp/boards of the "
+         "installed prefix, else the source tree's platform/boards; or a .json path; "
          "without it: the board alone on an ideal, untimed bus")
         ("m", number<uint32_t>(&o.board.m, 1, BoardConfig::kMaxM, "M"),
          "parallelism: 2m-port memories, 2m-1 comparison lanes")
