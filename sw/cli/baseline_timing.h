@@ -22,6 +22,7 @@ public:
     // names: --baseline's comma-separated list (empty: none). Throws
     // InputError for an unknown name or one given twice.
     BaselineTimer(const std::string& names, double host_factor);
+    BaselineTimer() = default;  // none
 
     bool empty() const { return names_.empty(); }
     const std::vector<std::string>& names() const { return names_; }
@@ -42,7 +43,7 @@ private:
 
     std::vector<std::string> names_;
     std::vector<std::unique_ptr<BroadPhase>> first_run_;
-    double host_factor_;
+    double host_factor_ = 1.0;
     std::vector<uint64_t> board_digests_;  // one a frame of the first run
 };
 

@@ -160,7 +160,7 @@ struct Setup {
     double host_factor = 1.0;
     uint32_t block_rams = 0;  // the FPGA's; 0: unbounded
     ValueOrigins origins;
-    std::optional<BaselineTimer> baselines;
+    BaselineTimer baselines;
     std::pair<uint64_t, uint64_t> trace_window{0, UINT64_MAX};  // --vcd-frames
 };
 
@@ -212,8 +212,8 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     setup.platform.quantum_ns = o.quantum_ns;
     setup.platform.fidelity = fidelity(o, vm);
     setup.trace_window = vcd_window(o, vm);
-    setup.baselines.emplace(o.baselines, setup.host_factor);
-    if (vm.count("repeat") && !vm["repeat"].defaulted() && setup.baselines->empty()) {
+    setup.baselines = BaselineTimer(o.baselines, setup.host_factor);
+    if (vm.count("repeat") && !vm["repeat"].defaulted() && setup.baselines.empty()) {
         throw InputError("--repeat: reruns the software baselines over the frames; give --baseline too");
     }
     return setup;
@@ -231,7 +231,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.interrupts = setup.platform.driver.use_interrupts;
     run.quantum_ns = setup.platform.quantum_ns;
     run.fidelity = to_string(setup.platform.fidelity);
-    run.baseline_names = setup.baselines->names();
+    run.baseline_names = setup.baselines.names();
     run.baseline_runs = o.repeat;
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
@@ -268,14 +268,16 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
                          run.config.sweep_cycles(boxes.size()), result.phases, {}, sim_wall_ns};
-        if (!setup.baselines->empty()) stats.baselines = setup.baselines->time_frame(boxes, sorted(result.pairs), frame->number);
+        if (!setup.baselines.empty()) {
+            stats.baselines = setup.baselines.time_frame(boxes, sorted(result.pairs), frame->number);
+        }
         if (report) report->frame(stats);
         totals.add(stats);
         source.feed(result.pairs);
         progress.update(totals.frames());
     }
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    if (!setup.baselines->empty()) setup.baselines->repeat(source, o.repeat, totals);
+    if (!setup.baselines.empty()) setup.baselines.repeat(source, o.repeat, totals);
     platform.close_trace();
     if (out.gtkw) platform.write_gtkw(out.gtkw->stream(), std::filesystem::absolute(o.vcd).string());
 

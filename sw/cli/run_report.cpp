@@ -107,7 +107,9 @@ void print_timing(std::ostream& out, const RunConfig& run, const RunTotals& tota
     if (!baselines.empty()) {
         std::snprintf(line, sizeof line, ", software time x %.3g on host ", run.host_factor);
         out << line << printable(run.host);
-        if (run.baseline_runs > 1) out << ", software timed in " << run.baseline_runs << " runs (median of their medians)";
+        if (run.baseline_runs > 1) {
+            out << ", software timed in " << run.baseline_runs << " runs (median of their medians)";
+        }
     }
     std::snprintf(line, sizeof line, ":\n  board: %.1f us (p10 %.1f, p90 %.1f), simulated: the same on every run\n",
                   board.spread.median / 1e3, board.spread.p10 / 1e3, board.spread.p90 / 1e3);

@@ -11,7 +11,7 @@ namespace cdvp {
 
 // Frames left out at the start of every run unless --warmup says otherwise.
 // In frame 0 the broad phases allocate and the incremental ones insert every
-// proxy (Bullet's btAxisSweep3 took 15-25x its steady cost there at 200 and
+// proxy (Bullet's btAxisSweep3 took 15-28x its steady cost there at 200 and
 // 500 spheres); in frame 1 the first incremental re-sort and the growth of
 // its pair cache still cost about twice the steady state. From frame 2 on
 // the times sit within the frame-to-frame noise.
