@@ -72,7 +72,8 @@ std::map<std::string, BaselineTime> BaselineTimer::time_frame(const std::vector<
     return times;
 }
 
-void BaselineTimer::repeat(FrameSource& source, uint32_t runs, RunTotals& totals) {
+void BaselineTimer::repeat(FrameSource& source, uint32_t runs, RunTotals& totals,
+                           const std::function<void()>& frame_done) {
     first_run_.clear();  // its memory is not the later runs' to reuse
     for (uint32_t run = 2; run <= runs; ++run) {
         std::vector<std::unique_ptr<BroadPhase>> fresh;
@@ -94,6 +95,7 @@ void BaselineTimer::repeat(FrameSource& source, uint32_t runs, RunTotals& totals
             }
             source.feed(found);
             ++index;
+            frame_done();
         }
     }
 }

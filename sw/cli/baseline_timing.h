@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -34,8 +35,9 @@ public:
 
     // Runs 2 to 'runs': the source rewound and stepped on the pairs the
     // baselines find, which must match the board's of the first run. Each
-    // baseline's native times go to totals.baseline_samples().
-    void repeat(FrameSource& source, uint32_t runs, RunTotals& totals);
+    // baseline's native times go to totals.baseline_samples(); 'frame_done'
+    // is called after each frame (a progress display).
+    void repeat(FrameSource& source, uint32_t runs, RunTotals& totals, const std::function<void()>& frame_done);
 
 private:
     // Times one baseline on one frame; the pairs it found, sorted, in 'found'.

@@ -248,7 +248,9 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     }
     RunTotals totals(o.warmup);
 
-    Progress progress(source.frame_count(), !o.quiet);
+    // The later runs of the baselines (--repeat) count as frames too.
+    const std::size_t baseline_runs = setup.baselines.empty() ? 1 : o.repeat;
+    Progress progress(source.frame_count() * baseline_runs, !o.quiet);
     const auto wall_start = std::chrono::steady_clock::now();
     while (std::optional<Frame> frame = source.next()) {
         const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
@@ -277,7 +279,10 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         progress.update(totals.frames());
     }
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    if (!setup.baselines.empty()) setup.baselines.repeat(source, o.repeat, totals);
+    std::size_t frames_done = totals.frames();
+    if (!setup.baselines.empty()) {
+        setup.baselines.repeat(source, o.repeat, totals, [&] { progress.update(++frames_done); });
+    }
     platform.close_trace();
     if (out.gtkw) platform.write_gtkw(out.gtkw->stream(), std::filesystem::absolute(o.vcd).string());
 
