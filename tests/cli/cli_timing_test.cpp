@@ -107,6 +107,15 @@ TEST_F(CliTiming, RepeatRereadsATraceAndChecksEveryRunsPairs) {
     }
 }
 
+TEST_F(CliTiming, RepeatRereadsATraceFromAPipeFromItsCopy) {
+    const std::string command = "cd '" + dir_.string() + "' && cat '" + trace("hard_cases.csv") + "' | '" CDVP_BINARY
+                                "' run --trace /dev/stdin --m 3 --repeat 3 --baseline sap,brute -q --report r.json";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    const json report = json::parse(slurp(dir_ / "r.json"));
+    EXPECT_EQ(report["summary"]["baselines"]["sap"]["run_medians_ns"].size(), 3u);
+    EXPECT_EQ(report["summary"]["baselines"]["brute"]["run_medians_ns"].size(), 3u);
+}
+
 TEST_F(CliTiming, RepeatWithoutABaselineAndOutOfRangeCountsAreRefused) {
     expect_refusal(run("run --scene spheres --frames 3 --repeat 2"), "cdvp run: --repeat: reruns the software");
     expect_refusal(run("run --scene spheres --frames 3 --baseline sap --repeat 0"), "cdvp run: --repeat: expected");
