@@ -7,6 +7,7 @@
 #include <systemc>
 
 #include "platform/kernel.h"
+#include "sw/cli/bullet_command.h"
 #include "sw/cli/fidelity_command.h"
 #include "sw/cli/run_command.h"
 #include "sw/scene/output_target.h"
@@ -23,6 +24,8 @@ constexpr const char* kUsage =
     "Commands:\n"
     "  run       simulate scene frames on the virtual board; write pairs, a report, waveforms\n"
     "  fidelity  run a scene at every modelling level: simulator speed against timing error\n"
+    "  bullet    step a Bullet scene with the board as its broad phase, against Bullet's own\n"
+    "  record    write a Bullet scene's AABBs as a trace for 'cdvp run --trace'\n"
     "\n"
     "Run 'cdvp <command> --help' for a command's options; 'cdvp --version' prints the version.\n"
     "\n"
@@ -47,8 +50,10 @@ int sc_main(int argc, char** argv) {
     }
     if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
     if (command == "fidelity") return cdvp::fidelity_command(argc - 1, argv + 1);
+    if (command == "bullet") return cdvp::bullet_command(argc - 1, argv + 1);
+    if (command == "record") return cdvp::record_command(argc - 1, argv + 1);
     std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
-              << "'; expected one of: run, fidelity (see cdvp --help)\n";
+              << "'; expected one of: run, fidelity, bullet, record (see cdvp --help)\n";
     return 2;
 }
 
