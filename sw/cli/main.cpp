@@ -9,6 +9,7 @@
 #include "platform/kernel.h"
 #include "sw/cli/fidelity_command.h"
 #include "sw/cli/run_command.h"
+#include "sw/cli/sweep_command.h"
 #include "sw/scene/output_target.h"
 #include "models/common/user_text.h"
 
@@ -23,6 +24,9 @@ constexpr const char* kUsage =
     "Commands:\n"
     "  run       simulate scene frames on the virtual board; write pairs, a report, waveforms\n"
     "  fidelity  run a scene at every modelling level: simulator speed against timing error\n"
+    "  sweep     run a grid of settings, boards and scenes: one CSV row per point, plots; resumable,\n"
+    "            parallel (--jobs) and sharded (--shard)\n"
+    "  merge     merge the shard directories of one sweep into one\n"
     "\n"
     "Run 'cdvp <command> --help' for a command's options; 'cdvp --version' prints the version.\n"
     "\n"
@@ -47,8 +51,10 @@ int sc_main(int argc, char** argv) {
     }
     if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
     if (command == "fidelity") return cdvp::fidelity_command(argc - 1, argv + 1);
+    if (command == "sweep") return cdvp::sweep_command(argc - 1, argv + 1);
+    if (command == "merge") return cdvp::merge_command(argc - 1, argv + 1);
     std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
-              << "'; expected one of: run, fidelity (see cdvp --help)\n";
+              << "'; expected one of: run, fidelity, sweep, merge (see cdvp --help)\n";
     return 2;
 }
 
