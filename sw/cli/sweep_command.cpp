@@ -20,6 +20,7 @@
 #include "sw/cli/child_runs.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/sweep_files.h"
+#include "sw/cli/sweep_names.h"
 #include "sw/cli/sweep_options.h"
 #include "sw/cli/sweep_progress.h"
 
@@ -196,6 +197,7 @@ bool every_point_refused(const SweepTable& table, std::string& first) {
 
 int run_sweep(const SweepOptions& o) {
     const Grid grid(o.axes);
+    check_axis_names(o.axes, axis_names(self_path()));
     // A different grid, other options or another shard into the same --out
     // are refused: the rows would not belong together.
     const nlohmann::json wanted = manifest(grid, o.run_options, o.shard);

@@ -98,6 +98,8 @@ TEST_F(Cli, SweepRefusesBadAxesAndOptionsBeforeAnyPointRuns) {
         {"sweep --set m=1 --shard 3/2 --out res", "cdvp sweep: --shard: '3/2': expected K/N"},
         {"sweep --set m=1 --report r.json --out res", "cdvp sweep: --report: set by cdvp sweep"},
         {"sweep --out res", "cdvp sweep: a sweep needs at least one axis"},
+        {"sweep --set objcts=1,2 --out res", "cdvp sweep: --set objcts: no flag of cdvp run or setting has this name; "
+                                             "the nearest is 'objects'"},
     };
     for (const auto& [args, start] : cases) {
         expect_refusal(run(args), start, args);

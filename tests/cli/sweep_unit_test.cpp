@@ -9,6 +9,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/cli/sweep_grid.h"
+#include "sw/cli/sweep_names.h"
 #include "sw/cli/sweep_plots.h"
 #include "sw/cli/sweep_table.h"
 
@@ -189,6 +190,31 @@ TEST(SweepFigures, PlotsAgainstNAreSkippedWithANoteWithoutAnObjectsAxis) {
     for (const std::string& note : plan.notes) noted |= note.find("objects is not an axis") != std::string::npos;
     EXPECT_TRUE(noted);
     for (const Figure& f : plan.figures) EXPECT_EQ(f.file.rfind("time-", 0), std::string::npos) << f.file;
+}
+
+TEST(SweepNames, AxesAreFlagsOfRunOrSettingsAndAnUnknownOneNamesTheNearest) {
+    const std::string help =
+        "Usage: cdvp run (--trace FILE | --scene spheres [--objects N]) [options]\n"
+        "  --objects N (0 to 4194304; 500)       spheres: number of spheres; see --frames\n"
+        "  --m M (1 to 32; 8)                    parallelism\n"
+        "  --report FILE                         JSON report\n"
+        "  -q [ --quiet ]                        print nothing but errors\n";
+    AxisNames known{help_options(help), false};
+    EXPECT_EQ(known.names, (std::set<std::string>{"objects", "m"})) << "options the sweep sets are no axes";
+    EXPECT_NO_THROW(check_axis_names({{"m", {"1"}}, {"objects", {"5"}}, {"bus.interrupt_ns", {"1"}}}, known))
+        << "a dotted name passes while cdvp has no settings list";
+    try {
+        check_axis_names({{"objcts", {"5"}}}, known);
+        ADD_FAILURE() << "objcts accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "--set objcts: no flag of cdvp run or setting has this name; the nearest is "
+                                         "'objects' (see cdvp run --help)");
+    }
+    add_settings(R"([{"name": "bus.interrupt_ns", "flag": null}, {"name": "board.m", "flag": "--m"}])", known.names);
+    known.settings_known = true;
+    EXPECT_NO_THROW(check_axis_names({{"bus.interrupt_ns", {"1"}}, {"board.m", {"2"}}}, known));
+    EXPECT_THROW(check_axis_names({{"bus.interupt_ns", {"1"}}}, known), InputError);
+    EXPECT_EQ(nearest_name("bus.interupt_ns", known.names), "bus.interrupt_ns");
 }
 
 }  // namespace
