@@ -19,6 +19,7 @@
 #include "models/common/user_text.h"
 #include "sw/cli/child_runs.h"
 #include "sw/cli/run_command.h"
+#include "sw/cli/run_options.h"
 #include "sw/cli/sweep_files.h"
 #include "sw/cli/sweep_names.h"
 #include "sw/cli/sweep_options.h"
@@ -197,7 +198,7 @@ bool every_point_refused(const SweepTable& table, std::string& first) {
 
 int run_sweep(const SweepOptions& o) {
     const Grid grid(o.axes);
-    check_axis_names(o.axes, axis_names(self_path()));
+    check_axis_names(o.axes, axis_names(run_options_help(), self_path()));
     // A different grid, other options or another shard into the same --out
     // are refused: the rows would not belong together.
     const nlohmann::json wanted = manifest(grid, o.run_options, o.shard);
@@ -246,7 +247,7 @@ int run_sweep(const SweepOptions& o) {
     }
     made.keep();
     commit_text_file(table_path(o.out_dir), table.csv(), "--out");
-    status = write_figures(o.out_dir, grid, table, "cdvp sweep", o.quiet);
+    if (o.plots) status = write_figures(o.out_dir, grid, table, "cdvp sweep", o.quiet);
     if (status == 0 && !o.quiet) {
         std::size_t counts[3] = {};
         for (const auto& [index, row] : table.rows()) {

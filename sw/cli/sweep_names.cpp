@@ -77,9 +77,9 @@ void add_settings(const std::string& json, std::set<std::string>& names) {
     }
 }
 
-AxisNames axis_names(const std::string& cdvp_binary) {
+AxisNames axis_names(const std::string& run_help, const std::string& cdvp_binary) {
     AxisNames known;
-    known.names = help_options(output_of({cdvp_binary, "run", "--help"}));
+    known.names = help_options(run_help);
     const std::string settings = output_of({cdvp_binary, "settings", "--json"});
     if (!settings.empty()) {
         try {
@@ -93,7 +93,6 @@ AxisNames axis_names(const std::string& cdvp_binary) {
 }
 
 void check_axis_names(const std::vector<Axis>& axes, const AxisNames& known) {
-    if (known.names.empty()) return;  // cdvp run --help did not answer: the points will tell
     for (const Axis& axis : axes) {
         if (known.names.count(axis.name) != 0) continue;
         if (is_setting_name(axis.name) && !known.settings_known) continue;

@@ -10,15 +10,15 @@
 
 namespace cdvp {
 
-// The names an axis may have: every long option of `cdvp run` (dashes
-// dropped) but those a sweep sets itself, and every setting's name and flag
-// from `cdvp settings --json`. 'settings_known' tells whether the latter
+// The names an axis may have: every long option in 'run_help' (the text of
+// `cdvp run --help`; dashes dropped) but those a sweep sets itself, and
+// every setting's name and flag from `cdvp_binary settings --json`. 'settings_known' tells whether the latter
 // answered (without it, dotted names are left to the points to refuse).
 struct AxisNames {
     std::set<std::string> names;
     bool settings_known = false;
 };
-AxisNames axis_names(const std::string& cdvp_binary);
+AxisNames axis_names(const std::string& run_help, const std::string& cdvp_binary);
 
 // The long options named in a `cdvp run --help` text.
 std::set<std::string> help_options(const std::string& help);

@@ -27,6 +27,7 @@ constexpr const char* kHelp =
     "                      into it skips the points already in sweep.csv; another grid is refused.\n"
     "  --jobs J            points run in J processes at once (1 to 64; 1)\n"
     "  --shard K/N         run only the points whose index % N is K-1, for 'cdvp merge'\n"
+    "  --no-plots          write no figures (shards on a cluster, say: cdvp merge draws them)\n"
     "  -q [ --quiet ]      print nothing but errors (else: a progress bar on a terminal, a summary)\n"
     "\n"
     "A point that cdvp run refuses (status 2: m does not fit the device, say) or that faults\n"
@@ -82,6 +83,10 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
         if (arg == "--help" || arg == "-h") return std::nullopt;
         if (arg == "-q" || arg == "--quiet") {
             o.quiet = true;  // the points run quiet anyway
+            continue;
+        }
+        if (arg == "--no-plots") {
+            o.plots = false;
             continue;
         }
         bool axis_flag = false;

@@ -18,6 +18,7 @@ struct SweepOptions {
     unsigned jobs = 1;
     Shard shard;
     bool quiet = false;
+    bool plots = true;  // --no-plots: the CSV only
 };
 
 // Parses argv (argv[0] is the command's name); nothing for --help. Throws
