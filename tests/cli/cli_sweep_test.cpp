@@ -79,6 +79,19 @@ TEST_F(Cli, SweepWritesARowPerPointAndARowWithItsReasonForAPointThatDoesNotFit) 
     EXPECT_EQ(leftovers(dir_), std::vector<std::string>{});
 }
 
+TEST_F(Cli, SweepRecordsAPointWhoseSystemFaultsAsARowAndGoesOn) {
+    const Result r = run("sweep --board adm-xrc-ii --set m=1,2 --set objects=20 --frames 2 "
+                         "--inject board-error@frame=1 --out res");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto rows = untimed_rows(slurp(dir_ / "res" / "sweep.csv"));
+    ASSERT_EQ(rows.size(), 2u);
+    for (const auto& row : rows) {
+        EXPECT_EQ(row.at("status"), "fault");
+        EXPECT_EQ(row.at("reason").rfind("frame 1: ", 0), 0u) << row.at("reason");
+        EXPECT_NE(row.at("reason").find("injected board-error"), std::string::npos) << row.at("reason");
+    }
+}
+
 TEST_F(Cli, SweepWhoseEveryPointIsRefusedExitsTwoWithTheFirstReasonAndLeavesNothing) {
     const Result r = run("sweep --set m=1,2 --frmes 3 --out res");
     expect_refusal(r, "cdvp sweep: every point was refused; the first, m-1: ");
