@@ -171,9 +171,10 @@ Figure phase_bars(const std::vector<Sample>& samples, const std::string& board, 
 
 FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
     FigurePlan plan;
+    // Each by its flag or its setting's name.
     const Axis* board_axis = find_axis(grid, "board");
-    const Axis* n_axis = find_axis(grid, "objects");
-    const Axis* m_axis = find_axis(grid, "m");
+    const Axis* n_axis = find_axis(grid, "objects") ? find_axis(grid, "objects") : find_axis(grid, "scene.objects");
+    const Axis* m_axis = find_axis(grid, "m") ? find_axis(grid, "m") : find_axis(grid, "board.m");
     for (const Axis& axis : grid.axes()) {
         if (&axis != board_axis && &axis != n_axis && &axis != m_axis && axis.values.size() > 1) {
             plan.notes.push_back("plots show " + axis.name + "=" + axis.values[0] + " only (the first of its values)");
@@ -188,8 +189,8 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
             if (&axis != board_axis && &axis != n_axis && &axis != m_axis) first_values &= text(row, axis.name) == axis.values[0];
         }
         if (!first_values) continue;
-        Sample s{text(row, board_axis ? "board" : "config.board"), number(row, m_axis ? "m" : "config.m"),
-                 number(row, n_axis ? "objects" : "median_objects"), &row};
+        Sample s{text(row, board_axis ? "board" : "config.board"), number(row, m_axis ? m_axis->name : "config.m"),
+                 number(row, n_axis ? n_axis->name : "median_objects"), &row};
         if (std::find(boards.begin(), boards.end(), s.board) == boards.end()) boards.push_back(s.board);
         samples.push_back(s);
     }
@@ -217,7 +218,7 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
         if (!phases.empty()) plan.figures.push_back(phase_bars(samples, board, phases));
     }
     if (n_axis == nullptr) {
-        plan.notes.push_back("no plots against N (time, speedup, crossover): objects is not an axis of this sweep");
+        plan.notes.push_back("no plots against N (time, speedup, crossover): objects (or scene.objects) is not an axis of this sweep");
         return plan;
     }
     if (baselines.empty()) plan.notes.push_back("no speedup or crossover plots: the sweep has no --baseline");

@@ -79,6 +79,9 @@ PointRow report_row(const Grid& grid, const Point& point, const nlohmann::ordere
         row[column] = value;
     };
     for (const auto& [key, item] : report.at("config").items()) {
+        // The point's own command line names its report's path, which differs
+        // between shards of one sweep: the sweep's columns are its settings.
+        if (key == "command_line") continue;
         Row one;
         flatten(item, "config." + key, one);
         for (const auto& [column, value] : one) put(column, value);

@@ -28,7 +28,7 @@ struct PointRow {
 
 // The row of a point that ran: the axes, every effective setting of the
 // report's "config" flattened ("config.NAME", nested keys joined by '.',
-// arrays by '+'), report_frames and frames_in_medians, then the median over
+// arrays by '+'; its command_line left out), report_frames and frames_in_medians, then the median over
 // the frames after the first (all frames if there is one) of every number a
 // report frame holds ("median_NAME"), each baseline's median time on the
 // modelled host ("NAME_median_ns") and its speedup (that median over
