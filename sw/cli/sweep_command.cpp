@@ -98,7 +98,7 @@ public:
         std::size_t next = 0;
         int status = 0;
         while (true) {
-            for (std::size_t k = 0; k < slots_.size() && next < todo.size() && g_stop_signal == 0 && status == 0; ++k) {
+            for (std::size_t k = 0; k < slots_.size() && next < todo.size() && g_stop_signal == 0 && !failing_; ++k) {
                 if (slots_[k].pid == 0) launch(k, grid_.point(todo[next++]));
             }
             if (running() == 0) break;
@@ -113,7 +113,8 @@ public:
                 if (slots_[k].pid != pid) continue;
                 slots_[k].pid = 0;
                 g_running[k] = 0;
-                if (finish(slots_[k], wait_status) != 0 && status == 0) {
+                if (finish(slots_[k], wait_status) != 0 && !failing_) {
+                    failing_ = true;  // the others are stopped, and their ends go unreported
                     status = kExitInternal;
                     signal_running(SIGTERM);
                 }
@@ -156,7 +157,7 @@ private:
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - slot.started).count();
         const std::string& id = slot.point.id;
         if (WIFSIGNALED(wait_status)) {
-            if (g_stop_signal != 0) return 0;  // stopped with the sweep: run again on resume
+            if (g_stop_signal != 0 || failing_) return 0;  // stopped with the sweep: run again on resume
             std::cerr << "cdvp sweep: point " << id << ": cdvp run was killed by signal " << WTERMSIG(wait_status) << '\n';
             return 1;
         }
@@ -182,6 +183,7 @@ private:
     std::string self_;
     std::map<std::string, TraceSpool> spools_;
     std::vector<Slot> slots_;
+    bool failing_ = false;  // a point failed inside cdvp: no new points start
 };
 
 // Every row refused (a typo in an option, say): the first reason, and the

@@ -6,6 +6,7 @@
 //   ./build/tests/sweep_bench [extra sweep options, replacing the default grid]
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "sw/cli/sweep_table.h"
 
@@ -50,6 +52,12 @@ Measured sweep(const std::string& grid, const fs::path& out, unsigned jobs, bool
     return m;
 }
 
+// The run of median wall time.
+Measured median_of(std::vector<Measured> runs) {
+    std::sort(runs.begin(), runs.end(), [](const Measured& a, const Measured& b) { return a.wall_s < b.wall_s; });
+    return runs[runs.size() / 2];
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -60,15 +68,23 @@ int main(int argc, char** argv) {
     }
     const fs::path dir = fs::temp_directory_path() / ("cdvp-sweep-bench-" + std::to_string(getpid()));
     std::printf("grid: %s\n", grid.c_str());
-    const Measured one = sweep(grid, dir / "jobs1", 1);
+    // Alternated and repeated, so that a change in the machine's load hits
+    // both alike; the medians are printed.
+    constexpr int kRepeats = 3;
+    std::vector<Measured> ones, twos;
+    for (int k = 0; k < kRepeats; ++k) {
+        ones.push_back(sweep(grid, dir / "jobs1", 1));
+        twos.push_back(sweep(grid, dir / "jobs2", 2));
+    }
     // The same command again has nothing to run: the sweep's cost per
     // sweep (starting, checking names, reading the CSV), not per point.
     const Measured again = sweep(grid, dir / "jobs1", 1, false);
-    const Measured two = sweep(grid, dir / "jobs2", 2);
     fs::remove_all(dir);
+    const Measured one = median_of(ones), two = median_of(twos);
     const double rate1 = static_cast<double>(one.points) / one.wall_s;
     const double rate2 = static_cast<double>(two.points) / two.wall_s;
-    std::printf("%-8s %8s %10s %12s\n", "jobs", "points", "wall_s", "points/s");
+    std::printf("%-8s %8s %10s %12s   (median of %d runs each, alternated)\n", "jobs", "points", "wall_s", "points/s",
+                kRepeats);
     std::printf("%-8d %8zu %10.3f %12.2f\n", 1, one.points, one.wall_s, rate1);
     std::printf("%-8d %8zu %10.3f %12.2f\n", 2, two.points, two.wall_s, rate2);
     std::printf("jobs 2 / jobs 1: %.2fx points per second (target >= 1.8x on two cores)\n", rate2 / rate1);
