@@ -91,6 +91,18 @@ public:
         for (Slot& slot : slots_) slot.errors = std::make_unique<ScratchFile>(".err");
     }
 
+    // A sweep left by an exception stops its points and waits for them, so
+    // none outlives it.
+    ~Sweep() {
+        signal_running(SIGTERM);
+        for (Slot& slot : slots_) {
+            if (slot.pid > 0) wait_child(slot.pid);
+        }
+        for (volatile pid_t& pid : g_running) pid = 0;
+    }
+    Sweep(const Sweep&) = delete;
+    Sweep& operator=(const Sweep&) = delete;
+
     // Runs the points not in the table yet; 0, or 1 with the message
     // printed when a point failed inside cdvp.
     int run(const std::vector<std::size_t>& todo, SweepProgress& progress) {
@@ -210,6 +222,10 @@ int run_sweep(const SweepOptions& o) {
                          (same_sweep(*existing, wanted) ? "shard " + existing->at("shard").get<std::string>()
                                                         : std::string("other axes or options")) +
                          "); give a new --out, or the same command to resume it");
+    }
+    struct stat out_status {};
+    if (stat(o.out_dir.c_str(), &out_status) == 0 && !S_ISDIR(out_status.st_mode)) {
+        throw InputError("--out: " + excerpt(o.out_dir) + ": expected a directory");
     }
     SweepTable table(grid);
     read_table(o.out_dir, table);

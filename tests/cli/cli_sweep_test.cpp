@@ -118,6 +118,9 @@ TEST_F(Cli, SweepRefusesBadAxesAndOptionsBeforeAnyPointRuns) {
         expect_refusal(run(args), start, args);
         EXPECT_FALSE(fs::exists(dir_ / "res")) << args;
     }
+    write("file", "x");
+    expect_refusal(run("sweep --set m=1 --out file"), "cdvp sweep: --out: file: expected a directory");
+    EXPECT_EQ(slurp(dir_ / "file"), "x");
 }
 
 TEST_F(Cli, SweepResumesWithoutRerunningTheRecordedPointsAndRefusesAnotherGrid) {
