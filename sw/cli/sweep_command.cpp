@@ -180,7 +180,7 @@ private:
             table_.add(slot.point.index, report_row(grid_, slot.point, nlohmann::ordered_json::parse(slurp(path)), wall));
         } else if (code == kExitBadInput || code == kExitDeviceFault) {
             const PointStatus status = code == kExitBadInput ? PointStatus::kRefused : PointStatus::kFault;
-            table_.add(slot.point.index, failed_row(grid_, slot.point, status, reason));
+            table_.add(slot.point.index, failed_row(grid_, slot.point, status, reason, wall));
         } else {
             std::cerr << "cdvp sweep: point " << id << ": cdvp run failed (status " << code << "): " << reason << '\n';
             return 1;

@@ -119,8 +119,11 @@ PointRow report_row(const Grid& grid, const Point& point, const nlohmann::ordere
     return {order, row};
 }
 
-PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, const std::string& reason) {
-    return {{}, axis_row(grid, point, status, reason)};
+PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, const std::string& reason,
+                    double wall_seconds) {
+    Row row = axis_row(grid, point, status, reason);
+    row["point_wall_s"] = number_text(wall_seconds);
+    return {{}, row};
 }
 
 bool is_timing_column(const std::string& column) {

@@ -34,8 +34,10 @@ struct PointRow {
 // modelled host ("NAME_median_ns") and its speedup (that median over
 // median_total_ns), and the child's wall time (point_wall_s).
 PointRow report_row(const Grid& grid, const Point& point, const nlohmann::ordered_json& report, double wall_seconds);
-// The row of a point refused or faulted: the axes and the child's reason.
-PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, const std::string& reason);
+// The row of a point refused or faulted: the axes, the child's reason and
+// its wall time.
+PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, const std::string& reason,
+                    double wall_seconds);
 
 // Columns whose values are measured, so differ from run to run: wall times,
 // baseline times and speedups.

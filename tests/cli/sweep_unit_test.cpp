@@ -125,7 +125,7 @@ TEST(SweepTable, RowsHoldSettingsMediansAfterTheFirstFrameAndSpeedups) {
     const Grid grid(std::vector<Axis>{{"objects", {"50", "100"}}});
     SweepTable table(grid);
     table.add(1, report_row(grid, grid.point(1), report(100, 300), 0.5));
-    table.add(0, failed_row(grid, grid.point(0), PointStatus::kRefused, "m=8 needs \"48\" block RAMs, the device has 6"));
+    table.add(0, failed_row(grid, grid.point(0), PointStatus::kRefused, "m=8 needs \"48\" block RAMs, the device has 6", 0.25));
     const Row& row = table.rows().at(1);
     EXPECT_EQ(row.at("status"), "ok");
     EXPECT_EQ(row.at("objects"), "100");
@@ -161,7 +161,7 @@ TEST(SweepFigures, CrossoverIsInterpolatedInLogNOrMeasuredAtTheSmallestN) {
     // m=1 never wins; m=8 goes from 0.5x at 100 to 2x at 400: crossover at 100 * 4^(1/3).
     const double speedups[4] = {0.1, 0.2, 0.5, 2.0};
     for (std::size_t k = 0; k < 4; ++k) {
-        PointRow row = failed_row(grid, grid.point(k), PointStatus::kOk, "");
+        PointRow row = failed_row(grid, grid.point(k), PointStatus::kOk, "", 0.5);
         row.values["status"] = "ok";
         row.values["config.board"] = "b";
         row.values["median_total_ns"] = "1000";
