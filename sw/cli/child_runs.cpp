@@ -80,6 +80,14 @@ int run_child(const std::vector<std::string>& args, const std::string& err_path,
     return wait_child(start_child(args, err_path, out_path));
 }
 
+std::optional<std::string> run_gnuplot(const std::string& script) {
+    ScratchFile script_file(".gp"), errors(".err");
+    std::ofstream(script_file.path()) << script;
+    const int status = run_child({"gnuplot", script_file.path()}, errors.path());
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return std::nullopt;
+    return slurp(errors.path());
+}
+
 std::string renamed_message(std::string message, const std::string& program) {
     if (message.rfind("cdvp run: ", 0) == 0) message = program + ": " + message.substr(10);
     return message;

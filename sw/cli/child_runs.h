@@ -44,6 +44,10 @@ int wait_child(pid_t pid);
 // start_child, then wait_child.
 int run_child(const std::vector<std::string>& args, const std::string& err_path, const char* out_path = nullptr);
 
+// Runs gnuplot (found on PATH) on 'script'; nothing when it drew, else
+// what it said on stderr.
+std::optional<std::string> run_gnuplot(const std::string& script);
+
 // A child's one-line message under the parent's name: "cdvp run: X" becomes
 // "PROGRAM: X".
 std::string renamed_message(std::string message, const std::string& program);

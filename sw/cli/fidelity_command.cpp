@@ -8,7 +8,6 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -231,12 +230,9 @@ int fidelity_levels(int argc, char** argv) {
     files.open();
     const std::string csv_body = csv_text(results);
     files.file(csv).stream() << csv_body << std::flush;
-    ScratchFile script(".gp"), plot_errors(".err");
-    std::ofstream(script.path()) << plot_script(files.file(csv).temp_path(), files.file(png).temp_path());
-    const int plotted = run_child({"gnuplot", script.path()}, plot_errors.path());
-    if (!WIFEXITED(plotted) || WEXITSTATUS(plotted) != 0) {
-        std::cerr << "cdvp fidelity: gnuplot failed to draw " << out_dir << "/fidelity.png: "
-                  << printable(slurp(plot_errors.path())) << '\n';
+    if (const std::optional<std::string> error =
+            run_gnuplot(plot_script(files.file(csv).temp_path(), files.file(png).temp_path()))) {
+        std::cerr << "cdvp fidelity: gnuplot failed to draw " << out_dir << "/fidelity.png: " << printable(*error) << '\n';
         return kExitInternal;
     }
     if (!quiet) files.set_standard_output(table_text(results));

@@ -1,9 +1,7 @@
 #include "sw/cli/sweep_files.h"
 
 #include <sys/stat.h>
-#include <sys/wait.h>
 
-#include <fstream>
 #include <iostream>
 
 #include "models/common/user_text.h"
@@ -87,12 +85,9 @@ int write_figures(const std::string& dir, const Grid& grid, const SweepTable& ta
             script += figure_script(figure, files.file(slots[k]).temp_path());
         }
     }
-    ScratchFile script_file(".gp"), plot_errors(".err");
-    std::ofstream(script_file.path()) << script;
-    const int plotted = run_child({"gnuplot", script_file.path()}, plot_errors.path());
-    if (!WIFEXITED(plotted) || WEXITSTATUS(plotted) != 0) {
-        std::cerr << program << ": gnuplot failed to draw the figures in " << printable(dir) << ": "
-                  << printable(slurp(plot_errors.path())) << '\n';
+    if (const std::optional<std::string> error = run_gnuplot(script)) {
+        std::cerr << program << ": gnuplot failed to draw the figures in " << printable(dir) << ": " << printable(*error)
+                  << '\n';
         return 1;
     }
     if (const std::optional<std::string> error = files.try_commit()) {
