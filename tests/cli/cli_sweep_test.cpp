@@ -85,6 +85,7 @@ TEST_F(Cli, SweepRecordsAPointWhoseSystemFaultsAsARowAndGoesOn) {
     ASSERT_EQ(r.status, 0) << r.err;
     const auto rows = untimed_rows(slurp(dir_ / "res" / "sweep.csv"));
     ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(r.err, "cdvp sweep: no plots: no point of the sweep ran\n") << "a skipped plot is said on stderr";
     for (const auto& row : rows) {
         EXPECT_EQ(row.at("status"), "fault");
         EXPECT_EQ(row.at("reason").rfind("frame 1: ", 0), 0u) << row.at("reason");
