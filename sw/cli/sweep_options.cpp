@@ -8,7 +8,7 @@ namespace {
 
 constexpr const char* kHelp =
     "Usage: cdvp sweep [--board LIST] [--set NAME=LIST]... [--fidelity LIST] [--scene LIST | --trace LIST]\n"
-    "                  [options of cdvp run] --out DIR [--jobs J] [--shard K/N] [-q]\n"
+    "                  [options of cdvp run] --out DIR [--jobs J] [--shard K/N] [--no-plots] [-q]\n"
     "\n"
     "Runs 'cdvp run' once for every point of the grid (every combination of the axes' values, the\n"
     "first axis outermost) and gathers the points into DIR/sweep.csv, one row per point, with each\n"
@@ -34,7 +34,7 @@ constexpr const char* kHelp =
     "(status 3) is a row with its status and reason; if every point is refused, the sweep exits 2\n"
     "with the first reason.\n"
     "\n"
-    "Usage: cdvp merge OUT SHARD_DIR...   merges shard directories of one sweep into OUT\n";
+    "'cdvp merge OUT SHARD_DIR...' merges the shard directories of one sweep into OUT (cdvp merge --help).\n";
 
 // "--NAME V" or "--NAME=V" at args[k]: the value, advancing k past it.
 std::optional<std::string> value_of(const std::vector<std::string>& args, std::size_t& k, const std::string& name) {
