@@ -1,5 +1,6 @@
 #include "sw/cli/sweep_command.h"
 
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -7,6 +8,7 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -177,7 +179,7 @@ private:
         const std::string reason = reason_of(slurp(slot.errors->path()), spools_);
         if (code == kExitDone) {
             const std::string path = report_path(o_.out_dir, slot.point);
-            table_.add(slot.point.index, report_row(grid_, slot.point, nlohmann::ordered_json::parse(slurp(path)), wall));
+            table_.add(slot.point.index, report_row(grid_, slot.point, nlohmann::json::parse(slurp(path)), wall));
         } else if (code == kExitBadInput || code == kExitDeviceFault) {
             const PointStatus status = code == kExitBadInput ? PointStatus::kRefused : PointStatus::kFault;
             table_.add(slot.point.index, failed_row(grid_, slot.point, status, reason, wall));
@@ -197,6 +199,16 @@ private:
     std::vector<Slot> slots_;
     bool failing_ = false;  // a point failed inside cdvp: no new points start
 };
+
+// User and system CPU time of the process or of its waited-for children.
+std::string cpu_seconds(int who) {
+    struct rusage usage {};
+    getrusage(who, &usage);
+    auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) / 1e6; };
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", seconds(usage.ru_utime) + seconds(usage.ru_stime));
+    return text;
+}
 
 // Every row refused (a typo in an option, say): the first reason, and the
 // files of a sweep that had no rows before are removed again.
@@ -273,7 +285,8 @@ int run_sweep(const SweepOptions& o) {
         }
         std::cout << "cdvp sweep: " << table.rows().size() << " points in " << table_path(o.out_dir) << ": "
                   << counts[0] << " ok, " << counts[1] << " refused, " << counts[2] << " faulted ("
-                  << todo.size() << " run now)\n";
+                  << todo.size() << " run now; CPU time " << cpu_seconds(RUSAGE_SELF) << " s in the sweep, "
+                  << cpu_seconds(RUSAGE_CHILDREN) << " s in its points and plots)\n";
     }
     return status;
 }

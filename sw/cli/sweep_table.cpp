@@ -28,7 +28,7 @@ double median(std::vector<double> values) {
     return values.size() % 2 == 1 ? values[mid] : (values[mid - 1] + values[mid]) / 2;
 }
 
-std::string value_text(const nlohmann::ordered_json& value) {
+std::string value_text(const nlohmann::json& value) {
     if (value.is_string()) return value.get<std::string>();
     if (value.is_array()) {
         std::string joined;
@@ -39,7 +39,7 @@ std::string value_text(const nlohmann::ordered_json& value) {
     return value.dump();
 }
 
-void flatten(const nlohmann::ordered_json& value, const std::string& prefix, Row& row) {
+void flatten(const nlohmann::json& value, const std::string& prefix, Row& row) {
     if (!value.is_object()) {
         row[prefix] = value_text(value);
         return;
@@ -71,7 +71,7 @@ const char* to_string(PointStatus status) {
     return "?";
 }
 
-PointRow report_row(const Grid& grid, const Point& point, const nlohmann::ordered_json& report, double wall_seconds) {
+PointRow report_row(const Grid& grid, const Point& point, const nlohmann::json& report, double wall_seconds) {
     Row row = axis_row(grid, point, PointStatus::kOk, "");
     std::vector<std::string> order;  // the report's own order of its columns
     auto put = [&](const std::string& column, const std::string& value) {

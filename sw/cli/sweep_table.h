@@ -33,7 +33,7 @@ struct PointRow {
 // report frame holds ("median_NAME"), each baseline's median time on the
 // modelled host ("NAME_median_ns") and its speedup (that median over
 // median_total_ns), and the child's wall time (point_wall_s).
-PointRow report_row(const Grid& grid, const Point& point, const nlohmann::ordered_json& report, double wall_seconds);
+PointRow report_row(const Grid& grid, const Point& point, const nlohmann::json& report, double wall_seconds);
 // The row of a point refused or faulted: the axes, the child's reason and
 // its wall time.
 PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, const std::string& reason,

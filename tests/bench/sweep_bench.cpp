@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -25,20 +26,30 @@ namespace fs = std::filesystem;
 struct Measured {
     double wall_s = 0;
     std::size_t points = 0;
-    double child_s = 0;  // the points' own cdvp run, spawn to exit, summed
+    double child_s = 0;      // the points' own cdvp run, spawn to exit, summed
+    double sweep_cpu_s = 0;  // CPU time of the sweep process itself
+    double points_cpu_s = 0; // CPU time of its children (the points)
 };
 
 Measured sweep(const std::string& grid, const fs::path& out, unsigned jobs, bool fresh = true) {
     if (fresh) fs::remove_all(out);
-    const std::string command = std::string("'") + CDVP_BINARY + "' sweep " + grid + " --no-plots -q --jobs " +
-                                std::to_string(jobs) + " --out '" + out.string() + "'";
+    const std::string command = std::string("'") + CDVP_BINARY + "' sweep " + grid + " --no-plots --jobs " +
+                                std::to_string(jobs) + " --out '" + out.string() + "' 2>/dev/null";
     const auto start = std::chrono::steady_clock::now();
-    if (std::system(command.c_str()) != 0) {
+    FILE* pipe = popen(command.c_str(), "r");
+    char summary[512] = "";
+    if (pipe == nullptr || std::fgets(summary, sizeof summary, pipe) == nullptr || pclose(pipe) != 0) {
         std::fprintf(stderr, "sweep_bench: failed: %s\n", command.c_str());
         std::exit(1);
     }
     Measured m;
     m.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // "... CPU time X s in the sweep, Y s in its points and plots)"
+    const char* cpu = std::strstr(summary, "CPU time ");
+    if (cpu == nullptr || std::sscanf(cpu, "CPU time %lf s in the sweep, %lf s", &m.sweep_cpu_s, &m.points_cpu_s) != 2) {
+        std::fprintf(stderr, "sweep_bench: no CPU times in: %s\n", summary);
+        std::exit(1);
+    }
     std::ifstream in(out / "sweep.csv");
     std::stringstream text;
     text << in.rdbuf();
@@ -97,5 +108,10 @@ int main(int argc, char** argv) {
                 per_point * 1e3, overhead * 1e3, 100 * overhead / per_point);
     std::printf("per sweep: %.1f ms (a rerun with every point done; %.2f%% of this grid's %.0f points)\n",
                 again.wall_s * 1e3, 100 * again.wall_s / one.child_s, points);
+    // CPU time does not count the waits for a CPU on a loaded machine.
+    const double own_cpu = (one.sweep_cpu_s - again.sweep_cpu_s) / points;
+    const double point_cpu = one.points_cpu_s / points;
+    std::printf("CPU per point at --jobs 1: cdvp run %.2f ms, the sweep's own %.3f ms (%.2f%%); per sweep %.1f ms\n",
+                point_cpu * 1e3, own_cpu * 1e3, 100 * own_cpu / point_cpu, again.sweep_cpu_s * 1e3);
     return 0;
 }

@@ -138,7 +138,7 @@ TEST_F(Cli, SweepResumesWithoutRerunningTheRecordedPointsAndRefusesAnotherGrid) 
 
     const Result again = run(kGrid + "--out res");
     ASSERT_EQ(again.status, 0) << again.err;
-    EXPECT_NE(again.out.find("4 points in res/sweep.csv: 4 ok, 0 refused, 0 faulted (1 run now)"), std::string::npos)
+    EXPECT_NE(again.out.find("4 points in res/sweep.csv: 4 ok, 0 refused, 0 faulted (1 run now; "), std::string::npos)
         << again.out;
     std::size_t rerun = 0;
     for (const auto& [path, time] : before) rerun += fs::last_write_time(path) != time;
@@ -169,7 +169,7 @@ TEST_F(Cli, MergedShardsEqualOneWholeSweepButForTheTimings) {
     }
     // The merged directory is the whole sweep: resuming it runs nothing.
     const Result resumed = run(kGrid + "--out merged");
-    EXPECT_NE(resumed.out.find("(0 run now)"), std::string::npos) << resumed.out << resumed.err;
+    EXPECT_NE(resumed.out.find("(0 run now; "), std::string::npos) << resumed.out << resumed.err;
 
     ASSERT_EQ(run("sweep --board adm-xrc-ii --set m=1,4 --set objects=20 --frames 2 --shard 1/2 --out other -q").status, 0);
     expect_refusal(run("merge m2 s1 other"), "cdvp merge: other: a shard of another sweep than s1");

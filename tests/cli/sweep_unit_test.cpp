@@ -111,8 +111,8 @@ TEST(SweepGrid, RefusesRepeatedAxesAndNoAxes) {
     EXPECT_THROW(Grid(std::vector<Axis>{}), InputError);
 }
 
-nlohmann::ordered_json report(double board_ns, double sap_ns) {
-    nlohmann::ordered_json frames = nlohmann::ordered_json::array();
+nlohmann::json report(double board_ns, double sap_ns) {
+    nlohmann::json frames = nlohmann::json::array();
     for (int k = 0; k < 4; ++k) {
         const double total = k == 0 ? 10 * board_ns : board_ns + k;  // the first frame is left out
         frames.push_back({{"frame", k}, {"pairs", 10 + k}, {"total_ns", total}, {"sim_wall_ns", 5.0},
