@@ -62,6 +62,7 @@ void refuse_axis_options(const SweepOptions& o) {
         std::string name;
         if (arg.rfind("--", 0) == 0) name = arg.substr(2, arg.find('=') - 2);
         if (arg == "-c" && k + 1 < o.run_options.size()) name = o.run_options[k + 1].substr(0, o.run_options[k + 1].find('='));
+        if (arg.rfind("-c", 0) == 0 && arg.size() > 2) name = arg.substr(2, arg.find('=') - 2);  // -cNAME=V
         for (const Axis& axis : o.axes) {
             if (!name.empty() && axis.name == name) {
                 throw InputError(excerpt(arg) + ": " + name + " is an axis of the sweep; give it once");
