@@ -25,7 +25,7 @@ constexpr const char* kHelp =
     "\n"
     "  --out DIR           the sweep's directory (made with its parents). Rerunning the same command\n"
     "                      into it skips the points already in sweep.csv; another grid is refused.\n"
-    "  --jobs J            points run in J processes at once (1 to 64; 1)\n"
+    "  --jobs J            points run in J processes at once (1 to 24; 1)\n"
     "  --shard K/N         run only the points whose index % N is K-1, for 'cdvp merge'\n"
     "  --no-plots          write no figures (shards on a cluster, say: cdvp merge draws them)\n"
     "  -q [ --quiet ]      print nothing but errors (else: a progress bar on a terminal, a summary)\n"

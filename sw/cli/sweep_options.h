@@ -9,7 +9,9 @@
 
 namespace cdvp {
 
-constexpr unsigned kMaxJobs = 64;
+// Each running point holds a temporary file for its stderr, and a process
+// may hold 32 (TemporaryRegistry): 24 leave room for traces and figures.
+constexpr unsigned kMaxJobs = 24;
 
 struct SweepOptions {
     std::vector<Axis> axes;                // in the order given
