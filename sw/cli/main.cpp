@@ -47,7 +47,7 @@ int sc_main(int argc, char** argv) {
     }
     const std::string command = argv[1];
     if (command == "--version") {
-        return cdvp::print_to_stdout("cdvp", "cdvp 0.1.0\n");
+        return cdvp::print_to_stdout("cdvp", "cdvp " CDVP_VERSION "\n");  // CMake's project version
     }
     if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
     if (command == "fidelity") return cdvp::fidelity_command(argc - 1, argv + 1);

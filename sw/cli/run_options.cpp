@@ -29,7 +29,8 @@ po::options_description run_options(RunOptions& o) {
     po::options_description board("Board");
     board.add_options()
         ("board", po::value(&o.board_name)->value_name("NAME"),
-         "board preset from platform/boards (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) or a .json path; "
+         "board preset (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) from $CDVP_BOARDS, else share/cdvp/boards of the "
+         "installed prefix, else the source tree's platform/boards; or a .json path; "
          "without it: the board alone on an ideal, untimed bus")
         ("m", number<uint32_t>(&o.board.m, 1, BoardConfig::kMaxM, "M"),
          "parallelism: 2m-port memories, 2m-1 comparison lanes")
@@ -53,6 +54,11 @@ po::options_description run_options(RunOptions& o) {
          "how the driver waits for the board: interrupt or polling")
         ("baseline", po::value(&o.baselines)->value_name("LIST"),
          "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa")
+        ("warmup", number<uint64_t>(&o.warmup, 0, kMaxFrames, "W"),
+         "frames at the start of each run left out of the timing statistics (allocation, first insertion)")
+        ("repeat", number<uint32_t>(&o.repeat, 1, 1000, "R"),
+         "time the baselines over the frames R times, fresh instances each run; figures are medians over runs "
+         "(the board's simulated times are deterministic and simulated once)")
         ("host-factor", number<double>(&o.host_factor, 0.001, 1000, "F", false),
          "host-speed factor: native software time x F = time on the modelled host (default: the board preset's)")
         ("quantum-ns", number<double>(&o.quantum_ns, 0, 1e9, "Q"),

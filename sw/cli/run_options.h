@@ -9,6 +9,7 @@
 
 #include "models/board/board_config.h"
 #include "sw/apps/bouncing_spheres.h"
+#include "sw/timing/frame_samples.h"
 
 namespace cdvp {
 
@@ -23,6 +24,8 @@ struct RunOptions {
     std::string transfer = "dma";
     std::string wait = "irq";
     std::string baselines;
+    uint64_t warmup = kDefaultWarmupFrames;  // frames left out of the timing statistics
+    uint32_t repeat = 1;                     // runs of the baselines over the frames
     std::vector<std::string> inject;  // fault specs, docs/faults.md
     double host_factor = 0;  // unset: the preset's
     std::string fidelity = "fast";  // cycle when only --vcd is given
