@@ -87,11 +87,15 @@ PointRow report_row(const Grid& grid, const Point& point, const nlohmann::json& 
         for (const auto& [column, value] : one) put(column, value);
     }
     const auto& frames = report.at("frames");
-    // Steady state: the first frame is left out when there are more (the
-    // incremental broad phases build their structures in it).
-    const std::size_t first = frames.size() > 1 ? 1 : 0;
+    const nlohmann::json summary = report.value("summary", nlohmann::json::object());
+    // Steady state: warm-up frames are left out (the incremental broad
+    // phases build their structures in them): as many as the report says,
+    // else the first; at least one frame stays.
+    const std::size_t warmup = summary.value("warmup_frames", std::size_t{1});
+    const std::size_t first = frames.size() > warmup ? warmup : frames.empty() ? 0 : frames.size() - 1;
     put("report_frames", std::to_string(frames.size()));
     put("frames_in_medians", std::to_string(frames.size() - first));
+    if (summary.contains("too_few_frames")) put("too_few_frames", value_text(summary["too_few_frames"]));
     std::vector<std::string> numbers, baselines;
     if (!frames.empty()) {
         for (const auto& [key, item] : frames[0].items()) {
@@ -111,6 +115,18 @@ PointRow report_row(const Grid& grid, const Point& point, const nlohmann::json& 
     }
     const double board_ns = frames.empty() ? 0 : frame_median([](const auto& f) { return f.at("total_ns").template get<double>(); });
     for (const std::string& name : baselines) {
+        // The report's own medians and spread when it has them (they span
+        // every --repeat run), else medians of the frames.
+        const nlohmann::json timed = summary.value("baselines", nlohmann::json::object()).value(name, nlohmann::json::object());
+        if (timed.contains("median_scaled_ns") && timed.contains("speedup")) {
+            put(name + "_median_ns", number_text(timed["median_scaled_ns"].get<double>()));
+            for (const char* quantile : {"p10", "p90"}) {
+                const std::string key = std::string(quantile) + "_scaled_ns";
+                if (timed.contains(key)) put(name + "_" + quantile + "_ns", number_text(timed[key].get<double>()));
+            }
+            put(name + "_speedup", number_text(timed["speedup"].get<double>()));
+            continue;
+        }
         const double ns = frame_median([&](const auto& f) { return f.at("baselines").at(name).at("scaled_ns").template get<double>(); });
         put(name + "_median_ns", number_text(ns));
         put(name + "_speedup", number_text(board_ns > 0 ? ns / board_ns : 0));
@@ -128,7 +144,7 @@ PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, co
 
 bool is_timing_column(const std::string& column) {
     return column == "median_sim_wall_ns" || column == "point_wall_s" || ends_with(column, "_median_ns") ||
-           ends_with(column, "_speedup");
+           ends_with(column, "_p10_ns") || ends_with(column, "_p90_ns") || ends_with(column, "_speedup");
 }
 
 SweepTable::SweepTable(const Grid& grid) : columns_(kFixedColumns) {

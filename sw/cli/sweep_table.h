@@ -28,11 +28,14 @@ struct PointRow {
 
 // The row of a point that ran: the axes, every effective setting of the
 // report's "config" flattened ("config.NAME", nested keys joined by '.',
-// arrays by '+'; its command_line left out), report_frames and frames_in_medians, then the median over
-// the frames after the first (all frames if there is one) of every number a
-// report frame holds ("median_NAME"), each baseline's median time on the
-// modelled host ("NAME_median_ns") and its speedup (that median over
-// median_total_ns), and the child's wall time (point_wall_s).
+// arrays by '+'; its command_line left out), report_frames and
+// frames_in_medians, then the median over the frames after the warm-up
+// (summary.warmup_frames, else the first; at least one frame stays) of
+// every number a report frame holds ("median_NAME"), each baseline's median
+// time on the modelled host ("NAME_median_ns", with NAME_p10_ns and
+// NAME_p90_ns) and its speedup over the board (from the report's summary
+// when it has them, else medians of the frames and their ratio), and the
+// child's wall time (point_wall_s).
 PointRow report_row(const Grid& grid, const Point& point, const nlohmann::json& report, double wall_seconds);
 // The row of a point refused or faulted: the axes, the child's reason and
 // its wall time.

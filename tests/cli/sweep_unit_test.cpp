@@ -147,6 +147,23 @@ TEST(SweepTable, RowsHoldSettingsMediansAfterTheFirstFrameAndSpeedups) {
     EXPECT_EQ(again.rows().at(0).at("reason"), "m=8 needs \"48\" block RAMs, the device has 6");
 }
 
+TEST(SweepTable, BaselinesComeFromTheReportsSummaryAndItsWarmUpIsLeftOut) {
+    const Grid grid(std::vector<Axis>{{"objects", {"50"}}});
+    nlohmann::json with_summary = report(100, 300);
+    with_summary["summary"] = {{"warmup_frames", 2}, {"too_few_frames", true},
+                               {"baselines", {{"sap", {{"median_scaled_ns", 290.0}, {"p10_scaled_ns", 280.0},
+                                                        {"p90_scaled_ns", 310.0}, {"speedup", 2.5}}}}}};
+    const Row row = report_row(grid, grid.point(0), with_summary, 0.5).values;
+    EXPECT_EQ(row.at("frames_in_medians"), "2");
+    EXPECT_EQ(row.at("median_total_ns"), "102.5");  // frames 2 and 3: 102, 103
+    EXPECT_EQ(row.at("too_few_frames"), "true");
+    EXPECT_EQ(row.at("sap_median_ns"), "290");
+    EXPECT_EQ(row.at("sap_p10_ns"), "280");
+    EXPECT_EQ(row.at("sap_p90_ns"), "310");
+    EXPECT_EQ(row.at("sap_speedup"), "2.5");
+    EXPECT_TRUE(is_timing_column("sap_p90_ns"));
+}
+
 TEST(SweepTable, RefusesACsvOfAnotherGrid) {
     const Grid grid(std::vector<Axis>{{"objects", {"50"}}});
     SweepTable table(grid);
