@@ -9,6 +9,8 @@
 #include "platform/kernel.h"
 #include "sw/cli/fidelity_command.h"
 #include "sw/cli/run_command.h"
+#include "sw/cli/settings_command.h"
+#include "sw/cli/version.h"
 #include "sw/scene/output_target.h"
 #include "models/common/user_text.h"
 
@@ -23,6 +25,7 @@ constexpr const char* kUsage =
     "Commands:\n"
     "  run       simulate scene frames on the virtual board; write pairs, a report, waveforms\n"
     "  fidelity  run a scene at every modelling level: simulator speed against timing error\n"
+    "  settings  list every setting (-c NAME=VALUE, --config FILE, presets) with its range and default\n"
     "\n"
     "Run 'cdvp <command> --help' for a command's options; 'cdvp --version' prints the version.\n"
     "\n"
@@ -43,12 +46,13 @@ int sc_main(int argc, char** argv) {
     }
     const std::string command = argv[1];
     if (command == "--version") {
-        return cdvp::print_to_stdout("cdvp", "cdvp 0.1.0\n");
+        return cdvp::print_to_stdout("cdvp", std::string("cdvp ") + cdvp::kCdvpVersion + "\n");
     }
     if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
     if (command == "fidelity") return cdvp::fidelity_command(argc - 1, argv + 1);
+    if (command == "settings") return cdvp::settings_command(argc - 1, argv + 1);
     std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
-              << "'; expected one of: run, fidelity (see cdvp --help)\n";
+              << "'; expected one of: run, fidelity, settings (see cdvp --help)\n";
     return 2;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "models/board/board_config.h"
+#include "platform/setting_values.h"
 #include "sw/driver/board_driver.h"
 
 namespace cdvp {
@@ -46,6 +47,8 @@ struct RunConfig {
     std::string fidelity = "cycle";
     std::vector<std::string> baseline_names;
     std::vector<std::string> inject;  // fault specs, as parsed
+    const SettingValues* settings = nullptr;  // every setting in effect and where it came from
+    std::vector<std::string> command_line;
 };
 
 // The frames of a run folded as they come: counts and sums for the totals

@@ -1,4 +1,4 @@
-#include "sw/cli/number_option.h"
+#include "models/common/number_text.h"
 
 #include <cerrno>
 #include <cmath>
@@ -19,6 +19,13 @@ std::string show(double value) {
 }
 
 }  // namespace
+
+std::string show_number(double value) {
+    if (value == static_cast<double>(static_cast<int64_t>(value)) && std::abs(value) < 1e15) {
+        return std::to_string(static_cast<int64_t>(value));
+    }
+    return show(value);
+}
 
 std::string describe_range(double min, double max) { return show(min) + " to " + show(max); }
 
