@@ -313,15 +313,17 @@ bool Setting::applies_to_bus(const std::string& bus_type) const {
 }
 
 std::string Setting::bus_types() const {
-    return buses == kAnyBus ? "pci and pcie" : buses == kPcieBus ? "pcie" : "pci";
+    return buses == kAnyBus ? "pci or pcie" : buses == kPcieBus ? "pcie" : "pci";
 }
 
+// A key of both buses binds the member of the bus in effect; a key of one
+// bus always binds that bus's member.
 SettingValue Setting::get(const Settings& s) const {
-    return buses != kNoBus && (s.bus_type == "pcie" || !get_pci) ? get_pcie(s) : get_pci(s);
+    return (s.bus_type == "pcie" && get_pcie) || !get_pci ? get_pcie(s) : get_pci(s);
 }
 
 void Setting::set(Settings& s, const SettingValue& value) const {
-    if (buses != kNoBus && (s.bus_type == "pcie" || !set_pci)) {
+    if ((s.bus_type == "pcie" && set_pcie) || !set_pci) {
         set_pcie(s, value);
     } else {
         set_pci(s, value);

@@ -83,7 +83,7 @@ struct Setting {
     std::string section() const { return name.substr(0, name.find('.')); }
     std::string key() const { return name.substr(name.find('.') + 1); }
     bool applies_to_bus(const std::string& bus_type) const;
-    std::string bus_types() const;  // "pci", "pcie" or "pci and pcie"
+    std::string bus_types() const;  // "pci", "pcie" or "pci or pcie"
     SettingValue get(const Settings& s) const;
     void set(Settings& s, const SettingValue& value) const;
     // The default, on the first bus the setting applies to.

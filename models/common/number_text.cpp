@@ -27,7 +27,7 @@ std::string show_number(double value) {
     return show(value);
 }
 
-std::string describe_range(double min, double max) { return show(min) + " to " + show(max); }
+std::string describe_range(double min, double max) { return show_number(min) + " to " + show_number(max); }
 
 std::string describe_range(uint64_t min, uint64_t max) { return std::to_string(min) + " to " + std::to_string(max); }
 

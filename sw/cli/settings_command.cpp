@@ -36,7 +36,7 @@ const char* type_name(SettingType type) {
 
 // The help, with the bus a bus key applies to.
 std::string help_of(const Setting& s) {
-    return s.buses == kNoBus ? s.help : s.help + " (" + s.bus_types() + " buses)";
+    return s.buses == kNoBus ? s.help : s.help + " (" + s.bus_types() + " bus)";
 }
 
 // The default; a key of both buses has one for each.
