@@ -23,7 +23,7 @@ using nlohmann::json;
 
 // Reads a preset's sections, each declared with its keys: a key that is
 // not declared is refused with the nearest declared one; every number is
-// a {"value": number, "source": "..."} field within its spec's range.
+// a {"value": number, "source": "..."} field within its setting's range.
 // Every error names the file and the key.
 class PresetReader {
 public:
