@@ -138,9 +138,20 @@ bool names_a_path(const std::string& name) {
 
 }  // namespace
 
+// $CDVP_BOARDS; else the presets installed beside the running binary
+// (PREFIX/bin/cdvp -> PREFIX/share/cdvp/boards), found through /proc/self/exe
+// so that a moved prefix still works; else the source tree's, for a build
+// run where it was built.
 std::string boards_directory() {
     const char* env = std::getenv("CDVP_BOARDS");
-    return env != nullptr && env[0] != '\0' ? env : CDVP_BOARDS_DIR;
+    if (env != nullptr && env[0] != '\0') return env;
+    std::error_code ec;
+    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const std::filesystem::path installed = executable.parent_path() / CDVP_INSTALLED_BOARDS_DIR;
+        if (std::filesystem::is_directory(installed, ec)) return installed.lexically_normal().string();
+    }
+    return CDVP_BOARDS_DIR;
 }
 
 std::vector<std::string> board_preset_names() {

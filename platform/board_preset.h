@@ -32,7 +32,8 @@ BoardPreset load_board_preset(const std::string& name);
 // The file load_board_preset(name) reads (whether or not it exists).
 std::string board_preset_path(const std::string& name);
 std::vector<std::string> board_preset_names();
-// Where presets live: $CDVP_BOARDS if set, else the source tree's platform/boards.
+// Where presets live: $CDVP_BOARDS if set, else share/cdvp/boards of the
+// prefix the running binary is installed in, else the source tree's platform/boards.
 std::string boards_directory();
 
 }  // namespace cdvp

@@ -36,6 +36,8 @@ struct RunSettings {
     std::string wait = "irq";       // irq | poll
     std::string fidelity = "fast";  // fast | cycle
     double quantum_ns = 0.0;
+    uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
+    uint32_t repeat = 1;
 };
 
 // Everything a run is configured by. Each member's initializer is its

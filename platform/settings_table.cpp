@@ -271,6 +271,15 @@ std::vector<Setting> host_and_run_settings() {
                   "(0: at every access, exact; larger is faster and loosely timed)",
                   "0: exact"),
              "quantum-ns", "Q"),
+        flag(count("run.warmup", "frames", 0, 1'000'000'000, member(&S::run, &RunSettings::warmup),
+                   "frames at the start of each run left out of the timing statistics (allocation, first insertion)",
+                   "Bullet's incremental broad phases build their structures in the first frames (docs/timing.md)"),
+             "warmup", "W"),
+        flag(count("run.repeat", "runs", 1, 1000, member(&S::run, &RunSettings::repeat),
+                   "time the baselines over the frames R times, fresh instances each run; figures are medians over "
+                   "runs (the board's simulated times are deterministic and simulated once)",
+                   "one run"),
+             "repeat", "R"),
     };
 }
 

@@ -17,6 +17,7 @@ packages=(
   libcgal-dev                    # independent oracle for the pair tests (box_self_intersection_d)
   gnuplot-nox                    # plots of measured results
   parallel                       # GNU parallel for sweeps
+  help2man                       # the man page, generated from --help at build time
 )
 
 missing=()

@@ -20,7 +20,7 @@
 #include "platform/config_file.h"
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
-#include "sw/baselines/broad_phase.h"
+#include "sw/cli/baseline_timing.h"
 #include "sw/cli/frame_source.h"
 #include "sw/cli/run_checks.h"
 #include "sw/cli/run_options.h"
@@ -167,7 +167,7 @@ struct Setup {
     SettingValues values;
     PlatformConfig platform;
     std::string board = "ideal";
-    std::vector<std::unique_ptr<BroadPhase>> baselines;
+    BaselineTimer baselines;
     std::pair<uint64_t, uint64_t> trace_window{0, UINT64_MAX};  // --vcd-frames
 };
 
@@ -217,38 +217,13 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     setup.platform.quantum_ns = settings.run.quantum_ns;
     setup.platform.fidelity = fidelity(setup.values, vm);
     setup.trace_window = vcd_window(o, vm);
-    std::stringstream names(o.baselines);
-    for (std::string name; std::getline(names, name, ',');) {
-        try {
-            setup.baselines.push_back(make_broad_phase(name));
-        } catch (const std::invalid_argument& e) {
-            throw InputError(std::string("--baseline: ") + e.what());
-        }
-        // Each is timed once a frame; a repeat would be run twice and reported once.
-        for (std::size_t k = 0; k + 1 < setup.baselines.size(); ++k) {
-            if (setup.baselines[k]->name() == name) throw InputError("--baseline: '" + name + "' given twice");
-        }
+    setup.baselines = BaselineTimer(o.baselines, settings.host.speed_factor);
+    const Setting& repeat = *find_setting("run.repeat");
+    if (!setup.values.is_default(repeat) && setup.baselines.empty()) {
+        throw InputError(setup.values.where(repeat) +
+                         ": reruns the software baselines over the frames; give --baseline too");
     }
     return setup;
-}
-
-// Times each baseline natively on the frame and checks it finds the board's pairs.
-std::map<std::string, BaselineTime> run_baselines(Setup& setup, const std::vector<FloatBox>& boxes,
-                                                  const PairList& board_pairs, uint64_t frame) {
-    std::map<std::string, BaselineTime> times;
-    PairList found;
-    for (auto& baseline : setup.baselines) {
-        const auto start = std::chrono::steady_clock::now();
-        baseline->find_pairs(boxes, found);
-        const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
-        times[baseline->name()] = {ns, ns * setup.values.settings().host.speed_factor};
-        if (sorted(found) != board_pairs) {
-            throw std::runtime_error("baseline " + baseline->name() + " found " + std::to_string(found.size()) +
-                                     " pairs in frame " + std::to_string(frame) + ", the board " +
-                                     std::to_string(board_pairs.size()));
-        }
-    }
-    return times;
 }
 
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
@@ -266,7 +241,8 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.interrupts = setup.platform.driver.use_interrupts;
     run.quantum_ns = setup.platform.quantum_ns;
     run.fidelity = to_string(setup.platform.fidelity);
-    for (const auto& b : setup.baselines) run.baseline_names.push_back(b->name());
+    run.baseline_names = setup.baselines.names();
+    run.baseline_runs = setup.values.settings().run.repeat;
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
     run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
@@ -280,9 +256,11 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         report.emplace(out.report->stream());
         report->begin(run);
     }
-    RunTotals totals;
+    RunTotals totals(setup.values.settings().run.warmup);
 
-    Progress progress(source.frame_count(), !o.quiet);
+    // The later runs of the baselines (--repeat) count as frames too.
+    const std::size_t baseline_runs = setup.baselines.empty() ? 1 : setup.values.settings().run.repeat;
+    Progress progress(source.frame_count() * baseline_runs, !o.quiet);
     const auto wall_start = std::chrono::steady_clock::now();
     while (std::optional<Frame> frame = source.next()) {
         const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
@@ -302,17 +280,23 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
                          run.config.sweep_cycles(boxes.size()), result.phases, {}, sim_wall_ns};
-        if (!setup.baselines.empty()) stats.baselines = run_baselines(setup, boxes, sorted(result.pairs), frame->number);
+        if (!setup.baselines.empty()) {
+            stats.baselines = setup.baselines.time_frame(boxes, sorted(result.pairs), frame->number);
+        }
         if (report) report->frame(stats);
         totals.add(stats);
         source.feed(result.pairs);
         progress.update(totals.frames());
     }
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    std::size_t frames_done = totals.frames();
+    if (!setup.baselines.empty()) {
+        setup.baselines.repeat(source, setup.values.settings().run.repeat, totals, [&] { progress.update(++frames_done); });
+    }
     platform.close_trace();
     if (out.gtkw) platform.write_gtkw(out.gtkw->stream(), std::filesystem::absolute(o.vcd).string());
 
-    if (report) report->end(totals);
+    if (report) report->end(totals, setup.values.settings().host.speed_factor);
     if (!o.quiet) {
         std::ostringstream summary;
         print_summary(summary, run, totals, wall_seconds);

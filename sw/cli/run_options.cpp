@@ -28,7 +28,8 @@ po::options_description run_options(RunOptions& o) {
     po::options_description board("Board");
     board.add_options()
         ("board", po::value(&o.board_name)->value_name("NAME"),
-         "board preset from platform/boards (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) or a .json path; "
+         "board preset (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) from $CDVP_BOARDS, else share/cdvp/boards of the "
+         "installed prefix, else the source tree's platform/boards; or a .json path; "
          "without it: the board alone on an ideal, untimed bus");
     add_setting_flags(board, {"board"}, o);
     po::options_description settings("Settings (every one: cdvp settings; docs/settings.md)");

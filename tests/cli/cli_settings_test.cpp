@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "platform/settings.h"
+#include "sw/timing/frame_samples.h"
 #include "tests/cli/cli_support.h"
 
 namespace cdvp::test {
@@ -135,12 +137,14 @@ TEST_F(CliSettings, SettingsJsonListsEverySettingAndEveryPresetKey) {
     }
     for (const char* flag : {"--m", "--clock-mhz", "--compare-latency", "--fifo-depth", "--drain-rate", "--pair-buffer",
                              "--host-factor", "--quantum-ns", "--objects", "--frames", "--seed", "--transfer", "--wait",
-                             "--fidelity"}) {
+                             "--fidelity", "--warmup", "--repeat"}) {
         EXPECT_EQ(flags.count(flag), 1u) << flag;
     }
     EXPECT_EQ(run("settings").status, 0);
     expect_refusal(run("settings --yaml"), "cdvp settings: unknown option '--yaml'");
 }
+
+TEST(Settings, TheWarmupDefaultIsTheTimingLibrarys) { EXPECT_EQ(Settings{}.run.warmup, kDefaultWarmupFrames); }
 
 TEST_F(CliSettings, TheDocListsTheTableAsCdvpSettingsPrintsIt) {
     const Result r = run("settings --markdown");

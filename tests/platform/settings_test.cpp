@@ -53,7 +53,7 @@ TEST(SettingsTable, EveryPresetKeyMapsToExactlyOneSettingOfItsBus) {
 TEST(SettingsTable, EveryDedicatedFlagBindsExactlyOneSetting) {
     const char* flags[] = {"m",      "clock-mhz", "compare-latency", "fifo-depth", "drain-rate",
                            "pair-buffer", "host-factor", "quantum-ns", "objects", "frames",
-                           "seed",   "transfer",  "wait",            "fidelity"};
+                           "seed",   "transfer",  "wait",            "fidelity", "warmup", "repeat"};
     for (const char* flag : flags) {
         int count = 0;
         for (const Setting& s : settings_table()) count += s.flag == flag ? 1 : 0;
