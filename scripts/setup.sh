@@ -8,6 +8,7 @@ packages=(
   libsystemc-dev                 # SystemC 2.3.4 + TLM-2.0 (pkg-config: systemc)
   libboost-program-options-dev   # command line
   nlohmann-json3-dev             # JSON reports
+  libtomlplusplus-dev            # TOML config files (cdvp run --config)
   libgtest-dev libgmock-dev      # tests
   libbenchmark-dev               # benchmarks
   libbullet-dev                  # software broad-phase baselines (Bullet 3.24, float)

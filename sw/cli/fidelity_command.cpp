@@ -37,8 +37,9 @@ constexpr const char* kHelp =
     "engine at quantum 0 in percent of that level's frame time, and whether the pairs are identical)\n"
     "and DIR/fidelity.png (wall time per frame against timing error, drawn by gnuplot).\n"
     "\n"
-    "Every option of 'cdvp run' that sets the scene, board, bus or host is accepted and passed on;\n"
-    "--fidelity, --quantum-ns, --report, --pairs-out, --vcd, --inject and --baseline are set per level\n"
+    "Every option of 'cdvp run' that sets the scene, board, bus or host is accepted and passed on,\n"
+    "--config FILE and -c NAME=VALUE included; --fidelity, --quantum-ns (and -c run.fidelity,\n"
+    "-c run.quantum_ns), --report, --pairs-out, --vcd, --inject and --baseline are set per level\n"
     "or do not apply. -q prints nothing but errors; without it the table is printed and, on a terminal,\n"
     "the level being run.\n";
 
@@ -154,6 +155,14 @@ bool reserved(const std::string& arg) {
     return false;
 }
 
+// A -c override of a setting each level sets itself ("-c NAME=VALUE" or "-cNAME=VALUE").
+void refuse_reserved_override(const std::string& value) {
+    const std::string name = value.substr(0, value.find('='));
+    if (name == "run.fidelity" || name == "run.quantum_ns") {
+        throw InputError("-c " + name + ": set by cdvp fidelity for each level; leave it out");
+    }
+}
+
 int fidelity_levels(int argc, char** argv) {
     std::vector<std::string> forwarded;
     std::string out_dir;
@@ -166,6 +175,9 @@ int fidelity_levels(int argc, char** argv) {
         } else if (arg == "--out") {
             if (k + 1 == argc) throw InputError("--out: expected a directory");
             out_dir = argv[++k];
+        } else if (arg.rfind("-c", 0) == 0 && (arg.size() > 2 || k + 1 < argc)) {
+            refuse_reserved_override(arg.size() > 2 ? arg.substr(2) : std::string(argv[k + 1]));
+            forwarded.push_back(arg);
         } else if (reserved(arg)) {
             throw InputError(excerpt(arg) + ": set by cdvp fidelity for each level, or not for it; leave it out");
         } else {
@@ -181,10 +193,10 @@ int fidelity_levels(int argc, char** argv) {
     // directories this run made, and a failed run leaves neither.
     CreatedDirectories made;
     OutputSet files;
-    for (const char* input : {"--trace", "--board"}) {
+    for (const std::string input : {"--trace", "--board", "--config"}) {
         const std::string path = option_value(forwarded, input);
         // A board given by name is a shipped preset; only a path can be an output's target.
-        if (!path.empty() && (std::string(input) == "--trace" || path.find('/') != std::string::npos)) {
+        if (!path.empty() && (input != "--board" || path.find('/') != std::string::npos)) {
             files.add_input(input, path);
         }
     }

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
+#include "sw/cli/version.h"
 
 namespace cdvp {
 
@@ -32,30 +33,48 @@ std::string nested(const nlohmann::json& value, int depth) {
     return out;
 }
 
+// Every setting in effect: its value and where it came from.
+nlohmann::json settings_json(const SettingValues& values) {
+    nlohmann::json settings = nlohmann::json::object();
+    for (const Setting* s : values.effective()) {
+        settings[s->name] = {{"value", to_json(s->get(values.settings()))},
+                             {"origin", values.origin(*s).describe(*s)}};
+    }
+    return settings;
+}
+
 nlohmann::json config_json(const RunConfig& run) {
     const BoardConfig& c = run.config;
-    return {{"source", run.source},
-            {"board", run.board},
-            {"bus", run.bus},
-            {"host", run.host},
-            {"host_factor", run.host_factor},
-            {"transfer", run.dma ? "dma" : "pio"},
-            {"wait", run.interrupts ? "irq" : "poll"},
-            {"fidelity", run.fidelity},
-            {"quantum_ns", run.quantum_ns},
-            {"baselines", run.baseline_names},
-            {"baseline_runs", run.baseline_runs},
-            {"inject", run.inject},
-            {"m", c.m},
-            {"lanes", c.lanes()},
-            {"clock_mhz", c.clock_mhz},
-            {"compare_latency_cycles", c.compare.latency_cycles},
-            {"pipeline_latency_cycles", c.pipeline_latency()},
-            {"fifo_depth", c.collector.fifo_depth},
-            {"drain_per_cycle", c.collector.drain_per_cycle},
-            {"pair_buffer_depth", c.collector.buffer_depth},
-            {"capacity", run.capacity},
-            {"block_rams", run.block_rams}};
+    nlohmann::json config = {
+        {"version", kCdvpVersion},
+        {"command_line", run.command_line},
+        {"source", run.source},
+        {"board", run.board},
+        {"bus", run.bus},
+        {"host", run.host},
+        {"host_factor", run.host_factor},
+        {"transfer", run.dma ? "dma" : "pio"},
+        {"wait", run.interrupts ? "irq" : "poll"},
+        {"fidelity", run.fidelity},
+        {"quantum_ns", run.quantum_ns},
+        {"baselines", run.baseline_names},
+        {"baseline_runs", run.baseline_runs},
+        {"inject", run.inject},
+        {"m", c.m},
+        {"lanes", c.lanes()},
+        {"clock_mhz", c.clock_mhz},
+        {"compare_latency_cycles", c.compare.latency_cycles},
+        {"pipeline_latency_cycles", c.pipeline_latency()},
+        {"fifo_depth", c.collector.fifo_depth},
+        {"drain_per_cycle", c.collector.drain_per_cycle},
+        {"pair_buffer_depth", c.collector.buffer_depth},
+        {"capacity", run.capacity},
+        {"block_rams", run.block_rams}};
+    if (run.settings != nullptr) {
+        config["seed"] = run.settings->settings().scene.seed;
+        config["settings"] = settings_json(*run.settings);
+    }
+    return config;
 }
 
 nlohmann::json frame_json(const FrameStats& f) {

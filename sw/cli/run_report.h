@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "models/board/board_config.h"
+#include "platform/setting_values.h"
 #include "sw/driver/board_driver.h"
 #include "sw/timing/frame_samples.h"
 
@@ -48,6 +49,8 @@ struct RunConfig {
     std::vector<std::string> baseline_names;
     uint32_t baseline_runs = 1;  // --repeat
     std::vector<std::string> inject;  // fault specs, as parsed
+    const SettingValues* settings = nullptr;  // every setting in effect and where it came from
+    std::vector<std::string> command_line;
 };
 
 // The frames of a run folded as they come: counts and sums for the totals

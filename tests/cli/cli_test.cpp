@@ -132,7 +132,7 @@ TEST_F(Cli, TopLevelCommandLine) {
         const Result r = run(bad);
         EXPECT_EQ(r.status, 2) << bad;
         EXPECT_EQ(r.err, std::string("cdvp: unknown command '") + bad +
-                             "'; expected one of: run, fidelity, sweep, merge, bullet, record (see cdvp --help)\n");
+                             "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record (see cdvp --help)\n");
     }
     EXPECT_EQ(run("run").err, "cdvp run: give exactly one of --trace FILE or --scene spheres\n");
 }
