@@ -1,6 +1,9 @@
 // The cdvp command line, run as users run it.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
+
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.h"
@@ -118,6 +121,21 @@ TEST_F(Cli, HelpListsEveryOption) {
         EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
     }
     EXPECT_NE(help.out.find("no abbreviations"), std::string::npos) << "the prefix rule is documented";
+}
+
+// The README's command-line reference is what the binary prints: every
+// command's --help appears there verbatim, so neither can drift.
+TEST_F(Cli, ReadmeCarriesEveryCommandsHelpVerbatim) {
+    std::ifstream in(CDVP_SOURCE_DIR "/README.md");
+    std::stringstream readme;
+    readme << in.rdbuf();
+    ASSERT_FALSE(readme.str().empty());
+    for (const char* command : {"", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record"}) {
+        const Result help = run(std::string(command) + " --help");
+        ASSERT_EQ(help.status, 0) << command;
+        EXPECT_NE(readme.str().find("```\n" + help.out + "```\n"), std::string::npos)
+            << "README.md lacks the current 'cdvp " << command << " --help'";
+    }
 }
 
 TEST_F(Cli, TopLevelCommandLine) {
