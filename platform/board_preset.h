@@ -6,17 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "models/board/board_config.h"
-#include "models/pci/bus_timing.h"
-#include "sw/driver/board_driver.h"
+#include "platform/setting_values.h"
 
 namespace cdvp {
-
-struct HostConfig {
-    std::string name;
-    // Native software time x speed_factor = time on the modelled host.
-    double speed_factor = 1.0;
-};
 
 struct BoardPreset {
     std::string name;
@@ -27,17 +19,21 @@ struct BoardPreset {
     std::shared_ptr<const BusTiming> bus;
     DriverConfig driver;    // host CPU costs
     HostConfig host;
+    // Every setting the preset gives, checked against its range: the layer
+    // the preset puts over the defaults (platform/settings.h).
+    std::vector<Assignment> values;
 };
 
 // name: a preset in the boards directory (e.g. "adm-xrc-ii"), or a path to a
 // .json file. Throws InputError naming the file and the missing or bad field,
 // on one line (control characters escaped). Every key must be declared and
-// every number within its unit's range (see board_preset.cpp's tables).
+// every number within its setting's range (platform/settings.h).
 BoardPreset load_board_preset(const std::string& name);
 // The file load_board_preset(name) reads (whether or not it exists).
 std::string board_preset_path(const std::string& name);
 std::vector<std::string> board_preset_names();
-// Where presets live: $CDVP_BOARDS if set, else the source tree's platform/boards.
+// Where presets live: $CDVP_BOARDS if set, else share/cdvp/boards of the
+// prefix the running binary is installed in, else the source tree's platform/boards.
 std::string boards_directory();
 
 }  // namespace cdvp

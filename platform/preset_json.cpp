@@ -1,5 +1,12 @@
 #include "platform/preset_json.h"
 
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
 #include <algorithm>
 #include <optional>
 #include <set>
@@ -162,6 +169,21 @@ json parse_preset(const std::string& path, const std::string& text) {
     json root = parse_strictly(path, text);
     if (std::optional<std::string> found = control_in(root, "")) throw InputError(path + ": " + *found);
     return root;
+}
+
+std::string read_small_file(const std::string& path, const std::string& what) {
+    constexpr std::size_t kMaxBytes = 1 << 20;  // a hand-written file; anything bigger is not one
+    struct stat status {};
+    if (stat(path.c_str(), &status) != 0) throw InputError(path + ": cannot open: " + std::strerror(errno));
+    if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot open: not a regular file");
+    if (static_cast<std::size_t>(status.st_size) > kMaxBytes) {
+        throw InputError(path + ": larger than " + std::to_string(kMaxBytes) + " bytes; not " + what);
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throw InputError(path + ": cannot read: " + std::strerror(errno));
+    return text.str();
 }
 
 }  // namespace cdvp

@@ -13,4 +13,8 @@ namespace cdvp {
 // Throws InputError "PATH: ..." naming the position or the key.
 nlohmann::json parse_preset(const std::string& path, const std::string& text);
 
+// A small hand-written file's text (a preset, a config file): a regular file
+// of at most 1 MiB, or InputError "PATH: ... not WHAT".
+std::string read_small_file(const std::string& path, const std::string& what);
+
 }  // namespace cdvp

@@ -119,6 +119,13 @@ SweepCounters BoardCore::counters() { return running() ? engine_->counters_after
 
 uint32_t BoardCore::buffered_pairs() { return counters().buffered; }
 
+void BoardCore::copy_buffered_words(uint64_t first, uint64_t count, unsigned char* out) {
+    static_assert(sizeof(IndexPair) == 8, "a pair is two words, first then second");
+    if (count == 0) return;
+    const auto* pairs = reinterpret_cast<const unsigned char*>(&engine_->buffer_entry(static_cast<uint32_t>(first / 2)));
+    std::memcpy(out, pairs + 4 * (first % 2), 4 * count);
+}
+
 void BoardCore::raise_error(ControlRegisters::BoardError cause) {
     error_ = true;
     error_cause_ = cause;

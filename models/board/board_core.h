@@ -45,6 +45,9 @@ public:
     // The pair buffer as the host reads it now.
     uint32_t buffered_pairs();
     const IndexPair& buffered_pair(uint32_t index) { return engine_->buffer_entry(index); }
+    // The buffer as the host's words (first, second of each pair, in host
+    // order): `count` words from word `first` on, all within the buffered pairs.
+    void copy_buffered_words(uint64_t first, uint64_t count, unsigned char* out);
     // Reports an error status (ERROR with this cause, and the interrupt);
     // a sweep under way goes on.
     void raise_error(ControlRegisters::BoardError cause);

@@ -62,7 +62,9 @@ public:
     // The counters after `edges` edges of the segment (edges <= segment_edges()).
     virtual SweepCounters counters_after(uint64_t edges) = 0;
     // Entry k of the pair buffer (board order); after `edges` edges of the
-    // segment, entries below counters_after(edges).buffered are valid.
+    // segment, entries below counters_after(edges).buffered are valid. The
+    // valid entries lie one after another in memory, so the host's burst
+    // reads copy them at once.
     virtual const IndexPair& buffer_entry(uint32_t k) = 0;
 };
 

@@ -160,10 +160,7 @@ tlm::tlm_response_status CollisionBoard::access(tlm::tlm_command command, uint64
         const uint64_t first = (address - am::kPairBuffer) / 4;
         // Only the pairs the buffer holds: reading more is an address error.
         if ((first + words + 1) / 2 > core_.buffered_pairs()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
-        for (uint64_t k = 0; k < words; ++k) {
-            const IndexPair& pair = core_.buffered_pair(static_cast<uint32_t>((first + k) / 2));
-            set_word(k, (first + k) % 2 == 0 ? pair.first : pair.second);
-        }
+        core_.copy_buffered_words(first, words, data);
         return tlm::TLM_OK_RESPONSE;
     }
     return tlm::TLM_ADDRESS_ERROR_RESPONSE;

@@ -39,16 +39,18 @@ void for_each_hit(uint32_t hits, std::size_t q0, Visit&& visit) {
 }  // namespace
 
 // The y-z grid: cell of v on an axis = floor((v - origin) / size), clamped.
+// Float arithmetic: each step is monotonic in v, which is all the sweep needs
+// (boxes whose hulls meet get spans that meet).
 struct PairFinder::Grid {
     uint32_t cells[2] = {1, 1};  // y, z
-    double origin[2] = {0, 0};
-    double inverse_size[2] = {0, 0};
+    float origin[2] = {0, 0};
+    float inverse_size[2] = {0, 0};
 
     uint16_t cell(int axis, float value) const {
-        if (cells[axis] == 1) return 0;
-        const double at = (static_cast<double>(value) - origin[axis]) * inverse_size[axis];
+        if (cells[axis] == 1) return 0;  // (and inverse_size 0 would turn infinities into NaN)
+        const float at = (value - origin[axis]) * inverse_size[axis];
         // Clamped first, so truncation is floor (and infinities land in the end cells).
-        return static_cast<uint16_t>(std::min(std::max(at, 0.0), static_cast<double>(cells[axis] - 1)));
+        return static_cast<uint16_t>(std::min(std::max(at, 0.0f), static_cast<float>(cells[axis] - 1)));
     }
 };
 
@@ -85,22 +87,23 @@ void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList&
     cluster_by_first_cell();
     sort_by_min_x();
     bin();
-    sweep_cells(unordered_);
-    order(objects, unordered_, out);
+    sweep_cells();
+    order(objects, emit_pairs(), out);
 }
 
 void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
-    valid_.clear();
+    valid_.resize(objects);
+    std::size_t kept = 0;
     for (uint32_t i = 0; i < objects; ++i) {
-        PackedBox box;
+        PackedBox& box = valid_[kept];
         read_box(words, i, box.bound);
         bool has_nan = false;
         for (float bound : box.bound) has_nan |= std::isnan(bound);
-        if (has_nan) continue;  // every comparison with it is false: it meets nothing
         box.index = i;
         box.first_cell = 0;
-        valid_.push_back(box);
+        kept += has_nan ? 0 : 1;  // every comparison with a NaN is false: it meets nothing
     }
+    valid_.resize(kept);
 }
 
 // Cells about twice the mean box extent, so that most boxes touch one or two
@@ -124,31 +127,35 @@ PairFinder::Grid PairFinder::choose_grid() const {
         const double size = std::max(2.0 * extent / static_cast<double>(finite), (high - low) / kMaxCellsPerAxis);
         const double cells = std::floor((high - low) / size);
         grid.cells[axis] = static_cast<uint32_t>(std::clamp(cells, 1.0, static_cast<double>(kMaxCellsPerAxis)));
-        grid.origin[axis] = low;
-        grid.inverse_size[axis] = grid.cells[axis] / (high - low);
+        grid.origin[axis] = static_cast<float>(low);
+        grid.inverse_size[axis] = static_cast<float>(grid.cells[axis] / (high - low));
     }
     while (uint64_t{grid.cells[0]} * grid.cells[1] > std::max<uint64_t>(n / kMinBoxesPerCell, 1)) {
         // Coarsen the finer axis first.
         const int axis = grid.cells[0] >= grid.cells[1] ? 0 : 1;
-        grid.inverse_size[axis] *= static_cast<double>((grid.cells[axis] + 1) / 2) / grid.cells[axis];
+        grid.inverse_size[axis] *= static_cast<float>(static_cast<double>((grid.cells[axis] + 1) / 2) / grid.cells[axis]);
         grid.cells[axis] = (grid.cells[axis] + 1) / 2;
     }
     return grid;
 }
 
 // The cells of each box's y and z hulls [min(lo, hi), max(lo, hi)]: two boxes
-// that meet on an axis have intersecting hulls even when inverted.
+// that meet on an axis have intersecting hulls even when inverted. Each box
+// becomes a sort item: its min-x key, its position in valid_ and its cells.
 void PairFinder::find_spans(const Grid& chosen) {
     const std::size_t n = valid_.size();
     Grid grid = chosen;
-    spans_.resize(n);
+    items_.resize(n);
     for (int attempt = 0; attempt < 2; ++attempt) {
         entry_count_ = 0;
         for (std::size_t k = 0; k < n; ++k) {
-            const float* b = valid_[k].bound;
-            spans_[k] = {grid.cell(0, std::min(b[kMinY], b[kMaxY])), grid.cell(0, std::max(b[kMinY], b[kMaxY])),
-                         grid.cell(1, std::min(b[kMinZ], b[kMaxZ])), grid.cell(1, std::max(b[kMinZ], b[kMaxZ]))};
-            entry_count_ += uint64_t{spans_[k].y1 - spans_[k].y0 + 1u} * (spans_[k].z1 - spans_[k].z0 + 1u);
+            PackedBox& box = valid_[k];
+            const float* b = box.bound;
+            const CellSpan span = {grid.cell(0, std::min(b[kMinY], b[kMaxY])), grid.cell(0, std::max(b[kMinY], b[kMaxY])),
+                                   grid.cell(1, std::min(b[kMinZ], b[kMaxZ])), grid.cell(1, std::max(b[kMinZ], b[kMaxZ]))};
+            entry_count_ += uint64_t{span.y1 - span.y0 + 1u} * (span.z1 - span.z0 + 1u);
+            box.first_cell = (uint32_t{span.y0} << 16) | span.z0;
+            items_[k] = {ordered_key(b[kMinX]), static_cast<uint32_t>(k), span};
         }
         if (entry_count_ <= kMaxEntriesPerBox * n) break;
         grid = Grid{};  // huge boxes everywhere: one cell
@@ -159,22 +166,25 @@ void PairFinder::find_spans(const Grid& chosen) {
 
 // Boxes grouped by their first cell (a counting sort), so that the boxes of
 // one cell lie close together when the cells are filled: index order says
-// nothing about where a box is.
+// nothing about where a box is. Pays off only once the boxes outgrow the
+// cache.
 void PairFinder::cluster_by_first_cell() {
     const std::size_t n = valid_.size();
+    if (n <= cluster_above_) return;
     cell_begin_.assign(std::size_t{cells_y_} * cells_z_ + 1, 0);
-    auto first_cell = [&](const CellSpan& span) { return uint32_t{span.y0} * cells_z_ + span.z0; };
-    for (const CellSpan& span : spans_) ++cell_begin_[first_cell(span) + 1];
+    auto first_cell = [&](const SortItem& item) { return uint32_t{item.span.y0} * cells_z_ + item.span.z0; };
+    for (const SortItem& item : items_) ++cell_begin_[first_cell(item) + 1];
     for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
     cell_next_.assign(cell_begin_.begin(), cell_begin_.end() - 1);
     clustered_.resize(n);
-    items_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        const uint32_t position = cell_next_[first_cell(spans_[k])]++;
-        clustered_[position] = valid_[k];
-        clustered_[position].first_cell = (uint32_t{spans_[k].y0} << 16) | spans_[k].z0;
-        items_[position] = {ordered_key(valid_[k].bound[kMinX]), position, spans_[k]};
+    spare_items_.resize(n);
+    for (const SortItem& item : items_) {
+        const uint32_t position = cell_next_[first_cell(item)]++;
+        clustered_[position] = valid_[item.position];
+        spare_items_[position] = {item.key, position, item.span};
     }
+    valid_.swap(clustered_);
+    items_.swap(spare_items_);
 }
 
 // LSD radix sort of the boxes' (min x key, position, cells), 11 bits a pass;
@@ -194,28 +204,50 @@ void PairFinder::sort_by_min_x() {
 
 // Lays the boxes out cell by cell, each cell in min-x order: a stable counting
 // sort of the x-sorted boxes by cell, moving only positions (one write stream
-// per cell), then one pass gathering the bounds.
+// per cell), then one pass gathering the bounds. Most boxes touch one or two
+// cells per axis: those are counted and placed without a branch on their span
+// (an unpredictable branch per box costs more than the rest of the pass).
 void PairFinder::bin() {
-    cell_begin_.assign(std::size_t{cells_y_} * cells_z_ + 1, 0);
-    auto for_each_cell = [&](const CellSpan& span, auto&& visit) {
-        for (uint32_t y = span.y0; y <= span.y1; ++y) {
-            for (uint32_t z = span.z0; z <= span.z1; ++z) visit(y * cells_z_ + z);
+    const std::size_t cells = std::size_t{cells_y_} * cells_z_;
+    cell_begin_.assign(cells + 1, 0);
+    uint32_t* count = cell_begin_.data() + 1;
+    for (const SortItem& item : items_) {
+        const CellCorners corners = corners_of(item.span);
+        if (corners.wide) {
+            for_each_cell(item.span, [&](uint32_t cell) { ++count[cell]; });
+            continue;
         }
-    };
-    for (const SortItem& item : items_) for_each_cell(item.span, [&](uint32_t cell) { ++cell_begin_[cell + 1]; });
+        ++count[corners.cell[0]];
+        count[corners.cell[1]] += corners.second_z;
+        count[corners.cell[2]] += corners.second_y;
+        count[corners.cell[3]] += corners.second_y & corners.second_z;
+    }
     for (std::size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
     cell_next_.assign(cell_begin_.begin(), cell_begin_.end() - 1);
-    entry_box_.resize(entry_count_);
+    // One spare slot at the end takes the writes of corners a box does not touch.
+    entry_box_.resize(entry_count_ + 1);
+    const std::size_t spare = entry_count_;
+    uint32_t* next = cell_next_.data();
     for (const SortItem& item : items_) {
-        for_each_cell(item.span, [&](uint32_t cell) { entry_box_[cell_next_[cell]++] = item.position; });
+        const CellCorners corners = corners_of(item.span);
+        if (corners.wide) {
+            for_each_cell(item.span, [&](uint32_t cell) { entry_box_[next[cell]++] = item.position; });
+            continue;
+        }
+        const uint32_t touched[4] = {1, corners.second_z, corners.second_y, corners.second_y & corners.second_z};
+        for (int k = 0; k < 4; ++k) {
+            uint32_t& slot = next[corners.cell[k]];
+            entry_box_[touched[k] != 0 ? slot : spare] = item.position;
+            slot += touched[k];
+        }
     }
     entries_.resize(entry_count_);
-    entry_index_.assign(entry_count_ + kBlock, 0);
-    entry_first_.assign(entry_count_ + kBlock, 0);
-    for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
+    entry_index_.resize(entry_count_ + kBlock);
+    entry_first_.resize(entry_count_ + kBlock);
+    for (uint32_t cell = 0; cell < cells; ++cell) {
         const uint32_t y = cell / cells_z_, z = cell % cells_z_;
         for (uint32_t e = cell_begin_[cell]; e < cell_begin_[cell + 1]; ++e) {
-            const PackedBox& box = clustered_[entry_box_[e]];
+            const PackedBox& box = valid_[entry_box_[e]];
             entries_.set(e, box.bound);
             entry_index_[e] = box.index;
             entry_first_[e] = ((box.first_cell >> 16) == y ? 1u : 0u) | ((box.first_cell & 0xFFFF) == z ? 2u : 0u);
@@ -223,62 +255,98 @@ void PairFinder::bin() {
     }
 }
 
+PairFinder::CellCorners PairFinder::corners_of(const CellSpan& span) const {
+    CellCorners corners;
+    corners.wide = span.y1 - span.y0 > 1 || span.z1 - span.z0 > 1;
+    corners.second_y = span.y1 != span.y0 ? 1u : 0u;
+    corners.second_z = span.z1 != span.z0 ? 1u : 0u;
+    const uint32_t first = uint32_t{span.y0} * cells_z_ + span.z0;
+    corners.cell[0] = first;
+    corners.cell[1] = first + corners.second_z;
+    corners.cell[2] = first + corners.second_y * cells_z_;
+    corners.cell[3] = corners.cell[2] + corners.second_z;
+    return corners;
+}
+
+template <typename Visit>
+void PairFinder::for_each_cell(const CellSpan& span, Visit&& visit) const {
+    for (uint32_t y = span.y0; y <= span.y1; ++y) {
+        for (uint32_t z = span.z0; z <= span.z1; ++z) visit(y * cells_z_ + z);
+    }
+}
+
 // Box pruning in each cell: box p meets only boxes q after it (min x order)
 // with min_x(q) <= max_x(p), a prefix of the cell's rest; the block test does
-// the six comparisons, so blocks running past the prefix add nothing. Both
-// boxes are in this cell, so it is the first cell they share exactly when it
-// is the first on y of one of them and the first on z of one of them.
-void PairFinder::sweep_cells(PairList& unordered) const {
+// the six comparisons, so blocks running past the prefix add nothing. About
+// half the blocks tested hold a hit, too irregular for the branch predictor,
+// so the sweep only records blocks with hits (without a branch) and
+// emit_pairs() turns them into pairs afterwards.
+void PairFinder::sweep_cells() {
     const float* min_x = entries_.bound[kMinX].data();
-    const uint32_t* index = entry_index_.data();
-    const uint32_t* first = entry_first_.data();
-    unordered.clear();
+    hit_blocks_.resize(std::max<std::size_t>(hit_blocks_.size(), entry_count_ + 1));
+    std::size_t recorded = 0;
     for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
         const std::size_t end = cell_begin_[cell + 1];
         for (std::size_t p = cell_begin_[cell]; p < end; ++p) {
             float a[kCoordinates];
             entries_.get(p, a);
             const BlockTest test(entries_, a);
-            const uint32_t i = index[p];
             for (std::size_t q0 = p + 1; q0 < end; q0 += kBlock) {
-                uint32_t hits = test.hits(q0) & block_mask_before(q0, end);
-                if (hits != 0) {
-                    if ((first[p] & 1) == 0) hits &= block_flag_bits<0>(first, q0);
-                    if ((first[p] & 2) == 0) hits &= block_flag_bits<1>(first, q0);
-                    for_each_hit(hits, q0, [&](std::size_t q) {
-                        const uint32_t j = index[q];
-                        unordered.push_back({std::min(i, j), std::max(i, j)});
-                    });
-                }
+                const uint32_t hits = test.hits(q0) & block_mask_before(q0, end);
+                if (recorded + 1 == hit_blocks_.size()) hit_blocks_.resize(2 * hit_blocks_.size());
+                hit_blocks_[recorded] = {static_cast<uint32_t>(p), static_cast<uint32_t>(q0), hits};
+                recorded += hits != 0 ? 1 : 0;
                 if (q0 + kBlock >= end || !(min_x[q0 + kBlock - 1] <= a[kMaxX])) break;
             }
         }
     }
+    hit_block_count_ = recorded;
 }
 
-// BoardCore's order: a counting sort on the first index, then each row by
-// the second (rows are short, except in scenes where everything meets).
-void PairFinder::order(uint32_t objects, const PairList& unordered, PairList& out) {
-    row_start_.assign(std::size_t{objects} + 1, 0);
-    for (const IndexPair& pair : unordered) ++row_start_[pair.first + 1];
-    for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
-    out.resize(unordered.size());
-    row_next_.assign(row_start_.begin(), row_start_.end() - 1);
-    for (const IndexPair& pair : unordered) out[row_next_[pair.first]++] = pair;
-    for (uint32_t r = 0; r < objects; ++r) {
-        auto begin = out.begin() + row_start_[r], end = out.begin() + row_start_[r + 1];
-        if (end - begin < 2) continue;
-        if (end - begin <= 16) {
-            for (auto it = begin + 1; it != end; ++it) {  // insertion sort
-                const IndexPair pair = *it;
-                auto hole = it;
-                for (; hole != begin && (hole - 1)->second > pair.second; --hole) *hole = *(hole - 1);
-                *hole = pair;
-            }
-        } else {
-            std::sort(begin, end, [](const IndexPair& a, const IndexPair& b) { return a.second < b.second; });
+// Both boxes of a hit are in the block's cell, so it is the first cell they
+// share exactly when it is the first on y of one of them and the first on z
+// of one of them; the others are dropped. Every lane is written and the end
+// moves on by the lane's hit bit: no branch per hit.
+std::size_t PairFinder::emit_pairs() {
+    const uint32_t* index = entry_index_.data();
+    const uint32_t* first = entry_first_.data();
+    unordered_.resize(std::max<std::size_t>(unordered_.size(), kBlock * (hit_block_count_ + 1)));
+    IndexPair* out = unordered_.data();
+    std::size_t found = 0;
+    for (std::size_t r = 0; r < hit_block_count_; ++r) {
+        const HitBlock& block = hit_blocks_[r];
+        const uint32_t own = first[block.p];
+        const uint32_t any_y = (own & 1) != 0 ? ~0u : 0u, any_z = (own & 2) != 0 ? ~0u : 0u;
+        const uint32_t hits = block.hits & (any_y | block_flag_bits<0>(first, block.q0)) &
+                              (any_z | block_flag_bits<1>(first, block.q0));
+        const uint32_t i = index[block.p];
+        for (std::size_t k = 0; k < kBlock; ++k) {
+            const uint32_t j = index[block.q0 + k];  // padding past the cell's end: never counted
+            out[found].first = std::min(i, j);
+            out[found].second = std::max(i, j);
+            found += (hits >> k) & 1u;
         }
     }
+    return found;
+}
+
+// BoardCore's order: a stable counting sort on the second index, then one on
+// the first (LSD radix with one digit per index): no comparisons, no branch
+// on the data.
+void PairFinder::order(uint32_t objects, std::size_t found, PairList& out) {
+    by_second_.resize(found);
+    out.resize(found);
+    counting_sort(objects, unordered_.data(), found, by_second_.data(), [](const IndexPair& pair) { return pair.second; });
+    counting_sort(objects, by_second_.data(), found, out.data(), [](const IndexPair& pair) { return pair.first; });
+}
+
+template <typename Key>
+void PairFinder::counting_sort(uint32_t objects, const IndexPair* from, std::size_t count, IndexPair* to, Key key) {
+    row_next_.assign(std::size_t{objects} + 1, 0);
+    uint64_t* next = row_next_.data();
+    for (std::size_t k = 0; k < count; ++k) ++next[key(from[k]) + 1];
+    for (std::size_t r = 1; r < row_next_.size(); ++r) next[r] += next[r - 1];
+    for (std::size_t k = 0; k < count; ++k) to[next[key(from[k])]++] = from[k];
 }
 
 }  // namespace cdvp

@@ -34,6 +34,12 @@ public:
     void all_pairs(uint32_t objects, const CoordinateWords& words, PairList& out);
     void sweep(uint32_t objects, const CoordinateWords& words, PairList& out);
 
+    // Above this many boxes the sweep first groups them by cell, so that
+    // filling the cells reads memory in order (below, they fit in the cache).
+    static constexpr uint32_t kClusterAbove = 32768;
+    // For tests: group by cell above `boxes` instead.
+    void set_cluster_above(uint32_t boxes) { cluster_above_ = boxes; }
+
     // Grid cells of the last sweep (1 when it swept along x alone).
     uint32_t last_cells() const { return cells_y_ * cells_z_; }
 
@@ -48,7 +54,7 @@ private:
     struct CellSpan {
         uint16_t y0, y1, z0, z1;
     };
-    // A box in the min-x sort: its ordered key, its position in clustered_ and its cells.
+    // A box in the min-x sort: its ordered key, its position in valid_ and its cells.
     struct SortItem {
         uint32_t key;
         uint32_t position;
@@ -60,17 +66,31 @@ private:
     void find_spans(const Grid& grid);
     void cluster_by_first_cell();
     void sort_by_min_x();
+    // The cells a box touches when it touches at most two per axis: corner k
+    // is (y0 + (k >> 1), z0 + (k & 1)), clamped to the span.
+    struct CellCorners {
+        uint32_t cell[4];
+        uint32_t second_y, second_z;  // 1 when the span has a second cell on that axis
+        bool wide;                    // more than two cells on some axis
+    };
+    CellCorners corners_of(const CellSpan& span) const;
+    template <typename Visit>
+    void for_each_cell(const CellSpan& span, Visit&& visit) const;
     void bin();
-    void sweep_cells(PairList& unordered) const;
-    void order(uint32_t objects, const PairList& unordered, PairList& out);
+    void sweep_cells();
+    // Writes the pairs of the recorded hit blocks into unordered_: how many.
+    std::size_t emit_pairs();
+    // Sorts the first `found` pairs of unordered_ into out, BoardCore's order.
+    void order(uint32_t objects, std::size_t found, PairList& out);
+    template <typename Key>
+    void counting_sort(uint32_t objects, const IndexPair* from, std::size_t count, IndexPair* to, Key key);
 
-    // Boxes without a NaN bound in index order, their cells, then the same
-    // boxes grouped by first cell.
+    // Boxes without a NaN bound, in index order or grouped by first cell.
     std::vector<PackedBox> valid_, clustered_;
-    std::vector<CellSpan> spans_;
+    uint32_t cluster_above_ = kClusterAbove;
     std::vector<SortItem> items_, spare_items_;
     // The grid's cells in order, each holding its boxes in min-x order:
-    // entry e is box clustered_[entry_box_[e]], with its bounds, its index and
+    // entry e is box valid_[entry_box_[e]], with its bounds, its index and
     // whether its cell is the box's first on y (bit 0) and on z (bit 1).
     uint32_t cells_y_ = 1, cells_z_ = 1;
     uint64_t entry_count_ = 0;
@@ -78,8 +98,14 @@ private:
     std::vector<uint32_t> entry_box_;
     BoxColumns entries_;
     std::vector<uint32_t> entry_index_, entry_first_;  // kBlock words of padding each
-    PairList unordered_;
-    std::vector<uint64_t> row_start_, row_next_;
+    // A block of kBlock boxes from entry q0 with hits against entry p.
+    struct HitBlock {
+        uint32_t p, q0, hits;
+    };
+    std::vector<HitBlock> hit_blocks_;  // the first hit_block_count_ are this sweep's
+    std::size_t hit_block_count_ = 0;
+    PairList unordered_, by_second_;  // unordered_ keeps its largest size: only a prefix is used
+    std::vector<uint64_t> row_next_;
     BoxColumns all_;
 };
 

@@ -115,8 +115,8 @@ void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoi
     // Every pass runs at least one edge.
     while (c.phase == Phase::Running && c.segment_edges < limit) {
         if (checkpoints != nullptr && ++events % kCheckpointEvery == 0) checkpoints->push_back(c);
-        const uint64_t budget = limit - c.segment_edges;
-        const uint32_t room = buffer_depth_ - c.buffer;
+        uint64_t budget = limit - c.segment_edges;
+        uint32_t room = buffer_depth_ - c.buffer;
         if (c.fifo > 0 && room == 0) {
             // A pair must move and the buffer is full: this edge pauses.
             ++c.segment_edges;
@@ -126,7 +126,7 @@ void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoi
             continue;
         }
         // Edges until the buffer fills with pairs still in the FIFO (the next one pauses).
-        const uint64_t until_full = c.fifo > room ? ceil_div(room, drain) : kNever;
+        uint64_t until_full = c.fifo > room ? ceil_div(room, drain) : kNever;
         if (c.end_seen) {  // only the FIFO's last pairs are left: each edge is a stall
             drain_edges(c, std::min({ceil_div(c.fifo, drain), until_full, budget}), 1);
             if (c.fifo == 0) c.phase = Phase::Done;
@@ -138,7 +138,12 @@ void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoi
         const uint64_t arrival = head.slot + line_delay_;
         if (c.advances < arrival) {  // empty slots and bubbles before it
             drain_edges(c, std::min({arrival - c.advances, until_full, budget}), 0);
-            continue;
+            // Arrived with edges left and no pause due: the head's edge follows
+            // in this pass (the loop's checks, redone for the new state).
+            room = buffer_depth_ - c.buffer;
+            if (c.advances < arrival || c.segment_edges >= limit || (c.fifo > 0 && room == 0)) continue;
+            until_full = c.fifo > room ? ceil_div(room, drain) : kNever;
+            budget = limit - c.segment_edges;
         }
         const uint32_t moved = std::min({drain, c.fifo, room});
         if (head.hits == 0) {  // the end marker

@@ -1,20 +1,13 @@
 #include "sw/cli/fidelity_command.h"
 
-#include <spawn.h>
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -24,13 +17,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sw/cli/child_runs.h"
 #include "sw/cli/run_command.h"
-#include "sw/scene/output_cleanup.h"
 #include "sw/scene/output_set.h"
 #include "models/common/user_text.h"
 #include "sw/scene/scene.h"
-
-extern char** environ;
 
 namespace cdvp {
 
@@ -46,8 +37,9 @@ constexpr const char* kHelp =
     "engine at quantum 0 in percent of that level's frame time, and whether the pairs are identical)\n"
     "and DIR/fidelity.png (wall time per frame against timing error, drawn by gnuplot).\n"
     "\n"
-    "Every option of 'cdvp run' that sets the scene, board, bus or host is accepted and passed on;\n"
-    "--fidelity, --quantum-ns, --report, --pairs-out, --vcd, --inject and --baseline are set per level\n"
+    "Every option of 'cdvp run' that sets the scene, board, bus or host is accepted and passed on,\n"
+    "--config FILE and -c NAME=VALUE included; --fidelity, --quantum-ns (and -c run.fidelity,\n"
+    "-c run.quantum_ns), --report, --pairs-out, --vcd, --inject and --baseline are set per level\n"
     "or do not apply. -q prints nothing but errors; without it the table is printed and, on a terminal,\n"
     "the level being run.\n";
 
@@ -67,67 +59,6 @@ struct LevelResult {
     std::string pairs;  // the pairs CSV, to compare with the reference's
     uint64_t frames = 0;
 };
-
-// A file in $TMPDIR for a child's output, removed on every way out.
-class ScratchFile {
-public:
-    explicit ScratchFile(const std::string& suffix) {
-        const char* dir = std::getenv("TMPDIR");
-        std::string pattern = std::string(dir != nullptr && *dir != '\0' ? dir : "/tmp") + "/cdvp-fidelity-XXXXXX" + suffix;
-        const int fd = mkstemps(pattern.data(), static_cast<int>(suffix.size()));
-        if (fd < 0) throw std::runtime_error("cannot create a temporary file in $TMPDIR: " + std::string(std::strerror(errno)));
-        close(fd);
-        path_ = pattern;
-        slot_ = TemporaryRegistry::hold(path_);
-    }
-    ~ScratchFile() {
-        unlink(path_.c_str());
-        TemporaryRegistry::release(slot_);
-    }
-    ScratchFile(const ScratchFile&) = delete;
-    ScratchFile& operator=(const ScratchFile&) = delete;
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
-    int slot_ = -1;
-};
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-// Runs argv as a child with its stderr into err_path; returns its wait status.
-int spawn(const std::vector<std::string>& args, const std::string& err_path, const char* stdout_path) {
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_path.c_str(), O_WRONLY | O_TRUNC, 0600);
-    if (stdout_path != nullptr) {
-        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, stdout_path, O_WRONLY | O_TRUNC, 0600);
-    }
-    pid_t pid = 0;
-    const int error = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (error != 0) throw std::runtime_error(args[0] + ": cannot start: " + std::strerror(error));
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    return status;
-}
-
-std::string self_path() {
-    std::string path(4096, '\0');
-    const ssize_t n = readlink("/proc/self/exe", path.data(), path.size() - 1);
-    if (n <= 0) throw std::runtime_error("cannot find the cdvp executable (/proc/self/exe)");
-    path.resize(static_cast<std::size_t>(n));
-    return path;
-}
 
 double median(std::vector<double> values) {
     if (values.empty()) return 0;
@@ -215,55 +146,6 @@ std::string plot_script(const std::string& csv_path, const std::string& png_path
     return gp.str();
 }
 
-// The directories a run creates for --out (as mkdir -p), removed again
-// unless the run succeeds (they are empty then: the outputs' temporaries
-// have gone first).
-class CreatedDirectories {
-public:
-    void create(const std::string& path) {
-        std::vector<std::filesystem::path> missing;
-        for (std::filesystem::path p = std::filesystem::absolute(path); !p.empty() && !std::filesystem::exists(p);
-             p = p.parent_path()) {
-            missing.push_back(p);
-            if (p == p.parent_path()) break;
-        }
-        for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-            std::error_code error;
-            if (!std::filesystem::create_directory(*it, error) && error) {
-                throw InputError("--out: " + excerpt(path) + ": cannot create: " + error.message());
-            }
-            made_.push_back(*it);
-        }
-    }
-    void keep() { made_.clear(); }
-    ~CreatedDirectories() {
-        std::error_code ignored;
-        for (auto it = made_.rbegin(); it != made_.rend(); ++it) std::filesystem::remove(*it, ignored);
-    }
-
-private:
-    std::vector<std::filesystem::path> made_;
-};
-
-// Where a forwarded option's value is ("--trace FILE" or "--trace=FILE"):
-// the argument that holds it and where in it the value starts.
-struct OptionValue {
-    std::size_t index;
-    std::size_t offset;
-};
-std::optional<OptionValue> find_option(const std::vector<std::string>& args, const std::string& option) {
-    for (std::size_t k = 0; k < args.size(); ++k) {
-        if (args[k] == option && k + 1 < args.size()) return OptionValue{k + 1, 0};
-        if (args[k].rfind(option + "=", 0) == 0) return OptionValue{k, option.size() + 1};
-    }
-    return std::nullopt;
-}
-
-std::string option_value(const std::vector<std::string>& args, const std::string& option) {
-    const std::optional<OptionValue> at = find_option(args, option);
-    return at ? args[at->index].substr(at->offset) : std::string();
-}
-
 // The options that fidelity sets itself or that do not apply to it.
 bool reserved(const std::string& arg) {
     for (const char* option : {"--fidelity", "--quantum-ns", "--report", "--pairs-out", "--vcd", "--inject",
@@ -271,6 +153,14 @@ bool reserved(const std::string& arg) {
         if (arg == option || arg.rfind(std::string(option) + "=", 0) == 0) return true;
     }
     return false;
+}
+
+// A -c override of a setting each level sets itself ("-c NAME=VALUE" or "-cNAME=VALUE").
+void refuse_reserved_override(const std::string& value) {
+    const std::string name = value.substr(0, value.find('='));
+    if (name == "run.fidelity" || name == "run.quantum_ns") {
+        throw InputError("-c " + name + ": set by cdvp fidelity for each level; leave it out");
+    }
 }
 
 int fidelity_levels(int argc, char** argv) {
@@ -285,6 +175,9 @@ int fidelity_levels(int argc, char** argv) {
         } else if (arg == "--out") {
             if (k + 1 == argc) throw InputError("--out: expected a directory");
             out_dir = argv[++k];
+        } else if (arg.rfind("-c", 0) == 0 && (arg.size() > 2 || k + 1 < argc)) {
+            refuse_reserved_override(arg.size() > 2 ? arg.substr(2) : std::string(argv[k + 1]));
+            forwarded.push_back(arg);
         } else if (reserved(arg)) {
             throw InputError(excerpt(arg) + ": set by cdvp fidelity for each level, or not for it; leave it out");
         } else {
@@ -300,31 +193,19 @@ int fidelity_levels(int argc, char** argv) {
     // directories this run made, and a failed run leaves neither.
     CreatedDirectories made;
     OutputSet files;
-    for (const char* input : {"--trace", "--board"}) {
+    for (const std::string input : {"--trace", "--board", "--config"}) {
         const std::string path = option_value(forwarded, input);
         // A board given by name is a shipped preset; only a path can be an output's target.
-        if (!path.empty() && (std::string(input) == "--trace" || path.find('/') != std::string::npos)) {
+        if (!path.empty() && (input != "--board" || path.find('/') != std::string::npos)) {
             files.add_input(input, path);
         }
     }
 
-    // Every level reads the trace from the start: a pipe (or any trace that
-    // is not a regular file) is copied once, and the levels read the copy.
-    std::optional<ScratchFile> spooled;
-    std::string spooled_from;  // the trace as the user named it
+    // Every level reads the trace from the start (a pipe is copied once).
+    std::optional<TraceSpool> spool;
     if (const std::optional<OptionValue> at = find_option(forwarded, "--trace")) {
-        const std::string path = forwarded[at->index].substr(at->offset);
-        struct stat trace_status {};
-        if (!path.empty() && stat(path.c_str(), &trace_status) == 0 && !S_ISREG(trace_status.st_mode)) {
-            spooled.emplace(".csv");
-            spooled_from = path;
-            std::ifstream in(path, std::ios::binary);
-            std::ofstream out(spooled->path(), std::ios::binary);
-            if (!in) throw InputError("--trace: " + excerpt(path) + ": cannot open");
-            if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();  // an empty one stays empty
-            if (!out.flush()) throw std::runtime_error("cannot copy the trace to $TMPDIR");
-            forwarded[at->index].replace(at->offset, std::string::npos, spooled->path());
-        }
+        spool.emplace(forwarded[at->index].substr(at->offset));
+        forwarded[at->index].replace(at->offset, std::string::npos, spool->path());
     }
 
     const std::string self = self_path();
@@ -342,19 +223,13 @@ int fidelity_levels(int argc, char** argv) {
         quantum << kLevels[k].quantum_ns;
         args.insert(args.end(), {"--fidelity", kLevels[k].fidelity, "--quantum-ns", quantum.str(), "--report",
                                  report.path(), "--pairs-out", pairs.path(), "-q"});
-        const int wait_status = spawn(args, errors.path(), nullptr);
+        const int wait_status = run_child(args, errors.path());
         if (show_progress) std::cerr << '\r' << std::string(60, ' ') << '\r';
         if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
         if (WEXITSTATUS(wait_status) != 0) {
             // The level's own one-line error, under this command's name.
-            std::string message = slurp(errors.path());
-            if (message.rfind("cdvp run: ", 0) == 0) message = "cdvp fidelity: " + message.substr(10);
-            if (spooled) {  // the copy's name means nothing to the user
-                for (std::size_t at; (at = message.find(spooled->path())) != std::string::npos;) {
-                    message.replace(at, spooled->path().size(), spooled_from);
-                }
-            }
-            std::cerr << message;
+            const std::string message = renamed_message(slurp(errors.path()), "cdvp fidelity");
+            std::cerr << (spool ? spool->restore_names(message) : message);
             return WEXITSTATUS(wait_status);
         }
         results.push_back(read_level(report.path(), pairs.path()));
@@ -367,12 +242,9 @@ int fidelity_levels(int argc, char** argv) {
     files.open();
     const std::string csv_body = csv_text(results);
     files.file(csv).stream() << csv_body << std::flush;
-    ScratchFile script(".gp"), plot_errors(".err");
-    std::ofstream(script.path()) << plot_script(files.file(csv).temp_path(), files.file(png).temp_path());
-    const int plotted = spawn({"gnuplot", script.path()}, plot_errors.path(), nullptr);
-    if (!WIFEXITED(plotted) || WEXITSTATUS(plotted) != 0) {
-        std::cerr << "cdvp fidelity: gnuplot failed to draw " << out_dir << "/fidelity.png: "
-                  << printable(slurp(plot_errors.path())) << '\n';
+    if (const std::optional<std::string> error =
+            run_gnuplot(plot_script(files.file(csv).temp_path(), files.file(png).temp_path()))) {
+        std::cerr << "cdvp fidelity: gnuplot failed to draw " << out_dir << "/fidelity.png: " << printable(*error) << '\n';
         return kExitInternal;
     }
     if (!quiet) files.set_standard_output(table_text(results));

@@ -97,17 +97,23 @@ public:
             std::filesystem::exists(path, ec)) {
             spool_.emplace(path);
         }
-        const std::string readable = spool_ ? spool_->path() : path;
-        in_ = open_input(readable);
+        readable_ = spool_ ? spool_->path() : path;
+        in_ = open_input(readable_);
         TraceReader check(in_, path_, limits);
         while (std::optional<Frame> frame = check.next_frame()) {
             max_objects_ = std::max(max_objects_, frame->boxes.size());
             digests_.push_back(frame_digest(*frame));
             numbers_.push_back(frame->number);
         }
-        in_ = open_input(readable);
+        rewind();
+    }
+    // Each reading must equal the first, so a rewind is checked as the second reading is.
+    void rewind() override {
+        reader_.reset();
+        in_ = open_input(readable_);
         // Bounds memory should the file grow in between.
         reader_.emplace(in_, path_, TraceLimits{max_objects_, "the largest frame of the first reading"});
+        delivered_ = 0;
     }
     std::optional<Frame> next() override {
         std::optional<Frame> frame;
@@ -144,6 +150,7 @@ private:
 
     std::string path_;
     std::optional<Spool> spool_;  // a pipe's copy
+    std::string readable_;        // the file read: the path, or the pipe's copy
     std::ifstream in_;
     std::optional<TraceReader> reader_;
     std::vector<uint64_t> digests_;  // one a frame, from the first reading
@@ -156,12 +163,16 @@ class SpheresSource : public FrameSource {
 public:
     SpheresSource(const BouncingSpheresConfig& config, std::size_t frames)
         : config_(config), scene_(config), frames_(frames) {}
+    void rewind() override {
+        scene_.emplace(config_);
+        produced_ = 0;
+    }
     std::optional<Frame> next() override {
         if (produced_ == frames_) return std::nullopt;
         ++produced_;
-        return scene_.frame();
+        return scene_->frame();
     }
-    void feed(const PairList& pairs) override { scene_.step(pairs); }
+    void feed(const PairList& pairs) override { scene_->step(pairs); }
     std::size_t frame_count() const override { return frames_; }
     std::optional<uint64_t> last_frame() const override {
         return frames_ == 0 ? std::nullopt : std::optional<uint64_t>(frames_ - 1);
@@ -174,7 +185,7 @@ public:
 
 private:
     BouncingSpheresConfig config_;
-    BouncingSpheres scene_;
+    std::optional<BouncingSpheres> scene_;
     std::size_t frames_;
     std::size_t produced_ = 0;
 };

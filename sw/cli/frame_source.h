@@ -21,6 +21,9 @@ public:
     // The broad phase's pairs for the frame next() returned last (an
     // application steps its physics on them; a trace ignores them).
     virtual void feed(const PairList& /*pairs*/) {}
+    // Starts the frames again from the first, as they were (the later runs
+    // of --repeat time the baselines on the same frames).
+    virtual void rewind() = 0;
     virtual std::size_t frame_count() const = 0;
     // The most boxes any frame holds: the board's memory depth.
     virtual std::size_t max_objects() const = 0;

@@ -7,8 +7,12 @@
 #include <systemc>
 
 #include "platform/kernel.h"
+#include "sw/cli/bullet_command.h"
 #include "sw/cli/fidelity_command.h"
 #include "sw/cli/run_command.h"
+#include "sw/cli/settings_command.h"
+#include "sw/cli/version.h"
+#include "sw/cli/sweep_command.h"
 #include "sw/scene/output_target.h"
 #include "models/common/user_text.h"
 
@@ -23,6 +27,12 @@ constexpr const char* kUsage =
     "Commands:\n"
     "  run       simulate scene frames on the virtual board; write pairs, a report, waveforms\n"
     "  fidelity  run a scene at every modelling level: simulator speed against timing error\n"
+    "  settings  list every setting (-c NAME=VALUE, --config FILE, presets) with its range and default\n"
+    "  sweep     run a grid of settings, boards and scenes: one CSV row per point, plots; resumable,\n"
+    "            parallel (--jobs) and sharded (--shard)\n"
+    "  merge     merge the shard directories of one sweep into one\n"
+    "  bullet    step a Bullet scene with the board as its broad phase, against Bullet's own\n"
+    "  record    write a Bullet scene's AABBs as a trace for 'cdvp run --trace'\n"
     "\n"
     "Run 'cdvp <command> --help' for a command's options; 'cdvp --version' prints the version.\n"
     "\n"
@@ -43,12 +53,17 @@ int sc_main(int argc, char** argv) {
     }
     const std::string command = argv[1];
     if (command == "--version") {
-        return cdvp::print_to_stdout("cdvp", "cdvp 0.1.0\n");
+        return cdvp::print_to_stdout("cdvp", std::string("cdvp ") + cdvp::kCdvpVersion + "\n");
     }
     if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
     if (command == "fidelity") return cdvp::fidelity_command(argc - 1, argv + 1);
+    if (command == "settings") return cdvp::settings_command(argc - 1, argv + 1);
+    if (command == "sweep") return cdvp::sweep_command(argc - 1, argv + 1);
+    if (command == "merge") return cdvp::merge_command(argc - 1, argv + 1);
+    if (command == "bullet") return cdvp::bullet_command(argc - 1, argv + 1);
+    if (command == "record") return cdvp::record_command(argc - 1, argv + 1);
     std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
-              << "'; expected one of: run, fidelity (see cdvp --help)\n";
+              << "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record (see cdvp --help)\n";
     return 2;
 }
 

@@ -12,14 +12,10 @@
 #include <string>
 #include <type_traits>
 
+#include "models/common/number_text.h"
+
 namespace cdvp {
 
-// Throws std::invalid_argument "expected ..., got 'TEXT'".
-uint64_t parse_integer_text(const std::string& text, uint64_t min, uint64_t max);
-double parse_real_text(const std::string& text, double min, double max);
-// How a range reads in help and messages: "1 to 32", "0.001 to 1000".
-std::string describe_range(double min, double max);
-std::string describe_range(uint64_t min, uint64_t max);
 
 template <class T>
 class NumberValue : public boost::program_options::value_semantic {

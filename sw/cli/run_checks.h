@@ -2,7 +2,7 @@
 // other, the scene against the board's block RAMs, this machine's memory and
 // SystemC's time, and the --inject specs against the driver and the frames.
 // Every message names where each value came from: a flag, its default, the
-// preset's file and key, or the trace.
+// preset's or config file's key, a -c, or the trace.
 #pragma once
 
 #include <cstdint>
@@ -13,31 +13,16 @@
 
 #include <boost/program_options.hpp>
 
-#include "models/board/board_config.h"
 #include "models/common/fault_plan.h"
+#include "platform/setting_values.h"
 #include "sw/cli/run_options.h"
 #include "sw/driver/board_driver.h"
 
 namespace cdvp {
 
-// Where the values that checks combine came from.
-struct ValueOrigins {
-    std::string preset_path;  // empty: no --board
-    std::string m;            // "--m 8" or "m=8 (the default of --m)"
-    std::string clock;        // "--clock-mhz 66", "66 MHz (PRESET: board.clock_mhz)" or "... (the default ...)"
-
-    static ValueOrigins of(const RunOptions& o, const boost::program_options::variables_map& vm,
-                           const std::string& preset_path, double clock_mhz);
-};
-
 // A path longer than the system's PATH_MAX can name no file; refused quoting
 // its start, so that no later message repeats it whole. Throws InputError.
 void check_path_lengths(const RunOptions& o, const boost::program_options::variables_map& vm);
-
-// BoardConfig::validate() with the message naming the flag that set the
-// failing value, else the preset file and key. Throws InputError.
-void validate_board(const BoardConfig& config, const boost::program_options::variables_map& vm,
-                    const ValueOrigins& origins);
 
 // The --inject specs; a fault the driver's mode can never meet is refused
 // rather than silently never injected. Throws InputError.
@@ -51,9 +36,8 @@ std::vector<FaultSpec> fault_specs(const std::vector<std::string>& texts, const 
 void check_inject_frames(const std::vector<FaultSpec>& specs, std::optional<uint64_t> last_frame,
                          const std::function<bool(uint64_t)>& has_frame, const std::string& frames_origin);
 
-// The scene must fit the board's block RAMs (block_rams 0: unbounded), this
+// The scene must fit the board's block RAMs (board.block_rams 0: unbounded), this
 // machine's memory and SystemC's time. Throws InputError.
-void check_scene_fits(const RunOptions& o, const boost::program_options::variables_map& vm, const BoardConfig& board,
-                      uint32_t block_rams, const ValueOrigins& origins, uint64_t max_objects, uint64_t frame_count);
+void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count);
 
 }  // namespace cdvp

@@ -17,9 +17,10 @@
 #include <boost/program_options.hpp>
 
 #include "platform/board_preset.h"
+#include "platform/config_file.h"
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
-#include "sw/baselines/broad_phase.h"
+#include "sw/cli/baseline_timing.h"
 #include "sw/cli/frame_source.h"
 #include "sw/cli/run_checks.h"
 #include "sw/cli/run_options.h"
@@ -62,6 +63,7 @@ std::string gtkw_path(const std::string& vcd) {
 void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out) {
     if (vm.count("trace")) out.files.add_input("--trace", o.trace);
     if (vm.count("board") && !o.board_name.empty()) out.files.add_input("--board", board_preset_path(o.board_name));
+    if (vm.count("config") && !o.config.empty()) out.files.add_input("--config", o.config);
     std::optional<std::size_t> pairs, report, vcd, gtkw;
     if (vm.count("pairs-out")) pairs = out.files.add_output("--pairs-out", o.pairs_out);
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
@@ -118,19 +120,27 @@ void check_source_options(const RunOptions& o, const po::variables_map& vm) {
     if (vm.count("trace") == vm.count("scene")) throw InputError("give exactly one of --trace FILE or --scene spheres");
     if (vm.count("trace")) {
         if (o.trace.empty()) throw InputError("--trace: expected a file path, got ''");
-        for (const char* flag : {"objects", "frames", "seed"}) {
-            if (!vm[flag].defaulted()) throw InputError(std::string("--") + flag + " goes with --scene, not --trace");
-        }
     } else if (o.scene != "spheres") {
         throw InputError("--scene: expected 'spheres', got '" + excerpt(o.scene) + "'");
     }
 }
 
-std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm) {
+// A trace brings its own objects and frames: scene.* settings go with --scene only.
+void check_scene_settings(const po::variables_map& vm, const SettingValues& values) {
+    if (vm.count("trace") == 0) return;
+    for (const Setting* s : values.effective()) {
+        if (s->section() == "scene" && !values.is_default(*s)) {
+            throw InputError(values.where(*s) + " goes with --scene, not --trace");
+        }
+    }
+}
+
+std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm, const Settings& settings) {
     if (vm.count("trace")) return trace_source(o.trace);
-    BouncingSpheresConfig spheres = o.spheres;
-    spheres.objects = static_cast<std::size_t>(o.objects);
-    return spheres_source(spheres, static_cast<std::size_t>(o.frames));
+    BouncingSpheresConfig spheres;
+    spheres.objects = static_cast<std::size_t>(settings.scene.objects);
+    spheres.seed = settings.scene.seed;
+    return spheres_source(spheres, static_cast<std::size_t>(settings.scene.frames));
 }
 
 class Progress {
@@ -151,114 +161,88 @@ private:
     std::chrono::steady_clock::time_point last_{};
 };
 
-// What the run simulates on: the board (from a preset or the flags), its bus
-// and host, and the software baselines to time beside it.
+// What the run simulates on: the board, its bus and host from the settings,
+// and the software baselines to time beside it.
 struct Setup {
+    SettingValues values;
     PlatformConfig platform;
     std::string board = "ideal";
-    std::string host = "this machine";
-    double host_factor = 1.0;
-    uint32_t block_rams = 0;  // the FPGA's; 0: unbounded
-    ValueOrigins origins;
-    std::vector<std::unique_ptr<BroadPhase>> baselines;
+    BaselineTimer baselines;
     std::pair<uint64_t, uint64_t> trace_window{0, UINT64_MAX};  // --vcd-frames
 };
 
-// --fidelity: fast unless waveforms are asked for, which need the clocked engine.
-Fidelity fidelity(const RunOptions& o, const po::variables_map& vm) {
-    if (o.fidelity != "fast" && o.fidelity != "cycle") {
-        throw InputError("--fidelity: expected cycle or fast, got '" + printable(o.fidelity) + "'");
-    }
-    const bool given = vm.count("fidelity") != 0 && !vm["fidelity"].defaulted();
+// run.fidelity: fast unless waveforms are asked for, which need the clocked engine.
+Fidelity fidelity(const SettingValues& values, const po::variables_map& vm) {
+    const Setting& setting = *find_setting("run.fidelity");
+    const bool cycle = values.settings().run.fidelity == "cycle";
     if (vm.count("vcd") != 0) {
-        if (given && o.fidelity == "fast") {
-            throw InputError("--vcd: waveforms need the clocked engine; use --fidelity cycle (or leave --fidelity out)");
+        if (!values.is_default(setting) && !cycle) {
+            throw InputError("--vcd: waveforms need the clocked engine; " + values.where(setting) +
+                             " asks for fast: use --fidelity cycle (or leave the fidelity out)");
         }
         return Fidelity::kCycle;
     }
-    return o.fidelity == "cycle" ? Fidelity::kCycle : Fidelity::kFast;
+    return cycle ? Fidelity::kCycle : Fidelity::kFast;
+}
+
+// The layers, each over the last: defaults < preset < config file < -c < flags.
+SettingValues layered_settings(const RunOptions& o, const po::variables_map& vm, std::string& board_name) {
+    SettingValues values;
+    if (vm.count("board")) {
+        if (o.board_name.empty()) throw InputError("--board: expected a preset name or a .json path, got ''");
+        const BoardPreset preset = load_board_preset(o.board_name);
+        values.apply(preset.values);
+        board_name = preset.name;
+    }
+    if (vm.count("config")) {
+        if (o.config.empty()) throw InputError("--config: expected a file path, got ''");
+        values.apply(read_config_file(o.config));
+    }
+    for (const std::string& text : o.overrides) values.apply({parse_override(text)});
+    values.apply(o.flags);
+    return values;
 }
 
 Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     Setup setup;
-    setup.platform.board = o.board;
-    std::string preset_path;
-    if (vm.count("board")) {
-        if (o.board_name.empty()) throw InputError("--board: expected a preset name or a .json path, got ''");
-        const BoardPreset preset = load_board_preset(o.board_name);
-        BoardConfig& b = setup.platform.board;
-        // The preset's numbers, unless a flag sets them.
-        if (vm["clock-mhz"].defaulted()) b.clock_mhz = preset.board.clock_mhz;
-        if (vm["compare-latency"].defaulted()) b.compare = preset.board.compare;
-        if (vm["fifo-depth"].defaulted()) b.collector.fifo_depth = preset.board.collector.fifo_depth;
-        if (vm["drain-rate"].defaulted()) b.collector.drain_per_cycle = preset.board.collector.drain_per_cycle;
-        if (vm["pair-buffer"].defaulted()) b.collector.buffer_depth = preset.board.collector.buffer_depth;
-        setup.platform.bus = preset.bus;
-        setup.platform.driver = preset.driver;
-        setup.board = preset.name;
-        setup.host = preset.host.name;
-        setup.host_factor = preset.host.speed_factor;
-        setup.block_rams = preset.block_rams;
-        preset_path = preset.path;
-    }
-    setup.origins = ValueOrigins::of(o, vm, preset_path, setup.platform.board.clock_mhz);
-    validate_board(setup.platform.board, vm, setup.origins);
-    if (o.transfer != "dma" && o.transfer != "pio") throw InputError("--transfer: expected dma or pio, got '" + excerpt(o.transfer) + "'");
-    if (o.wait != "irq" && o.wait != "poll") throw InputError("--wait: expected irq or poll, got '" + excerpt(o.wait) + "'");
-    setup.platform.driver.use_dma = o.transfer == "dma";
-    setup.platform.driver.use_interrupts = o.wait == "irq";
-    if (vm.count("host-factor")) setup.host_factor = o.host_factor;
+    setup.values = layered_settings(o, vm, setup.board);
+    const Settings& settings = setup.values.settings();
+    setup.values.check_board();
+    setup.platform.board = settings.board;
+    setup.platform.bus = setup.values.bus();
+    setup.platform.driver = settings.driver;
+    setup.platform.driver.use_dma = settings.run.transfer == "dma";
+    setup.platform.driver.use_interrupts = settings.run.wait == "irq";
     setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
-    setup.platform.quantum_ns = o.quantum_ns;
-    setup.platform.fidelity = fidelity(o, vm);
+    setup.platform.quantum_ns = settings.run.quantum_ns;
+    setup.platform.fidelity = fidelity(setup.values, vm);
     setup.trace_window = vcd_window(o, vm);
-    std::stringstream names(o.baselines);
-    for (std::string name; std::getline(names, name, ',');) {
-        try {
-            setup.baselines.push_back(make_broad_phase(name));
-        } catch (const std::invalid_argument& e) {
-            throw InputError(std::string("--baseline: ") + e.what());
-        }
-        // Each is timed once a frame; a repeat would be run twice and reported once.
-        for (std::size_t k = 0; k + 1 < setup.baselines.size(); ++k) {
-            if (setup.baselines[k]->name() == name) throw InputError("--baseline: '" + name + "' given twice");
-        }
+    setup.baselines = BaselineTimer(o.baselines, settings.host.speed_factor);
+    const Setting& repeat = *find_setting("run.repeat");
+    if (!setup.values.is_default(repeat) && setup.baselines.empty()) {
+        throw InputError(setup.values.where(repeat) +
+                         ": reruns the software baselines over the frames; give --baseline too");
     }
     return setup;
 }
 
-// Times each baseline natively on the frame and checks it finds the board's pairs.
-std::map<std::string, BaselineTime> run_baselines(Setup& setup, const std::vector<FloatBox>& boxes,
-                                                  const PairList& board_pairs, uint64_t frame) {
-    std::map<std::string, BaselineTime> times;
-    PairList found;
-    for (auto& baseline : setup.baselines) {
-        const auto start = std::chrono::steady_clock::now();
-        baseline->find_pairs(boxes, found);
-        const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
-        times[baseline->name()] = {ns, ns * setup.host_factor};
-        if (sorted(found) != board_pairs) {
-            throw std::runtime_error("baseline " + baseline->name() + " found " + std::to_string(found.size()) +
-                                     " pairs in frame " + std::to_string(frame) + ", the board " +
-                                     std::to_string(board_pairs.size()));
-        }
-    }
-    return times;
-}
-
-int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out) {
+int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
+             const std::vector<std::string>& command_line) {
     RunConfig run;
     run.config = setup.platform.board;
     run.source = source.describe();
     run.capacity = static_cast<uint32_t>(source.max_objects());
     run.board = setup.board;
-    run.host = setup.host;
-    run.host_factor = setup.host_factor;
+    run.host = setup.values.settings().host.name;
+    run.host_factor = setup.values.settings().host.speed_factor;
+    run.settings = &setup.values;
+    run.command_line = command_line;
     run.dma = setup.platform.driver.use_dma;
     run.interrupts = setup.platform.driver.use_interrupts;
     run.quantum_ns = setup.platform.quantum_ns;
     run.fidelity = to_string(setup.platform.fidelity);
-    for (const auto& b : setup.baselines) run.baseline_names.push_back(b->name());
+    run.baseline_names = setup.baselines.names();
+    run.baseline_runs = setup.values.settings().run.repeat;
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
     run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
@@ -272,9 +256,11 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         report.emplace(out.report->stream());
         report->begin(run);
     }
-    RunTotals totals;
+    RunTotals totals(setup.values.settings().run.warmup);
 
-    Progress progress(source.frame_count(), !o.quiet);
+    // The later runs of the baselines (--repeat) count as frames too.
+    const std::size_t baseline_runs = setup.baselines.empty() ? 1 : setup.values.settings().run.repeat;
+    Progress progress(source.frame_count() * baseline_runs, !o.quiet);
     const auto wall_start = std::chrono::steady_clock::now();
     while (std::optional<Frame> frame = source.next()) {
         const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
@@ -294,17 +280,23 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
                          run.config.sweep_cycles(boxes.size()), result.phases, {}, sim_wall_ns};
-        if (!setup.baselines.empty()) stats.baselines = run_baselines(setup, boxes, sorted(result.pairs), frame->number);
+        if (!setup.baselines.empty()) {
+            stats.baselines = setup.baselines.time_frame(boxes, sorted(result.pairs), frame->number);
+        }
         if (report) report->frame(stats);
         totals.add(stats);
         source.feed(result.pairs);
         progress.update(totals.frames());
     }
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    std::size_t frames_done = totals.frames();
+    if (!setup.baselines.empty()) {
+        setup.baselines.repeat(source, setup.values.settings().run.repeat, totals, [&] { progress.update(++frames_done); });
+    }
     platform.close_trace();
     if (out.gtkw) platform.write_gtkw(out.gtkw->stream(), std::filesystem::absolute(o.vcd).string());
 
-    if (report) report->end(totals);
+    if (report) report->end(totals, setup.values.settings().host.speed_factor);
     if (!o.quiet) {
         std::ostringstream summary;
         print_summary(summary, run, totals, wall_seconds);
@@ -316,6 +308,13 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         return 2;
     }
     return 0;
+}
+
+// The command line as the report records it.
+std::vector<std::string> command_line(int argc, char** argv) {
+    std::vector<std::string> words{"cdvp"};
+    words.insert(words.end(), argv, argv + argc);
+    return words;
 }
 
 }  // namespace
@@ -349,21 +348,23 @@ int run_command(int argc, char** argv) {
         open_outputs(o, vm, out);
         check_source_options(o, vm);
         Setup setup = make_setup(o, vm);
+        check_scene_settings(vm, setup.values);
         // A generated scene is checked before it is generated (millions of
         // spheres take a while to place), a trace once it is read.
-        const BoardConfig& board = setup.platform.board;
+        const SceneSettings& scene = setup.values.settings().scene;
         if (vm.count("scene")) {
-            check_scene_fits(o, vm, board, setup.block_rams, setup.origins, o.objects, o.frames);
-            const std::optional<uint64_t> last = o.frames > 0 ? std::optional<uint64_t>(o.frames - 1) : std::nullopt;
+            check_scene_fits(o, setup.values, scene.objects, scene.frames);
+            const std::optional<uint64_t> last =
+                scene.frames > 0 ? std::optional<uint64_t>(scene.frames - 1) : std::nullopt;
             check_inject_frames(setup.platform.faults, last, [](uint64_t) { return true; },
-                                "--frames " + std::to_string(o.frames));
+                                "--frames " + std::to_string(scene.frames));
         }
-        std::unique_ptr<FrameSource> source = open_source(o, vm);
-        check_scene_fits(o, vm, board, setup.block_rams, setup.origins, source->max_objects(), source->frame_count());
+        std::unique_ptr<FrameSource> source = open_source(o, vm, setup.values.settings());
+        check_scene_fits(o, setup.values, source->max_objects(), source->frame_count());
         check_inject_frames(setup.platform.faults, source->last_frame(),
                             [&source](uint64_t n) { return source->has_frame(n); }, source->describe());
         check_trace_window(setup.trace_window, source->last_frame(), source->describe());
-        return simulate(o, *source, setup, out);
+        return simulate(o, *source, setup, out, command_line(argc, argv));
     } catch (po::error_with_option_name& e) {
         // boost quotes an unknown option as typed: keep a huge one short.
         const std::string name = e.get_option_name();

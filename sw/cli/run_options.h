@@ -1,4 +1,6 @@
-// The options of `cdvp run` and their parsing.
+// The options of `cdvp run` and their parsing. Settings (platform/settings.h)
+// come in layers: defaults < --board preset < --config FILE < -c NAME=VALUE
+// < dedicated flags (--m, --objects, ...), one flag per setting that has one.
 #pragma once
 
 #include <cstdint>
@@ -7,26 +9,19 @@
 
 #include <boost/program_options.hpp>
 
-#include "models/board/board_config.h"
-#include "sw/apps/bouncing_spheres.h"
+#include "platform/setting_values.h"
 
 namespace cdvp {
 
 struct RunOptions {
     std::string trace;
     std::string scene;
-    BouncingSpheresConfig spheres;
-    uint64_t objects = 500;
-    uint64_t frames = 1;
-    BoardConfig board;
     std::string board_name;
-    std::string transfer = "dma";
-    std::string wait = "irq";
+    std::string config;                  // --config FILE
+    std::vector<std::string> overrides;  // -c NAME=VALUE, in order
+    std::vector<Assignment> flags;       // the dedicated flags given
     std::string baselines;
     std::vector<std::string> inject;  // fault specs, docs/faults.md
-    double host_factor = 0;  // unset: the preset's
-    std::string fidelity = "fast";  // cycle when only --vcd is given
-    double quantum_ns = 0;   // host CPU quantum; 0: synchronise at every access
     std::string pairs_out, report, vcd;
     std::string vcd_frames;  // A:B
     bool quiet = false;

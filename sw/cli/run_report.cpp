@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
+#include "sw/cli/version.h"
 
 namespace cdvp {
 
@@ -32,29 +33,48 @@ std::string nested(const nlohmann::json& value, int depth) {
     return out;
 }
 
+// Every setting in effect: its value and where it came from.
+nlohmann::json settings_json(const SettingValues& values) {
+    nlohmann::json settings = nlohmann::json::object();
+    for (const Setting* s : values.effective()) {
+        settings[s->name] = {{"value", to_json(s->get(values.settings()))},
+                             {"origin", values.origin(*s).describe(*s)}};
+    }
+    return settings;
+}
+
 nlohmann::json config_json(const RunConfig& run) {
     const BoardConfig& c = run.config;
-    return {{"source", run.source},
-            {"board", run.board},
-            {"bus", run.bus},
-            {"host", run.host},
-            {"host_factor", run.host_factor},
-            {"transfer", run.dma ? "dma" : "pio"},
-            {"wait", run.interrupts ? "irq" : "poll"},
-            {"fidelity", run.fidelity},
-            {"quantum_ns", run.quantum_ns},
-            {"baselines", run.baseline_names},
-            {"inject", run.inject},
-            {"m", c.m},
-            {"lanes", c.lanes()},
-            {"clock_mhz", c.clock_mhz},
-            {"compare_latency_cycles", c.compare.latency_cycles},
-            {"pipeline_latency_cycles", c.pipeline_latency()},
-            {"fifo_depth", c.collector.fifo_depth},
-            {"drain_per_cycle", c.collector.drain_per_cycle},
-            {"pair_buffer_depth", c.collector.buffer_depth},
-            {"capacity", run.capacity},
-            {"block_rams", run.block_rams}};
+    nlohmann::json config = {
+        {"version", kCdvpVersion},
+        {"command_line", run.command_line},
+        {"source", run.source},
+        {"board", run.board},
+        {"bus", run.bus},
+        {"host", run.host},
+        {"host_factor", run.host_factor},
+        {"transfer", run.dma ? "dma" : "pio"},
+        {"wait", run.interrupts ? "irq" : "poll"},
+        {"fidelity", run.fidelity},
+        {"quantum_ns", run.quantum_ns},
+        {"baselines", run.baseline_names},
+        {"baseline_runs", run.baseline_runs},
+        {"inject", run.inject},
+        {"m", c.m},
+        {"lanes", c.lanes()},
+        {"clock_mhz", c.clock_mhz},
+        {"compare_latency_cycles", c.compare.latency_cycles},
+        {"pipeline_latency_cycles", c.pipeline_latency()},
+        {"fifo_depth", c.collector.fifo_depth},
+        {"drain_per_cycle", c.collector.drain_per_cycle},
+        {"pair_buffer_depth", c.collector.buffer_depth},
+        {"capacity", run.capacity},
+        {"block_rams", run.block_rams}};
+    if (run.settings != nullptr) {
+        config["seed"] = run.settings->settings().scene.seed;
+        config["settings"] = settings_json(*run.settings);
+    }
+    return config;
 }
 
 nlohmann::json frame_json(const FrameStats& f) {
@@ -80,15 +100,73 @@ nlohmann::json frame_json(const FrameStats& f) {
             {"baselines", baselines}};
 }
 
+// median_KEY, p10_KEY and p90_KEY: flat, like the mean_ keys beside them.
+void add_spread(nlohmann::json& summary, const std::string& key, const Spread& s) {
+    summary["median_" + key] = s.median;
+    summary["p10_" + key] = s.p10;
+    summary["p90_" + key] = s.p90;
+}
+
+// Which frames the figures rest on, and a note when they are too few.
+std::string frames_described(const RunTotals& totals, const TimingFigures& figures) {
+    std::string text = std::to_string(figures.frames_per_run) + " frames";
+    if (figures.includes_warmup) return text + ", all warm-up frames (no frame came after the --warmup " +
+                                        std::to_string(totals.warmup_frames()) + ")";
+    if (totals.warmup_frames() > 0) text += " after " + std::to_string(totals.warmup_frames()) + " warm-up";
+    return text;
+}
+
+// The medians the speedups are taken from, with p10 and p90.
+void print_timing(std::ostream& out, const RunConfig& run, const RunTotals& totals) {
+    if (totals.frames() == 0) return;
+    const TimingFigures board = totals.board_figures();
+    const std::map<std::string, TimingFigures> baselines = totals.baseline_figures();
+    char line[512];
+    out << "\nper frame, median of " << frames_described(totals, board);
+    if (!baselines.empty()) {
+        std::snprintf(line, sizeof line, ", software time x %.3g on host ", run.host_factor);
+        out << line << printable(run.host);
+        if (run.baseline_runs > 1) {
+            out << ", software timed in " << run.baseline_runs << " runs (median of their medians)";
+        }
+    }
+    std::snprintf(line, sizeof line, ":\n  board: %.1f us (p10 %.1f, p90 %.1f), simulated: the same on every run\n",
+                  board.spread.median / 1e3, board.spread.p10 / 1e3, board.spread.p90 / 1e3);
+    out << line;
+    const Spread wall = totals.sim_wall_figures().spread;
+    std::snprintf(line, sizeof line, "  simulator: %.3f ms wall time (p10 %.3f, p90 %.3f)\n", wall.median / 1e6,
+                  wall.p10 / 1e6, wall.p90 / 1e6);
+    out << line;
+    if (!baselines.empty()) {
+        out << "      N    m   board_us  software          sw_us     sw_p10     sw_p90  speedup\n";
+        for (const auto& [name, figures] : baselines) {
+            const Spread sw = figures.spread.scaled(run.host_factor);
+            std::snprintf(line, sizeof line, "%7llu %4u %10.1f  %-8s %13.1f %10.1f %10.1f %7.2fx\n",
+                          static_cast<unsigned long long>(totals.last_objects()), run.config.m,
+                          board.spread.median / 1e3, name.c_str(), sw.median / 1e3, sw.p10 / 1e3, sw.p90 / 1e3,
+                          speedup(sw.median, board));
+            out << line;
+        }
+    }
+    if (board.too_few_frames()) {
+        out << "note: these figures rest on " << board.frames_per_run << " frames, fewer than " << kMinMeasuredFrames
+            << ": one disturbed frame can move a median, and p10 and p90 are near the extremes; give --frames "
+            << totals.warmup_frames() + kMinMeasuredFrames << " or more\n";
+    }
+}
+
 }  // namespace
 
 void RunTotals::add(const FrameStats& frame) {
-    Sums& sums = frames_ == 0 ? first_ : rest_;
+    Sums& sums = frames_ < warmup_frames_ ? warmup_ : rest_;
     for (int k = 0; k < kPhases; ++k) sums.phases[k] += phase_value(frame.phases, k);
     for (const auto& [name, t] : frame.baselines) {
         sums.baselines[name].ns += t.ns;
         sums.baselines[name].scaled_ns += t.scaled_ns;
+        baseline_samples(name).add(t.ns);
     }
+    board_total_.add(frame.phases.total_ns);
+    sim_wall_.add(frame.sim_wall_ns);
     ++frames_;
     pairs_ += frame.pairs;
     cycles_ += frame.phases.compute_cycles;
@@ -97,20 +175,35 @@ void RunTotals::add(const FrameStats& frame) {
     if (shown_.size() < kRowsShown) shown_.push_back(frame);
 }
 
-// Steady-state means: with more than one frame the first is left out, since
-// incremental broad phases build their structures in it (Bullet's SAP takes
-// tens of times its per-frame cost there).
+FrameSamples& RunTotals::baseline_samples(const std::string& name) {
+    return baselines_.try_emplace(name, warmup_frames_).first->second;
+}
+
+// Steady-state means: the warm-up frames are left out when there are more,
+// since incremental broad phases build their structures in them.
 double RunTotals::mean_phase(int k) const {
     if (frames_ == 0) return 0.0;
-    return (frames_ > 1 ? rest_ : first_).phases[k] / static_cast<double>(frames_in_means());
+    return (frames_ > warmup_frames_ ? rest_ : warmup_).phases[k] / static_cast<double>(frames_in_means());
 }
 
 std::map<std::string, BaselineTime> RunTotals::mean_baselines() const {
     std::map<std::string, BaselineTime> means;
     if (frames_ == 0) return means;
     const double n = static_cast<double>(frames_in_means());
-    for (const auto& [name, t] : (frames_ > 1 ? rest_ : first_).baselines) means[name] = {t.ns / n, t.scaled_ns / n};
+    for (const auto& [name, t] : (frames_ > warmup_frames_ ? rest_ : warmup_).baselines) {
+        means[name] = {t.ns / n, t.scaled_ns / n};
+    }
     return means;
+}
+
+std::map<std::string, TimingFigures> RunTotals::baseline_figures() const {
+    std::map<std::string, TimingFigures> figures;
+    for (const auto& [name, samples] : baselines_) figures[name] = samples.figures();
+    return figures;
+}
+
+double speedup(double scaled_median_ns, const TimingFigures& board) {
+    return board.spread.median > 0 ? scaled_median_ns / board.spread.median : 0.0;
 }
 
 void ReportWriter::begin(const RunConfig& run) {
@@ -122,17 +215,31 @@ void ReportWriter::frame(const FrameStats& frame) {
     any_frame_ = true;
 }
 
-void ReportWriter::end(const RunTotals& totals) {
-    const double board_ns = totals.mean_phase(RunTotals::kPhases - 1);
+void ReportWriter::end(const RunTotals& totals, double host_factor) {
+    const TimingFigures board = totals.board_figures();
+    const std::map<std::string, BaselineTime> means = totals.mean_baselines();
     nlohmann::json baselines = nlohmann::json::object();
-    for (const auto& [name, t] : totals.mean_baselines()) {
-        // Speedup of the board over the software on the modelled host.
-        baselines[name] = {{"mean_ns", t.ns},
-                           {"mean_scaled_ns", t.scaled_ns},
-                           {"speedup", board_ns > 0 ? t.scaled_ns / board_ns : 0.0}};
+    for (const auto& [name, figures] : totals.baseline_figures()) {
+        const Spread native = figures.spread, scaled = native.scaled(host_factor);
+        const auto mean = means.find(name);
+        baselines[name] = {{"median_ns", native.median},
+                           {"p10_ns", native.p10},
+                           {"p90_ns", native.p90},
+                           {"median_scaled_ns", scaled.median},
+                           {"p10_scaled_ns", scaled.p10},
+                           {"p90_scaled_ns", scaled.p90},
+                           {"run_medians_ns", figures.run_medians},
+                           {"mean_ns", mean != means.end() ? mean->second.ns : 0.0},
+                           {"mean_scaled_ns", mean != means.end() ? mean->second.scaled_ns : 0.0},
+                           {"speedup", speedup(scaled.median, board)}};
     }
-    nlohmann::json summary = {
-        {"frames", totals.frames()}, {"frames_in_means", totals.frames_in_means()}, {"baselines", baselines}};
+    nlohmann::json summary = {{"frames", totals.frames()},
+                              {"warmup_frames", totals.warmup_frames()},
+                              {"frames_in_means", totals.frames_in_means()},
+                              {"too_few_frames", totals.frames() > 0 && board.too_few_frames()},
+                              {"baselines", baselines}};
+    add_spread(summary, "total_ns", board.spread);
+    add_spread(summary, "sim_wall_ns", totals.sim_wall_figures().spread);
     for (int k = 0; k < RunTotals::kPhases; ++k) summary[std::string("mean_") + kPhaseNames[k]] = totals.mean_phase(k);
     out_ << (any_frame_ ? "\n  ]" : "]") << ",\n  \"summary\": " << nested(summary, 1) << "\n}\n";
 }
@@ -162,19 +269,7 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
                   static_cast<unsigned long long>(totals.frames()), static_cast<unsigned long long>(totals.pairs()),
                   static_cast<unsigned long long>(totals.cycles()), static_cast<unsigned long long>(totals.stalls()));
     out << line;
-    const double board_ns = totals.mean_phase(RunTotals::kPhases - 1);
-    const std::map<std::string, BaselineTime> baselines = totals.mean_baselines();
-    if (!baselines.empty()) {
-        std::snprintf(line, sizeof line, " (software time x %.3g):\n", run.host_factor);
-        out << "\nmean per frame" << (totals.frames() > 1 ? " after the first" : "") << " on host "
-            << printable(run.host) << line << "      N    m   board_us  software          sw_us  speedup\n";
-        for (const auto& [name, t] : baselines) {
-            std::snprintf(line, sizeof line, "%7llu %4u %10.1f  %-8s %13.1f %7.2fx\n",
-                          static_cast<unsigned long long>(totals.last_objects()), c.m, board_ns / 1e3, name.c_str(),
-                          t.scaled_ns / 1e3, board_ns > 0 ? t.scaled_ns / board_ns : 0.0);
-            out << line;
-        }
-    }
+    print_timing(out, run, totals);
     const double rate = wall_seconds > 0 ? static_cast<double>(totals.cycles()) / wall_seconds : 0.0;
     std::snprintf(line, sizeof line, "simulated in %.3f s wall time (%.2f M board cycles/s)\n", wall_seconds,
                   rate / 1e6);

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "models/board/board_config.h"
+#include "platform/setting_values.h"
 #include "sw/driver/board_driver.h"
+#include "sw/timing/frame_samples.h"
 
 namespace cdvp {
 
@@ -45,21 +47,29 @@ struct RunConfig {
     double quantum_ns = 0.0;
     std::string fidelity = "cycle";
     std::vector<std::string> baseline_names;
+    uint32_t baseline_runs = 1;  // --repeat
     std::vector<std::string> inject;  // fault specs, as parsed
+    const SettingValues* settings = nullptr;  // every setting in effect and where it came from
+    std::vector<std::string> command_line;
 };
 
 // The frames of a run folded as they come: counts and sums for the totals
-// and the steady-state means (which leave out the first frame when there are
-// more), and the first rows of the summary's table.
+// and the steady-state means (which leave out the warm-up frames when there
+// are more), the per-frame samples behind the medians, and the first rows of
+// the summary's table. Memory holds a few numbers a frame, not the frames.
 class RunTotals {
 public:
     static constexpr std::size_t kRowsShown = 10;
     static constexpr int kPhases = 7;  // upload, start, compute, irq, readback, driver, total
 
+    explicit RunTotals(uint64_t warmup = kDefaultWarmupFrames) : warmup_frames_(warmup) {}
     void add(const FrameStats& frame);
+    // A baseline's samples, for the runs after the first (--repeat).
+    FrameSamples& baseline_samples(const std::string& name);
 
     uint64_t frames() const { return frames_; }
-    uint64_t frames_in_means() const { return frames_ > 1 ? frames_ - 1 : frames_; }
+    uint64_t warmup_frames() const { return warmup_frames_; }
+    uint64_t frames_in_means() const { return frames_ > warmup_frames_ ? frames_ - warmup_frames_ : frames_; }
     const std::vector<FrameStats>& shown() const { return shown_; }
     uint64_t pairs() const { return pairs_; }
     uint64_t cycles() const { return cycles_; }
@@ -68,18 +78,31 @@ public:
     // Mean of phase k (kPhaseNames order) over the frames in the means.
     double mean_phase(int k) const;
     std::map<std::string, BaselineTime> mean_baselines() const;
+    // Medians, p10 and p90 over the frames after the warm-up: the board's
+    // simulated frame time, the simulator's wall time, each baseline's
+    // native time (scale by the host factor for the modelled host).
+    TimingFigures board_figures() const { return board_total_.figures(); }
+    TimingFigures sim_wall_figures() const { return sim_wall_.figures(); }
+    std::map<std::string, TimingFigures> baseline_figures() const;
 
 private:
-    // Sums over the first frame and over the frames after it, kept apart so
-    // the means add the same frames in the same order whatever the count.
+    // Sums over the warm-up frames and over the frames after them, kept
+    // apart so the means add the same frames in the same order whatever the count.
     struct Sums {
         double phases[kPhases] = {};
         std::map<std::string, BaselineTime> baselines;
     };
+    uint64_t warmup_frames_;
     uint64_t frames_ = 0, pairs_ = 0, cycles_ = 0, stalls_ = 0, last_objects_ = 0;
-    Sums first_, rest_;
+    Sums warmup_, rest_;
+    FrameSamples board_total_{warmup_frames_}, sim_wall_{warmup_frames_};
+    std::map<std::string, FrameSamples> baselines_;
     std::vector<FrameStats> shown_;
 };
+
+// The board's speedup over a baseline on the modelled host: the ratio of
+// their medians (scaled_median_ns: the baseline's median x the host factor).
+double speedup(double scaled_median_ns, const TimingFigures& board);
 
 // The phase keys of a frame in the report, in RunTotals' order.
 extern const char* const kPhaseNames[RunTotals::kPhases];
@@ -92,7 +115,7 @@ public:
     explicit ReportWriter(std::ostream& out) : out_(out) {}
     void begin(const RunConfig& run);
     void frame(const FrameStats& frame);
-    void end(const RunTotals& totals);
+    void end(const RunTotals& totals, double host_factor);
 
 private:
     std::ostream& out_;

@@ -45,10 +45,10 @@ TEST_F(CliStreams, TheReportIsWrittenAFrameAtATimeAsOneJsonDocument) {
     EXPECT_EQ(text, report.dump(2) + "\n") << "the layout of a whole-document dump";
     ASSERT_EQ(report["frames"].size(), 12u);
     EXPECT_EQ(report["summary"]["frames"], 12);
-    EXPECT_EQ(report["summary"]["frames_in_means"], 11);
+    EXPECT_EQ(report["summary"]["frames_in_means"], 10);
     double sum = 0;
-    for (std::size_t k = 1; k < 12; ++k) sum += report["frames"][k]["total_ns"].get<double>();
-    EXPECT_DOUBLE_EQ(report["summary"]["mean_total_ns"].get<double>(), sum / 11);
+    for (std::size_t k = 2; k < 12; ++k) sum += report["frames"][k]["total_ns"].get<double>();
+    EXPECT_DOUBLE_EQ(report["summary"]["mean_total_ns"].get<double>(), sum / 10);
     EXPECT_NE(r.out.find("    ... (2 more frames in the report)\n"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("total: 12 frames, "), std::string::npos) << r.out;
 

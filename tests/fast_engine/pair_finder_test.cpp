@@ -68,6 +68,33 @@ TEST(PairFinder, SpecialValuesInsideAGrid) {
     }
 }
 
+// Boxes spanning three or more cells on an axis (placed cell by cell on the
+// general path) among boxes spanning one or two (placed without a branch),
+// with and without grouping the boxes by cell first.
+TEST(PairFinder, WideBoxesAmongSmallOnesWithAndWithoutGroupingByCell) {
+    std::mt19937 rng(12);
+    WordScene scene = testing::random_scene(5000, 100.0f, 2.0f, rng);
+    std::uniform_int_distribution<uint32_t> pick(0, scene.size() - 1);
+    for (int k = 0; k < 40; ++k) {
+        const uint32_t i = pick(rng);
+        const Coordinate axis_min = k % 2 == 0 ? kMinY : kMinZ;
+        const auto axis_max = static_cast<Coordinate>(axis_min + 3);
+        const float low = ComparisonUnit::as_float(scene.words[axis_min][i]);
+        scene.words[axis_max][i] = ComparisonUnit::as_bits(low + 40.0f);  // many cells wide
+    }
+    testing::sprinkle_special_values(scene, 0.002, rng);
+    PairList expected;
+    PairFinder finder;
+    finder.all_pairs(scene.size(), scene.view(), expected);
+    for (uint32_t cluster_above : {PairFinder::kClusterAbove, 0u}) {
+        finder.set_cluster_above(cluster_above);
+        PairList pairs;
+        finder.sweep(scene.size(), scene.view(), pairs);
+        EXPECT_GT(finder.last_cells(), 16u);
+        EXPECT_EQ(pairs, expected) << "grouped above " << cluster_above;
+    }
+}
+
 // A box reaching to infinity on y and z touches every cell: with many such
 // boxes the grid would hold N x cells entries, so the sweep goes without it.
 TEST(PairFinder, BoxesSpanningEverythingDropTheGrid) {

@@ -288,6 +288,34 @@ TEST(BoardCore, ASegmentComputedAheadAnswersForEveryEdge) {
     }
 }
 
+// A burst read of the pair buffer copies the words the host would read pair
+// by pair (first, then second), from an even or an odd word, on both engines.
+TEST(BoardCore, BufferedWordsAreThePairsFirstThenSecond) {
+    std::mt19937 rng(31);
+    const auto boxes = random_boxes(200, 8.0f, 3.0f, rng);
+    BoardConfig config;
+    config.m = 3;
+    config.collector.buffer_depth = 37;  // pauses with a full buffer
+    for (Fidelity fidelity : {Fidelity::kCycle, Fidelity::kFast}) {
+        BoardCore core(config, 200, fidelity);
+        load(core, boxes);
+        core.advance_to(core.segment_edges());
+        const uint32_t buffered = core.buffered_pairs();
+        ASSERT_EQ(buffered, 37u) << to_string(fidelity);
+        std::vector<uint32_t> expected;
+        for (uint32_t k = 0; k < buffered; ++k) {
+            expected.push_back(core.buffered_pair(k).first);
+            expected.push_back(core.buffered_pair(k).second);
+        }
+        for (uint64_t first : {0u, 1u, 9u}) {
+            const uint64_t count = expected.size() - first;
+            std::vector<uint32_t> words(count);
+            core.copy_buffered_words(first, count, reinterpret_cast<unsigned char*>(words.data()));
+            EXPECT_TRUE(std::equal(words.begin(), words.end(), expected.begin() + first)) << to_string(fidelity) << " from word " << first;
+        }
+    }
+}
+
 // ABORT in the middle of a segment computed ahead keeps what the buffer held then.
 TEST(BoardCore, AbortAfterComputingAheadKeepsTheBufferOfThatEdge) {
     BoardConfig config;

@@ -1,4 +1,4 @@
-#include "sw/cli/number_option.h"
+#include "models/common/number_text.h"
 
 #include <cerrno>
 #include <cmath>
@@ -20,7 +20,14 @@ std::string show(double value) {
 
 }  // namespace
 
-std::string describe_range(double min, double max) { return show(min) + " to " + show(max); }
+std::string show_number(double value) {
+    if (value == static_cast<double>(static_cast<int64_t>(value)) && std::abs(value) < 1e15) {
+        return std::to_string(static_cast<int64_t>(value));
+    }
+    return show(value);
+}
+
+std::string describe_range(double min, double max) { return show_number(min) + " to " + show_number(max); }
 
 std::string describe_range(uint64_t min, uint64_t max) { return std::to_string(min) + " to " + std::to_string(max); }
 

@@ -1,0 +1,66 @@
+# cmake -DCDVP=binary -DHELP2MAN=help2man -DOUT=cdvp.1 -P man_page.cmake
+# Writes cdvp.1 with help2man from `cdvp --help` and `--version`, adding a
+# section with `cdvp CMD --help` for every command that `cdvp --help` lists,
+# and the environment and files the binary uses.
+
+function(run_help out)
+  execute_process(COMMAND ${CDVP} ${ARGN} --help OUTPUT_VARIABLE text RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${CDVP} ${ARGN} --help exited with ${status}")
+  endif()
+  set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
+# roff: a backslash is \e, and a line may not start with a control character.
+function(as_roff_block out text)
+  string(REPLACE "\\" "\\e" text "${text}")
+  string(REGEX REPLACE "(^|\n)([.'])" "\\1\\\\&\\2" text "${text}")
+  set(${out} ".nf\n${text}\n.fi\n" PARENT_SCOPE)
+endfunction()
+
+run_help(usage)
+# The commands: the indented lines between "Commands:" and the next blank line.
+string(REGEX MATCH "Commands:\n(([ ]+[^\n]+\n)+)" block "${usage}")
+string(REGEX MATCHALL "\n  ([a-z]+) " rows "\n${CMAKE_MATCH_1}")
+if(NOT rows)
+  message(FATAL_ERROR "no commands found in `${CDVP} --help`")
+endif()
+
+set(include_text "")
+foreach(row IN LISTS rows)
+  string(STRIP "${row}" command)
+  run_help(help ${command})
+  as_roff_block(block "${help}")
+  string(TOUPPER "${command}" title)
+  string(APPEND include_text "[OPTIONS OF ${title}]\n${block}\n")
+endforeach()
+
+string(APPEND include_text [=[
+[ENVIRONMENT]
+.TP
+.B CDVP_BOARDS
+The directory of the board presets that \fB\-\-board\fR \fINAME\fR reads
+(\fINAME\fR.json). Unset, cdvp reads \fIshare/cdvp/boards\fR of the prefix it is
+installed in (found from the running binary, so a moved prefix still works), and
+a binary run from its build tree reads the source tree's \fIplatform/boards\fR.
+A \fB\-\-board\fR value that contains a slash or ends in .json is a file path.
+[FILES]
+.TP
+.I PREFIX/share/cdvp/boards/*.json
+The board presets: adm\-xrc\-ii, adm\-xrc\-ii\-64, pcie\-gen3\-x8.
+.TP
+.I PREFIX/share/doc/cdvp
+The README (file formats, timing assumptions, the worked example) and docs/.
+]=])
+
+get_filename_component(include_file "${OUT}.include" ABSOLUTE)
+file(WRITE "${include_file}" "${include_text}")
+execute_process(
+  COMMAND ${HELP2MAN} --no-info --section=1
+          "--name=virtual platform of an FPGA broad-phase collision coprocessor"
+          --include=${include_file} --output=${OUT}.tmp ${CDVP}
+  RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "help2man exited with ${status}")
+endif()
+file(RENAME "${OUT}.tmp" "${OUT}")

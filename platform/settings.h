@@ -1,0 +1,114 @@
+// Every setting of a run declared once, in the spirit of VCML properties and
+// SystemC CCI parameters: dotted name, type, unit, default, range or choices,
+// help, the source or assumption behind the default, and the member of
+// Settings it binds to. Board presets, config files, -c overrides, the
+// dedicated flags of `cdvp run`, the report's config and `cdvp settings` all
+// derive from settings_table() (settings.cpp); nothing else names a setting.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "models/board/board_config.h"
+#include "models/pci/bus_timing.h"
+#include "sw/driver/board_driver.h"
+
+namespace cdvp {
+
+struct HostConfig {
+    std::string name = "this machine";
+    // Native software time x speed_factor = time on the modelled host.
+    double speed_factor = 1.0;
+};
+
+struct SceneSettings {
+    uint64_t objects = 500;
+    uint64_t frames = 1;
+    uint64_t seed = 1;
+};
+
+struct RunSettings {
+    std::string transfer = "dma";   // dma | pio
+    std::string wait = "irq";       // irq | poll
+    std::string fidelity = "fast";  // fast | cycle
+    double quantum_ns = 0.0;
+    uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
+    uint32_t repeat = 1;
+};
+
+// Everything a run is configured by. Each member's initializer is its
+// setting's default (the table reads it from a default Settings).
+struct Settings {
+    BoardConfig board;
+    uint32_t block_rams = 0;  // the FPGA's block RAMs; 0: unbounded (no device)
+    std::string bus_type = "ideal";  // ideal | pci | pcie
+    PciConfig pci;
+    PcieConfig pcie;
+    HostConfig host;
+    DriverConfig driver;
+    SceneSettings scene;
+    RunSettings run;
+
+    // The bus bus_type names, built from its settings (null for ideal).
+    // Throws std::invalid_argument from the bus model's own rules.
+    std::shared_ptr<const BusTiming> make_bus() const;
+};
+
+enum class SettingType { kCount, kReal, kChoice, kText };
+// Which buses a bus.* setting applies to.
+enum BusMask : unsigned { kNoBus = 0, kPciBus = 1, kPcieBus = 2, kAnyBus = 3 };
+
+using SettingValue = std::variant<uint64_t, double, std::string>;
+
+struct Setting {
+    std::string name;   // "section.key"
+    SettingType type = SettingType::kReal;
+    std::string unit;
+    uint64_t count_min = 0, count_max = 0;  // kCount
+    double min = 0, max = 0;                // kReal
+    std::vector<std::string> choices;       // kChoice
+    std::string flag;        // dedicated flag of `cdvp run` without "--"; empty: none
+    std::string value_name;  // the flag's value in --help ("M")
+    std::string help;
+    std::string source;      // the source or assumption behind the default
+    unsigned buses = kNoBus;
+    bool in_preset = false;  // a board preset must give it
+    // Bound members: for bus settings, get_pci/set_pci and get_pcie/set_pcie
+    // (whichever apply); otherwise get_pci/set_pci.
+    std::function<SettingValue(const Settings&)> get_pci, get_pcie;
+    std::function<void(Settings&, const SettingValue&)> set_pci, set_pcie;
+
+    std::string section() const { return name.substr(0, name.find('.')); }
+    std::string key() const { return name.substr(name.find('.') + 1); }
+    bool applies_to_bus(const std::string& bus_type) const;
+    std::string bus_types() const;  // "pci", "pcie" or "pci or pcie"
+    SettingValue get(const Settings& s) const;
+    void set(Settings& s, const SettingValue& value) const;
+    // The default, on the first bus the setting applies to.
+    SettingValue default_value() const;
+    // "1 to 32", "dma or pio", "" for text.
+    std::string range_text() const;
+    // What a user typed (a flag's value, -c): throws std::invalid_argument
+    // "expected an integer from 1 to 32, got 'TEXT'".
+    SettingValue parse_text(const std::string& text) const;
+    // A number or string read from a file: throws std::invalid_argument
+    // "expected 1 to 32 cycles, got 40" (got: 'shown', as the file has it).
+    SettingValue from_number(double value, const std::string& shown) const;
+    SettingValue from_count(uint64_t value) const;
+    SettingValue from_string(const std::string& value) const;
+};
+
+const std::vector<Setting>& settings_table();
+// nullptr if no setting has this name.
+const Setting* find_setting(const std::string& name);
+// The name in 'names' nearest to 'name' (edit distance).
+std::string nearest_name(const std::string& name, const std::vector<std::string>& names);
+std::vector<std::string> setting_names();
+// A value as text: integers in full, reals as %g, strings as they are.
+std::string to_text(const SettingValue& value);
+
+}  // namespace cdvp

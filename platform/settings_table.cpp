@@ -1,0 +1,299 @@
+// The settings table: every setting of a run, declared once (settings.h).
+// Each default is the bound member's initializer; 'source' says where it
+// comes from.
+#include "platform/settings.h"
+
+#include <type_traits>
+
+#include "models/control_registers/control_registers.h"
+
+namespace cdvp {
+
+namespace {
+
+using Getter = std::function<SettingValue(const Settings&)>;
+using Setter = std::function<void(Settings&, const SettingValue&)>;
+struct Binding {
+    Getter get;
+    Setter set;
+};
+
+// Follows a path of member pointers: reach(s, &Settings::board, &BoardConfig::m) is s.board.m.
+template <class Object, class Member, class... Rest>
+decltype(auto) reach(Object& object, Member member, Rest... rest) {
+    if constexpr (sizeof...(Rest) == 0) {
+        return (object.*member);
+    } else {
+        return reach(object.*member, rest...);
+    }
+}
+
+// A setting bound to the member at the end of 'path'.
+template <class... Path>
+Binding member(Path... path) {
+    return {[=](const Settings& s) -> SettingValue {
+                const auto& field = reach(s, path...);
+                using T = std::decay_t<decltype(field)>;
+                if constexpr (std::is_same_v<T, std::string>) return field;
+                else if constexpr (std::is_floating_point_v<T>) return static_cast<double>(field);
+                else return static_cast<uint64_t>(field);
+            },
+            [=](Settings& s, const SettingValue& value) {
+                auto& field = reach(s, path...);
+                using T = std::decay_t<decltype(field)>;
+                if constexpr (std::is_same_v<T, std::string>) field = std::get<std::string>(value);
+                else if constexpr (std::is_floating_point_v<T>) field = static_cast<T>(std::get<double>(value));
+                else field = static_cast<T>(std::get<uint64_t>(value));
+            }};
+}
+
+Setting base(const char* name, SettingType type, const char* unit, Binding b, const char* help, const char* source) {
+    Setting s;
+    s.name = name;
+    s.type = type;
+    s.unit = unit;
+    s.get_pci = std::move(b.get);
+    s.set_pci = std::move(b.set);
+    s.help = help;
+    s.source = source;
+    return s;
+}
+Setting count(const char* name, const char* unit, uint64_t lo, uint64_t hi, Binding b, const char* help,
+              const char* source) {
+    Setting s = base(name, SettingType::kCount, unit, std::move(b), help, source);
+    s.count_min = lo;
+    s.count_max = hi;
+    return s;
+}
+Setting real(const char* name, const char* unit, double lo, double hi, Binding b, const char* help, const char* source) {
+    Setting s = base(name, SettingType::kReal, unit, std::move(b), help, source);
+    s.min = lo;
+    s.max = hi;
+    return s;
+}
+Setting choice(const char* name, std::vector<std::string> choices, Binding b, const char* help, const char* source) {
+    Setting s = base(name, SettingType::kChoice, "", std::move(b), help, source);
+    s.choices = std::move(choices);
+    return s;
+}
+Setting text(const char* name, Binding b, const char* help, const char* source) {
+    return base(name, SettingType::kText, "", std::move(b), help, source);
+}
+// A dedicated flag of `cdvp run` sets it (--flag VALUE_NAME).
+Setting flag(Setting s, const char* name, const char* value_name) {
+    s.flag = name;
+    s.value_name = value_name;
+    return s;
+}
+// Every board preset gives it.
+Setting preset(Setting s) {
+    s.in_preset = true;
+    return s;
+}
+// A key of the bus section for PCI only, PCIe only, or both (the PCIe member bound by 'pcie').
+Setting pci(Setting s) {
+    s.buses = kPciBus;
+    return preset(std::move(s));
+}
+Setting pcie(Setting s) {
+    s.buses = kPcieBus;
+    s.get_pcie = std::move(s.get_pci);
+    s.set_pcie = std::move(s.set_pci);
+    s.get_pci = nullptr;
+    s.set_pci = nullptr;
+    return preset(std::move(s));
+}
+Setting both_buses(Setting s, Binding pcie) {
+    s.buses = kAnyBus;
+    s.get_pcie = std::move(pcie.get);
+    s.set_pcie = std::move(pcie.set);
+    return preset(std::move(s));
+}
+
+using S = Settings;
+using B = BoardConfig;
+using C = PciConfig;
+using E = PcieConfig;
+using L = LocalBusConfig;
+using D = DriverConfig;
+
+constexpr const char* kPaperPci = "PCI 2.2 rules and the paper's host (platform/boards/adm-xrc-ii.json)";
+constexpr const char* kPcieWhatIf = "PCIe 3.0 and stated assumptions (platform/boards/pcie-gen3-x8.json)";
+
+std::vector<Setting> board_settings() {
+    return {
+        flag(count("board.m", "", 1, BoardConfig::kMaxM, member(&S::board, &B::m),
+                   "parallelism: 2m-port memories, 2m-1 comparison lanes",
+                   "the user's choice (never a preset's); the paper's XC2V6000 fits m = 24 at 500 objects"),
+             "m", "M"),
+        flag(preset(real("board.clock_mhz", "MHz", 1, 1000, member(&S::board, &B::clock_mhz), "board clock in MHz",
+                         "assumption: the design runs at the ADM-XRC-II's local bus clock, up to 66 MHz (Alpha Data "
+                         "SDK)")),
+             "clock-mhz", "F"),
+        flag(preset(count("board.compare_latency_cycles", "cycles", 0, 64,
+                          member(&S::board, &B::compare, &ComparisonUnitConfig::latency_cycles),
+                          "float compare pipeline depth in cycles",
+                          "assumption: top of the 0-2 cycles plausible for a Virtex-II -4 float compare core")),
+             "compare-latency", "C"),
+        flag(preset(count("board.fifo_depth", "pairs", 1, 1u << 20,
+                          member(&S::board, &B::collector, &PairCollectorConfig::fifo_depth),
+                          "pair FIFO depth in pairs (at least 2m-1)", "assumption: one 512-deep block-RAM FIFO")),
+             "fifo-depth", "P"),
+        flag(preset(count("board.drain_per_cycle", "pairs a cycle", 1, 64,
+                          member(&S::board, &B::collector, &PairCollectorConfig::drain_per_cycle),
+                          "pairs moved from FIFO to pair buffer a cycle",
+                          "assumption: one 64-bit pair write a cycle into on-board memory")),
+             "drain-rate", "R"),
+        flag(preset(count("board.pair_buffer_depth", "pairs", 1, address_map::kMaxBufferedPairs,
+                          member(&S::board, &B::collector, &PairCollectorConfig::buffer_depth),
+                          "pair buffer depth in pairs before the host drains it",
+                          "assumption: one 2 MiB ZBT SSRAM bank of 64-bit entries (the ADM-XRC-II has six)")),
+             "pair-buffer", "P"),
+        preset(count("board.block_rams", "block RAMs", 0, 100000, member(&S::block_rams),
+                     "the FPGA's 18-Kbit block RAMs, which bound m for N boxes (0: no device, unbounded)",
+                     "none without a preset; Xilinx DS031: the XC2V6000 has 144")),
+    };
+}
+
+std::vector<Setting> bus_settings() {
+    return {
+        preset(choice("bus.type", {"ideal", "pci", "pcie"}, member(&S::bus_type),
+                      "the host bus: ideal (untimed, the board alone), pci or pcie; bus.* keys of one type are "
+                      "refused on the other",
+                      "ideal without a preset: only the board's compute time")),
+        pci(count("bus.width_bits", "bits", 32, 64, member(&S::pci, &C::width_bits), "PCI data width (32 or 64)",
+                  kPaperPci)),
+        pci(real("bus.clock_mhz", "MHz", 1, 133, member(&S::pci, &C::clock_mhz), "PCI clock", kPaperPci)),
+        pci(count("bus.arbitration_clocks", "clocks", 0, 255, member(&S::pci, &C::arbitration_clocks),
+                  "REQ# to GNT# on an idle bus", "assumption (PCI 2.2 leaves it to the arbiter)")),
+        pci(count("bus.address_phase_clocks", "clocks", 1, 2, member(&S::pci, &C::address_phase_clocks),
+                  "address phases a transaction", "PCI 2.2: one for 32-bit addresses")),
+        pci(count("bus.board_read_latency_clocks", "clocks", 0, 16, member(&S::pci, &C::board_read_latency_clocks),
+                  "bridge as target: address to first data of a read",
+                  "assumption within PCI 2.2's 16-clock target initial latency")),
+        pci(count("bus.board_write_latency_clocks", "clocks", 0, 16, member(&S::pci, &C::board_write_latency_clocks),
+                  "bridge as target: a posted write's DEVSEL and TRDY", "PCI 2.2: medium DEVSEL")),
+        pci(count("bus.host_read_latency_clocks", "clocks", 0, 16, member(&S::pci, &C::host_read_latency_clocks),
+                  "host bridge as target of a DMA read of host memory",
+                  "assumption within PCI 2.2's 16-clock limit")),
+        pci(count("bus.host_write_latency_clocks", "clocks", 0, 16, member(&S::pci, &C::host_write_latency_clocks),
+                  "host bridge as target of a DMA write (posted)", "PCI 2.2: medium DEVSEL")),
+        pci(count("bus.wait_states", "clocks", 0, 8, member(&S::pci, &C::wait_states),
+                  "wait states per data phase after the first", "assumption (PCI 2.2 allows up to 8)")),
+        pci(count("bus.turnaround_clocks", "clocks", 0, 8, member(&S::pci, &C::turnaround_clocks),
+                  "idle clocks between transactions", "PCI 2.2: one")),
+        pci(count("bus.latency_timer_clocks", "clocks", 0, 255, member(&S::pci, &C::latency_timer_clocks),
+                  "a master's tenure ends when its latency timer expires",
+                  "assumption: a common BIOS default")),
+        pci(count("bus.dma_read_burst_bytes", "bytes", 4, 4096, member(&S::pci, &C::dma_read_burst_bytes),
+                  "bridge DMA read burst", "PCI9656 DMA read bursts seen as 16 quadwords (reference notes)")),
+        pci(count("bus.dma_write_burst_bytes", "bytes", 4, 4096, member(&S::pci, &C::dma_write_burst_bytes),
+                  "bridge DMA write burst", "PCI9656 DMA write bursts seen as 32 quadwords (reference notes)")),
+        pci(real("bus.host_pio_overhead_ns", "ns", 0, 1e6, member(&S::pci, &C::host_pio_overhead_ns),
+                 "CPU to host bridge and back, beyond the PCI cycles of a PIO access",
+                 "assumption: puts a PIO read at ~0.6 us, inside the era's 0.5-1 us")),
+        both_buses(real("bus.interrupt_ns", "ns", 0, 1e6, member(&S::pci, &C::interrupt_ns),
+                        "interrupt delivery plus handler entry",
+                        "PCI: middle of the era's 5-20 us (assumption); PCIe: an MSI (assumption)"),
+                   member(&S::pcie, &E::interrupt_ns)),
+        both_buses(count("bus.local_bus_width_bits", "bits", 8, 1024, member(&S::pci, &C::local_bus, &L::width_bits),
+                         "the board's local bus between bridge and FPGA: DMA cannot outrun it",
+                         "PLX PCI9656: 32 bits (PCIe: the card's fabric datapath, assumption)"),
+                   member(&S::pcie, &E::local_bus, &L::width_bits)),
+        both_buses(real("bus.local_bus_clock_mhz", "MHz", 1, 1000, member(&S::pci, &C::local_bus, &L::clock_mhz),
+                        "the board's local bus clock",
+                        "ADM-XRC-II: programmable up to 66 MHz (PCIe: the card's fabric, assumption)"),
+                   member(&S::pcie, &E::local_bus, &L::clock_mhz)),
+        pcie(real("bus.gigatransfers_per_s", "GT/s", 1, 64, member(&S::pcie, &E::gigatransfers_per_s),
+                  "PCIe link rate per lane", kPcieWhatIf)),
+        pcie(count("bus.lanes", "lanes", 1, 32, member(&S::pcie, &E::lanes), "PCIe link width", kPcieWhatIf)),
+        pcie(real("bus.encoding_efficiency", "(fraction)", 0.5, 1, member(&S::pcie, &E::encoding_efficiency),
+                  "line-code efficiency", "PCIe 3.0: 128b/130b")),
+        pcie(count("bus.max_payload_bytes", "bytes", 128, 4096, member(&S::pcie, &E::max_payload_bytes),
+                   "largest write payload a packet", kPcieWhatIf)),
+        pcie(count("bus.max_read_request_bytes", "bytes", 128, 4096, member(&S::pcie, &E::max_read_request_bytes),
+                   "largest read request", kPcieWhatIf)),
+        pcie(count("bus.tlp_overhead_bytes", "bytes", 0, 256, member(&S::pcie, &E::tlp_overhead_bytes),
+                   "framing, sequence number, header, LCRC and DLLP share a packet", kPcieWhatIf)),
+        pcie(real("bus.read_round_trip_ns", "ns", 0, 1e6, member(&S::pcie, &E::read_round_trip_ns),
+                  "a non-posted read: request to completion", kPcieWhatIf)),
+        pcie(real("bus.posted_write_ns", "ns", 0, 1e6, member(&S::pcie, &E::posted_write_ns),
+                  "CPU cost of one posted MMIO write", kPcieWhatIf)),
+    };
+}
+
+std::vector<Setting> host_and_run_settings() {
+    return {
+        preset(text("host.name", member(&S::host, &HostConfig::name), "the modelled host, as the summary names it",
+                    "this machine without a preset")),
+        flag(preset(real("host.speed_factor", "x", 0.001, 1000, member(&S::host, &HostConfig::speed_factor),
+                         "host-speed factor: native software time x F = time on the modelled host",
+                         "1 without a preset; adm-xrc-ii.json derives 4 for a Pentium 4 1.8 GHz")),
+             "host-factor", "F"),
+        preset(real("host.ns_per_box", "ns", 0, 1e6, member(&S::driver, &D::ns_per_box),
+                    "driver CPU work packing a box", "0 without a preset; assumption: about 45 P4 cycles")),
+        preset(real("host.ns_per_pair", "ns", 0, 1e6, member(&S::driver, &D::ns_per_pair),
+                    "driver CPU work unpacking a pair", "0 without a preset; assumption: about 10 P4 cycles")),
+        preset(real("host.call_ns", "ns", 0, 1e6, member(&S::driver, &D::call_ns),
+                    "one call into the kernel driver per board operation",
+                    "0 without a preset; assumption: a kernel call of 2002")),
+        real("driver.poll_gap_ns", "ns", 0, 1e6, member(&S::driver, &D::poll_gap_ns),
+             "CPU time between two status polls (run.wait poll)", "assumption: back-to-back reads"),
+        real("driver.timeout_factor", "x", 1, 1000, member(&S::driver, &D::timeout_factor),
+             "a wait gives up after this x its worst-case time plus driver.timeout_floor_ns",
+             "assumption: twice the worst case"),
+        real("driver.timeout_floor_ns", "ns", 1000, 1e9, member(&S::driver, &D::timeout_floor_ns),
+             "added to every wait's bound", "assumption: 100 us"),
+        flag(count("scene.objects", "objects", 0, address_map::kMaxObjects, member(&S::scene, &SceneSettings::objects),
+                   "spheres: number of spheres", "the paper's largest scene"),
+             "objects", "N"),
+        flag(count("scene.frames", "frames", 0, 1'000'000'000, member(&S::scene, &SceneSettings::frames),
+                   "spheres: number of frames", "one frame"),
+             "frames", "F"),
+        flag(count("scene.seed", "", 0, UINT64_MAX, member(&S::scene, &SceneSettings::seed),
+                   "spheres: random seed (same seed, same scene)", "any fixed seed"),
+             "seed", "S"),
+        flag(choice("run.transfer", {"dma", "pio"}, member(&S::run, &RunSettings::transfer),
+                    "how the driver moves boxes and pairs: bridge DMA or programmed I/O",
+                    "the paper's driver uses the bridge's DMA"),
+             "transfer", "dma|pio"),
+        flag(choice("run.wait", {"irq", "poll"}, member(&S::run, &RunSettings::wait),
+                    "how the driver waits for the board: interrupt or polling", "the paper's driver takes interrupts"),
+             "wait", "irq|poll"),
+        flag(choice("run.fidelity", {"cycle", "fast"}, member(&S::run, &RunSettings::fidelity),
+                    "the board's engine: fast computes pairs and cycles from the schedule, cycle clocks the datapath "
+                    "edge by edge; the same pairs, cycles and times (--vcd needs cycle, and picks it when the "
+                    "fidelity is not given)",
+                    "fast: the same results, faster (docs/fast_engine.md)"),
+             "fidelity", "cycle|fast"),
+        flag(real("run.quantum_ns", "ns", 0, 1e9, member(&S::run, &RunSettings::quantum_ns),
+                  "host CPU quantum in ns: how far the CPU runs ahead of the board and bus before it synchronises "
+                  "(0: at every access, exact; larger is faster and loosely timed)",
+                  "0: exact"),
+             "quantum-ns", "Q"),
+        flag(count("run.warmup", "frames", 0, 1'000'000'000, member(&S::run, &RunSettings::warmup),
+                   "frames at the start of each run left out of the timing statistics (allocation, first insertion)",
+                   "Bullet's incremental broad phases build their structures in the first frames (docs/timing.md)"),
+             "warmup", "W"),
+        flag(count("run.repeat", "runs", 1, 1000, member(&S::run, &RunSettings::repeat),
+                   "time the baselines over the frames R times, fresh instances each run; figures are medians over "
+                   "runs (the board's simulated times are deterministic and simulated once)",
+                   "one run"),
+             "repeat", "R"),
+    };
+}
+
+}  // namespace
+
+const std::vector<Setting>& settings_table() {
+    static const std::vector<Setting> table = [] {
+        std::vector<Setting> all = board_settings();
+        for (auto* group : {bus_settings, host_and_run_settings}) {
+            for (Setting& s : group()) all.push_back(std::move(s));
+        }
+        return all;
+    }();
+    return table;
+}
+
+}  // namespace cdvp

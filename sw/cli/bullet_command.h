@@ -1,0 +1,41 @@
+// `cdvp bullet`: a Bullet scene stepped on the virtual board as its broad
+// phase beside the same scene on one of Bullet's own, with the modelled board
+// time against Bullet's broad-phase time and the whole step's time.
+// `cdvp record`: a Bullet scene's AABBs written as a trace for `cdvp run`.
+#pragma once
+
+#include <boost/program_options.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "sw/bullet/scenes.h"
+
+namespace cdvp {
+
+// Return the process exit status (see run_command.h).
+int bullet_command(int argc, char** argv);
+int record_command(int argc, char** argv);
+
+// The scene options both commands share: --scene, --objects, --seed, --frames.
+struct SceneOptions {
+    std::string scene;
+    uint32_t objects = 0;
+    uint64_t seed = 1;
+    uint64_t frames = 1;
+};
+boost::program_options::options_description scene_options(SceneOptions& o);
+// The checked scene; InputError naming the flag otherwise.
+SceneSpec scene_spec(const SceneOptions& o, const boost::program_options::variables_map& vm);
+
+// Parses argv with cdvp's rules: options spelt in full, no stray words, each
+// given once; --help or -h (before any "--") prints 'usage' and the options.
+// Runs 'body' with the parsed options and maps what escapes it to an exit
+// status with one line on stderr: InputError and bad flags 2, BoardFrameFault
+// 3, anything else 1.
+int run_command_line(const char* program, int argc, char** argv, const std::string& usage,
+                     const boost::program_options::options_description& options,
+                     const std::function<int(const boost::program_options::variables_map&)>& body);
+
+}  // namespace cdvp

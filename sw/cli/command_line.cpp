@@ -1,0 +1,87 @@
+// What `cdvp bullet` and `cdvp record` share: scene options, parsing, exit statuses.
+#include <algorithm>
+#include <cstring>
+#include <sstream>
+#include <iostream>
+
+#include "models/common/user_text.h"
+#include "sw/bullet/board_link.h"
+#include "sw/cli/bullet_command.h"
+#include "sw/cli/number_option.h"
+#include "sw/cli/run_command.h"
+
+namespace po = boost::program_options;
+
+namespace cdvp {
+
+namespace {
+constexpr uint64_t kMaxFrames = 1'000'000;
+constexpr uint32_t kMaxSceneObjects = 1'000'000;
+}  // namespace
+
+po::options_description scene_options(SceneOptions& o) {
+    po::options_description scene("Scene");
+    scene.add_options()
+        ("scene", po::value(&o.scene)->value_name("NAME"), "pyramid, boxes, mixed, stack or spheres (docs/bullet.md)")
+        ("objects", number<uint32_t>(&o.objects, 1, kMaxSceneObjects, "N", false),
+         "bodies in the scene (default: the scene's own: pyramid 120, boxes 3000, mixed 500, stack 50, spheres 500)")
+        ("frames", number<uint64_t>(&o.frames, 1, kMaxFrames, "F"), "steps of 1/60 s")
+        ("seed", number<uint64_t>(&o.seed, 0, UINT64_MAX, "S"), "random seed (same seed, same scene)");
+    return scene;
+}
+
+SceneSpec scene_spec(const SceneOptions& o, const po::variables_map& vm) {
+    if (vm.count("scene") == 0) throw InputError("--scene: expected one of pyramid, boxes, mixed, stack, spheres");
+    const auto& names = bullet_scene_names();
+    if (std::find(names.begin(), names.end(), o.scene) == names.end()) {
+        throw InputError("--scene: expected one of pyramid, boxes, mixed, stack, spheres, got '" + excerpt(o.scene) +
+                         "'");
+    }
+    SceneSpec spec{o.scene, o.objects, o.seed};
+    try {
+        scene_layout(spec);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(std::string("--scene: ") + e.what());
+    }
+    return spec;
+}
+
+int run_command_line(const char* program, int argc, char** argv, const std::string& usage,
+                     const po::options_description& options,
+                     const std::function<int(const po::variables_map&)>& body) {
+    for (int k = 1; k < argc && std::strcmp(argv[k], "--") != 0; ++k) {
+        if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
+            std::ostringstream help;
+            help << usage << "\n\n" << options << '\n';
+            return print_to_stdout(program, help.str());
+        }
+    }
+    try {
+        const po::parsed_options parsed =
+            po::command_line_parser(argc, argv)
+                .options(options)
+                .style(po::command_line_style::default_style & ~po::command_line_style::allow_guessing)
+                .run();
+        for (const std::string& stray : po::collect_unrecognized(parsed.options, po::include_positional)) {
+            throw InputError("unexpected argument '" + excerpt(stray) + "'");
+        }
+        po::variables_map vm;
+        po::store(parsed, vm);
+        po::notify(vm);
+        return body(vm);
+    } catch (const po::error& e) {
+        std::cerr << program << ": " << printable(e.what()) << " (see " << program << " --help)\n";
+        return kExitBadInput;
+    } catch (const InputError& e) {
+        std::cerr << program << ": " << printable(e.what()) << '\n';
+        return kExitBadInput;
+    } catch (const BoardFrameFault& e) {
+        std::cerr << program << ": the simulated system faulted: " << printable(e.what()) << '\n';
+        return kExitDeviceFault;
+    } catch (const std::exception& e) {
+        std::cerr << program << ": simulation failed: " << printable(e.what()) << '\n';
+        return kExitInternal;
+    }
+}
+
+}  // namespace cdvp

@@ -1,0 +1,254 @@
+#include "sw/cli/sweep_plots.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+
+namespace cdvp {
+
+namespace {
+
+// A point that ran, placed on the figures' axes.
+struct Sample {
+    std::string board;
+    double m = 0;
+    double n = 0;
+    const Row* row = nullptr;
+};
+
+double number(const Row& row, const std::string& column) {
+    const auto at = row.find(column);
+    return at == row.end() ? std::nan("") : std::strtod(at->second.c_str(), nullptr);
+}
+
+std::string text(const Row& row, const std::string& column) {
+    const auto at = row.find(column);
+    return at == row.end() ? std::string() : at->second;
+}
+
+// Single-quoted for gnuplot (a quote inside is doubled).
+std::string quoted(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+    return q + "'";
+}
+
+// File-name safe, as point ids are.
+std::string file_part(std::string s) {
+    for (char& c : s) {
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '+') c = '-';
+    }
+    return s;
+}
+
+std::string num(double v) {
+    char t[40];
+    std::snprintf(t, sizeof t, "%.10g", v);
+    return t;
+}
+
+const Axis* find_axis(const Grid& grid, const std::string& name) {
+    for (const Axis& axis : grid.axes()) {
+        if (axis.name == name) return &axis;
+    }
+    return nullptr;
+}
+
+// One datablock per series: "$NAME << EOD", lines of x y, "EOD".
+std::string datablock(const std::string& name, const std::vector<std::pair<double, double>>& points) {
+    std::string block = "$" + name + " << EOD\n";
+    for (const auto& [x, y] : points) block += num(x) + " " + num(y) + "\n";
+    return block + "EOD\n";
+}
+
+using Series = std::map<double, std::vector<std::pair<double, double>>>;  // m -> (N, y) by N
+
+Series series(const std::vector<Sample>& samples, const std::string& board, const std::string& column, double scale) {
+    Series lines;
+    for (const Sample& s : samples) {
+        const double y = number(*s.row, column);
+        if (s.board == board && !std::isnan(y)) lines[s.m].push_back({s.n, y * scale});
+    }
+    for (auto& [m, points] : lines) std::sort(points.begin(), points.end());
+    return lines;
+}
+
+std::string line_plot(const std::string& title, const std::string& ylabel, const Series& lines,
+                      const std::string& extra_blocks, const std::string& extra_plots) {
+    std::ostringstream gp;
+    std::vector<std::string> plots;
+    std::size_t k = 0;
+    for (const auto& [m, points] : lines) {
+        gp << datablock("m" + std::to_string(k), points);
+        plots.push_back("$m" + std::to_string(k++) + " using 1:2 with linespoints pt 7 title " + quoted("m=" + num(m)));
+    }
+    gp << extra_blocks << "set title " << quoted(title) << "\nset xlabel 'N (objects)'\nset ylabel " << quoted(ylabel)
+       << "\nset logscale x\nset logscale y\nset grid\nset key outside right\nplot ";
+    for (std::size_t p = 0; p < plots.size(); ++p) gp << (p == 0 ? "" : ", ") << plots[p];
+    gp << extra_plots << "\n";
+    return gp.str();
+}
+
+// The smallest N at which the board wins, and how it was found.
+struct Crossover {
+    double n = 0;
+    const char* how = "none";  // interpolated, measured (the smallest N already wins), none
+};
+Crossover crossover(const std::vector<std::pair<double, double>>& speedups) {
+    for (std::size_t k = 0; k < speedups.size(); ++k) {
+        const auto [n1, s1] = speedups[k];
+        if (s1 < 1) continue;
+        if (k == 0) return {n1, "measured"};
+        const auto [n0, s0] = speedups[k - 1];
+        const double t = (1 - s0) / (s1 - s0);
+        return {std::exp(std::log(n0) + t * (std::log(n1) - std::log(n0))), "interpolated"};
+    }
+    return {};
+}
+
+void add_crossovers(const std::vector<Sample>& samples, const std::vector<std::string>& boards,
+                    const std::vector<std::string>& baselines, FigurePlan& plan) {
+    std::string csv = "board,m,baseline,crossover_n,how\n";
+    for (const std::string& baseline : baselines) {
+        std::ostringstream blocks, plots;
+        std::size_t drawn = 0;
+        for (const std::string& board : boards) {
+            std::vector<std::pair<double, double>> points;
+            for (const auto& [m, speedups] : series(samples, board, baseline + "_speedup", 1)) {
+                const Crossover c = crossover(speedups);
+                csv += board + "," + num(m) + "," + baseline + "," + (c.n > 0 ? num(c.n) : "") + "," + c.how + "\n";
+                if (c.n > 0) points.push_back({m, c.n});
+            }
+            if (points.empty()) continue;
+            blocks << datablock("c" + std::to_string(drawn), points);
+            plots << (drawn == 0 ? "" : ", ") << "$c" << drawn << " using 1:2 with linespoints pt 7 title " << quoted(board);
+            ++drawn;
+        }
+        if (drawn == 0) {
+            plan.notes.push_back("no crossover plot against " + baseline + ": the board beats it at no N of the sweep");
+            continue;
+        }
+        plan.figures.push_back({"crossover-" + file_part(baseline) + ".png",
+                                blocks.str() + "set title " + quoted("crossover N against " + baseline +
+                                                                     " (interpolated in log N; crossover.csv)") +
+                                    "\nset xlabel 'm'\nset ylabel 'N where the board starts to win'\nset logscale y\n"
+                                    "set grid\nset key outside right\nset offsets 0.5, 0.5, 0, 0\nplot " + plots.str() + "\n",
+                                ""});
+    }
+    plan.figures.push_back({"crossover.csv", "", csv});
+}
+
+Figure phase_bars(const std::vector<Sample>& samples, const std::string& board, const std::vector<std::string>& phases) {
+    std::vector<const Sample*> bars;
+    for (const Sample& s : samples) {
+        if (s.board == board) bars.push_back(&s);
+    }
+    std::stable_sort(bars.begin(), bars.end(), [](const Sample* a, const Sample* b) {
+        return a->m != b->m ? a->m < b->m : a->n < b->n;
+    });
+    std::ostringstream gp;
+    gp << "$p << EOD\npoint";
+    for (const std::string& phase : phases) gp << ' ' << phase.substr(7, phase.size() - 10);  // median_X_ns -> X
+    gp << '\n';
+    for (const Sample* s : bars) {
+        gp << "N=" << num(s->n) << ",m=" << num(s->m);
+        for (const std::string& phase : phases) gp << ' ' << num(number(*s->row, phase) / 1e3);
+        gp << '\n';
+    }
+    gp << "EOD\nset title " << quoted("median frame time by phase on " + board)
+       << "\nset ylabel 'us per frame'\nset style data histograms\nset style histogram rowstacked\n"
+          "set style fill solid 0.8 border -1\nset boxwidth 0.8\nset xtics rotate by -60 font ',8'\nset grid y\n"
+          "set key outside right\nplot for [i=2:"
+       << phases.size() + 1 << "] $p using i:xtic(1) title columnheader(i)\n";
+    return {"phases-" + file_part(board) + ".png", gp.str(), ""};
+}
+
+}  // namespace
+
+FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
+    FigurePlan plan;
+    // Each by its flag or its setting's name.
+    const Axis* board_axis = find_axis(grid, "board");
+    const Axis* n_axis = find_axis(grid, "objects") ? find_axis(grid, "objects") : find_axis(grid, "scene.objects");
+    const Axis* m_axis = find_axis(grid, "m") ? find_axis(grid, "m") : find_axis(grid, "board.m");
+    for (const Axis& axis : grid.axes()) {
+        if (&axis != board_axis && &axis != n_axis && &axis != m_axis && axis.values.size() > 1) {
+            plan.notes.push_back("plots show " + axis.name + "=" + axis.values[0] + " only (the first of its values)");
+        }
+    }
+    std::vector<Sample> samples;
+    std::vector<std::string> boards;
+    for (const auto& [index, row] : table.rows()) {
+        if (text(row, "status") != "ok") continue;
+        bool first_values = true;
+        for (const Axis& axis : grid.axes()) {
+            if (&axis != board_axis && &axis != n_axis && &axis != m_axis) first_values &= text(row, axis.name) == axis.values[0];
+        }
+        if (!first_values) continue;
+        Sample s{text(row, board_axis ? "board" : "config.board"), number(row, m_axis ? m_axis->name : "config.m"),
+                 number(row, n_axis ? n_axis->name : "median_objects"), &row};
+        if (std::find(boards.begin(), boards.end(), s.board) == boards.end()) boards.push_back(s.board);
+        samples.push_back(s);
+    }
+    if (samples.empty()) {
+        plan.notes.push_back("no plots: no point of the sweep ran");
+        return plan;
+    }
+    std::vector<std::string> phases, baselines;
+    for (const std::string& column : table.columns()) {
+        const bool phase = column.rfind("median_", 0) == 0 && column.size() > 10 &&
+                           column.compare(column.size() - 3, 3, "_ns") == 0 && column != "median_total_ns" &&
+                           !is_timing_column(column);
+        if (phase) phases.push_back(column);
+        if (column.size() > 8 && column.compare(column.size() - 8, 8, "_speedup") == 0) {
+            baselines.push_back(column.substr(0, column.size() - 8));
+        }
+    }
+    // The phases stacked in the order a frame goes through them.
+    const std::vector<std::string> kFrameOrder{"upload", "start", "compute", "irq", "readback", "driver"};
+    auto place = [&](const std::string& phase) {
+        return std::find(kFrameOrder.begin(), kFrameOrder.end(), phase.substr(7, phase.size() - 10)) - kFrameOrder.begin();
+    };
+    std::stable_sort(phases.begin(), phases.end(), [&](const auto& a, const auto& b) { return place(a) < place(b); });
+    for (const std::string& board : boards) {
+        if (!phases.empty()) plan.figures.push_back(phase_bars(samples, board, phases));
+    }
+    if (n_axis == nullptr) {
+        plan.notes.push_back("no plots against N (time, speedup, crossover): objects (or scene.objects) is not an axis of this sweep");
+        return plan;
+    }
+    if (baselines.empty()) plan.notes.push_back("no speedup or crossover plots: the sweep has no --baseline");
+    for (const std::string& board : boards) {
+        std::ostringstream blocks, plots;
+        for (std::size_t b = 0; b < baselines.size(); ++b) {
+            Series software = series(samples, board, baselines[b] + "_median_ns", 1e-3);
+            if (software.empty()) continue;
+            blocks << datablock("b" + std::to_string(b), software.begin()->second);
+            plots << ", $b" << b << " using 1:2 with lines dt 2 lw 2 title " << quoted(baselines[b] + " (software)");
+        }
+        plan.figures.push_back({"time-" + file_part(board) + ".png",
+                                line_plot("median frame time on " + board, "us per frame",
+                                          series(samples, board, "median_total_ns", 1e-3), blocks.str(), plots.str()),
+                                ""});
+        for (const std::string& baseline : baselines) {
+            plan.figures.push_back({"speedup-" + file_part(board) + "-" + file_part(baseline) + ".png",
+                                    line_plot("speedup over " + baseline + " on " + board, "speedup (x)",
+                                              series(samples, board, baseline + "_speedup", 1), "",
+                                              ", 1 with lines lc 'black' dt 3 title 'break-even'"),
+                                    ""});
+        }
+    }
+    if (!baselines.empty()) add_crossovers(samples, boards, baselines, plan);
+    return plan;
+}
+
+std::string figure_script(const Figure& figure, const std::string& png_path) {
+    return "set terminal pngcairo noenhanced size 900,560 font 'sans,10'\nset output " + quoted(png_path) + "\n" +
+           figure.script + "unset output\nreset\n";
+}
+
+}  // namespace cdvp

@@ -1,0 +1,170 @@
+// Settings from the command line: the layers of `cdvp run` (defaults <
+// preset < --config < -c < flags) with their origins in the report, the
+// refusals of unknown names and values out of range, `cdvp settings --json`,
+// docs/settings.md, and `cdvp fidelity` passing --config and -c on.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "platform/settings.h"
+#include "sw/timing/frame_samples.h"
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+using nlohmann::json;
+
+class CliSettings : public Cli {
+protected:
+    std::string small() const { return "run --trace " + trace("small.csv") + " --quiet "; }
+    json report() const { return json::parse(slurp(dir_ / "r.json"))["config"]; }
+};
+
+TEST_F(CliSettings, LayersApplyInOrderAndTheReportNamesEachOrigin) {
+    write("c.json", R"({"board": {"m": 4, "drain_per_cycle": 2}, "bus": {"interrupt_ns": 7000}, "run.wait": "poll"})");
+    const Result r = run(small() + "--board adm-xrc-ii --config c.json -c board.m=5 -c bus.interrupt_ns=5000 "
+                                   "--m 6 --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json config = report();
+    const json& s = config["settings"];
+    const auto expect = [&](const char* name, const json& value, const std::string& origin) {
+        EXPECT_EQ(s[name]["value"], value) << name;
+        EXPECT_EQ(s[name]["origin"], origin) << name;
+    };
+    expect("board.m", 6, "flag --m");
+    expect("bus.interrupt_ns", 5000.0, "-c");
+    expect("board.drain_per_cycle", 2, "config c.json");
+    expect("run.wait", "poll", "config c.json");
+    expect("board.clock_mhz", 66.0, "preset " + preset("adm-xrc-ii"));
+    expect("run.transfer", "dma", "default");
+    EXPECT_FALSE(s.contains("bus.lanes")) << "only the settings of the bus in effect";
+    // The fields other readers use follow the settings.
+    EXPECT_EQ(config["m"], 6);
+    EXPECT_EQ(config["drain_per_cycle"], 2);
+    EXPECT_EQ(config["wait"], "poll");
+    EXPECT_EQ(config["version"], "0.1.0");
+    EXPECT_EQ(config["seed"], 1);
+    EXPECT_EQ(config["command_line"][0], "cdvp");
+    EXPECT_EQ(config["command_line"][1], "run");
+    EXPECT_EQ(config["command_line"].back(), "r.json");
+}
+
+TEST_F(CliSettings, TheBriefsExampleRunsAndChangesTheInterrupt) {
+    const std::string scene = "run --scene spheres --objects 50 --board adm-xrc-ii --quiet ";
+    ASSERT_EQ(run(scene + "--report base.json").status, 0);
+    const Result r = run(scene + "-c bus.interrupt_ns=5000 --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const double base = json::parse(slurp(dir_ / "base.json"))["frames"][0]["irq_ns"];
+    const double faster = json::parse(slurp(dir_ / "r.json"))["frames"][0]["irq_ns"];
+    EXPECT_NEAR(base - faster, 5000.0, 1.0) << "one interrupt a frame, 5 us sooner";
+}
+
+TEST_F(CliSettings, TomlAndJsonConfigFilesGiveTheSameRun) {
+    write("c.toml", "[board]\nm = 4\n\n[bus]\ninterrupt_ns = 7000\n\n[run]\nwait = \"poll\"\n");
+    write("c.json", R"({"board": {"m": 4}, "bus": {"interrupt_ns": 7000}, "run": {"wait": "poll"}})");
+    ASSERT_EQ(run(small() + "--board adm-xrc-ii --config c.toml --report t.json").status, 0);
+    ASSERT_EQ(run(small() + "--board adm-xrc-ii --config c.json --report j.json").status, 0);
+    const json toml = json::parse(slurp(dir_ / "t.json")), from_json = json::parse(slurp(dir_ / "j.json"));
+    EXPECT_EQ(toml["config"]["settings"]["bus.interrupt_ns"]["origin"], "config c.toml:5");
+    EXPECT_EQ(from_json["config"]["settings"]["bus.interrupt_ns"]["origin"], "config c.json");
+    for (const auto& [name, setting] : toml["config"]["settings"].items()) {
+        EXPECT_EQ(setting["value"], from_json["config"]["settings"][name]["value"]) << name;
+    }
+    EXPECT_EQ(toml["frames"][0]["total_ns"], from_json["frames"][0]["total_ns"]);
+}
+
+TEST_F(CliSettings, UnknownNamesAreRefusedWithTheNearest) {
+    expect_refusal(run(small() + "-c bus.interupt_ns=5"),
+                   "cdvp run: -c bus.interupt_ns: unknown setting; did you mean 'bus.interrupt_ns'?\n");
+    write("c.toml", "[board]\nclock_mzh = 50\n");
+    expect_refusal(run(small() + "--config c.toml"),
+                   "cdvp run: c.toml:2: board.clock_mzh: unknown setting; did you mean 'board.clock_mhz'?\n");
+    write("c.json", R"({"scene": {"seeds": 3}})");
+    expect_refusal(run(small() + "--config c.json"),
+                   "cdvp run: c.json: scene.seeds: unknown setting; did you mean 'scene.seed'?\n");
+    expect_refusal(run(small() + "-c board.m"), "cdvp run: -c: expected NAME=VALUE");
+}
+
+TEST_F(CliSettings, ValuesOutOfRangeAreRefusedNamingWhereTheyCameFrom) {
+    expect_refusal(run(small() + "-c board.m=40"), "cdvp run: -c board.m: expected an integer from 1 to 32, got '40'\n");
+    expect_refusal(run(small() + "--board adm-xrc-ii -c bus.interrupt_ns=-5"),
+                   "cdvp run: -c bus.interrupt_ns: expected a number from 0 to 1000000, got '-5'\n");
+    write("c.toml", "[board]\nm = 40\n");
+    expect_refusal(run(small() + "--config c.toml"), "cdvp run: c.toml:2: board.m: expected 1 to 32, got 40\n");
+    expect_refusal(run(small() + "-c board.fifo_depth=4"),
+                   "cdvp run: -c board.fifo_depth: expected 2m-1 = 15 (one cycle's hits) to 1048576 pairs, got 4 "
+                   "(with m=8 (the default of --m))\n");
+    expect_refusal(run(small() + "--board adm-xrc-ii -c bus.width_bits=48"),
+                   "cdvp run: -c bus.width_bits: expected 32 or 64, got 48\n");
+    expect_refusal(run(small() + "-c scene.objects=5"), "cdvp run: -c scene.objects goes with --scene, not --trace\n");
+    expect_refusal(run(small() + "-c run.fidelity=fast --vcd w.vcd"), "cdvp run: --vcd: waveforms need the clocked");
+    EXPECT_EQ(files(), std::vector<std::string>{"c.toml"});
+}
+
+TEST_F(CliSettings, ABusKeyOfTheOtherBusTypeIsRefusedNamingTheBus) {
+    expect_refusal(run(small() + "--board adm-xrc-ii -c bus.lanes=4"),
+                   "cdvp run: -c bus.lanes: a setting of a pcie bus; the bus is pci (preset " + preset("adm-xrc-ii") +
+                       ")\n");
+    expect_refusal(run(small() + "-c bus.interrupt_ns=5000"),
+                   "cdvp run: -c bus.interrupt_ns: a setting of a pci or pcie bus; the bus is ideal (the default)");
+    // Changing the bus type first makes its keys valid.
+    EXPECT_EQ(run(small() + "-c bus.type=pcie -c bus.lanes=4").status, 0);
+}
+
+TEST_F(CliSettings, SettingsJsonListsEverySettingAndEveryPresetKey) {
+    const Result r = run("settings --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json all = json::parse(r.out);
+    ASSERT_TRUE(all.is_array());
+    std::set<std::string> names, flags;
+    for (const json& s : all) {
+        for (const char* key : {"name", "type", "unit", "default", "min", "max", "choices", "flag", "help", "source"}) {
+            EXPECT_TRUE(s.contains(key)) << s.dump() << ": " << key;
+        }
+        EXPECT_TRUE(names.insert(s["name"].get<std::string>()).second) << "listed once: " << s["name"];
+        if (!s["flag"].is_null()) flags.insert(s["flag"].get<std::string>());
+    }
+    for (const char* name : {"adm-xrc-ii", "adm-xrc-ii-64", "pcie-gen3-x8"}) {
+        const json root = json::parse(slurp(preset(name)));
+        for (const char* section : {"board", "bus", "host"}) {
+            for (const auto& [key, value] : root[section].items()) {
+                EXPECT_EQ(names.count(std::string(section) + "." + key), 1u) << name << ": " << section << "." << key;
+            }
+        }
+    }
+    for (const char* flag : {"--m", "--clock-mhz", "--compare-latency", "--fifo-depth", "--drain-rate", "--pair-buffer",
+                             "--host-factor", "--quantum-ns", "--objects", "--frames", "--seed", "--transfer", "--wait",
+                             "--fidelity", "--warmup", "--repeat"}) {
+        EXPECT_EQ(flags.count(flag), 1u) << flag;
+    }
+    EXPECT_EQ(run("settings").status, 0);
+    expect_refusal(run("settings --yaml"), "cdvp settings: unknown option '--yaml'");
+}
+
+TEST(Settings, TheWarmupDefaultIsTheTimingLibrarys) { EXPECT_EQ(Settings{}.run.warmup, kDefaultWarmupFrames); }
+
+TEST_F(CliSettings, TheDocListsTheTableAsCdvpSettingsPrintsIt) {
+    const Result r = run("settings --markdown");
+    ASSERT_EQ(r.status, 0);
+    const std::string doc = slurp(CDVP_SOURCE_DIR "/docs/settings.md");
+    EXPECT_NE(doc.find(r.out), std::string::npos)
+        << "docs/settings.md is out of date: regenerate its table with ./build/sw/cli/cdvp settings --markdown";
+}
+
+TEST_F(CliSettings, FidelityPassesConfigAndOverridesToEveryLevel) {
+    write("c.json", R"({"board": {"m": 4}})");
+    const Result r = run("fidelity --trace " + trace("small.csv") + " --board adm-xrc-ii --config c.json "
+                         "-c bus.interrupt_ns=5000 --out out -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    // A bad -c reaches the levels and comes back as their refusal.
+    expect_refusal(run("fidelity --trace " + trace("small.csv") + " -c board.mm=4 --out out2 -q"),
+                   "cdvp fidelity: -c board.mm: unknown setting; did you mean 'board.m'?\n");
+    expect_refusal(run("fidelity --trace " + trace("small.csv") + " -c run.quantum_ns=5 --out out2 -q"),
+                   "cdvp fidelity: -c run.quantum_ns: set by cdvp fidelity for each level");
+}
+
+}  // namespace
+}  // namespace cdvp::test

@@ -1,0 +1,222 @@
+// `cdvp sweep` and `cdvp merge` end to end: rows for every point (refused
+// ones too), resuming, shards merged into what one run gives, --jobs, and
+// an interrupted sweep that leaves complete points and no temporaries.
+#include <signal.h>
+#include <sys/stat.h>
+
+#include <chrono>
+#include <map>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "sw/cli/sweep_table.h"
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+// A quick grid: 2 x 2 points of 20 and 40 spheres, 2 frames each.
+const std::string kGrid = "sweep --board adm-xrc-ii --set m=1,2 --set objects=20:40:x2 --frames 2 --baseline soa ";
+
+// The CSV as rows of column -> value, timing columns left out.
+std::vector<std::map<std::string, std::string>> untimed_rows(const std::string& csv) {
+    const auto lines = parse_csv(csv, "sweep.csv");
+    std::vector<std::map<std::string, std::string>> rows;
+    for (std::size_t k = 1; k < lines.size(); ++k) {
+        std::map<std::string, std::string> row;
+        for (std::size_t c = 0; c < lines[0].size() && c < lines[k].size(); ++c) {
+            if (!is_timing_column(lines[0][c])) row[lines[0][c]] = lines[k][c];
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+std::vector<std::string> leftovers(const fs::path& dir) {
+    std::vector<std::string> found;
+    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+        if (entry.path().filename().string().find(".part-") != std::string::npos) found.push_back(entry.path());
+    }
+    return found;
+}
+
+TEST_F(Cli, SweepWritesARowPerPointAndARowWithItsReasonForAPointThatDoesNotFit) {
+    // m = 32 needs 6 x 32 block RAMs; the XC2V6000 has 144.
+    const Result r = run("sweep --board adm-xrc-ii --set m=2,32 --set objects=20,40 --frames 2 --baseline soa --out res");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("4 points in res/sweep.csv: 2 ok, 2 refused, 0 faulted"), std::string::npos) << r.out;
+    const auto lines = parse_csv(slurp(dir_ / "res" / "sweep.csv"), "sweep.csv");
+    ASSERT_EQ(lines.size(), 5u);
+    const auto& header = lines[0];
+    auto at = [&](const std::string& name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(it, header.end()) << name;
+        return static_cast<std::size_t>(it - header.begin());
+    };
+    const std::vector<std::string> expected_status{"ok", "ok", "refused", "refused"};
+    for (std::size_t k = 1; k < lines.size(); ++k) {
+        const auto& row = lines[k];
+        EXPECT_EQ(row[at("status")], expected_status[k - 1]) << row[at("point")];
+        EXPECT_EQ(row[at("index")], std::to_string(k - 1));
+        const bool ok = row[at("status")] == "ok";
+        EXPECT_EQ(fs::exists(dir_ / "res" / "points" / (row[at("point")] + ".json")), ok) << row[at("point")];
+        if (ok) {
+            EXPECT_EQ(row[at("config.m")], row[at("m")]);
+            EXPECT_EQ(row[at("config.block_rams")], "12");
+            EXPECT_GT(std::stod(row[at("median_total_ns")]), 0.0);
+            EXPECT_GT(std::stod(row[at("soa_speedup")]), 0.0);
+        } else {
+            EXPECT_NE(row[at("reason")].find("block RAM"), std::string::npos) << row[at("reason")];
+            EXPECT_EQ(row[at("median_total_ns")], "");
+        }
+    }
+    EXPECT_EQ(lines[1][at("point")], "board-adm-xrc-ii_m-2_objects-20");
+    for (const char* png : {"time-adm-xrc-ii.png", "speedup-adm-xrc-ii-soa.png", "phases-adm-xrc-ii.png"}) {
+        EXPECT_EQ(slurp(dir_ / "res" / png).substr(1, 3), "PNG") << png;
+    }
+    EXPECT_TRUE(fs::exists(dir_ / "res" / "crossover.csv"));
+    EXPECT_EQ(leftovers(dir_), std::vector<std::string>{});
+}
+
+TEST_F(Cli, SweepRecordsAPointWhoseSystemFaultsAsARowAndGoesOn) {
+    const Result r = run("sweep --board adm-xrc-ii --set m=1,2 --set objects=20 --frames 2 "
+                         "--inject board-error@frame=1 --out res");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto rows = untimed_rows(slurp(dir_ / "res" / "sweep.csv"));
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(r.err, "cdvp sweep: no plots: no point of the sweep ran\n") << "a skipped plot is said on stderr";
+    for (const auto& row : rows) {
+        EXPECT_EQ(row.at("status"), "fault");
+        EXPECT_EQ(row.at("reason").rfind("frame 1: ", 0), 0u) << row.at("reason");
+        EXPECT_NE(row.at("reason").find("injected board-error"), std::string::npos) << row.at("reason");
+    }
+}
+
+TEST_F(Cli, SweepWhoseEveryPointIsRefusedExitsTwoWithTheFirstReasonAndLeavesNothing) {
+    const Result r = run("sweep --set m=1,2 --frmes 3 --out res");
+    expect_refusal(r, "cdvp sweep: every point was refused; the first, m-1: ");
+    EXPECT_NE(r.err.find("frmes"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "res"));
+}
+
+TEST_F(Cli, SweepRefusesBadAxesAndOptionsBeforeAnyPointRuns) {
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"sweep --set m=1:8:x1 --out res", "cdvp sweep: --set m: '1:8:x1': a geometric range needs"},
+        {"sweep --set m=1,,2 --out res", "cdvp sweep: --set m: '1,,2': an empty value"},
+        {"sweep --set m --out res", "cdvp sweep: --set: 'm': expected NAME=LIST"},
+        {"sweep --set m=1 --set m=2 --out res", "cdvp sweep: --set m: the axis is given twice"},
+        {"sweep --set m=1,2 --m 4 --out res", "cdvp sweep: --m: m is an axis of the sweep"},
+        {"sweep --set bus.interrupt_ns=1,2 -c bus.interrupt_ns=4 --out res",
+         "cdvp sweep: -c: bus.interrupt_ns is an axis of the sweep"},
+        {"sweep --set bus.interrupt_ns=1,2 -cbus.interrupt_ns=4 --out res",
+         "cdvp sweep: -cbus.interrupt_ns=4: bus.interrupt_ns is an axis of the sweep"},
+        {"sweep --set m=1,2", "cdvp sweep: --out DIR is required"},
+        {"sweep --set m=1 --jobs 0 --out res", "cdvp sweep: --jobs: expected a whole number from 1 to 24"},
+        {"sweep --set m=1 --jobs 25 --out res", "cdvp sweep: --jobs: expected a whole number from 1 to 24"},
+        {"sweep --set m=1 --shard 3/2 --out res", "cdvp sweep: --shard: '3/2': expected K/N"},
+        {"sweep --set m=1 --report r.json --out res", "cdvp sweep: --report: set by cdvp sweep"},
+        {"sweep --out res", "cdvp sweep: a sweep needs at least one axis"},
+        {"sweep --set objcts=1,2 --out res", "cdvp sweep: --set objcts: no flag of cdvp run or setting has this name; "
+                                             "the nearest is 'objects'"},
+    };
+    for (const auto& [args, start] : cases) {
+        expect_refusal(run(args), start, args);
+        EXPECT_FALSE(fs::exists(dir_ / "res")) << args;
+    }
+    write("file", "x");
+    expect_refusal(run("sweep --set m=1 --out file"), "cdvp sweep: --out: file: expected a directory");
+    EXPECT_EQ(slurp(dir_ / "file"), "x");
+}
+
+TEST_F(Cli, SweepResumesWithoutRerunningTheRecordedPointsAndRefusesAnotherGrid) {
+    ASSERT_EQ(run(kGrid + "--out res -q").status, 0);
+    // As if interrupted after three points: the last row goes.
+    const fs::path csv = dir_ / "res" / "sweep.csv";
+    std::string text = slurp(csv);
+    text.erase(text.rfind('\n', text.size() - 2) + 1);
+    std::ofstream(csv, std::ios::binary) << text;
+    std::map<std::string, fs::file_time_type> before;
+    for (const auto& entry : fs::directory_iterator(dir_ / "res" / "points")) before[entry.path()] = entry.last_write_time();
+    ASSERT_EQ(before.size(), 4u);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+
+    const Result again = run(kGrid + "--out res");
+    ASSERT_EQ(again.status, 0) << again.err;
+    EXPECT_NE(again.out.find("4 points in res/sweep.csv: 4 ok, 0 refused, 0 faulted (1 run now; "), std::string::npos)
+        << again.out;
+    std::size_t rerun = 0;
+    for (const auto& [path, time] : before) rerun += fs::last_write_time(path) != time;
+    EXPECT_EQ(rerun, 1u) << "only the point missing from the CSV ran again";
+    EXPECT_EQ(untimed_rows(slurp(csv)).size(), 4u);
+
+    expect_refusal(run("sweep --board adm-xrc-ii --set m=1,4 --set objects=20:40:x2 --frames 2 --baseline soa --out res"),
+                   "cdvp sweep: --out: res holds another sweep (other axes or options)");
+    expect_refusal(run(kGrid + "--shard 1/2 --out res"), "cdvp sweep: --out: res holds another sweep (shard 1/1)");
+}
+
+TEST_F(Cli, MergedShardsEqualOneWholeSweepButForTheTimings) {
+    ASSERT_EQ(run(kGrid + "--out whole -q").status, 0);
+    ASSERT_EQ(run(kGrid + "--shard 1/3 --out s1 -q").status, 0);
+    ASSERT_EQ(run(kGrid + "--shard 2/3 --out s2 -q").status, 0);
+    ASSERT_EQ(run(kGrid + "--shard 3/3 --out s3 -q").status, 0);
+    EXPECT_EQ(untimed_rows(slurp(dir_ / "s1" / "sweep.csv")).size(), 2u) << "points 0 and 3";
+    const Result merged = run("merge merged s3 s1 s2");
+    ASSERT_EQ(merged.status, 0) << merged.err;
+    EXPECT_NE(merged.out.find("4 of 4 points"), std::string::npos) << merged.out;
+    const auto whole = untimed_rows(slurp(dir_ / "whole" / "sweep.csv"));
+    ASSERT_EQ(whole.size(), 4u);
+    EXPECT_EQ(untimed_rows(slurp(dir_ / "merged" / "sweep.csv")), whole);
+    EXPECT_EQ(parse_csv(slurp(dir_ / "merged" / "sweep.csv"), "m")[0], parse_csv(slurp(dir_ / "whole" / "sweep.csv"), "w")[0])
+        << "the same columns in the same order";
+    for (const auto& entry : fs::directory_iterator(dir_ / "whole" / "points")) {
+        EXPECT_TRUE(fs::exists(dir_ / "merged" / "points" / entry.path().filename())) << entry.path();
+    }
+    // The merged directory is the whole sweep: resuming it runs nothing.
+    const Result resumed = run(kGrid + "--out merged");
+    EXPECT_NE(resumed.out.find("(0 run now; "), std::string::npos) << resumed.out << resumed.err;
+
+    ASSERT_EQ(run("sweep --board adm-xrc-ii --set m=1,4 --set objects=20 --frames 2 --shard 1/2 --out other -q").status, 0);
+    expect_refusal(run("merge m2 s1 other"), "cdvp merge: other: a shard of another sweep than s1");
+    expect_refusal(run("merge m3 s1 s1"), "cdvp merge: s1: shard 1/3 is given twice");
+    write("junk", "");
+    expect_refusal(run("merge . s1"), "cdvp merge: .: expected a new or empty directory");
+    EXPECT_FALSE(fs::exists(dir_ / "m2"));
+}
+
+TEST_F(Cli, SweepInTwoJobsGivesTheSameTableAsInOne) {
+    ASSERT_EQ(run(kGrid + "--out one -q").status, 0);
+    ASSERT_EQ(run(kGrid + "--jobs 2 --out two -q").status, 0);
+    const auto one = untimed_rows(slurp(dir_ / "one" / "sweep.csv"));
+    ASSERT_EQ(one.size(), 4u);
+    EXPECT_EQ(untimed_rows(slurp(dir_ / "two" / "sweep.csv")), one);
+}
+
+TEST_F(Cli, InterruptedSweepLeavesOnlyCompletePointsAndNoTemporaries) {
+    // Enough points that the signal lands mid-sweep.
+    const pid_t pid = spawn(dir_, {"sweep", "--set", "m=1:12:+1", "--set", "objects=200,300", "--frames", "20",
+                                   "--jobs", "2", "--out", "res", "-q"});
+    const fs::path csv = dir_ / "res" / "sweep.csv";
+    for (int k = 0; k < 400 && !fs::exists(csv); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(fs::exists(csv)) << "no point finished in 4 s";
+    ASSERT_EQ(kill(pid, SIGINT), 0);
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "exit status " << WEXITSTATUS(status);
+    EXPECT_EQ(WTERMSIG(status), SIGINT);
+    EXPECT_EQ(leftovers(dir_), std::vector<std::string>{});
+    const auto rows = untimed_rows(slurp(csv));
+    EXPECT_GE(rows.size(), 1u);
+    EXPECT_LT(rows.size(), 24u) << "interrupted before the end";
+    for (const auto& row : rows) {
+        EXPECT_EQ(row.at("status"), "ok");
+        EXPECT_TRUE(fs::exists(dir_ / "res" / "points" / (row.at("point") + ".json"))) << row.at("point");
+    }
+    // Resuming completes the rest.
+    const Result resumed = run("sweep --set m=1:12:+1 --set objects=200,300 --frames 20 --jobs 2 --out res");
+    ASSERT_EQ(resumed.status, 0) << resumed.err;
+    EXPECT_EQ(untimed_rows(slurp(csv)).size(), 24u);
+}
+
+}  // namespace
+}  // namespace cdvp::test

@@ -1,0 +1,128 @@
+// Baseline timing statistics of `cdvp run`: warm-up frames, medians with p10
+// and p90, --repeat, and the note on too few frames. The tests check which
+// frames the figures rest on and how they combine, never how fast anything is.
+#include <algorithm>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+using nlohmann::json;
+
+// Type-7 quantile (docs: the report's definition), computed independently here.
+double quantile(std::vector<double> v, double p) {
+    std::sort(v.begin(), v.end());
+    const double h = (static_cast<double>(v.size()) - 1) * p;
+    const std::size_t k = static_cast<std::size_t>(h);
+    return k + 1 < v.size() ? v[k] + (h - static_cast<double>(k)) * (v[k + 1] - v[k]) : v.back();
+}
+
+std::vector<double> per_frame(const json& report, const std::string& baseline, std::size_t from) {
+    std::vector<double> values;
+    for (std::size_t k = from; k < report["frames"].size(); ++k) {
+        const json& f = report["frames"][k];
+        values.push_back(baseline.empty() ? f["total_ns"].get<double>() : f["baselines"][baseline]["ns"].get<double>());
+    }
+    return values;
+}
+
+class CliTiming : public Cli {
+protected:
+    json report_of(const std::string& args) {
+        const Result r = run("run --scene spheres --objects 60 --m 2 --board adm-xrc-ii -q --report r.json " + args);
+        EXPECT_EQ(r.status, 0) << r.err;
+        return json::parse(slurp(dir_ / "r.json"));
+    }
+};
+
+TEST_F(CliTiming, WarmUpFramesAreLeftOutOfMediansAndQuantiles) {
+    const json report = report_of("--frames 8 --warmup 3 --baseline sap,soa");
+    const json& summary = report["summary"];
+    EXPECT_EQ(summary["warmup_frames"], 3);
+    EXPECT_EQ(summary["frames_in_means"], 5);
+    for (const char* name : {"sap", "soa"}) {
+        const std::vector<double> measured = per_frame(report, name, 3);
+        const json& b = summary["baselines"][name];
+        EXPECT_DOUBLE_EQ(b["median_ns"].get<double>(), quantile(measured, 0.5)) << name;
+        EXPECT_DOUBLE_EQ(b["p10_ns"].get<double>(), quantile(measured, 0.1)) << name;
+        EXPECT_DOUBLE_EQ(b["p90_ns"].get<double>(), quantile(measured, 0.9)) << name;
+        EXPECT_EQ(b["run_medians_ns"].size(), 1u);
+    }
+    EXPECT_DOUBLE_EQ(summary["median_total_ns"].get<double>(), quantile(per_frame(report, "", 3), 0.5));
+    EXPECT_DOUBLE_EQ(summary["p90_total_ns"].get<double>(), quantile(per_frame(report, "", 3), 0.9));
+    EXPECT_TRUE(summary["too_few_frames"].get<bool>());
+}
+
+TEST_F(CliTiming, WarmUpZeroMeasuresTheFirstFrameToo) {
+    const json report = report_of("--frames 5 --warmup 0 --baseline sap");
+    EXPECT_EQ(report["summary"]["frames_in_means"], 5);
+    EXPECT_DOUBLE_EQ(report["summary"]["baselines"]["sap"]["p90_ns"].get<double>(),
+                     quantile(per_frame(report, "sap", 0), 0.9));
+}
+
+TEST_F(CliTiming, ARunNoLongerThanItsWarmUpSaysSoAndUsesItsFrames) {
+    const Result r = run("run --scene spheres --objects 30 --frames 2 --warmup 5 --baseline brute --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("2 frames, all warm-up frames"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("note: these figures rest on 2 frames, fewer than 10"), std::string::npos) << r.out;
+    const json report = json::parse(slurp(dir_ / "r.json"));
+    EXPECT_DOUBLE_EQ(report["summary"]["baselines"]["brute"]["median_ns"].get<double>(),
+                     quantile(per_frame(report, "brute", 0), 0.5));
+}
+
+TEST_F(CliTiming, RepeatTakesTheMedianOfEachRunsMedianAndTheSpeedupAsARatioOfMedians) {
+    const Result r = run("run --scene spheres --objects 60 --m 2 --board adm-xrc-ii --frames 14 --repeat 3 "
+                         "--baseline sap,brute --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.find("note:"), std::string::npos) << "12 measured frames are enough: " << r.out;
+    EXPECT_NE(r.out.find("software timed in 3 runs"), std::string::npos) << r.out;
+    const json report = json::parse(slurp(dir_ / "r.json"));
+    EXPECT_EQ(report["config"]["baseline_runs"], 3);
+    EXPECT_EQ(report["frames"].size(), 14u) << "the frames are simulated and reported once";
+    const json& summary = report["summary"];
+    EXPECT_FALSE(summary["too_few_frames"].get<bool>());
+    for (const char* name : {"sap", "brute"}) {
+        const json& b = summary["baselines"][name];
+        const std::vector<double> runs = b["run_medians_ns"].get<std::vector<double>>();
+        ASSERT_EQ(runs.size(), 3u) << name;
+        EXPECT_DOUBLE_EQ(runs[0], quantile(per_frame(report, name, 2), 0.5)) << "the first run is the one reported";
+        EXPECT_DOUBLE_EQ(b["median_ns"].get<double>(), quantile(runs, 0.5)) << name;
+        EXPECT_LE(b["p10_ns"].get<double>(), b["p90_ns"].get<double>()) << name;
+        EXPECT_NEAR(b["speedup"].get<double>(),
+                    b["median_scaled_ns"].get<double>() / summary["median_total_ns"].get<double>(), 1e-9);
+    }
+}
+
+TEST_F(CliTiming, RepeatRereadsATraceAndChecksEveryRunsPairs) {
+    const Result r = run("run --trace " + trace("hard_cases.csv") + " --m 3 --repeat 2 --baseline sap,dbvt,brute,soa "
+                         "--report r.json -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json report = json::parse(slurp(dir_ / "r.json"));
+    for (const char* name : {"sap", "dbvt", "brute", "soa"}) {
+        EXPECT_EQ(report["summary"]["baselines"][name]["run_medians_ns"].size(), 2u) << name;
+    }
+}
+
+TEST_F(CliTiming, RepeatRereadsATraceFromAPipeFromItsCopy) {
+    const std::string command = "cd '" + dir_.string() + "' && cat '" + trace("hard_cases.csv") + "' | '" CDVP_BINARY
+                                "' run --trace /dev/stdin --m 3 --repeat 3 --baseline sap,brute -q --report r.json";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    const json report = json::parse(slurp(dir_ / "r.json"));
+    EXPECT_EQ(report["summary"]["baselines"]["sap"]["run_medians_ns"].size(), 3u);
+    EXPECT_EQ(report["summary"]["baselines"]["brute"]["run_medians_ns"].size(), 3u);
+}
+
+TEST_F(CliTiming, RepeatWithoutABaselineAndOutOfRangeCountsAreRefused) {
+    expect_refusal(run("run --scene spheres --frames 3 --repeat 2"), "cdvp run: --repeat: reruns the software");
+    expect_refusal(run("run --scene spheres --frames 3 --baseline sap --repeat 0"), "cdvp run: --repeat: expected");
+    expect_refusal(run("run --scene spheres --frames 3 --baseline sap --warmup -1"), "cdvp run: --warmup: expected");
+    expect_refusal(run("run --scene spheres --frames 3 --baseline sap --warmup 1.5"), "cdvp run: --warmup: expected");
+    EXPECT_TRUE(files().empty()) << "a refused run writes nothing";
+}
+
+}  // namespace
+}  // namespace cdvp::test

@@ -1,0 +1,193 @@
+// The settings table: every preset key maps to exactly one setting, layers
+// apply in order with their origins, and config files and -c overrides are
+// checked against the table with messages naming file, line and setting.
+#include "platform/settings.h"
+
+#include <gtest/gtest.h>
+
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "models/common/user_text.h"
+#include "platform/board_preset.h"
+#include "platform/config_file.h"
+
+namespace cdvp {
+namespace {
+
+using nlohmann::json;
+
+int entries_named(const std::string& name) {
+    int count = 0;
+    for (const Setting& s : settings_table()) count += s.name == name ? 1 : 0;
+    return count;
+}
+
+TEST(SettingsTable, EveryPresetKeyMapsToExactlyOneSettingOfItsBus) {
+    int keys = 0;
+    for (const std::string& preset : board_preset_names()) {
+        std::ifstream in(boards_directory() + "/" + preset + ".json");
+        const json root = json::parse(in);
+        const std::string bus = root["bus"]["type"];
+        for (const char* section : {"board", "bus", "host"}) {
+            for (const auto& [key, value] : root[section].items()) {
+                const std::string name = std::string(section) + "." + key;
+                EXPECT_EQ(1, entries_named(name)) << preset << ": " << name;
+                const Setting* s = find_setting(name);
+                ASSERT_NE(s, nullptr) << name;
+                EXPECT_TRUE(s->in_preset) << name;
+                EXPECT_TRUE(s->applies_to_bus(bus)) << preset << ": " << name;
+                ++keys;
+            }
+        }
+    }
+    EXPECT_EQ(6 + 5 + 18 + 6 + 5 + 18 + 6 + 5 + 12, keys) << "board, host and bus keys of the three presets";
+}
+
+TEST(SettingsTable, EveryDedicatedFlagBindsExactlyOneSetting) {
+    const char* flags[] = {"m",      "clock-mhz", "compare-latency", "fifo-depth", "drain-rate",
+                           "pair-buffer", "host-factor", "quantum-ns", "objects", "frames",
+                           "seed",   "transfer",  "wait",            "fidelity", "warmup", "repeat"};
+    for (const char* flag : flags) {
+        int count = 0;
+        for (const Setting& s : settings_table()) count += s.flag == flag ? 1 : 0;
+        EXPECT_EQ(1, count) << "--" << flag;
+    }
+    for (const Setting& s : settings_table()) {
+        EXPECT_EQ(1, entries_named(s.name)) << s.name;
+        EXPECT_FALSE(s.help.empty()) << s.name;
+        EXPECT_FALSE(s.source.empty()) << s.name;
+    }
+}
+
+TEST(SettingsTable, ValuesBindTheirMembers) {
+    Settings s;
+    find_setting("board.fifo_depth")->set(s, SettingValue(uint64_t{77}));
+    EXPECT_EQ(77u, s.board.collector.fifo_depth);
+    s.bus_type = "pcie";
+    find_setting("bus.interrupt_ns")->set(s, SettingValue(1234.0));
+    EXPECT_EQ(1234.0, s.pcie.interrupt_ns);
+    EXPECT_EQ(PciConfig{}.interrupt_ns, s.pci.interrupt_ns) << "a key of both buses sets the bus in effect";
+    EXPECT_EQ(SettingValue(1234.0), find_setting("bus.interrupt_ns")->get(s));
+    EXPECT_EQ(SettingValue(std::string("dma")), find_setting("run.transfer")->default_value());
+}
+
+TEST(SettingsTable, ValuesOutsideTypeOrRangeAreRefused) {
+    const Setting& m = *find_setting("board.m");
+    EXPECT_THROW(m.parse_text("33"), std::invalid_argument);
+    EXPECT_EQ(SettingValue(uint64_t{4}), m.parse_text("4"));
+    try {
+        find_setting("bus.wait_states")->from_number(0.5, "0.5");
+        ADD_FAILURE();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ("expected a whole number of clocks, got 0.5", e.what());
+    }
+    try {
+        find_setting("run.wait")->from_string("sleep");
+        ADD_FAILURE();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ("expected irq or poll, got 'sleep'", e.what());
+    }
+}
+
+TEST(SettingValues, LayersApplyInOrderAndKeepTheirOrigins) {
+    SettingValues values;
+    values.apply(load_board_preset("adm-xrc-ii").values);
+    values.apply({parse_override("bus.interrupt_ns=5000"), parse_override("board.m=4")});
+    const Setting& interrupt = *find_setting("bus.interrupt_ns");
+    EXPECT_EQ(5000.0, values.settings().pci.interrupt_ns);
+    EXPECT_EQ("-c", values.origin(interrupt).describe(interrupt));
+    const Setting& clock = *find_setting("board.clock_mhz");
+    EXPECT_EQ("preset " + boards_directory() + "/adm-xrc-ii.json", values.origin(clock).describe(clock));
+    EXPECT_EQ("-c board.m=4", values.value_and_origin(*find_setting("board.m")));
+    EXPECT_EQ(5000.0, values.bus()->interrupt_ns());
+}
+
+TEST(SettingValues, ABusKeyOfAnotherBusIsRefusedNamingTheBus) {
+    SettingValues values;
+    try {
+        values.apply({parse_override("bus.lanes=4")});
+        ADD_FAILURE();
+    } catch (const InputError& e) {
+        EXPECT_EQ(0u, std::string(e.what()).rfind("-c bus.lanes: a setting of a pcie bus; the bus is ideal", 0))
+            << e.what();
+    }
+    // bus.type goes first within a layer, whatever the order given.
+    values.apply({parse_override("bus.lanes=4"), parse_override("bus.type=pcie")});
+    EXPECT_EQ(4u, values.settings().pcie.lanes);
+}
+
+TEST(SettingValues, UnknownOverridesSuggestTheNearestSetting) {
+    try {
+        parse_override("bus.interupt_ns=5");
+        ADD_FAILURE();
+    } catch (const InputError& e) {
+        EXPECT_STREQ("-c bus.interupt_ns: unknown setting; did you mean 'bus.interrupt_ns'?", e.what());
+    }
+}
+
+class ConfigFile : public ::testing::Test {
+protected:
+    void SetUp() override {
+        char pattern[] = "/tmp/cdvp-config-XXXXXX";
+        ASSERT_NE(nullptr, mkdtemp(pattern));
+        dir_ = pattern;
+    }
+    void TearDown() override {
+        for (const std::string& name : written_) std::remove(name.c_str());
+        rmdir(dir_.c_str());
+    }
+    std::string write(const std::string& name, const std::string& text) {
+        const std::string path = dir_ + "/" + name;
+        std::ofstream(path) << text;
+        written_.push_back(path);
+        return path;
+    }
+    std::string error_for(const std::string& name, const std::string& text) {
+        const std::string path = write(name, text);
+        try {
+            read_config_file(path);
+        } catch (const InputError& e) {
+            return std::string(e.what()).substr(path.size());
+        }
+        return "accepted";
+    }
+    std::string dir_;
+    std::vector<std::string> written_;
+};
+
+TEST_F(ConfigFile, TomlAndJsonGiveTheSameSettings) {
+    const auto json_values = read_config_file(write(
+        "c.json", R"({"board": {"m": 4}, "bus.type": "pcie", "bus": {"lanes": {"value": 4, "source": "x"}}, "run": {"wait": "poll"}})"));
+    const auto toml_values = read_config_file(write("c.toml", "[board]\nm = 4\n[bus]\ntype = \"pcie\"\nlanes = 4\n[run]\nwait = \"poll\"\n"));
+    SettingValues from_json, from_toml;
+    from_json.apply(json_values);
+    from_toml.apply(toml_values);
+    for (const Setting& s : settings_table()) {
+        EXPECT_EQ(s.get(from_json.settings()), s.get(from_toml.settings())) << s.name;
+    }
+    EXPECT_EQ(4u, from_toml.settings().pcie.lanes);
+    EXPECT_EQ("poll", from_toml.settings().run.wait);
+    const Setting& m = *find_setting("board.m");
+    EXPECT_EQ("config " + dir_ + "/c.toml:2", from_toml.origin(m).describe(m));
+}
+
+TEST_F(ConfigFile, RefusalsNameFileLineAndSetting) {
+    EXPECT_EQ(":2: board.m: expected 1 to 32, got 40", error_for("m.toml", "[board]\nm = 40\n"));
+    EXPECT_EQ(":3: bus.interupt_ns: unknown setting; did you mean 'bus.interrupt_ns'?",
+              error_for("u.toml", "[bus]\ntype = \"pci\"\ninterupt_ns = 5\n"));
+    EXPECT_EQ(": board.mm: unknown setting; did you mean 'board.m'?", error_for("u.json", R"({"board": {"mm": 4}})"));
+    EXPECT_EQ(": board.m: expected 1 to 32, got 40", error_for("m.json", R"({"board": {"m": 40}})"));
+    EXPECT_EQ(": run.wait: expected irq or poll, got 'sleep'", error_for("w.json", R"({"run.wait": "sleep"})"));
+    EXPECT_EQ(0u, error_for("s.toml", "[board\n").rfind(":1:", 0));
+    EXPECT_EQ(": board.m: given twice", error_for("twice.json", R"({"board.m": 4, "board": {"m": 5}})"));
+}
+
+}  // namespace
+}  // namespace cdvp
