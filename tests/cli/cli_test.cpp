@@ -73,7 +73,7 @@ TEST_F(Cli, WaveformsOpenInVcd2fst) {
     EXPECT_NE(save.find("[dumpfile] \"" + (fs::canonical(dir_) / "waves.vcd").string() + "\""), std::string::npos)
         << save;
     for (const char* group : {"-board: control", "-board: address generator", "-board: comparison unit",
-                              "-board: pair collector", "-bridge: DMA engine", "-interrupts"}) {
+                              "-board: pair collector", "-bridge: DMA engine", "-PCI bus", "-interrupts"}) {
         EXPECT_NE(save.find(group), std::string::npos) << group;
     }
     std::istringstream lines(save);
