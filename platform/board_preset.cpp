@@ -173,14 +173,14 @@ namespace {
 BoardPreset read_board_preset(const std::string& name) {
     const std::string path = board_preset_path(name);
     const PresetReader r(path, parse_preset(path, read_preset_text(path, names_a_path(name), name)));
-    r.only("", {"name", "description", "board", "bus", "host"});
+    r.only("", {"name", "description", "board", "device", "bus", "host"});
     BoardPreset p;
     p.path = path;
     p.name = r.text("", "name");
     p.description = r.text("", "description");
     const std::string bus = r.text("bus", "type");
     if (bus != "pci" && bus != "pcie") r.fail("bus.type: expected \"pci\" or \"pcie\", got \"" + excerpt(bus) + "\"");
-    for (const char* section : {"board", "bus", "host"}) {
+    for (const char* section : {"board", "device", "bus", "host"}) {
         refuse_undeclared_keys(r, section, bus);
         for (const Setting* s : preset_settings(section, bus)) {
             const bool is_text = s->type == SettingType::kText || s->type == SettingType::kChoice;
@@ -192,7 +192,7 @@ BoardPreset read_board_preset(const std::string& name) {
     values.apply(p.values);
     const Settings& settings = values.settings();
     p.board = settings.board;
-    p.block_rams = settings.block_rams;
+    p.block_rams = settings.device.block_rams;
     p.bus = values.bus();
     p.driver = settings.driver;
     p.host = settings.host;

@@ -38,13 +38,25 @@ struct RunSettings {
     double quantum_ns = 0.0;
     uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
     uint32_t repeat = 1;
+    std::string ignore_capacity = "no";  // no | yes
+};
+
+// The FPGA the board is built on, and what it holds (a preset's device
+// section). family names the synthesis results that cost the board
+// (models/resources); "none": no device, nothing is bounded.
+struct DeviceSettings {
+    std::string name = "none";
+    std::string family = "none";  // none | xc2v | xcup
+    uint64_t luts = 0;            // 0: unbounded
+    uint64_t flip_flops = 0;      // 0: unbounded
+    uint32_t block_rams = 0;      // 18-Kbit block RAMs; 0: unbounded
 };
 
 // Everything a run is configured by. Each member's initializer is its
 // setting's default (the table reads it from a default Settings).
 struct Settings {
     BoardConfig board;
-    uint32_t block_rams = 0;  // the FPGA's block RAMs; 0: unbounded (no device)
+    DeviceSettings device;
     std::string bus_type = "ideal";  // ideal | pci | pcie
     PciConfig pci;
     PcieConfig pcie;
@@ -72,7 +84,7 @@ struct Setting {
     double min = 0, max = 0;                // kReal
     std::vector<std::string> choices;       // kChoice
     std::string flag;        // dedicated flag of `cdvp run` without "--"; empty: none
-    std::string value_name;  // the flag's value in --help ("M")
+    std::string value_name;  // the flag's value in --help ("M"); empty: a switch that sets "yes"
     std::string help;
     std::string source;      // the source or assumption behind the default
     unsigned buses = kNoBus;

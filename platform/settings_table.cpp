@@ -85,6 +85,11 @@ Setting flag(Setting s, const char* name, const char* value_name) {
     s.value_name = value_name;
     return s;
 }
+// A dedicated switch of `cdvp run` (--flag alone) that sets a no|yes choice to yes.
+Setting switch_flag(Setting s, const char* name) {
+    s.flag = name;
+    return s;
+}
 // Every board preset gives it.
 Setting preset(Setting s) {
     s.in_preset = true;
@@ -149,8 +154,26 @@ std::vector<Setting> board_settings() {
                           "pair buffer depth in pairs before the host drains it",
                           "assumption: one 2 MiB ZBT SSRAM bank of 64-bit entries (the ADM-XRC-II has six)")),
              "pair-buffer", "P"),
-        preset(count("board.block_rams", "block RAMs", 0, 100000, member(&S::block_rams),
-                     "the FPGA's 18-Kbit block RAMs, which bound m for N boxes (0: no device, unbounded)",
+    };
+}
+
+std::vector<Setting> device_settings() {
+    using V = DeviceSettings;
+    return {
+        preset(text("device.name", member(&S::device, &V::name), "the FPGA the board is built on",
+                    "none without a preset; adm-xrc-ii.json: the XC2V6000")),
+        preset(choice("device.family", {"none", "xc2v", "xcup"}, member(&S::device, &V::family),
+                      "the FPGA family whose synthesis results cost the board (models/resources/synthesis.csv): "
+                      "xc2v (Virtex-II), xcup (UltraScale+); none: resources not modelled",
+                      "none without a preset")),
+        preset(count("device.luts", "LUTs", 0, 100'000'000, member(&S::device, &V::luts),
+                     "the FPGA's look-up tables (4-input on xc2v, 6-input on xcup); 0: unbounded",
+                     "none without a preset; Xilinx DS031: the XC2V6000 has 33,792 slices of two 4-input LUTs")),
+        preset(count("device.flip_flops", "flip-flops", 0, 100'000'000, member(&S::device, &V::flip_flops),
+                     "the FPGA's flip-flops; 0: unbounded",
+                     "none without a preset; Xilinx DS031: two a slice on the XC2V6000")),
+        preset(count("device.block_rams", "block RAMs", 0, 100000, member(&S::device, &V::block_rams),
+                     "the FPGA's 18-Kbit block RAMs, which bound m for N boxes (0: unbounded)",
                      "none without a preset; Xilinx DS031: the XC2V6000 has 144")),
     };
 }
@@ -280,6 +303,11 @@ std::vector<Setting> host_and_run_settings() {
                    "runs (the board's simulated times are deterministic and simulated once)",
                    "one run"),
              "repeat", "R"),
+        switch_flag(choice("run.ignore_capacity", {"no", "yes"}, member(&S::run, &RunSettings::ignore_capacity),
+                           "run a board that does not fit its device (device.*) anyway, to explore what a larger "
+                           "device would give",
+                           "no: a board that does not fit is refused naming the resource"),
+                    "ignore-capacity"),
     };
 }
 
@@ -288,7 +316,7 @@ std::vector<Setting> host_and_run_settings() {
 const std::vector<Setting>& settings_table() {
     static const std::vector<Setting> table = [] {
         std::vector<Setting> all = board_settings();
-        for (auto* group : {bus_settings, host_and_run_settings}) {
+        for (auto* group : {device_settings, bus_settings, host_and_run_settings}) {
             for (Setting& s : group()) all.push_back(std::move(s));
         }
         return all;

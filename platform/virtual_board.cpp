@@ -47,6 +47,7 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
         WaveList waves(trace_, "interrupts");
         waves.add(fpga_irq_, std::string(this->name()) + ".irq");
         waves.add(inta_, std::string(this->name()) + ".inta");
+        bus_.trace(waves);
         bridge_.trace(waves);
         board_.trace(waves);
         traced_ = waves.signals();

@@ -1,7 +1,9 @@
 // The host's PCI (or PCIe) link as a loosely timed TLM-2.0 interconnect.
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <string>
 
 #include <systemc>
 #include <tlm>
@@ -9,6 +11,7 @@
 #include <tlm_utils/simple_target_socket.h>
 
 #include "models/common/fault_plan.h"
+#include "models/common/wave_list.h"
 #include "models/pci/bus_timing.h"
 
 namespace cdvp {
@@ -36,6 +39,11 @@ public:
     void set_fault_plan(FaultPlan* plan) { faults_ = plan; }
     // Notified when the driver's interrupt handler runs.
     const sc_core::sc_event& interrupt_event() const { return interrupt_; }
+    // Adds the bus's waveforms to a trace file, before the first sc_start:
+    // the CPU's programmed I/O (accesses so far, the last one's address,
+    // direction and bytes) and the bytes the bridge moved as bus master, so
+    // that PIO transfers and DMA show beside the board's compute.
+    void trace(WaveList& waves) const;
 
 private:
     void cpu_transport(tlm::tlm_generic_payload& payload, sc_core::sc_time& delay);
@@ -46,6 +54,14 @@ private:
     std::shared_ptr<const BusTiming> timing_;
     sc_core::sc_event interrupt_;
     FaultPlan* faults_ = nullptr;
+    // Waveform values, kept current whether traced or not.
+    struct Waves {
+        uint32_t pio_accesses = 0;
+        uint32_t pio_address = 0;
+        bool pio_write = false;
+        uint32_t pio_bytes = 0;
+        uint32_t master_bytes = 0;
+    } waves_;
 };
 
 }  // namespace cdvp

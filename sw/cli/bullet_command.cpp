@@ -97,7 +97,7 @@ Setup make_setup(const BulletOptions& o, const po::variables_map& vm, uint32_t p
         setup.host_factor = preset.host.speed_factor;
         const uint64_t needed = setup.platform.board.block_rams(proxies);
         if (needed > preset.block_rams) {
-            throw InputError(preset.path + ": board.block_rams: " + std::to_string(preset.block_rams) +
+            throw InputError(preset.path + ": device.block_rams: " + std::to_string(preset.block_rams) +
                              " block RAMs are too few for --m " + std::to_string(m) + " at " +
                              std::to_string(proxies) + " proxies (the scene's): they need 6 x m x ceil(N/512) = " +
                              std::to_string(needed));

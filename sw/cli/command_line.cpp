@@ -9,6 +9,7 @@
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/number_option.h"
 #include "sw/cli/run_command.h"
+#include "sw/cli/run_options.h"
 
 namespace po = boost::program_options;
 
@@ -57,18 +58,7 @@ int run_command_line(const char* program, int argc, char** argv, const std::stri
         }
     }
     try {
-        const po::parsed_options parsed =
-            po::command_line_parser(argc, argv)
-                .options(options)
-                .style(po::command_line_style::default_style & ~po::command_line_style::allow_guessing)
-                .run();
-        for (const std::string& stray : po::collect_unrecognized(parsed.options, po::include_positional)) {
-            throw InputError("unexpected argument '" + excerpt(stray) + "'");
-        }
-        po::variables_map vm;
-        po::store(parsed, vm);
-        po::notify(vm);
-        return body(vm);
+        return body(parse_strictly(argc, argv, options));
     } catch (const po::error& e) {
         std::cerr << program << ": " << printable(e.what()) << " (see " << program << " --help)\n";
         return kExitBadInput;

@@ -3,11 +3,13 @@
 #include <limits.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
 #include "models/control_registers/control_registers.h"
+#include "platform/device_fit.h"
 #include "platform/fault_injection.h"
 #include "models/common/user_text.h"
 #include "sw/scene/scene.h"
@@ -117,21 +119,62 @@ void check_inject_frames(const std::vector<FaultSpec>& specs, std::optional<uint
     }
 }
 
+namespace {
+
+// The first device resource the board overflows, as the error names it:
+// the setting, its capacity and unit, and what the board needs.
+struct Overflow {
+    const char* setting;
+    double available;
+    double needed;
+    const char* unit;
+};
+
+Overflow overflow_of(const DeviceFit& fit) {
+    const Resources total = fit.resources.total();
+    if (fit.use.overflow == "LUTs") return {"device.luts", fit.device.luts, total.luts, "LUTs"};
+    if (fit.use.overflow == "flip-flops") return {"device.flip_flops", fit.device.flip_flops, total.flip_flops, "flip-flops"};
+    return {"device.block_rams", fit.device.block_rams, total.block_rams, "block RAMs"};
+}
+
+std::string whole(double value) { return std::to_string(static_cast<uint64_t>(std::ceil(value))); }
+
+void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects) {
+    const Settings& settings = values.settings();
+    if (settings.run.ignore_capacity == "yes") return;
+    const BoardConfig& board = settings.board;
+    const std::string m = values.value_and_origin(setting("board.m"));
+    const std::string at = m + " at " + objects_origin(o, values, max_objects);
+    const std::string explore = "; --ignore-capacity runs it anyway";
+    // The coordinate memories alone: a check that needs no synthesis family.
+    const uint32_t block_rams = settings.device.block_rams;
+    const uint64_t needed = board.block_rams(max_objects);
+    if (block_rams != 0 && needed > block_rams) {
+        const uint64_t largest = block_rams / (needed / board.m);  // block RAMs grow linearly with m
+        throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(block_rams) +
+                         " block RAMs are too few for " + at + ": they need 6 x m x ceil(N/512) = " +
+                         std::to_string(needed) +
+                         (largest > 0 ? " (largest m that fits: " + std::to_string(largest) + explore + ")"
+                                      : " (not even m=1 fits: use fewer objects or a larger device" + explore + ")"));
+    }
+    if (!has_device_family(settings)) return;
+    const DeviceFit fit = fit_on_device(settings, max_objects);
+    if (fit.use.fits()) return;
+    const Overflow over = overflow_of(fit);
+    throw InputError(values.where(setting(over.setting)) + ": " + whole(over.available) + " " + over.unit +
+                     " are too few for " + at + ": the board needs " + whole(over.needed) + " (" +
+                     std::to_string(2 * board.m - 1) + " float32 lanes, the memories, address generator, pair FIFO "
+                     "and control, from synthesis for " + settings.device.family + ")" +
+                     (fit.largest_m > 0 ? " (largest m that fits: " + std::to_string(fit.largest_m) + explore + ")"
+                                        : " (not even m=1 fits" + explore + ")"));
+}
+
+}  // namespace
+
 void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count) {
     check_model_memory(o, values, max_objects);
     check_simulated_time(o, values, max_objects, frame_count);
-    const BoardConfig& board = values.settings().board;
-    const uint32_t block_rams = values.settings().block_rams;
-    const uint64_t needed = board.block_rams(max_objects);
-    const uint64_t per_m = needed / board.m;  // block RAMs grow linearly with m
-    if (block_rams == 0 || needed <= block_rams) return;
-    const uint64_t largest = block_rams / per_m;
-    const std::string m = values.value_and_origin(setting("board.m"));
-    throw InputError(values.where(setting("board.block_rams")) + ": " + std::to_string(block_rams) +
-                     " block RAMs are too few for " + m + " at " + objects_origin(o, values, max_objects) +
-                     ": they need 6 x m x ceil(N/512) = " + std::to_string(needed) +
-                     (largest > 0 ? " (largest m that fits: " + std::to_string(largest) + ")"
-                                  : " (not even m=1 fits: use fewer objects or a larger device)"));
+    check_device_fits(o, values, max_objects);
 }
 
 }  // namespace cdvp

@@ -36,8 +36,11 @@ std::vector<FaultSpec> fault_specs(const std::vector<std::string>& texts, const 
 void check_inject_frames(const std::vector<FaultSpec>& specs, std::optional<uint64_t> last_frame,
                          const std::function<bool(uint64_t)>& has_frame, const std::string& frames_origin);
 
-// The scene must fit the board's block RAMs (board.block_rams 0: unbounded), this
-// machine's memory and SystemC's time. Throws InputError.
+// The scene must fit this machine's memory, SystemC's time and, unless
+// run.ignore_capacity, the device: its block RAMs (device.block_rams, 0:
+// unbounded) and, with a device family, the LUTs and flip-flops the
+// synthesis-backed resource model gives the board. Throws InputError naming
+// the resource and the largest m that fits.
 void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count);
 
 }  // namespace cdvp

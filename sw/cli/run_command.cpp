@@ -246,6 +246,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
     run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
+    if (has_device_family(setup.values.settings())) run.device_fit = fit_on_device(setup.values.settings(), run.capacity);
     run.bus = platform.bus_timing().describe();
     platform.set_trace_window(setup.trace_window.first, setup.trace_window.second);
     if (out.pairs) write_pairs_header(out.pairs->stream());

@@ -71,8 +71,7 @@ po::options_description run_options(RunOptions& o) {
 
 }  // namespace
 
-po::variables_map parse_run_options(int argc, char** argv, RunOptions& options) {
-    const po::options_description description = run_options(options);
+po::variables_map parse_strictly(int argc, char** argv, const po::options_description& description) {
     const po::parsed_options parsed =
         po::command_line_parser(argc, argv)
             .options(description)
@@ -85,6 +84,10 @@ po::variables_map parse_run_options(int argc, char** argv, RunOptions& options) 
     po::store(parsed, vm);
     po::notify(vm);
     return vm;
+}
+
+po::variables_map parse_run_options(int argc, char** argv, RunOptions& options) {
+    return parse_strictly(argc, argv, run_options(options));
 }
 
 std::string run_options_help() {

@@ -32,6 +32,10 @@ struct RunOptions {
 // in full (no prefix guessing) and there are no positional arguments.
 // Throws boost::program_options::error or InputError on bad input.
 boost::program_options::variables_map parse_run_options(int argc, char** argv, RunOptions& options);
+// The same rules for any command's options: full spellings, no positional
+// arguments (a stray one is refused as InputError), notified.
+boost::program_options::variables_map parse_strictly(int argc, char** argv,
+                                                     const boost::program_options::options_description& options);
 // The --help text.
 std::string run_options_help();
 

@@ -1,5 +1,6 @@
 #include "sw/cli/run_report.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -43,6 +44,37 @@ nlohmann::json settings_json(const SettingValues& values) {
     return settings;
 }
 
+// A resource used against what the device has (null: unbounded).
+nlohmann::json usage_json(double used, double available) {
+    if (std::isinf(available)) return {{"used", used}, {"available", nullptr}, {"utilisation", nullptr}};
+    return {{"used", used}, {"available", available}, {"utilisation", used / available}};
+}
+
+nlohmann::json piece_json(const Resources& r) {
+    return {{"luts", r.luts}, {"flip_flops", r.flip_flops}, {"carry_cells", r.carry_cells}, {"block_rams", r.block_rams}};
+}
+
+nlohmann::json resources_json(const DeviceFit& fit) {
+    const Resources total = fit.resources.total();
+    const BoardResources& r = fit.resources;
+    return {{"device", fit.device.name},
+            {"family", fit.device.family},
+            {"format", "float32"},
+            {"pair_fifo_memory", r.pair_fifo_memory},
+            {"luts", usage_json(total.luts, fit.device.luts)},
+            {"flip_flops", usage_json(total.flip_flops, fit.device.flip_flops)},
+            {"block_rams", usage_json(total.block_rams, fit.device.block_rams)},
+            {"carry_cells", total.carry_cells},
+            {"fits", fit.use.fits()},
+            {"largest_m", fit.largest_m},
+            {"pieces",
+             {{"lanes", piece_json(r.lanes)},
+              {"coordinate_memories", piece_json(r.coordinate_memories)},
+              {"address_generator", piece_json(r.address_generator)},
+              {"pair_collector", piece_json(r.pair_collector)},
+              {"control", piece_json(r.control)}}}};
+}
+
 nlohmann::json config_json(const RunConfig& run) {
     const BoardConfig& c = run.config;
     nlohmann::json config = {
@@ -74,6 +106,7 @@ nlohmann::json config_json(const RunConfig& run) {
         config["seed"] = run.settings->settings().scene.seed;
         config["settings"] = settings_json(*run.settings);
     }
+    if (run.device_fit) config["resources"] = resources_json(*run.device_fit);
     return config;
 }
 
@@ -244,6 +277,32 @@ void ReportWriter::end(const RunTotals& totals, double host_factor) {
     out_ << (any_frame_ ? "\n  ]" : "]") << ",\n  \"summary\": " << nested(summary, 1) << "\n}\n";
 }
 
+namespace {
+
+void print_resources(std::ostream& out, const DeviceFit& fit) {
+    const Resources total = fit.resources.total();
+    std::string text = "  on " + printable(fit.device.name) + " (synthesis for " + fit.device.family + "):";
+    const auto usage = [&](const char* name, double used, double available) {
+        char part[128];
+        if (std::isinf(available)) {
+            std::snprintf(part, sizeof part, " %.0f %s,", used, name);
+        } else {
+            std::snprintf(part, sizeof part, " %.0f of %.0f %s (%.0f%%),", used, available, name,
+                          100 * used / available);
+        }
+        text += part;
+    };
+    usage("LUTs", total.luts, fit.device.luts);
+    usage("flip-flops", total.flip_flops, fit.device.flip_flops);
+    usage("block RAMs", total.block_rams, fit.device.block_rams);
+    text += " pair FIFO in " + std::string(fit.resources.pair_fifo_memory == "block_ram" ? "block RAM" : "LUTs");
+    text += fit.use.fits() ? "; largest m that fits: " + std::to_string(fit.largest_m) + "\n"
+                           : "; does not fit (" + fit.use.overflow + ")\n";
+    out << text;
+}
+
+}  // namespace
+
 void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, double wall_seconds) {
     const BoardConfig& c = run.config;
     char line[512];
@@ -251,6 +310,7 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
     std::snprintf(line, sizeof line, ": m=%u (%u lanes), %.6g MHz, L=%u cycles, %u block RAMs, %s engine\n", c.m,
                   c.lanes(), c.clock_mhz, c.pipeline_latency(), run.block_rams, run.fidelity.c_str());
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
+    if (run.device_fit) print_resources(out, *run.device_fit);
     out << "  frame  objects     pairs  S(N,m)+L  compute_cycles  stall_cycles  compute_us  total_us\n";
     for (const FrameStats& f : totals.shown()) {
         std::snprintf(line, sizeof line, "%7llu %8llu %9llu %9llu %15llu %13llu %11.2f %9.2f\n",

@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <map>
 #include <ostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "models/board/board_config.h"
+#include "platform/device_fit.h"
 #include "platform/setting_values.h"
 #include "sw/driver/board_driver.h"
 #include "sw/timing/frame_samples.h"
@@ -50,6 +52,7 @@ struct RunConfig {
     uint32_t baseline_runs = 1;  // --repeat
     std::vector<std::string> inject;  // fault specs, as parsed
     const SettingValues* settings = nullptr;  // every setting in effect and where it came from
+    std::optional<DeviceFit> device_fit;      // with a device family: the board's resources on it
     std::vector<std::string> command_line;
 };
 

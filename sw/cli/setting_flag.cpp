@@ -7,6 +7,7 @@ namespace po = boost::program_options;
 namespace cdvp {
 
 std::string SettingFlag::name() const {
+    if (setting_.value_name.empty()) return "";
     const std::string value = to_text(setting_.default_value());
     if (setting_.type == SettingType::kChoice) return setting_.value_name + " (=" + value + ")";
     return setting_.value_name + " (" + setting_.range_text() + "; " + value + ")";
@@ -14,7 +15,7 @@ std::string SettingFlag::name() const {
 
 void SettingFlag::parse(boost::any& store, const std::vector<std::string>& tokens, bool /*utf8*/) const {
     po::validators::check_first_occurrence(store);  // "--m 2 --m 3" is refused
-    const std::string& text = tokens.empty() ? std::string() : tokens.front();
+    const std::string text = setting_.value_name.empty() ? "yes" : tokens.empty() ? std::string() : tokens.front();
     try {
         store = setting_.parse_text(text);
     } catch (const std::invalid_argument& e) {

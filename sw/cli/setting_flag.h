@@ -19,8 +19,9 @@ public:
     SettingFlag(const Setting& setting, std::vector<Assignment>* given) : setting_(setting), given_(given) {}
 
     std::string name() const override;
-    unsigned min_tokens() const override { return 1; }
-    unsigned max_tokens() const override { return 1; }
+    // A switch (a setting without a value name) takes no value.
+    unsigned min_tokens() const override { return setting_.value_name.empty() ? 0 : 1; }
+    unsigned max_tokens() const override { return setting_.value_name.empty() ? 0 : 1; }
     bool is_composing() const override { return false; }
     bool is_required() const override { return false; }
     void parse(boost::any& store, const std::vector<std::string>& tokens, bool utf8) const override;

@@ -155,6 +155,7 @@ void SweepTable::add_column(const std::string& column) {
     if (std::find(columns_.begin(), columns_.end(), column) != columns_.end()) return;
     // Timing columns go last, so the columns that must agree between runs
     // come first whatever order they are met in.
+    ++columns_version_;
     if (is_timing_column(column)) {
         columns_.push_back(column);
         return;
@@ -163,10 +164,15 @@ void SweepTable::add_column(const std::string& column) {
     columns_.insert(at, column);
 }
 
+void SweepTable::set_row(std::size_t index, Row row) {
+    rows_[index] = std::move(row);
+    lines_.erase(index);
+}
+
 void SweepTable::add(std::size_t index, const PointRow& row) {
     for (const std::string& column : row.columns) add_column(column);
     for (const auto& [column, value] : row.values) add_column(column);
-    rows_[index] = row.values;
+    set_row(index, row.values);
 }
 
 std::string SweepTable::csv() const {
@@ -174,11 +180,17 @@ std::string SweepTable::csv() const {
     for (std::size_t c = 0; c < columns_.size(); ++c) text += (c == 0 ? "" : ",") + csv_field(columns_[c]);
     text += '\n';
     for (const auto& [index, row] : rows_) {
-        for (std::size_t c = 0; c < columns_.size(); ++c) {
-            const auto value = row.find(columns_[c]);
-            text += (c == 0 ? "" : ",") + (value == row.end() ? std::string() : csv_field(value->second));
+        Line& line = lines_[index];
+        if (line.columns_version != columns_version_) {
+            line.text.clear();
+            for (std::size_t c = 0; c < columns_.size(); ++c) {
+                const auto value = row.find(columns_[c]);
+                line.text += (c == 0 ? "" : ",") + (value == row.end() ? std::string() : csv_field(value->second));
+            }
+            line.text += '\n';
+            line.columns_version = columns_version_;
         }
-        text += '\n';
+        text += line.text;
     }
     return text;
 }
@@ -205,7 +217,7 @@ void SweepTable::read_csv(const std::string& text, const std::string& label) {
         if (index.empty() || index.size() > 9 || index.find_first_not_of("0123456789") != std::string::npos) {
             throw InputError(where + ": expected a point index, got '" + excerpt(index) + "'");
         }
-        rows_[std::stoul(index)] = row;
+        set_row(std::stoul(index), row);
     }
 }
 

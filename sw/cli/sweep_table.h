@@ -66,9 +66,19 @@ public:
 
 private:
     void add_column(const std::string& column);
+    void set_row(std::size_t index, Row row);
 
     std::vector<std::string> columns_;
     std::map<std::size_t, Row> rows_;
+    // Each row's CSV line as last rendered, and the columns it was rendered
+    // for: a sweep commits its CSV after every point, and re-rendering only
+    // the new or re-columned rows keeps that linear in the points.
+    struct Line {
+        std::size_t columns_version = 0;
+        std::string text;
+    };
+    mutable std::map<std::size_t, Line> lines_;
+    std::size_t columns_version_ = 1;
 };
 
 // Splits RFC 4180 text into rows of fields (quoted fields may hold commas,

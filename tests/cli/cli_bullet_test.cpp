@@ -20,7 +20,7 @@ TEST_F(Bullet, HelpAndRefusals) {
     expect_refusal(run("bullet --scene stack --software board"), "cdvp bullet: --software: expected simple");
     expect_refusal(run("bullet --scene stack --fidelity exact"), "cdvp bullet: --fidelity: expected fast or cycle");
     expect_refusal(run("bullet --scene stack extra"), "cdvp bullet: unexpected argument 'extra'");
-    expect_refusal(run("bullet --scene boxes --board adm-xrc-ii --m 30"), "cdvp bullet: " + preset("adm-xrc-ii") + ": board.block_rams");
+    expect_refusal(run("bullet --scene boxes --board adm-xrc-ii --m 30"), "cdvp bullet: " + preset("adm-xrc-ii") + ": device.block_rams");
     expect_refusal(run("record --scene stack"), "cdvp record: --out: expected");
     expect_refusal(run("record --scene stack --out missing/t.csv"), "cdvp record: --out");
     EXPECT_EQ(files(), std::vector<std::string>{});

@@ -73,17 +73,19 @@ TEST_F(Cli, HugeTraceFieldAndPresetStringAreQuotedShort) {
 
 TEST_F(Cli, TooFewBlockRamsBlameThePresetKeyAndNameWhereMAndNCameFrom) {
     const Result flag_m = run("run --scene spheres --objects 500 --board adm-xrc-ii --m 30 --quiet");
-    expect_refused(flag_m, preset("adm-xrc-ii") + ": board.block_rams: 144 block RAMs are too few for --m 30 at 500 "
-                           "objects (--objects): they need 6 x m x ceil(N/512) = 180 (largest m that fits: 24)\n");
+    expect_refused(flag_m, preset("adm-xrc-ii") + ": device.block_rams: 144 block RAMs are too few for --m 30 at 500 "
+                           "objects (--objects): they need 6 x m x ceil(N/512) = 180 (largest m that fits: 24; "
+                           "--ignore-capacity runs it anyway)\n");
 
     std::string text = slurp(preset("adm-xrc-ii"));
     text.replace(text.find("\"value\": 144"), 12, "\"value\": 40");
     write("board.json", text);
     const Result default_m = run("run --trace " + trace("small.csv") + " --board board.json --quiet");
-    expect_refused(default_m, "board.json: board.block_rams: 40 block RAMs are too few for m=8 (the default of --m) "
+    expect_refused(default_m, "board.json: device.block_rams: 40 block RAMs are too few for m=8 (the default of --m) "
                               "at ");
     EXPECT_NE(default_m.err.find(" objects (the largest frame of --trace "), std::string::npos) << default_m.err;
-    EXPECT_NE(default_m.err.find("(largest m that fits: 6)"), std::string::npos) << default_m.err;
+    EXPECT_NE(default_m.err.find("(largest m that fits: 6; --ignore-capacity runs it anyway)"), std::string::npos)
+        << default_m.err;
 }
 
 TEST_F(Cli, FifoDepthCheckNamesWhereMCameFrom) {

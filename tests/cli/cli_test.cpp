@@ -73,7 +73,7 @@ TEST_F(Cli, WaveformsOpenInVcd2fst) {
     EXPECT_NE(save.find("[dumpfile] \"" + (fs::canonical(dir_) / "waves.vcd").string() + "\""), std::string::npos)
         << save;
     for (const char* group : {"-board: control", "-board: address generator", "-board: comparison unit",
-                              "-board: pair collector", "-bridge: DMA engine", "-interrupts"}) {
+                              "-board: pair collector", "-bridge: DMA engine", "-PCI bus", "-interrupts"}) {
         EXPECT_NE(save.find(group), std::string::npos) << group;
     }
     std::istringstream lines(save);
@@ -243,7 +243,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"RepeatedBaseline", nullptr, "--baseline sap,dbvt,sap", "--baseline: 'sap' given twice"},
         BadInput{"BadTransfer", nullptr, "--transfer usb", "--transfer: expected dma or pio"},
         BadInput{"BadWait", nullptr, "--wait sleep", "--wait: expected irq or poll"},
-        BadInput{"TooManyBlockRams", nullptr, "--board adm-xrc-ii --m 30", "(largest m that fits: 24)"},
+        BadInput{"TooManyBlockRams", nullptr, "--board adm-xrc-ii --m 30", "(largest m that fits: 24; --ignore-capacity"},
         BadInput{"UnwritableOutput", nullptr, "--report no/such/dir/r.json",
                  "--report: no/such/dir/r.json: cannot write: directory 'no/such/dir' does not exist"},
         // Numbers: one checked parser for every option; what the user typed is quoted.

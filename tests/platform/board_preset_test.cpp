@@ -61,7 +61,7 @@ TEST_F(PresetFile, EveryNumberOfEveryPresetIsRangeChecked) {
     int fields = 0;
     for (const std::string& name : board_preset_names()) {
         const json original = preset(name);
-        for (const char* section : {"board", "bus", "host"}) {
+        for (const char* section : {"board", "device", "bus", "host"}) {
             for (const auto& [key, field] : original[section].items()) {
                 if (!field.is_object()) continue;
                 ++fields;
@@ -76,7 +76,7 @@ TEST_F(PresetFile, EveryNumberOfEveryPresetIsRangeChecked) {
             }
         }
     }
-    EXPECT_EQ(27 + 27 + 21, fields) << "board 6, host 4, PCI bus 17, PCIe bus 11 fields";
+    EXPECT_EQ(29 + 29 + 23, fields) << "board 5, device 3, host 4, PCI bus 17, PCIe bus 11 fields";
 }
 
 TEST_F(PresetFile, CountsMustBeWholeNumbers) {

@@ -35,7 +35,7 @@ TEST(SettingsTable, EveryPresetKeyMapsToExactlyOneSettingOfItsBus) {
         std::ifstream in(boards_directory() + "/" + preset + ".json");
         const json root = json::parse(in);
         const std::string bus = root["bus"]["type"];
-        for (const char* section : {"board", "bus", "host"}) {
+        for (const char* section : {"board", "device", "bus", "host"}) {
             for (const auto& [key, value] : root[section].items()) {
                 const std::string name = std::string(section) + "." + key;
                 EXPECT_EQ(1, entries_named(name)) << preset << ": " << name;
@@ -47,7 +47,7 @@ TEST(SettingsTable, EveryPresetKeyMapsToExactlyOneSettingOfItsBus) {
             }
         }
     }
-    EXPECT_EQ(6 + 5 + 18 + 6 + 5 + 18 + 6 + 5 + 12, keys) << "board, host and bus keys of the three presets";
+    EXPECT_EQ(3 * (5 + 5 + 5) + 18 + 18 + 12, keys) << "board, device, host and bus keys of the three presets";
 }
 
 TEST(SettingsTable, EveryDedicatedFlagBindsExactlyOneSetting) {

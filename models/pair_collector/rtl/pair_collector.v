@@ -1,0 +1,113 @@
+// The pair FIFO: takes a cycle's lane hits, all or none (the board holds
+// the pipeline while the FIFO lacks room for all of a cycle's hits: the
+// model's rule, counted in pairs), and hands one pair a cycle to the pair
+// buffer in row-then-column order. A cycle with hits is stored as one entry,
+// {row, first, hit mask}; the read side takes the lowest set bit of the
+// head entry's mask each cycle (a priority encoder) and clears it, and
+// moves to the next entry when the mask is empty. One write and one read a
+// cycle, so the entries fit a simple dual-port memory whatever m is.
+module pair_collector #(
+    parameter M = 8,
+    parameter AW = 9,
+    parameter DEPTH = 512,   // pairs (and entries: an entry holds at least one)
+    parameter DISTRIBUTED = 0  // 1: entries in LUTs (distributed RAM), 0: in block RAM
+) (
+    input  wire            clk,
+    input  wire            clear,
+    input  wire [2*M-2:0]  hits,
+    input  wire [AW-1:0]   row,
+    input  wire [AW-1:0]   first,
+    input  wire            drain_ready,  // the pair buffer takes a pair
+    output wire            room,         // this cycle's hits fit
+    output reg             out_valid,
+    output reg  [2*AW-1:0] out_pair      // {row, column}
+);
+    localparam LANES = 2 * M - 1;
+    localparam EW = 2 * AW + LANES;  // entry: row, first, mask
+    localparam PW = $clog2(DEPTH);
+    localparam CW = $clog2(DEPTH + 1);
+    localparam LW = LANES > 1 ? $clog2(LANES) : 1;
+
+    reg [PW-1:0] write_at, read_at;
+    reg [CW-1:0] pairs;        // pairs held: the model's FIFO level
+    reg [CW-1:0] held;         // entries held
+    wire [EW-1:0] head;        // entries[read_at], read synchronously
+    reg [LANES-1:0] consumed;  // the head's hits already passed on
+
+    // Pairs in this cycle's hits.
+    reg [LW:0] taken;
+    integer k;
+    always @* begin
+        taken = 0;
+        for (k = 0; k < LANES; k = k + 1) taken = taken + hits[k];
+    end
+    assign room = pairs + taken <= DEPTH;
+    wire write = room && (|hits);
+    wire [EW-1:0] entry = {row, first, hits};
+
+    // The lowest hit of the head entry not yet passed on.
+    wire [LANES-1:0] left = held != 0 ? head[LANES-1:0] & ~consumed : 0;
+    reg [LW-1:0] lane;
+    integer l;
+    always @* begin
+        lane = 0;
+        for (l = LANES - 1; l >= 0; l = l - 1) if (left[l]) lane = l;
+    end
+    wire [LANES-1:0] bit_taken = {{(LANES-1){1'b0}}, 1'b1} << lane;
+    wire take = (|left) && drain_ready;
+    wire advance = take && (left & ~bit_taken) == 0;  // the head's last pair leaves
+    wire [PW-1:0] read_next = advance ? (read_at + 1 == DEPTH ? 0 : read_at + 1) : read_at;
+
+    pair_fifo_memory #(.W(EW), .DEPTH(DEPTH), .AW(PW), .DISTRIBUTED(DISTRIBUTED)) entries (
+        .clk(clk), .write(write), .write_at(write_at), .data(entry), .read_at(read_next), .q(head));
+
+    always @(posedge clk) begin
+        out_valid <= take;
+        if (take) out_pair <= {head[EW-1 -: AW], head[LANES +: AW] + lane};
+        if (clear) begin
+            write_at <= 0;
+            read_at <= 0;
+            pairs <= 0;
+            held <= 0;
+            consumed <= 0;
+        end else begin
+            if (write) write_at <= write_at + 1 == DEPTH ? 0 : write_at + 1;
+            read_at <= read_next;
+            pairs <= pairs + (write ? taken : 0) - take;
+            held <= held + write - advance;
+            consumed <= advance ? 0 : take ? consumed | bit_taken : consumed;
+        end
+    end
+endmodule
+
+// The entries: one write and one synchronous read a cycle (the entry
+// written in the same cycle passes through), in block RAM or in LUTs.
+module pair_fifo_memory #(
+    parameter W = 8,
+    parameter DEPTH = 16,
+    parameter AW = 4,
+    parameter DISTRIBUTED = 0
+) (
+    input  wire          clk,
+    input  wire          write,
+    input  wire [AW-1:0] write_at,
+    input  wire [W-1:0]  data,
+    input  wire [AW-1:0] read_at,
+    output reg  [W-1:0]  q
+);
+    generate
+        if (DISTRIBUTED) begin : g_luts
+            (* ram_style = "distributed" *) reg [W-1:0] cells [0:DEPTH-1];
+            always @(posedge clk) begin
+                if (write) cells[write_at] <= data;
+                q <= write && write_at == read_at ? data : cells[read_at];
+            end
+        end else begin : g_block_ram
+            (* ram_style = "block" *) reg [W-1:0] cells [0:DEPTH-1];
+            always @(posedge clk) begin
+                if (write) cells[write_at] <= data;
+                q <= write && write_at == read_at ? data : cells[read_at];
+            end
+        end
+    endgenerate
+endmodule

@@ -1,0 +1,183 @@
+#include "models/resources/resource_model.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+namespace cdvp {
+
+Resources& Resources::operator+=(const Resources& other) {
+    luts += other.luts;
+    flip_flops += other.flip_flops;
+    carry_cells += other.carry_cells;
+    block_rams += other.block_rams;
+    multipliers += other.multipliers;
+    return *this;
+}
+
+Resources operator*(double times, const Resources& r) {
+    return {times * r.luts, times * r.flip_flops, times * r.carry_cells, times * r.block_rams,
+            times * r.multipliers};
+}
+
+namespace {
+
+constexpr const char* kHeader =
+    "family,piece,format,m,address_bits,fifo_depth,luts,lutram_luts,flip_flops,carry_cells,block_rams_18k,"
+    "multipliers";
+constexpr std::size_t kColumns = 12;
+
+std::vector<std::string> split(const std::string& line) {
+    std::vector<std::string> fields;
+    std::istringstream in(line);
+    for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+    if (!line.empty() && line.back() == ',') fields.emplace_back();
+    return fields;
+}
+
+// A whole, non-negative count; "-" where a parameter does not apply (0).
+double count(const std::string& text, const std::string& where, const char* column) {
+    if (text == "-") return 0;
+    char* end = nullptr;
+    const unsigned long long value = std::strtoull(text.c_str(), &end, 10);
+    if (text.empty() || text[0] == '-' || *end != '\0') {
+        throw std::invalid_argument(where + ": " + column + ": expected a whole number or '-', got '" + text + "'");
+    }
+    return static_cast<double>(value);
+}
+
+Resources lerp(const Resources& a, const Resources& b, double t) { return (1 - t) * a + t * b; }
+
+}  // namespace
+
+SynthesisTable SynthesisTable::parse(const std::string& csv, const std::string& origin) {
+    SynthesisTable table;
+    std::istringstream in(csv);
+    std::string line;
+    std::size_t number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        const std::string where = origin + ":" + std::to_string(number);
+        if (number == 1) {
+            if (line != kHeader) throw std::invalid_argument(where + ": expected the header " + kHeader);
+            continue;
+        }
+        if (line.empty()) continue;
+        const std::vector<std::string> f = split(line);
+        if (f.size() != kColumns) {
+            throw std::invalid_argument(where + ": expected " + std::to_string(kColumns) + " fields, got " +
+                                        std::to_string(f.size()));
+        }
+        Row row;
+        row.family = f[0];
+        row.piece = f[1];
+        row.format = f[2];
+        row.m = static_cast<uint32_t>(count(f[3], where, "m"));
+        row.resources.luts = count(f[6], where, "luts") + count(f[7], where, "lutram_luts");
+        row.resources.flip_flops = count(f[8], where, "flip_flops");
+        row.resources.carry_cells = count(f[9], where, "carry_cells");
+        row.resources.block_rams = count(f[10], where, "block_rams_18k");
+        row.resources.multipliers = count(f[11], where, "multipliers");
+        table.rows_.push_back(row);
+    }
+    if (number == 0) throw std::invalid_argument(origin + ": empty; expected the header " + kHeader);
+    return table;
+}
+
+const SynthesisTable::Row* SynthesisTable::find(const std::string& family, const std::string& piece,
+                                                const std::string& format) const {
+    for (const Row& row : rows_) {
+        if (row.family == family && row.piece == piece && row.format == format) return &row;
+    }
+    return nullptr;
+}
+
+Resources SynthesisTable::lane(const std::string& family, const std::string& format) const {
+    const Row* row = find(family, "compare_lane", format);
+    if (row == nullptr) {
+        throw std::invalid_argument("no synthesis of a " + format + " comparison lane for the " + family + " family");
+    }
+    return row->resources;
+}
+
+Resources SynthesisTable::control(const std::string& family) const {
+    const Row* row = find(family, "board_control", "-");
+    if (row == nullptr) throw std::invalid_argument("no synthesis of the controller for the " + family + " family");
+    return row->resources;
+}
+
+Resources SynthesisTable::by_m(const std::string& family, const std::string& piece, const std::string& format,
+                               uint32_t m) const {
+    const Row* below = nullptr;
+    const Row* above = nullptr;
+    for (const Row& row : rows_) {
+        if (row.family != family || row.piece != piece || row.format != format) continue;
+        if (row.m <= m && (below == nullptr || row.m > below->m)) below = &row;
+        if (row.m >= m && (above == nullptr || row.m < above->m)) above = &row;
+    }
+    if (below == nullptr || above == nullptr) {
+        throw std::invalid_argument("no synthesis of the " + piece + (format == "-" ? "" : " (" + format + ")") +
+                                    " around m = " + std::to_string(m) + " for the " + family + " family");
+    }
+    if (below == above) return below->resources;
+    return lerp(below->resources, above->resources, double(m - below->m) / double(above->m - below->m));
+}
+
+Resources SynthesisTable::address_generator(const std::string& family, uint32_t m) const {
+    return by_m(family, "address_generator", "-", m);
+}
+
+Resources SynthesisTable::pair_collector(const std::string& family, uint32_t m, const std::string& memory) const {
+    return by_m(family, "pair_collector", memory, m);
+}
+
+std::vector<std::string> SynthesisTable::families() const {
+    std::vector<std::string> names;
+    for (const Row& row : rows_) {
+        if (std::find(names.begin(), names.end(), row.family) == names.end()) names.push_back(row.family);
+    }
+    return names;
+}
+
+std::vector<std::string> SynthesisTable::formats(const std::string& family) const {
+    std::vector<std::string> names;
+    for (const Row& row : rows_) {
+        if (row.family == family && row.piece == "compare_lane") names.push_back(row.format);
+    }
+    return names;
+}
+
+BoardResources board_resources(const SynthesisTable& table, const DeviceCapacity& device, const std::string& format,
+                               uint32_t m, double memory_block_rams) {
+    const std::string& family = device.family;
+    BoardResources r;
+    r.lanes = double(2 * m - 1) * table.lane(family, format);
+    r.coordinate_memories.block_rams = memory_block_rams;
+    r.address_generator = table.address_generator(family, m);
+    r.pair_collector = table.pair_collector(family, m, "block_ram");
+    r.pair_fifo_memory = "block_ram";
+    if (memory_block_rams + r.pair_collector.block_rams > device.block_rams) {
+        r.pair_collector = table.pair_collector(family, m, "distributed");
+        r.pair_fifo_memory = "distributed";
+    }
+    r.control = table.control(family);
+    return r;
+}
+
+Utilisation utilisation(const Resources& used, const DeviceCapacity& device) {
+    Utilisation u;
+    u.luts = used.luts / device.luts;
+    u.flip_flops = used.flip_flops / device.flip_flops;
+    u.block_rams = used.block_rams / device.block_rams;
+    if (u.luts > 1) {
+        u.overflow = "LUTs";
+    } else if (u.flip_flops > 1) {
+        u.overflow = "flip-flops";
+    } else if (u.block_rams > 1) {
+        u.overflow = "block RAMs";
+    }
+    return u;
+}
+
+}  // namespace cdvp

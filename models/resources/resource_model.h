@@ -1,0 +1,103 @@
+// What a board configuration costs on an FPGA, from real synthesis: the
+// pieces that decide the cost (comparison lane per number format, address
+// generator and pair FIFO per m, controller) were synthesised with Yosys
+// (scripts/synthesize.sh; rows in synthesis.csv, compiled into cdvp), and a
+// board adds them up the way it is built:
+//   lanes x lane + coordinate memories + address generator + pair FIFO + control.
+// The coordinate memories are block RAMs only (6 x m x ceil(N / 512)); the
+// pair buffer lives in off-chip SSRAM and costs no FPGA resource.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cdvp {
+
+// One piece's or one board's resources. LUTs count logic LUTs and the LUTs
+// used as distributed RAM; block RAMs are 18 Kbit ones (a 36 Kbit block
+// counts two).
+struct Resources {
+    double luts = 0;
+    double flip_flops = 0;
+    double carry_cells = 0;
+    double block_rams = 0;
+    double multipliers = 0;
+
+    Resources& operator+=(const Resources& other);
+    friend Resources operator+(Resources a, const Resources& b) { return a += b; }
+    friend Resources operator*(double times, const Resources& r);
+};
+
+// The synthesis table: rows keyed by family (xc2v: Virtex-II; xcup: UltraScale+), piece and its
+// parameters. Pieces synthesised at some m only are interpolated linearly
+// in m between the two nearest rows (their cost is close to linear in the
+// number of lanes between those points; the table records every row).
+class SynthesisTable {
+public:
+    // Parses the CSV that scripts/synthesize.sh prints; 'origin' names it in
+    // errors. Throws std::invalid_argument "ORIGIN:LINE: ..." on a bad row.
+    static SynthesisTable parse(const std::string& csv, const std::string& origin);
+    // The table compiled into cdvp (models/resources/synthesis.csv).
+    static const SynthesisTable& stored();
+
+    // Throws std::invalid_argument naming what is missing.
+    Resources lane(const std::string& family, const std::string& format) const;
+    Resources address_generator(const std::string& family, uint32_t m) const;
+    // memory: where the FIFO's entries live, "block_ram" or "distributed".
+    Resources pair_collector(const std::string& family, uint32_t m, const std::string& memory) const;
+    Resources control(const std::string& family) const;
+    std::vector<std::string> families() const;
+    std::vector<std::string> formats(const std::string& family) const;
+
+private:
+    struct Row {
+        std::string family, piece, format;
+        uint32_t m = 0;  // 0: not a parameter of the piece
+        Resources resources;
+    };
+    const Row* find(const std::string& family, const std::string& piece, const std::string& format) const;
+    Resources by_m(const std::string& family, const std::string& piece, const std::string& format,
+                   uint32_t m) const;
+    std::vector<Row> rows_;
+};
+
+// A device's capacities, with where they come from.
+struct DeviceCapacity {
+    std::string name;    // e.g. XC2V6000
+    std::string family;  // the synthesis family: xc2v or xcup
+    double luts = 0;
+    double flip_flops = 0;
+    double block_rams = 0;  // 18 Kbit
+    std::string source;
+};
+
+// A board's resources by piece.
+struct BoardResources {
+    Resources lanes;  // all 2m-1 of them
+    Resources coordinate_memories;
+    Resources address_generator;
+    Resources pair_collector;
+    std::string pair_fifo_memory;  // "block_ram" or "distributed"
+    Resources control;
+    Resources total() const { return lanes + coordinate_memories + address_generator + pair_collector + control; }
+};
+
+// 'memory_block_rams': the coordinate memories' block RAMs
+// (BoardConfig::block_rams(capacity)). The pair FIFO goes to block RAM when
+// the device has block RAMs left beside the coordinate memories, else to
+// distributed RAM (LUTs), as a designer would place it.
+BoardResources board_resources(const SynthesisTable& table, const DeviceCapacity& device, const std::string& format,
+                               uint32_t m, double memory_block_rams);
+
+// How a board's resources sit on a device: utilisation of each resource
+// (used / available) and the first one that overflows, if any.
+struct Utilisation {
+    double luts = 0, flip_flops = 0, block_rams = 0;
+    // "" when everything fits, else "LUTs", "flip-flops" or "block RAMs".
+    std::string overflow;
+    bool fits() const { return overflow.empty(); }
+};
+Utilisation utilisation(const Resources& used, const DeviceCapacity& device);
+
+}  // namespace cdvp

@@ -1,0 +1,38 @@
+#include "platform/device_fit.h"
+
+#include <limits>
+
+namespace cdvp {
+
+namespace {
+
+constexpr const char* kFormat = "float32";  // the board's comparators
+
+double capacity_or_unbounded(uint64_t value) {
+    return value == 0 ? std::numeric_limits<double>::infinity() : static_cast<double>(value);
+}
+
+}  // namespace
+
+bool has_device_family(const Settings& settings) { return settings.device.family != "none"; }
+
+DeviceFit fit_on_device(const Settings& settings, uint64_t capacity) {
+    const DeviceSettings& d = settings.device;
+    DeviceFit fit;
+    fit.device = {d.name, d.family, capacity_or_unbounded(d.luts), capacity_or_unbounded(d.flip_flops),
+                  capacity_or_unbounded(d.block_rams), ""};
+    const SynthesisTable& table = SynthesisTable::stored();
+    const auto cost = [&](uint32_t m) {
+        BoardConfig board = settings.board;
+        board.m = m;
+        return board_resources(table, fit.device, kFormat, m, static_cast<double>(board.block_rams(capacity)));
+    };
+    fit.resources = cost(settings.board.m);
+    fit.use = utilisation(fit.resources.total(), fit.device);
+    for (uint32_t m = 1; m <= BoardConfig::kMaxM; ++m) {
+        if (utilisation(cost(m).total(), fit.device).fits()) fit.largest_m = m;
+    }
+    return fit;
+}
+
+}  // namespace cdvp

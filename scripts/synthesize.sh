@@ -1,0 +1,127 @@
+#!/usr/bin/env bash
+# Synthesises the board's RTL pieces with Yosys and prints one CSV row per
+# piece, family and parameter set: the data behind cdvp's resource model
+# (models/resources/synthesis.csv).
+#
+#   scripts/synthesize.sh                  every row, in parallel (GNU parallel), CSV on stdout
+#   scripts/synthesize.sh --row FAMILY PIECE FORMAT M
+#                                          one row (e.g. xc2v compare_lane float32 -,
+#                                          xc2v pair_collector distributed 8)
+#   scripts/synthesize.sh --check FAMILY PIECE FORMAT M
+#                                          re-synthesises one row and compares it with the stored one
+#
+# Needs yosys (Debian: yosys 0.23) and, for the full table, GNU parallel.
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+stored="$root/models/resources/synthesis.csv"
+header="family,piece,format,m,address_bits,fifo_depth,luts,lutram_luts,flip_flops,carry_cells,block_rams_18k,multipliers"
+address_bits=16   # up to 65,536 boxes: the board's largest scene
+fifo_depth=512    # the pair FIFO's default depth (models/pair_collector)
+families="xc2v xcup"
+ms="1 2 3 4 6 8 12 16 24 32"
+
+die() { echo "synthesize.sh: $*" >&2; exit 2; }
+
+# Yosys's cell statistics (text) -> the CSV's resource columns. Distributed
+# RAM and shift registers count the LUTs they occupy: on Virtex-II a 4-input
+# LUT holds 16 bits and a dual-port RAM twice its single-port LUTs (Xilinx
+# UG002); on UltraScale+ a 6-input LUT holds 64 bits (UG574).
+count_cells() {
+    awk -v family="$1" '
+        BEGIN {
+            bits = family == "xc2v" ? 16 : 64
+            split("RAM16X1S:16:1 RAM32X1S:32:1 RAM64X1S:64:1 RAM128X1S:128:1 RAM256X1S:256:1 " \
+                  "RAM16X1D:16:2 RAM32X1D:32:2 RAM64X1D:64:2 RAM128X1D:128:2 RAM32M:64:4 RAM64M:64:4 " \
+                  "RAM32M16:64:8 RAM64M8:64:8", kinds, " ")
+            for (i in kinds) {
+                split(kinds[i], f, ":")
+                per_cell[f[1]] = f[3] * (f[2] > bits ? f[2] / bits : 1)
+            }
+        }
+        $1 ~ /^LUT[1-6]$/                     { luts += $2 }
+        $1 in per_cell                        { lutram += per_cell[$1] * $2 }
+        $1 ~ /^SRL16E?$|^SRLC16E$|^SRLC32E$/  { lutram += $2 }
+        $1 ~ /^FD/                            { ffs += $2 }
+        $1 ~ /^MUXCY$|^XORCY$|^CARRY4$|^CARRY8$/ { carry += $2 }
+        $1 ~ /^RAMB16/ || $1 ~ /^RAMB18/      { bram += $2 }
+        $1 ~ /^RAMB36/                        { bram += 2 * $2 }
+        $1 ~ /^MULT18X18/ || $1 ~ /^DSP48/    { mult += $2 }
+        END { printf "%d,%d,%d,%d,%d,%d\n", luts, lutram, ffs, carry, bram, mult }'
+}
+
+# One row: FAMILY PIECE FORMAT M ("-" where a parameter does not apply).
+row() {
+    local family=$1 piece=$2 format=$3 m=$4 sources params
+    case $piece in
+        compare_lane)
+            sources="$root/models/comparison_unit/rtl/float_le.v $root/models/comparison_unit/rtl/compare_lane.v"
+            case $format in
+                float32) params="-set FLOAT 1 -set WIDTH 32" ;;
+                fixed*) params="-set FLOAT 0 -set WIDTH ${format#fixed}" ;;
+                *) die "unknown format '$format'" ;;
+            esac ;;
+        address_generator)
+            sources="$root/models/address_generator/rtl/address_generator.v"
+            params="-set M $m -set AW $address_bits" ;;
+        pair_collector)
+            sources="$root/models/pair_collector/rtl/pair_collector.v"
+            case $format in
+                block_ram) params="-set DISTRIBUTED 0" ;;
+                distributed) params="-set DISTRIBUTED 1" ;;
+                *) die "the pair collector's format is its memory: block_ram or distributed, not '$format'" ;;
+            esac
+            params="$params -set M $m -set AW $address_bits -set DEPTH $fifo_depth" ;;
+        board_control)
+            sources="$root/models/control_registers/rtl/board_control.v"
+            params="" ;;
+        *) die "unknown piece '$piece'" ;;
+    esac
+    local log
+    log=$(mktemp)
+    trap 'rm -f "$log"' RETURN
+    local chparam=""
+    [[ -n $params ]] && chparam="chparam $params $piece;"
+    yosys -q -p "read_verilog -sv $sources; $chparam synth_xilinx -family $family -top $piece -flatten -noiopad; tee -q -o $log stat" \
+        >/dev/null 2>&1 || die "yosys failed on $piece ($family, $format, m=$m)"
+    local depth=-
+    [[ $piece == pair_collector ]] && depth=$fifo_depth
+    local bits=-
+    [[ $piece == address_generator || $piece == pair_collector ]] && bits=$address_bits
+    echo "$family,$piece,$format,$m,$bits,$depth,$(count_cells "$family" <"$log")"
+}
+
+all_rows() {
+    for family in $families; do
+        echo "$family board_control - -"
+        echo "$family compare_lane float32 -"
+        for k in $(seq 8 32); do echo "$family compare_lane fixed$k -"; done
+        for m in $ms; do
+            echo "$family address_generator - $m"
+            echo "$family pair_collector block_ram $m"
+            echo "$family pair_collector distributed $m"
+        done
+    done
+}
+
+case "${1:-}" in
+    --row) shift; [[ $# -eq 4 ]] || die "--row needs FAMILY PIECE FORMAT M"; row "$@" ;;
+    --check)
+        shift; [[ $# -eq 4 ]] || die "--check needs FAMILY PIECE FORMAT M"
+        fresh=$(row "$@")
+        key=$(cut -d, -f1-4 <<<"$fresh")
+        kept=$(grep -F "$key," "$stored" | head -n 1) || die "$stored: no row for $key"
+        if [[ $fresh != "$kept" ]]; then
+            echo "synthesize.sh: $key differs from $stored" >&2
+            echo "  stored:      $kept" >&2
+            echo "  synthesised: $fresh" >&2
+            exit 1
+        fi
+        echo "$fresh" ;;
+    "")
+        export -f row count_cells die
+        export root address_bits fifo_depth
+        echo "$header"
+        all_rows | parallel --keep-order --jobs "${SYNTH_JOBS:-100%}" --colsep ' ' row {1} {2} {3} {4} ;;
+    *) die "unknown option '$1' (see the comment at the top)" ;;
+esac
