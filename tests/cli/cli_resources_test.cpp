@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/device_fit.h"
+#include "models/resources/resource_model.h"
 #include "tests/cli/cli_support.h"
 
 namespace cdvp::test {
@@ -42,26 +42,23 @@ TEST_F(CliResources, ThePapersBoardAt500ObjectsFillsItsBlockRamsAtM24) {
 }
 
 TEST_F(CliResources, ABoardOverItsLutsIsRefusedNamingTheResourceAndTheLargestM) {
-    const std::string args = spheres(200) + "--m 32 -c device.block_rams=1000 -c device.luts=20000";
-    Settings settings;
-    settings.board.m = 32;
-    settings.device = {"XC2V6000-4", "xc2v", 20000, 67584, 1000};
-    const DeviceFit fit = fit_on_device(settings, 200);
-    ASSERT_FALSE(fit.use.fits());
-    ASSERT_GT(fit.largest_m, 0u);
-    ASSERT_LT(fit.largest_m, 32u);
-    const Result r = run(args);
+    const std::string device = " -c device.block_rams=1000 -c device.luts=20000";
+    // What the model says of m = 32 on this device, run anyway.
+    ASSERT_EQ(run(spheres(200) + "--m 32 --ignore-capacity --report r.json" + device).status, 0);
+    const json explored = resources();
+    EXPECT_FALSE(explored["fits"].get<bool>());
+    EXPECT_GT(explored["luts"]["used"].get<double>(), 20000);
+    const int largest = explored["largest_m"];
+    ASSERT_GT(largest, 0);
+    ASSERT_LT(largest, 32);
+    const Result r = run(spheres(200) + "--m 32" + device);
     expect_refusal(r, "cdvp run: -c device.luts: 20000 LUTs are too few for --m 32 at 200 objects (--objects)");
-    EXPECT_NE(r.err.find("(largest m that fits: " + std::to_string(fit.largest_m) + "; --ignore-capacity runs it"),
+    EXPECT_NE(r.err.find("(largest m that fits: " + std::to_string(largest) + "; --ignore-capacity runs it"),
               std::string::npos)
         << r.err;
     // The largest m that fits does fit, and one more does not.
-    EXPECT_EQ(run(spheres(200) + "--m " + std::to_string(fit.largest_m) +
-                  " -c device.block_rams=1000 -c device.luts=20000").status,
-              0);
-    EXPECT_EQ(run(spheres(200) + "--m " + std::to_string(fit.largest_m + 1) +
-                  " -c device.block_rams=1000 -c device.luts=20000").status,
-              2);
+    EXPECT_EQ(run(spheres(200) + "--m " + std::to_string(largest) + device).status, 0);
+    EXPECT_EQ(run(spheres(200) + "--m " + std::to_string(largest + 1) + device).status, 2);
 }
 
 TEST_F(CliResources, BlockRamsTooFewAreRefusedAndIgnoreCapacityRunsAnyway) {
