@@ -57,21 +57,17 @@ int run_command_line(const char* program, int argc, char** argv, const std::stri
             return print_to_stdout(program, help.str());
         }
     }
-    try {
-        return body(parse_strictly(argc, argv, options));
-    } catch (const po::error& e) {
-        std::cerr << program << ": " << printable(e.what()) << " (see " << program << " --help)\n";
-        return kExitBadInput;
-    } catch (const InputError& e) {
-        std::cerr << program << ": " << printable(e.what()) << '\n';
-        return kExitBadInput;
-    } catch (const BoardFrameFault& e) {
-        std::cerr << program << ": the simulated system faulted: " << printable(e.what()) << '\n';
-        return kExitDeviceFault;
-    } catch (const std::exception& e) {
-        std::cerr << program << ": simulation failed: " << printable(e.what()) << '\n';
-        return kExitInternal;
-    }
+    return exit_status_of(program, "simulation failed", [&] {
+        try {
+            return body(parse_strictly(argc, argv, options));
+        } catch (const po::error& e) {
+            std::cerr << program << ": " << printable(e.what()) << " (see " << program << " --help)\n";
+            return kExitBadInput;
+        } catch (const BoardFrameFault& e) {
+            std::cerr << program << ": the simulated system faulted: " << printable(e.what()) << '\n';
+            return kExitDeviceFault;
+        }
+    });
 }
 
 }  // namespace cdvp

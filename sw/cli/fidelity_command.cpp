@@ -259,15 +259,7 @@ int fidelity_levels(int argc, char** argv) {
 }  // namespace
 
 int fidelity_command(int argc, char** argv) {
-    try {
-        return fidelity_levels(argc, argv);
-    } catch (const InputError& e) {
-        std::cerr << "cdvp fidelity: " << printable(e.what()) << '\n';
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "cdvp fidelity: failed: " << printable(e.what()) << '\n';
-        return kExitInternal;
-    }
+    return exit_status_of("cdvp fidelity", "failed", [&] { return fidelity_levels(argc, argv); });
 }
 
 }  // namespace cdvp

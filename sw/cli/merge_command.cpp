@@ -106,15 +106,7 @@ int merge_shards(int argc, char** argv) {
 }  // namespace
 
 int merge_command(int argc, char** argv) {
-    try {
-        return merge_shards(argc, argv);
-    } catch (const InputError& e) {
-        std::cerr << "cdvp merge: " << printable(e.what()) << '\n';
-        return kExitBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "cdvp merge: failed: " << printable(e.what()) << '\n';
-        return kExitInternal;
-    }
+    return exit_status_of("cdvp merge", "failed", [&] { return merge_shards(argc, argv); });
 }
 
 }  // namespace cdvp

@@ -320,6 +320,18 @@ std::vector<std::string> command_line(int argc, char** argv) {
 
 }  // namespace
 
+int exit_status_of(const std::string& program, const char* failure, const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const InputError& e) {
+        std::cerr << program << ": " << printable(e.what()) << '\n';
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << program << ": " << failure << ": " << printable(e.what()) << '\n';
+        return kExitInternal;
+    }
+}
+
 int print_to_stdout(const std::string& program, const std::string& text) {
     if (standard_descriptor_was_closed(STDOUT_FILENO)) {
         std::cerr << program << ": standard output: closed when cdvp started; expected it open\n";
@@ -332,13 +344,10 @@ int print_to_stdout(const std::string& program, const std::string& text) {
     return kExitBadInput;
 }
 
-int run_command(int argc, char** argv) {
-    // After "--" every argument is positional, so a "--help" there is a stray word.
-    for (int k = 1; k < argc && std::strcmp(argv[k], "--") != 0; ++k) {
-        if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
-            return print_to_stdout("cdvp run", run_options_help() + '\n');
-        }
-    }
+namespace {
+
+// The run, with option errors pointing at --help.
+int run_checked(int argc, char** argv) {
     try {
         RunOptions o;
         const po::variables_map vm = parse_run_options(argc, argv, o);
@@ -374,17 +383,23 @@ int run_command(int argc, char** argv) {
             e.set_original_token(excerpt(name));
         }
         std::cerr << "cdvp run: " << printable(e.what()) << " (see cdvp run --help)\n";
-        return 2;
+        return kExitBadInput;
     } catch (const po::error& e) {
         std::cerr << "cdvp run: " << printable(e.what()) << " (see cdvp run --help)\n";
-        return 2;
-    } catch (const InputError& e) {
-        std::cerr << "cdvp run: " << printable(e.what()) << '\n';
-        return 2;
-    } catch (const std::exception& e) {
-        std::cerr << "cdvp run: simulation failed: " << printable(e.what()) << '\n';
-        return 1;
+        return kExitBadInput;
     }
+}
+
+}  // namespace
+
+int run_command(int argc, char** argv) {
+    // After "--" every argument is positional, so a "--help" there is a stray word.
+    for (int k = 1; k < argc && std::strcmp(argv[k], "--") != 0; ++k) {
+        if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
+            return print_to_stdout("cdvp run", run_options_help() + '\n');
+        }
+    }
+    return exit_status_of("cdvp run", "simulation failed", [&] { return run_checked(argc, argv); });
 }
 
 }  // namespace cdvp

@@ -1,6 +1,7 @@
 // `cdvp run`: simulate frames on the virtual board.
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace cdvp {
@@ -13,6 +14,12 @@ constexpr int kExitDeviceFault = 3;  // the simulated system faulted (bus, DMA, 
 
 // Returns the process exit status (above).
 int run_command(int argc, char** argv);
+
+// Runs a command's body and maps what escapes it to the exit status: an
+// InputError is bad input (kExitBadInput, "PROGRAM: message"), any other
+// exception an internal failure (kExitInternal, "PROGRAM: FAILURE: message");
+// each one line on stderr.
+int exit_status_of(const std::string& program, const char* failure, const std::function<int()>& body);
 
 // Prints 'text' (help, version) on standard output: kExitDone, or
 // kExitBadInput with one line on stderr when it cannot be written.

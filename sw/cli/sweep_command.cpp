@@ -294,18 +294,10 @@ int run_sweep(const SweepOptions& o) {
 }  // namespace
 
 int sweep_command(int argc, char** argv) {
-    int status = kExitInternal;
-    try {
+    const int status = exit_status_of("cdvp sweep", "failed", [&] {
         const std::optional<SweepOptions> options = parse_sweep_options(argc, argv);
-        if (!options) return print_to_stdout("cdvp sweep", sweep_help());
-        status = run_sweep(*options);
-    } catch (const InputError& e) {
-        std::cerr << "cdvp sweep: " << printable(e.what()) << '\n';
-        status = kExitBadInput;
-    } catch (const std::exception& e) {
-        std::cerr << "cdvp sweep: failed: " << printable(e.what()) << '\n';
-        status = kExitInternal;
-    }
+        return options ? run_sweep(*options) : print_to_stdout("cdvp sweep", sweep_help());
+    });
     if (const int signal_number = g_stop_signal; signal_number != 0) {
         // Every temporary is gone (the scratch files with the sweep); end as
         // the signal would have ended the sweep.
