@@ -59,15 +59,22 @@ void build_pyramid(BulletWorld& world, uint32_t objects) {
     projectile->setLinearVelocity(btVector3(0, 2, -25));
 }
 
+// Body k of a scene dropped in columns: kColumnSide x kColumnSide a layer,
+// layers 'spacing' apart from 'floor' up, each placed with a small jitter.
+btVector3 column_origin(uint32_t k, float floor, float spacing, std::uniform_real_distribution<double>& jitter,
+                        std::mt19937_64& rng) {
+    const uint32_t layer = k / (kColumnSide * kColumnSide);
+    const uint32_t x = k % kColumnSide, z = (k / kColumnSide) % kColumnSide;
+    return btVector3(btScalar(x) - 4.5f + btScalar(jitter(rng)), floor + spacing * btScalar(layer),
+                     btScalar(z) - 4.5f + btScalar(jitter(rng)));
+}
+
 void build_boxes(BulletWorld& world, uint32_t objects, std::mt19937_64& rng) {
     add_ground(world);
     btCollisionShape* box = world.keep_shape(std::make_unique<btBoxShape>(btVector3(0.4f, 0.4f, 0.4f)));
     std::uniform_real_distribution<double> jitter(-0.05, 0.05);
     for (uint32_t k = 0; k < objects; ++k) {
-        const uint32_t layer = k / (kColumnSide * kColumnSide);
-        const uint32_t x = k % kColumnSide, z = (k / kColumnSide) % kColumnSide;
-        const btVector3 origin(btScalar(x) - 4.5f + btScalar(jitter(rng)), 0.5f + 1.1f * btScalar(layer),
-                               btScalar(z) - 4.5f + btScalar(jitter(rng)));
+        const btVector3 origin = column_origin(k, 0.5f, 1.1f, jitter, rng);
         world.add_body(box, 1, placed(origin, btQuaternion(btVector3(0, 1, 0), btScalar(jitter(rng)))));
     }
 }
@@ -88,10 +95,7 @@ void build_mixed(BulletWorld& world, uint32_t objects, std::mt19937_64& rng) {
     shapes.push_back(world.keep_shape(std::move(hull)));
     std::uniform_real_distribution<double> jitter(-0.1, 0.1);
     for (uint32_t k = 0; k < objects; ++k) {
-        const uint32_t layer = k / (kColumnSide * kColumnSide);
-        const uint32_t x = k % kColumnSide, z = (k / kColumnSide) % kColumnSide;
-        const btVector3 origin(btScalar(x) - 4.5f + btScalar(jitter(rng)), 1.0f + 1.2f * btScalar(layer),
-                               btScalar(z) - 4.5f + btScalar(jitter(rng)));
+        const btVector3 origin = column_origin(k, 1.0f, 1.2f, jitter, rng);
         world.add_body(shapes[k % shapes.size()], 1, placed(origin, random_rotation(rng)));
     }
 }
