@@ -14,11 +14,12 @@ namespace cdvp {
 uint64_t BoardConfig::sweep_cycles(uint64_t objects) const { return AddressGenerator::sweep_cycles(objects, m); }
 
 uint64_t BoardConfig::block_rams(uint64_t capacity) const {
-    return uint64_t{kCoordinates} * m * CascadedBlockRam::primitives_for(static_cast<uint32_t>(capacity));
+    return uint64_t{kCoordinates} * m *
+           CascadedBlockRam::primitives_for(static_cast<uint32_t>(capacity), format.boxes_per_block_ram());
 }
 
 uint64_t BoardConfig::block_ram_bytes(uint64_t capacity) const {
-    return block_rams(capacity) * BlockRam::kWords * sizeof(uint32_t);
+    return block_rams(capacity) * format.boxes_per_block_ram() * sizeof(uint32_t);
 }
 
 uint32_t BoardConfig::pipeline_latency() const {

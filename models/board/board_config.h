@@ -5,6 +5,7 @@
 #include <string>
 
 #include "models/comparison_unit/comparison_unit.h"
+#include "models/number_format/number_format.h"
 #include "models/pair_collector/pair_collector.h"
 
 namespace cdvp {
@@ -15,6 +16,8 @@ struct BoardConfig {
     // Board clock in MHz. Default 66: the ADM-XRC-II's local bus clock tops out
     // at 66 MHz and a Virtex-II -4 float datapath is plausible there (assumption).
     double clock_mhz = 66.0;
+    // The comparators' and coordinate memories' number format.
+    NumberFormat format;
     ComparisonUnitConfig compare;
     PairCollectorConfig collector;
 
@@ -29,8 +32,9 @@ struct BoardConfig {
     // What a board of this configuration is, so that no caller reaches into
     // its blocks: S(N,m), the address generator's cycles for N boxes; the
     // block RAM primitives of the six coordinate memories for `capacity`
-    // boxes (6 x m x ceil(N/512)); and the bytes of block RAM words the
-    // clocked model keeps for them.
+    // boxes (6 x m x ceil(N/D), D the format's boxes per primitive: 512 for
+    // 19..32-bit words, 1024 for 10..18, 2048 for 8..9); and the bytes of
+    // block RAM words the clocked model keeps for them.
     uint64_t sweep_cycles(uint64_t objects) const;
     uint64_t block_rams(uint64_t capacity) const;
     uint64_t block_ram_bytes(uint64_t capacity) const;

@@ -5,17 +5,17 @@
 namespace cdvp {
 
 namespace {
-CoordinateMemories make_memories(uint32_t m, uint32_t depth) {
-    return {CoordinateMemory(m, depth), CoordinateMemory(m, depth), CoordinateMemory(m, depth),
-            CoordinateMemory(m, depth), CoordinateMemory(m, depth), CoordinateMemory(m, depth)};
+CoordinateMemories make_memories(uint32_t m, uint32_t depth, uint32_t words_per_primitive) {
+    const CoordinateMemory memory(m, depth, words_per_primitive);
+    return {memory, memory, memory, memory, memory, memory};
 }
 }  // namespace
 
 ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
     : config_(config),
-      memories_(make_memories(config.m, capacity)),
+      memories_(make_memories(config.m, capacity, config.format.boxes_per_block_ram())),
       address_generator_(config.m),
-      comparison_unit_(config.lanes(), config.compare),
+      comparison_unit_(config.lanes(), config.compare, config.format),
       collector_(config.collector),
       line_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles) {}
 

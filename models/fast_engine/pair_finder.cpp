@@ -16,16 +16,8 @@ constexpr uint32_t kMinBoxesPerCell = 16;
 // boxes spanning many cells) is dropped for the plain sweep along x.
 constexpr uint64_t kMaxEntriesPerBox = 4;
 
-void read_box(const CoordinateWords& words, uint32_t i, float (&bounds)[kCoordinates]) {
-    for (uint32_t c = 0; c < kCoordinates; ++c) bounds[c] = ComparisonUnit::as_float(words[c][i]);
-}
-
-// Float bits mapped to unsigned integers in the floats' order (-0 just below
-// +0, which compare equal: either order is fine for the sweep).
-uint32_t ordered_key(float value) {
-    const uint32_t bits = ComparisonUnit::as_bits(value);
-    return (bits & 0x8000'0000u) != 0 ? ~bits : bits | 0x8000'0000u;
-}
+// The unsigned key of a signed one: the order the radix sort sorts by.
+uint32_t unsigned_key(int32_t key) { return static_cast<uint32_t>(key) ^ 0x8000'0000u; }
 
 // Visits the set bits of a block's hit mask as box positions.
 template <typename Visit>
@@ -38,17 +30,20 @@ void for_each_hit(uint32_t hits, std::size_t q0, Visit&& visit) {
 
 }  // namespace
 
-// The y-z grid: cell of v on an axis = floor((v - origin) / size), clamped.
-// Float arithmetic: each step is monotonic in v, which is all the sweep needs
-// (boxes whose hulls meet get spans that meet).
+// The y-z grid: cell of v on an axis = floor((v - origin) / size), clamped,
+// v the key's approximate value (the float for float32, the code for fixedK).
+// Float arithmetic: each step is monotonic in the key, which is all the sweep
+// needs (boxes whose hulls meet get spans that meet).
 struct PairFinder::Grid {
     uint32_t cells[2] = {1, 1};  // y, z
     float origin[2] = {0, 0};
     float inverse_size[2] = {0, 0};
+    NumberFormat format;
 
-    uint16_t cell(int axis, float value) const {
+    float value(int32_t key) const { return format.approximate(unsigned_key(key)); }
+    uint16_t cell(int axis, int32_t key) const {
         if (cells[axis] == 1) return 0;  // (and inverse_size 0 would turn infinities into NaN)
-        const float at = (value - origin[axis]) * inverse_size[axis];
+        const float at = (value(key) - origin[axis]) * inverse_size[axis];
         // Clamped first, so truncation is floor (and infinities land in the end cells).
         return static_cast<uint16_t>(std::min(std::max(at, 0.0f), static_cast<float>(cells[axis] - 1)));
     }
@@ -62,21 +57,22 @@ void PairFinder::find(uint32_t objects, const CoordinateWords& words, PairList& 
     }
 }
 
+// Over the boxes the format does not exclude, in index order: pairs come out
+// in BoardCore's order.
 void PairFinder::all_pairs(uint32_t objects, const CoordinateWords& words, PairList& out) {
     out.clear();
-    all_.resize(objects);
-    for (uint32_t i = 0; i < objects; ++i) {
-        float bounds[kCoordinates];
-        read_box(words, i, bounds);
-        all_.set(i, bounds);
-    }
-    for (uint32_t i = 0; i < objects; ++i) {
-        float a[kCoordinates];
-        all_.get(i, a);
+    load_valid(objects, words);
+    const std::size_t n = valid_.size();
+    all_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) all_.set(k, valid_[k].bound);
+    for (std::size_t p = 0; p < n; ++p) {
+        int32_t a[kCoordinates];
+        all_.get(p, a);
         const BlockTest test(all_, a);
-        for (std::size_t q0 = i + 1; q0 < objects; q0 += kBlock) {
-            const uint32_t hits = test.hits(q0) & block_mask_before(q0, objects);
-            for_each_hit(hits, q0, [&](std::size_t j) { out.push_back({i, static_cast<uint32_t>(j)}); });
+        const uint32_t i = valid_[p].index;
+        for (std::size_t q0 = p + 1; q0 < n; q0 += kBlock) {
+            const uint32_t hits = test.hits(q0) & block_mask_before(q0, n);
+            for_each_hit(hits, q0, [&](std::size_t q) { out.push_back({i, valid_[q].index}); });
         }
     }
 }
@@ -94,14 +90,17 @@ void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList&
 void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
     valid_.resize(objects);
     std::size_t kept = 0;
+    const NumberFormat format = format_;
     for (uint32_t i = 0; i < objects; ++i) {
         PackedBox& box = valid_[kept];
-        read_box(words, i, box.bound);
-        bool has_nan = false;
-        for (float bound : box.bound) has_nan |= std::isnan(bound);
+        bool excluded = false;
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
+            box.bound[c] = signed_key(format, words[c][i]);
+            excluded |= format.excluded(words[c][i]);
+        }
         box.index = i;
         box.first_cell = 0;
-        kept += has_nan ? 0 : 1;  // every comparison with a NaN is false: it meets nothing
+        kept += excluded ? 0 : 1;  // every comparison with a NaN is false: it meets nothing
     }
     valid_.resize(kept);
 }
@@ -111,12 +110,13 @@ void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
 // kMinBoxesPerCell boxes on average.
 PairFinder::Grid PairFinder::choose_grid() const {
     Grid grid;
+    grid.format = format_;
     const std::size_t n = valid_.size();
     for (int axis = 0; axis < 2; ++axis) {
         double low = INFINITY, high = -INFINITY, extent = 0;
         std::size_t finite = 0;
         for (const PackedBox& box : valid_) {
-            const float lo = box.bound[kMinY + axis], hi = box.bound[kMaxY + axis];
+            const float lo = grid.value(box.bound[kMinY + axis]), hi = grid.value(box.bound[kMaxY + axis]);
             if (!std::isfinite(lo) || !std::isfinite(hi)) continue;
             low = std::min<double>(low, std::min(lo, hi));
             high = std::max<double>(high, std::max(lo, hi));
@@ -150,12 +150,12 @@ void PairFinder::find_spans(const Grid& chosen) {
         entry_count_ = 0;
         for (std::size_t k = 0; k < n; ++k) {
             PackedBox& box = valid_[k];
-            const float* b = box.bound;
+            const int32_t* b = box.bound;
             const CellSpan span = {grid.cell(0, std::min(b[kMinY], b[kMaxY])), grid.cell(0, std::max(b[kMinY], b[kMaxY])),
                                    grid.cell(1, std::min(b[kMinZ], b[kMaxZ])), grid.cell(1, std::max(b[kMinZ], b[kMaxZ]))};
             entry_count_ += uint64_t{span.y1 - span.y0 + 1u} * (span.z1 - span.z0 + 1u);
             box.first_cell = (uint32_t{span.y0} << 16) | span.z0;
-            items_[k] = {ordered_key(b[kMinX]), static_cast<uint32_t>(k), span};
+            items_[k] = {unsigned_key(b[kMinX]), static_cast<uint32_t>(k), span};
         }
         if (entry_count_ <= kMaxEntriesPerBox * n) break;
         grid = Grid{};  // huge boxes everywhere: one cell
@@ -282,13 +282,13 @@ void PairFinder::for_each_cell(const CellSpan& span, Visit&& visit) const {
 // so the sweep only records blocks with hits (without a branch) and
 // emit_pairs() turns them into pairs afterwards.
 void PairFinder::sweep_cells() {
-    const float* min_x = entries_.bound[kMinX].data();
+    const int32_t* min_x = entries_.bound[kMinX].data();
     hit_blocks_.resize(std::max<std::size_t>(hit_blocks_.size(), entry_count_ + 1));
     std::size_t recorded = 0;
     for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
         const std::size_t end = cell_begin_[cell + 1];
         for (std::size_t p = cell_begin_[cell]; p < end; ++p) {
-            float a[kCoordinates];
+            int32_t a[kCoordinates];
             entries_.get(p, a);
             const BlockTest test(entries_, a);
             for (std::size_t q0 = p + 1; q0 < end; q0 += kBlock) {
