@@ -38,12 +38,17 @@ struct PairFinder::Grid {
     uint32_t cells[2] = {1, 1};  // y, z
     float origin[2] = {0, 0};
     float inverse_size[2] = {0, 0};
-    NumberFormat format;
 
-    float value(int32_t key) const { return format.approximate(unsigned_key(key)); }
+    // kFixed: fixed-point codes; else float32 keys. A template parameter, not
+    // a member, so the per-box loops carry no test of the format.
+    template <bool kFixed>
+    static float value(int32_t key) {
+        return kFixed ? NumberFormat::fixed_value(unsigned_key(key)) : NumberFormat::float32_value(unsigned_key(key));
+    }
+    template <bool kFixed>
     uint16_t cell(int axis, int32_t key) const {
         if (cells[axis] == 1) return 0;  // (and inverse_size 0 would turn infinities into NaN)
-        const float at = (value(key) - origin[axis]) * inverse_size[axis];
+        const float at = (value<kFixed>(key) - origin[axis]) * inverse_size[axis];
         // Clamped first, so truncation is floor (and infinities land in the end cells).
         return static_cast<uint16_t>(std::min(std::max(at, 0.0f), static_cast<float>(cells[axis] - 1)));
     }
@@ -79,7 +84,11 @@ void PairFinder::all_pairs(uint32_t objects, const CoordinateWords& words, PairL
 
 void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList& out) {
     load_valid(objects, words);
-    find_spans(choose_grid());
+    if (format_.is_float()) {
+        find_spans<false>(choose_grid<false>());
+    } else {
+        find_spans<true>(choose_grid<true>());
+    }
     cluster_by_first_cell();
     sort_by_min_x();
     bin();
@@ -87,20 +96,33 @@ void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList&
     order(objects, emit_pairs(), out);
 }
 
+// Keys a column at a time (a loop the compiler vectorises), then the boxes
+// packed from them, those with an excluded word (float32 NaN) left out.
 void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
+    excluded_.assign(objects, 0);
+    uint32_t* excluded = excluded_.data();
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        key_columns_[c].resize(objects);
+        int32_t* keys = key_columns_[c].data();
+        const uint32_t* column = words[c];
+        if (format_.is_float()) {
+            for (uint32_t i = 0; i < objects; ++i) {
+                keys[i] = signed_key(NumberFormat::float32(), column[i]);
+                excluded[i] |= NumberFormat::float32().excluded(column[i]) ? 1u : 0u;
+            }
+        } else {
+            const NumberFormat format = format_;
+            for (uint32_t i = 0; i < objects; ++i) keys[i] = signed_key(format, column[i]);
+        }
+    }
     valid_.resize(objects);
     std::size_t kept = 0;
-    const NumberFormat format = format_;
     for (uint32_t i = 0; i < objects; ++i) {
         PackedBox& box = valid_[kept];
-        bool excluded = false;
-        for (uint32_t c = 0; c < kCoordinates; ++c) {
-            box.bound[c] = signed_key(format, words[c][i]);
-            excluded |= format.excluded(words[c][i]);
-        }
+        for (uint32_t c = 0; c < kCoordinates; ++c) box.bound[c] = key_columns_[c][i];
         box.index = i;
         box.first_cell = 0;
-        kept += excluded ? 0 : 1;  // every comparison with a NaN is false: it meets nothing
+        kept += excluded[i] == 0 ? 1 : 0;  // every comparison with a NaN is false: it meets nothing
     }
     valid_.resize(kept);
 }
@@ -108,15 +130,16 @@ void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
 // Cells about twice the mean box extent, so that most boxes touch one or two
 // cells per axis; none over kMaxCellsPerAxis a side or with fewer than
 // kMinBoxesPerCell boxes on average.
+template <bool kFixed>
 PairFinder::Grid PairFinder::choose_grid() const {
     Grid grid;
-    grid.format = format_;
     const std::size_t n = valid_.size();
     for (int axis = 0; axis < 2; ++axis) {
         double low = INFINITY, high = -INFINITY, extent = 0;
         std::size_t finite = 0;
         for (const PackedBox& box : valid_) {
-            const float lo = grid.value(box.bound[kMinY + axis]), hi = grid.value(box.bound[kMaxY + axis]);
+            const float lo = Grid::value<kFixed>(box.bound[kMinY + axis]);
+            const float hi = Grid::value<kFixed>(box.bound[kMaxY + axis]);
             if (!std::isfinite(lo) || !std::isfinite(hi)) continue;
             low = std::min<double>(low, std::min(lo, hi));
             high = std::max<double>(high, std::max(lo, hi));
@@ -142,6 +165,7 @@ PairFinder::Grid PairFinder::choose_grid() const {
 // The cells of each box's y and z hulls [min(lo, hi), max(lo, hi)]: two boxes
 // that meet on an axis have intersecting hulls even when inverted. Each box
 // becomes a sort item: its min-x key, its position in valid_ and its cells.
+template <bool kFixed>
 void PairFinder::find_spans(const Grid& chosen) {
     const std::size_t n = valid_.size();
     Grid grid = chosen;
@@ -151,8 +175,10 @@ void PairFinder::find_spans(const Grid& chosen) {
         for (std::size_t k = 0; k < n; ++k) {
             PackedBox& box = valid_[k];
             const int32_t* b = box.bound;
-            const CellSpan span = {grid.cell(0, std::min(b[kMinY], b[kMaxY])), grid.cell(0, std::max(b[kMinY], b[kMaxY])),
-                                   grid.cell(1, std::min(b[kMinZ], b[kMaxZ])), grid.cell(1, std::max(b[kMinZ], b[kMaxZ]))};
+            const CellSpan span = {grid.cell<kFixed>(0, std::min(b[kMinY], b[kMaxY])),
+                                   grid.cell<kFixed>(0, std::max(b[kMinY], b[kMaxY])),
+                                   grid.cell<kFixed>(1, std::min(b[kMinZ], b[kMaxZ])),
+                                   grid.cell<kFixed>(1, std::max(b[kMinZ], b[kMaxZ]))};
             entry_count_ += uint64_t{span.y1 - span.y0 + 1u} * (span.z1 - span.z0 + 1u);
             box.first_cell = (uint32_t{span.y0} << 16) | span.z0;
             items_[k] = {unsigned_key(b[kMinX]), static_cast<uint32_t>(k), span};

@@ -68,7 +68,10 @@ private:
     };
 
     void load_valid(uint32_t objects, const CoordinateWords& words);
+    // kFixed: the keys are fixed-point codes (else float32 keys).
+    template <bool kFixed>
     Grid choose_grid() const;
+    template <bool kFixed>
     void find_spans(const Grid& grid);
     void cluster_by_first_cell();
     void sort_by_min_x();
@@ -92,6 +95,9 @@ private:
     void counting_sort(uint32_t objects, const IndexPair* from, std::size_t count, IndexPair* to, Key key);
 
     NumberFormat format_;
+    // The words' keys by coordinate, and whether a box has an excluded word.
+    std::vector<int32_t> key_columns_[kCoordinates];
+    std::vector<uint32_t> excluded_;
     // Boxes without an excluded bound, in index order or grouped by first cell.
     std::vector<PackedBox> valid_, clustered_;
     uint32_t cluster_above_ = kClusterAbove;

@@ -57,14 +57,18 @@ public:
     // bit patterns mapped monotonically with -0 made +0; fixedK the word's low K bits.
     uint32_t key(uint32_t word) const {
         if (!is_float()) return word & word_mask();
-        if (word == 0x8000'0000u) word = 0;  // -0 equals +0
-        return (word & 0x8000'0000u) != 0 ? ~word : word | 0x8000'0000u;
+        const uint32_t w = word == 0x8000'0000u ? 0u : word;  // -0 equals +0
+        // Negative floats: all bits flipped; others: the sign bit set.
+        return w ^ (static_cast<uint32_t>(static_cast<int32_t>(w) >> 31) | 0x8000'0000u);
     }
     // A value that grows with the key (float32: the float itself; fixedK: the
     // code): for cell choice in value space, monotone, so pruning stays exact.
-    float approximate(uint32_t key) const {
-        if (!is_float()) return static_cast<float>(key);
-        const uint32_t word = (key & 0x8000'0000u) != 0 ? key & 0x7FFF'FFFFu : ~key;
+    float approximate(uint32_t key) const { return is_float() ? float32_value(key) : fixed_value(key); }
+    // The two cases, for loops that choose once.
+    static float fixed_value(uint32_t key) { return static_cast<float>(key); }
+    static float float32_value(uint32_t key) {
+        const uint32_t flipped = key ^ 0x8000'0000u;  // key() undone
+        const uint32_t word = flipped ^ (static_cast<uint32_t>(static_cast<int32_t>(flipped) >> 31) & 0x7FFF'FFFFu);
         float value;
         std::memcpy(&value, &word, sizeof value);
         return value;
