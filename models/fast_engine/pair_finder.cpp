@@ -31,24 +31,25 @@ void for_each_hit(uint32_t hits, std::size_t q0, Visit&& visit) {
 }  // namespace
 
 // The y-z grid: cell of v on an axis = floor((v - origin) / size), clamped,
-// v the key's approximate value (the float for float32, the code for fixedK).
+// v a stored word's value (the float for float32, the code for fixedK: the
+// approximate value of its key, read from the word so no key is undone).
 // Float arithmetic: each step is monotonic in the key, which is all the sweep
-// needs (boxes whose hulls meet get spans that meet).
+// needs (boxes whose hulls meet get spans that meet); -0 and +0, one key, give
+// one cell.
 struct PairFinder::Grid {
     uint32_t cells[2] = {1, 1};  // y, z
     float origin[2] = {0, 0};
     float inverse_size[2] = {0, 0};
 
-    // kFixed: fixed-point codes; else float32 keys. A template parameter, not
-    // a member, so the per-box loops carry no test of the format.
+    // kFixed: fixed-point codes (mask: the format's word mask); else float32.
+    // A template parameter, so the per-box loops carry no test of the format.
     template <bool kFixed>
-    static float value(int32_t key) {
-        return kFixed ? NumberFormat::fixed_value(unsigned_key(key)) : NumberFormat::float32_value(unsigned_key(key));
+    static float value(uint32_t word, uint32_t mask) {
+        return kFixed ? NumberFormat::fixed_value(word & mask) : ComparisonUnit::as_float(word);
     }
-    template <bool kFixed>
-    uint16_t cell(int axis, int32_t key) const {
+    uint16_t cell(int axis, float value) const {
         if (cells[axis] == 1) return 0;  // (and inverse_size 0 would turn infinities into NaN)
-        const float at = (value<kFixed>(key) - origin[axis]) * inverse_size[axis];
+        const float at = (value - origin[axis]) * inverse_size[axis];
         // Clamped first, so truncation is floor (and infinities land in the end cells).
         return static_cast<uint16_t>(std::min(std::max(at, 0.0f), static_cast<float>(cells[axis] - 1)));
     }
@@ -83,6 +84,7 @@ void PairFinder::all_pairs(uint32_t objects, const CoordinateWords& words, PairL
 }
 
 void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList& out) {
+    words_ = words;
     load_valid(objects, words);
     if (format_.is_float()) {
         find_spans<false>(choose_grid<false>());
@@ -137,9 +139,12 @@ PairFinder::Grid PairFinder::choose_grid() const {
     for (int axis = 0; axis < 2; ++axis) {
         double low = INFINITY, high = -INFINITY, extent = 0;
         std::size_t finite = 0;
+        const uint32_t* lows = words_[kMinY + axis];
+        const uint32_t* highs = words_[kMaxY + axis];
+        const uint32_t mask = format_.word_mask();
         for (const PackedBox& box : valid_) {
-            const float lo = Grid::value<kFixed>(box.bound[kMinY + axis]);
-            const float hi = Grid::value<kFixed>(box.bound[kMaxY + axis]);
+            const float lo = Grid::value<kFixed>(lows[box.index], mask);
+            const float hi = Grid::value<kFixed>(highs[box.index], mask);
             if (!std::isfinite(lo) || !std::isfinite(hi)) continue;
             low = std::min<double>(low, std::min(lo, hi));
             high = std::max<double>(high, std::max(lo, hi));
@@ -170,15 +175,17 @@ void PairFinder::find_spans(const Grid& chosen) {
     const std::size_t n = valid_.size();
     Grid grid = chosen;
     items_.resize(n);
+    const uint32_t mask = format_.word_mask();
+    const auto value = [&](uint32_t c, uint32_t i) { return Grid::value<kFixed>(words_[c][i], mask); };
     for (int attempt = 0; attempt < 2; ++attempt) {
         entry_count_ = 0;
         for (std::size_t k = 0; k < n; ++k) {
             PackedBox& box = valid_[k];
             const int32_t* b = box.bound;
-            const CellSpan span = {grid.cell<kFixed>(0, std::min(b[kMinY], b[kMaxY])),
-                                   grid.cell<kFixed>(0, std::max(b[kMinY], b[kMaxY])),
-                                   grid.cell<kFixed>(1, std::min(b[kMinZ], b[kMaxZ])),
-                                   grid.cell<kFixed>(1, std::max(b[kMinZ], b[kMaxZ]))};
+            const float y0 = value(kMinY, box.index), y1 = value(kMaxY, box.index);
+            const float z0 = value(kMinZ, box.index), z1 = value(kMaxZ, box.index);
+            const CellSpan span = {grid.cell(0, std::min(y0, y1)), grid.cell(0, std::max(y0, y1)),
+                                   grid.cell(1, std::min(z0, z1)), grid.cell(1, std::max(z0, z1))};
             entry_count_ += uint64_t{span.y1 - span.y0 + 1u} * (span.z1 - span.z0 + 1u);
             box.first_cell = (uint32_t{span.y0} << 16) | span.z0;
             items_[k] = {unsigned_key(b[kMinX]), static_cast<uint32_t>(k), span};

@@ -95,6 +95,7 @@ private:
     void counting_sort(uint32_t objects, const IndexPair* from, std::size_t count, IndexPair* to, Key key);
 
     NumberFormat format_;
+    CoordinateWords words_{};  // the current sweep's
     // The words' keys by coordinate, and whether a box has an excluded word.
     std::vector<int32_t> key_columns_[kCoordinates];
     std::vector<uint32_t> excluded_;

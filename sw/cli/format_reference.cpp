@@ -23,7 +23,6 @@ FormatReference::Check FormatReference::check(const std::vector<FloatBox>& boxes
                                               const FramePhases& phases) {
     Check result;
     if (format_.is_float()) {
-        result.reference = board_pairs;
         result.extra.reference_pairs = board_pairs.size();
         return result;
     }

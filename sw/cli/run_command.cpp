@@ -282,19 +282,21 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         const FrameResult& result = *frame_result;
         const FormatReference::Check check = reference.check(boxes, result.pairs, result.phases);
         if (check.missing) {
-            std::cerr << "cdvp run: frame " << frame->number << ": " << lost_pair_message(run.config.format, *frame, *check.missing) << '\n';
+            std::cerr << "cdvp run: frame " << frame->number << ": "
+                      << lost_pair_message(run.config.format, *frame, *check.missing) << '\n';
             return kExitDeviceFault;
         }
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
                          run.config.sweep_cycles(boxes.size()), result.phases, {}, sim_wall_ns, check.extra};
         if (!setup.baselines.empty()) {
-            stats.baselines = setup.baselines.time_frame(boxes, sorted(check.reference), frame->number);
+            stats.baselines =
+                setup.baselines.time_frame(boxes, sorted(reference.kept(check, result.pairs)), frame->number);
         }
         if (report) report->frame(stats);
         totals.add(stats);
         // The application gets the pairs the host keeps once it has dropped the extra ones.
-        source.feed(check.reference);
+        source.feed(reference.kept(check, result.pairs));
         progress.update(totals.frames());
     }
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

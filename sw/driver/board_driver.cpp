@@ -190,8 +190,7 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
     // the frame's bounds, rounded outward.
     const Quantiser quantiser(format_, boxes);
     for (uint32_t c = 0; c < kCoordinates; ++c) {
-        auto* words = reinterpret_cast<uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
-        for (uint32_t i = 0; i < n; ++i) words[i] = quantiser.word(boxes[i], c);
+        quantiser.write_column(boxes, c, reinterpret_cast<uint32_t*>(port_.memory(coordinate_area(capacity_, c))));
     }
     auto local = [](uint32_t c) {
         return static_cast<uint32_t>(address_map::kCoordinateBase + c * address_map::kWindowSize);

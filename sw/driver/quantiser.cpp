@@ -22,6 +22,17 @@ Quantiser::Quantiser(NumberFormat format, const std::vector<FloatBox>& boxes)
     }
 }
 
+void Quantiser::write_column(const std::vector<FloatBox>& boxes, uint32_t c, uint32_t* words) const {
+    const std::size_t n = boxes.size();
+    if (format_.is_float()) {
+        for (std::size_t i = 0; i < n; ++i) words[i] = ComparisonUnit::as_bits(c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3]);
+    } else if (c < 3) {
+        for (std::size_t i = 0; i < n; ++i) words[i] = min_code(c, boxes[i].min[c]);
+    } else {
+        for (std::size_t i = 0; i < n; ++i) words[i] = max_code(c - 3, boxes[i].max[c - 3]);
+    }
+}
+
 uint32_t Quantiser::clamp(double code) const { return static_cast<uint32_t>(std::min(std::max(code, 0.0), top_)); }
 
 uint32_t Quantiser::min_code(uint32_t axis, float x) const {

@@ -30,6 +30,8 @@ public:
         if (format_.is_float()) return ComparisonUnit::as_bits(c < 3 ? box.min[c] : box.max[c - 3]);
         return c < 3 ? min_code(c, box.min[c]) : max_code(c - 3, box.max[c - 3]);
     }
+    // Bound c of every box into words, the format chosen once.
+    void write_column(const std::vector<FloatBox>& boxes, uint32_t c, uint32_t* words) const;
     uint32_t min_code(uint32_t axis, float x) const;
     uint32_t max_code(uint32_t axis, float x) const;
 

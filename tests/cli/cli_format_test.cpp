@@ -138,7 +138,11 @@ TEST(FormatReference, AMissingPairIsFoundAndExtraPairsCosted) {
               "the fixed8 board lost the pair (11, 12) of the float32 reference");
     // Under float32 the board is its own reference.
     FormatReference same(NumberFormat::float32(), 50);
-    EXPECT_EQ(same.check(boxes, {{0, 1}}, phases).extra.reference_pairs, 1u);
+    const PairList board{{0, 1}};
+    const FormatReference::Check own = same.check(boxes, board, phases);
+    EXPECT_EQ(own.extra.reference_pairs, 1u);
+    EXPECT_EQ(&same.kept(own, board), &board);
+    EXPECT_EQ(reference.kept(all, board), all.reference);
 }
 
 }  // namespace
