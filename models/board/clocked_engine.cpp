@@ -13,19 +13,44 @@ CoordinateMemories make_memories(uint32_t m, uint32_t depth) {
 
 ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
     : config_(config),
-      memories_(make_memories(config.m, capacity)),
-      address_generator_(config.m),
       comparison_unit_(config.lanes(), config.compare),
       collector_(config.collector),
-      line_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles) {}
+      line_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles) {
+    if (!config.tiles.tiled()) {
+        columns_.push_back(make_memories(config.m, capacity));
+        return;
+    }
+    const uint32_t depth = std::max(1u, std::min(config.tiles.boxes, capacity));
+    for (int buffer = 0; buffer < 2; ++buffer) {
+        columns_.push_back(make_memories(config.m, depth));
+        rows_.push_back(make_memories(1, depth));
+    }
+}
+
+uint32_t ClockedEngine::block_rams() const {
+    uint32_t total = 0;
+    for (const auto* set : {&columns_, &rows_}) {
+        for (const CoordinateMemories& memories : *set) total += kCoordinates * memories[0].block_rams();
+    }
+    return total;
+}
 
 void ClockedEngine::start(const CoordinateStore& store, uint32_t objects) {
-    // The host's writes reach every copy of the block RAMs; loading them here
-    // is the same, as nothing reads them before the sweep.
-    for (uint32_t c = 0; c < kCoordinates; ++c) {
-        for (uint32_t i = 0; i < objects; ++i) memories_[c].write(i, store[c][i]);
+    schedule_ = SweepSchedule(config_.m, config_.tiles, objects);
+    walker_.restart();
+    if (schedule_.tiled()) {
+        // The host's writes went to the SSRAM banks; tiles load from there.
+        for (uint32_t c = 0; c < kCoordinates; ++c) ssram_[c].assign(store[c].begin(), store[c].begin() + objects);
+        loaded_blocks_ = 0;
+    } else {
+        // The host's writes reach every copy of the block RAMs; loading them
+        // here is the same, as nothing reads them before the sweep.
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
+            for (uint32_t i = 0; i < objects; ++i) columns_[0][c].write(i, store[c][i]);
+        }
     }
-    address_generator_.start(objects);
+    block_ = 0;
+    waiting_ = false;
     collector_.reset();
     for (auto& slot : line_) slot = Slot{};
     head_ = 0;
@@ -92,26 +117,65 @@ SweepCounters ClockedEngine::counters_after(uint64_t edges) {
     return c;
 }
 
+// A tile's load writes its buffer from SSRAM in one go when it begins: the
+// buffer is idle until the block that reads it starts, which the schedule
+// places after the load's last word (n_b x cycles a box + latency slots).
+void ClockedEngine::load_through(uint64_t block) {
+    const auto& blocks = schedule_.blocks();
+    for (; loaded_blocks_ <= block && loaded_blocks_ < blocks.size(); ++loaded_blocks_) {
+        const SweepSchedule::Block& b = blocks[loaded_blocks_];
+        const auto write_tile = [&](CoordinateMemories& memories, uint32_t tile) {
+            const uint32_t first = schedule_.tile_begin(tile);
+            for (uint32_t c = 0; c < kCoordinates; ++c) {
+                for (uint32_t i = first; i < schedule_.tile_end(tile); ++i) memories[c].write(i - first, ssram_[c][i]);
+            }
+        };
+        write_tile(columns_[loaded_blocks_ % 2], b.column_tile);
+        // The row memory takes tile 0 with the first load, and tile a+1 from
+        // the same reads that bring it in as block (a, a+1)'s column tile.
+        if (loaded_blocks_ == 0 || b.column_tile == b.row_tile + 1) {
+            const uint32_t row_tile = loaded_blocks_ == 0 ? 0 : b.column_tile;
+            write_tile(rows_[row_tile % 2], row_tile);
+        }
+    }
+}
+
+uint32_t ClockedEngine::tile_of(bool column) const {
+    const auto& blocks = schedule_.blocks();
+    if (blocks.empty()) return 0;
+    const SweepSchedule::Block& b = blocks[std::min<uint64_t>(block_, blocks.size() - 1)];
+    return column ? b.column_tile : b.row_tile;
+}
+
 ClockedEngine::Slot ClockedEngine::issue() {
-    if (address_generator_.exhausted()) {
+    const ScheduleWalker::Slot next = walker_.next();
+    waiting_ = next.kind == ScheduleWalker::Slot::kWait;
+    if (next.kind == ScheduleWalker::Slot::kEnd) {
         if (end_issued_) return Slot{};
         end_issued_ = true;
         return Slot{Slot::kEnd};
     }
-    const AddressGenerator::Issue addresses = address_generator_.current();
+    block_ = next.block;
+    if (schedule_.tiled()) load_through(waiting_ ? next.block : next.block + 1);
+    if (waiting_) return Slot{};  // a bubble: the tile is still loading
+    const AddressGenerator::Issue addresses{next.row, next.first_column, next.valid_lanes};
     last_issue_ = addresses;
-    for (auto& memory : memories_) {
-        memory.clock_read(0, addresses.row);
+    CoordinateMemories& columns = columns_[schedule_.tiled() ? next.block % 2 : 0];
+    const SweepSchedule::Block& block = schedule_.blocks()[next.block];
+    const uint32_t row_base = schedule_.tiled() ? schedule_.tile_begin(block.row_tile) : 0;
+    const uint32_t column_base = schedule_.tiled() ? schedule_.tile_begin(block.column_tile) : 0;
+    CoordinateMemories& rows = schedule_.tiled() ? rows_[block.row_tile % 2] : columns;
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        rows[c].clock_read(0, addresses.row - row_base);
         for (uint32_t lane = 0; lane < addresses.valid_lanes; ++lane) {
-            memory.clock_read(lane + 1, addresses.first_column + lane);
+            columns[c].clock_read(lane + 1, addresses.first_column + lane - column_base);
         }
     }
-    address_generator_.advance();
     // The hit mask is a pure function of the block RAM output registers just
     // loaded, so computing it here and presenting it compare-latency cycles
     // later is the same as computing it in the last compare stage.
     return Slot{Slot::kSweep, addresses.row, addresses.first_column, addresses.valid_lanes,
-                comparison_unit_.evaluate(memories_, addresses.valid_lanes)};
+                comparison_unit_.evaluate(rows, columns, addresses.valid_lanes)};
 }
 
 void ClockedEngine::stall() {

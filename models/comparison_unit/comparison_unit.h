@@ -38,12 +38,17 @@ public:
     // The lane results for the current memory outputs; lanes beyond
     // valid_lanes are not evaluated (their bits are 0).
     uint64_t evaluate(const CoordinateMemories& memories, uint32_t valid_lanes) const {
+        return evaluate(memories, memories, valid_lanes);
+    }
+    // A tiled board: box i from port 0 of the row memories, the boxes j from
+    // ports 1..valid_lanes of the column memories.
+    uint64_t evaluate(const CoordinateMemories& rows, const CoordinateMemories& columns, uint32_t valid_lanes) const {
         float i_bounds[kCoordinates];
-        for (uint32_t c = 0; c < kCoordinates; ++c) i_bounds[c] = as_float(memories[c].output(0));
+        for (uint32_t c = 0; c < kCoordinates; ++c) i_bounds[c] = as_float(rows[c].output(0));
         uint64_t hits = 0;
         for (uint32_t port = 1; port <= valid_lanes; ++port) {
             float j_bounds[kCoordinates];
-            for (uint32_t c = 0; c < kCoordinates; ++c) j_bounds[c] = as_float(memories[c].output(port));
+            for (uint32_t c = 0; c < kCoordinates; ++c) j_bounds[c] = as_float(columns[c].output(port));
             hits |= static_cast<uint64_t>(lane_hit(i_bounds, j_bounds)) << (port - 1);
         }
         return hits;

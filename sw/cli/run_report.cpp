@@ -101,7 +101,11 @@ nlohmann::json config_json(const RunConfig& run) {
         {"drain_per_cycle", c.collector.drain_per_cycle},
         {"pair_buffer_depth", c.collector.buffer_depth},
         {"capacity", run.capacity},
-        {"block_rams", run.block_rams}};
+        {"block_rams", run.block_rams},
+        {"memory", run.ssram ? "SSRAM" : "block RAM"},
+        {"tile_boxes", c.tiles.boxes},
+        {"tiles", run.tiles},
+        {"load_wait_slots", run.load_wait_slots}};
     if (run.settings != nullptr) {
         config["seed"] = run.settings->settings().scene.seed;
         config["settings"] = settings_json(*run.settings);
@@ -120,6 +124,7 @@ nlohmann::json frame_json(const FrameStats& f) {
             {"compute_cycles", p.compute_cycles},
             {"stall_cycles", p.stall_cycles},
             {"sweep_cycles", f.sweep_cycles},
+            {"load_wait_slots", f.load_wait_slots},
             {"overflow_pauses", p.overflow_pauses},
             {"timeouts_recovered", p.timeouts_recovered},
             {"upload_ns", p.upload_ns},
@@ -311,6 +316,12 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
                   c.lanes(), c.clock_mhz, c.pipeline_latency(), run.block_rams, run.fidelity.c_str());
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
     if (run.device_fit) print_resources(out, *run.device_fit);
+    if (run.ssram) {
+        std::snprintf(line, sizeof line,
+                      "  boxes in SSRAM: %u tiles of %u boxes at %u objects, %llu slots waiting for tile loads\n",
+                      run.tiles, c.tiles.boxes, run.capacity, static_cast<unsigned long long>(run.load_wait_slots));
+        out << line;
+    }
     out << "  frame  objects     pairs  S(N,m)+L  compute_cycles  stall_cycles  compute_us  total_us\n";
     for (const FrameStats& f : totals.shown()) {
         std::snprintf(line, sizeof line, "%7llu %8llu %9llu %9llu %15llu %13llu %11.2f %9.2f\n",
