@@ -91,16 +91,7 @@ void SweepTimeline::locate_head(Cursor& cursor) const {
     }
     const IndexPair& first = pairs[cursor.next_pair];
     if (tiles_.tiled()) {
-        // The slot's hits: the following pairs the same slot compares.
-        const uint64_t slot = schedule_.pair_slot(first.first, first.second);
-        uint32_t hits = 1;
-        for (uint64_t k = cursor.next_pair + 1;
-             k < pairs.size() && pairs[k].first == first.first && schedule_.pair_slot(first.first, pairs[k].second) == slot;
-             ++k) {
-            ++hits;
-        }
-        cursor.head.slot = slot;
-        cursor.head.hits = hits;
+        locate_tiled_head(cursor);
         return;
     }
     const uint32_t row = first.first;
@@ -113,6 +104,22 @@ void SweepTimeline::locate_head(Cursor& cursor) const {
         ++hits;
     }
     cursor.head.slot = row_start + step;
+    cursor.head.hits = hits;
+}
+
+// Out of line, so that the untiled path above stays as it was.
+__attribute__((noinline)) void SweepTimeline::locate_tiled_head(Cursor& cursor) const {
+    const std::vector<IndexPair>& pairs = *pairs_;
+    const IndexPair& first = pairs[cursor.next_pair];
+    // The slot's hits: the following pairs the same slot compares.
+    const uint64_t slot = schedule_.pair_slot(first.first, first.second);
+    uint32_t hits = 1;
+    for (uint64_t k = cursor.next_pair + 1;
+         k < pairs.size() && pairs[k].first == first.first && schedule_.pair_slot(first.first, pairs[k].second) == slot;
+         ++k) {
+        ++hits;
+    }
+    cursor.head.slot = slot;
     cursor.head.hits = hits;
 }
 

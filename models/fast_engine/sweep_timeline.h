@@ -88,6 +88,7 @@ private:
 
     // Sets cursor.head to the slot of cursor.next_pair and its hits.
     void locate_head(Cursor& cursor) const;
+    void locate_tiled_head(Cursor& cursor) const;
     // Runs edges until the segment ends or `limit` edges into it; with
     // checkpoints, records a cursor every kCheckpointEvery events.
     void run(Cursor& cursor, uint64_t limit, std::vector<Cursor>* checkpoints) const;

@@ -75,6 +75,24 @@ TEST_F(CliTiles, AutoKeepsBlockRamWhileItFitsAndTilesPastIt) {
     expect_cycle_identity(tiled);
 }
 
+// The clocked board's waveforms show the loader: the tiles of the block, a
+// load under way and the bubbles waiting for one.
+TEST_F(CliTiles, WaveformsShowTheTileLoader) {
+    ASSERT_EQ(run("run --scene spheres --objects 40 --frames 1 --quiet --m 2 -c board.memory=ssram "
+                  "-c board.tile_boxes=16 --vcd w.vcd").status, 0);
+    const std::string vcd = slurp(dir_ / "w.vcd");
+    for (const char* signal : {"row_tile", "column_tile", "loading", "wait"}) {
+        const std::size_t at = vcd.find(std::string(" ") + signal + " ");
+        ASSERT_NE(at, std::string::npos) << signal;
+        const std::size_t line = vcd.rfind("$var", at);
+        std::istringstream words(vcd.substr(line, at - line));
+        std::string var, kind, width, id;
+        words >> var >> kind >> width >> id;
+        const std::string high = width == "1" ? "\n1" + id + "\n" : "\nb10 " + id + "\n";  // 1, or tile 2
+        EXPECT_NE(vcd.find(high), std::string::npos) << signal << " never reaches " << high;
+    }
+}
+
 TEST_F(CliTiles, SixtyFiveThousandBoxesRunOnThePapersBoard) {
     const Result r = run(spheres(65536, 1) + "--m 8 --report r.json");
     ASSERT_EQ(r.status, 0) << r.err;
