@@ -18,7 +18,6 @@
 
 #include "platform/board_preset.h"
 #include "platform/config_file.h"
-#include "models/address_generator/sweep_schedule.h"
 #include "platform/fault_injection.h"
 #include "platform/memory_plan.h"
 #include "platform/virtual_board.h"
@@ -235,10 +234,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     const MemoryPlan memory = plan_memory(setup.values.settings(), run.capacity);
     setup.platform.board.tiles = memory.tiles;
     run.config = setup.platform.board;
-    run.ssram = memory.ssram;
-    const SweepSchedule at_capacity(run.config.m, run.config.tiles, run.capacity);
-    run.tiles = at_capacity.tiles();
-    run.load_wait_slots = at_capacity.wait_slots();
+    describe_memory(run, memory.ssram);
     run.source = source.describe();
     run.board = setup.board;
     run.host = setup.values.settings().host.name;
@@ -289,7 +285,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
                          run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_ns};
-        if (run.ssram) stats.load_wait_slots = SweepSchedule(run.config.m, run.config.tiles, boxes.size()).wait_slots();
+        stats.load_wait_slots = load_wait_slots(run, boxes.size());
         if (!setup.baselines.empty()) {
             stats.baselines = setup.baselines.time_frame(boxes, sorted(result.pairs), frame->number);
         }

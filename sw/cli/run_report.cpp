@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "models/address_generator/sweep_schedule.h"
 #include "models/common/user_text.h"
 #include "sw/cli/version.h"
 
@@ -307,6 +308,18 @@ void print_resources(std::ostream& out, const DeviceFit& fit) {
 }
 
 }  // namespace
+
+void describe_memory(RunConfig& run, bool ssram) {
+    run.ssram = ssram;
+    const SweepSchedule at_capacity(run.config.m, run.config.tiles, run.capacity);
+    run.tiles = at_capacity.tiles();
+    run.load_wait_slots = at_capacity.wait_slots();
+}
+
+uint64_t load_wait_slots(const RunConfig& run, uint64_t objects) {
+    if (!run.ssram) return 0;
+    return SweepSchedule(run.config.m, run.config.tiles, static_cast<uint32_t>(objects)).wait_slots();
+}
 
 void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, double wall_seconds) {
     const BoardConfig& c = run.config;

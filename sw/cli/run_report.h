@@ -60,6 +60,12 @@ struct RunConfig {
     std::vector<std::string> command_line;
 };
 
+// The memory that serves the boxes: sets run.ssram, and the tiles and load
+// waits at run.capacity from run.config.
+void describe_memory(RunConfig& run, bool ssram);
+// Slots a frame of `objects` boxes waits for SSRAM tiles (0 in block RAM).
+uint64_t load_wait_slots(const RunConfig& run, uint64_t objects);
+
 // The frames of a run folded as they come: counts and sums for the totals
 // and the steady-state means (which leave out the warm-up frames when there
 // are more), the per-frame samples behind the medians, and the first rows of
