@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 #include <random>
 #include <tuple>
 
@@ -176,6 +177,38 @@ TEST(TiledFastEngine, PairsAreTheReferenceSetInScheduleOrder) {
         ASSERT_GT(expected.size(), 100u);
         EXPECT_EQ(engine.pairs(), expected) << "T=" << t;
     }
+}
+
+// CYCLES = the closed form + L + STALLS on both engines, run to done through
+// every pause, over a grid of N, m and T.
+TEST(TiledFastEngine, CyclesAreTheClosedFormPlusLatencyAndStallsOnBothEngines) {
+    std::mt19937 rng(96);
+    int runs = 0;
+    for (uint32_t n : {0u, 2u, 9u, 40u, 101u}) {
+        for (uint32_t m : {1u, 2u, 7u}) {
+            for (uint32_t t : {1u, 3u, 8u, 25u, 64u}) {
+                BoardConfig config;
+                config.m = m;
+                config.tiles = tiles_of(t, t % 5, 1 + t % 3);
+                config.collector.fifo_depth = 2 * m - 1;
+                config.collector.buffer_depth = 1 + (n + t) % 7;
+                const WordScene scene = testing::random_scene(n, 4.0f, 2.0f, rng);
+                const uint64_t expected = closed_form(n, m, config.tiles) + config.pipeline_latency();
+                for (Fidelity fidelity : {Fidelity::kCycle, Fidelity::kFast}) {
+                    std::unique_ptr<BoardEngine> engine = make_engine(fidelity, config, std::max(n, 1u));
+                    CoordinateStore store;
+                    for (uint32_t c = 0; c < kCoordinates; ++c) store[c] = scene.words[c];
+                    engine->start(store, n);
+                    while (!engine->segment_finishes()) engine->resume();
+                    const SweepCounters end = engine->counters_after(engine->segment_edges());
+                    EXPECT_EQ(end.cycles, expected + end.stalls)
+                        << to_string(fidelity) << " n=" << n << " m=" << m << " T=" << t;
+                    ++runs;
+                }
+            }
+        }
+    }
+    EXPECT_EQ(runs, 150);
 }
 
 BoardConfig tiled_config(uint32_t m, uint32_t tile, uint32_t fifo, uint32_t drain, uint32_t buffer) {
