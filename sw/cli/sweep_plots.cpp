@@ -1,5 +1,7 @@
 #include "sw/cli/sweep_plots.h"
 
+#include "sw/cli/sweep_samples.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -10,19 +12,30 @@
 
 namespace cdvp {
 
-namespace {
+namespace sweep_figures {
 
-// A point that ran, placed on the figures' axes.
-struct Sample {
-    std::string board;
-    double m = 0;
-    double n = 0;
-    const Row* row = nullptr;
-};
+std::string Line::title() const {
+    const std::string m_part = "m=" + num(m);
+    return variant.empty() ? m_part : m_part + " " + variant;
+}
+
+Series series(const std::vector<Sample>& samples, const std::string& board, const std::string& column, double scale) {
+    Series lines;
+    for (const Sample& s : samples) {
+        const double y = number(*s.row, column);
+        if (s.board != board || std::isnan(y)) continue;
+        Line& line = lines[{s.variant_order, s.m}];
+        line.m = s.m;
+        line.variant = s.variant;
+        line.points.push_back({s.n, y * scale});
+    }
+    for (auto& [key, line] : lines) std::sort(line.points.begin(), line.points.end());
+    return lines;
+}
 
 double number(const Row& row, const std::string& column) {
     const auto at = row.find(column);
-    return at == row.end() ? std::nan("") : std::strtod(at->second.c_str(), nullptr);
+    return at == row.end() || at->second.empty() ? std::nan("") : std::strtod(at->second.c_str(), nullptr);
 }
 
 std::string text(const Row& row, const std::string& column) {
@@ -30,14 +43,12 @@ std::string text(const Row& row, const std::string& column) {
     return at == row.end() ? std::string() : at->second;
 }
 
-// Single-quoted for gnuplot (a quote inside is doubled).
 std::string quoted(const std::string& s) {
     std::string q = "'";
     for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
     return q + "'";
 }
 
-// File-name safe, as point ids are.
 std::string file_part(std::string s) {
     for (char& c : s) {
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '+') c = '-';
@@ -51,6 +62,18 @@ std::string num(double v) {
     return t;
 }
 
+std::string datablock(const std::string& name, const std::vector<std::pair<double, double>>& points) {
+    std::string block = "$" + name + " << EOD\n";
+    for (const auto& [x, y] : points) block += num(x) + " " + num(y) + "\n";
+    return block + "EOD\n";
+}
+
+}  // namespace sweep_figures
+
+namespace {
+
+using namespace sweep_figures;
+
 const Axis* find_axis(const Grid& grid, const std::string& name) {
     for (const Axis& axis : grid.axes()) {
         if (axis.name == name) return &axis;
@@ -58,33 +81,14 @@ const Axis* find_axis(const Grid& grid, const std::string& name) {
     return nullptr;
 }
 
-// One datablock per series: "$NAME << EOD", lines of x y, "EOD".
-std::string datablock(const std::string& name, const std::vector<std::pair<double, double>>& points) {
-    std::string block = "$" + name + " << EOD\n";
-    for (const auto& [x, y] : points) block += num(x) + " " + num(y) + "\n";
-    return block + "EOD\n";
-}
-
-using Series = std::map<double, std::vector<std::pair<double, double>>>;  // m -> (N, y) by N
-
-Series series(const std::vector<Sample>& samples, const std::string& board, const std::string& column, double scale) {
-    Series lines;
-    for (const Sample& s : samples) {
-        const double y = number(*s.row, column);
-        if (s.board == board && !std::isnan(y)) lines[s.m].push_back({s.n, y * scale});
-    }
-    for (auto& [m, points] : lines) std::sort(points.begin(), points.end());
-    return lines;
-}
-
 std::string line_plot(const std::string& title, const std::string& ylabel, const Series& lines,
                       const std::string& extra_blocks, const std::string& extra_plots) {
     std::ostringstream gp;
     std::vector<std::string> plots;
     std::size_t k = 0;
-    for (const auto& [m, points] : lines) {
-        gp << datablock("m" + std::to_string(k), points);
-        plots.push_back("$m" + std::to_string(k++) + " using 1:2 with linespoints pt 7 title " + quoted("m=" + num(m)));
+    for (const auto& [key, line] : lines) {
+        gp << datablock("m" + std::to_string(k), line.points);
+        plots.push_back("$m" + std::to_string(k++) + " using 1:2 with linespoints pt 7 title " + quoted(line.title()));
     }
     gp << extra_blocks << "set title " << quoted(title) << "\nset xlabel 'N (objects)'\nset ylabel " << quoted(ylabel)
        << "\nset logscale x\nset logscale y\nset grid\nset key outside right\nplot ";
@@ -111,22 +115,39 @@ Crossover crossover(const std::vector<std::pair<double, double>>& speedups) {
 }
 
 void add_crossovers(const std::vector<Sample>& samples, const std::vector<std::string>& boards,
-                    const std::vector<std::string>& baselines, FigurePlan& plan) {
-    std::string csv = "board,m,baseline,crossover_n,how\n";
+                    const std::vector<std::string>& variant_axes, const std::vector<std::string>& baselines,
+                    FigurePlan& plan) {
+    std::string csv = "board,m,";
+    for (const std::string& axis : variant_axes) csv += axis + ",";
+    csv += "baseline,crossover_n,how\n";
     for (const std::string& baseline : baselines) {
         std::ostringstream blocks, plots;
         std::size_t drawn = 0;
         for (const std::string& board : boards) {
-            std::vector<std::pair<double, double>> points;
-            for (const auto& [m, speedups] : series(samples, board, baseline + "_speedup", 1)) {
-                const Crossover c = crossover(speedups);
-                csv += board + "," + num(m) + "," + baseline + "," + (c.n > 0 ? num(c.n) : "") + "," + c.how + "\n";
-                if (c.n > 0) points.push_back({m, c.n});
+            // One line per variant: crossover N against m.
+            std::map<std::string, Line> by_variant;
+            for (const auto& [key, line] : series(samples, board, baseline + "_speedup", 1)) {
+                const Crossover c = crossover(line.points);
+                std::string values;
+                for (const Sample& s : samples) {
+                    if (s.board == board && s.variant == line.variant) {
+                        for (const std::string& v : s.variant_values) values += v + ",";
+                        break;
+                    }
+                }
+                csv += board + "," + num(line.m) + "," + values + baseline + "," + (c.n > 0 ? num(c.n) : "") + "," +
+                       c.how + "\n";
+                Line& variant_line = by_variant[key.first];
+                variant_line.variant = line.variant;
+                if (c.n > 0) variant_line.points.push_back({line.m, c.n});
             }
-            if (points.empty()) continue;
-            blocks << datablock("c" + std::to_string(drawn), points);
-            plots << (drawn == 0 ? "" : ", ") << "$c" << drawn << " using 1:2 with linespoints pt 7 title " << quoted(board);
-            ++drawn;
+            for (const auto& [order, line] : by_variant) {
+                if (line.points.empty()) continue;
+                blocks << datablock("c" + std::to_string(drawn), line.points);
+                plots << (drawn == 0 ? "" : ", ") << "$c" << drawn << " using 1:2 with linespoints pt 7 title "
+                      << quoted(line.variant.empty() ? board : board + " " + line.variant);
+                ++drawn;
+            }
         }
         if (drawn == 0) {
             plan.notes.push_back("no crossover plot against " + baseline + ": the board beats it at no N of the sweep");
@@ -175,22 +196,33 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
     const Axis* board_axis = find_axis(grid, "board");
     const Axis* n_axis = find_axis(grid, "objects") ? find_axis(grid, "objects") : find_axis(grid, "scene.objects");
     const Axis* m_axis = find_axis(grid, "m") ? find_axis(grid, "m") : find_axis(grid, "board.m");
+    // Every other axis that varies draws lines of its own.
+    std::vector<const Axis*> variant_axes;
+    std::vector<std::string> variant_names;
     for (const Axis& axis : grid.axes()) {
         if (&axis != board_axis && &axis != n_axis && &axis != m_axis && axis.values.size() > 1) {
-            plan.notes.push_back("plots show " + axis.name + "=" + axis.values[0] + " only (the first of its values)");
+            variant_axes.push_back(&axis);
+            variant_names.push_back(axis.name);
         }
     }
     std::vector<Sample> samples;
     std::vector<std::string> boards;
     for (const auto& [index, row] : table.rows()) {
         if (text(row, "status") != "ok") continue;
-        bool first_values = true;
-        for (const Axis& axis : grid.axes()) {
-            if (&axis != board_axis && &axis != n_axis && &axis != m_axis) first_values &= text(row, axis.name) == axis.values[0];
+        Sample s;
+        s.board = text(row, board_axis ? "board" : "config.board");
+        s.m = number(row, m_axis ? m_axis->name : "config.m");
+        s.n = number(row, n_axis ? n_axis->name : "median_objects");
+        s.row = &row;
+        for (const Axis* axis : variant_axes) {
+            const std::string value = text(row, axis->name);
+            const auto place = std::find(axis->values.begin(), axis->values.end(), value) - axis->values.begin();
+            char order[16];
+            std::snprintf(order, sizeof order, "%08zu|", static_cast<std::size_t>(place));
+            s.variant += (s.variant.empty() ? "" : " ") + axis->name + "=" + value;
+            s.variant_order += order;
+            s.variant_values.push_back(value);
         }
-        if (!first_values) continue;
-        Sample s{text(row, board_axis ? "board" : "config.board"), number(row, m_axis ? m_axis->name : "config.m"),
-                 number(row, n_axis ? n_axis->name : "median_objects"), &row};
         if (std::find(boards.begin(), boards.end(), s.board) == boards.end()) boards.push_back(s.board);
         samples.push_back(s);
     }
@@ -217,6 +249,7 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
     for (const std::string& board : boards) {
         if (!phases.empty()) plan.figures.push_back(phase_bars(samples, board, phases));
     }
+    add_fit_figures(samples, boards, variant_names, plan);
     if (n_axis == nullptr) {
         plan.notes.push_back("no plots against N (time, speedup, crossover): objects (or scene.objects) is not an axis of this sweep");
         return plan;
@@ -227,7 +260,7 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
         for (std::size_t b = 0; b < baselines.size(); ++b) {
             Series software = series(samples, board, baselines[b] + "_median_ns", 1e-3);
             if (software.empty()) continue;
-            blocks << datablock("b" + std::to_string(b), software.begin()->second);
+            blocks << datablock("b" + std::to_string(b), software.begin()->second.points);
             plots << ", $b" << b << " using 1:2 with lines dt 2 lw 2 title " << quoted(baselines[b] + " (software)");
         }
         plan.figures.push_back({"time-" + file_part(board) + ".png",
@@ -242,7 +275,7 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
                                     ""});
         }
     }
-    if (!baselines.empty()) add_crossovers(samples, boards, baselines, plan);
+    if (!baselines.empty()) add_crossovers(samples, boards, variant_names, baselines, plan);
     return plan;
 }
 

@@ -25,7 +25,8 @@ struct FigurePlan {
 
 // The figures the table's ok rows support. N is the axis "objects", m the
 // axis "m" (one line when it is not an axis), boards the axis "board" (else
-// the report's board); of any other axis only its first value is drawn. The
+// the report's board); every other axis with more than one value makes a
+// variant that gets lines of its own ("m=8 format=fixed16"). The
 // crossover is the smallest N at which the board's median frame time beats
 // a baseline's (speedup >= 1), interpolated between the two measured N
 // around it (linearly in log N), or the smallest N of the sweep when the

@@ -235,5 +235,40 @@ TEST(SweepNames, AxesAreFlagsOfRunOrSettingsAndAnUnknownOneNamesTheNearest) {
     EXPECT_EQ(nearest_name("bus.interupt_ns", known.names), "bus.interrupt_ns");
 }
 
+TEST(SweepFigures, AnotherVaryingAxisDrawsLinesOfItsOwnAndFitCsvGivesTheLargestMPerVariant) {
+    const Grid grid(std::vector<Axis>{{"format", {"float32", "fixed16"}}, {"m", {"8", "24"}}, {"objects", {"100", "800"}}});
+    SweepTable table(grid);
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+        const Point point = grid.point(k);
+        PointRow row = failed_row(grid, point, PointStatus::kOk, "", 0.5);
+        const Row& axes = row.values;
+        const bool fixed = axes.at("format") == "fixed16";
+        const bool large = axes.at("objects") == "800";
+        row.values["status"] = "ok";
+        row.values["config.board"] = "b";
+        row.values["median_total_ns"] = std::to_string(1000 + k);
+        // Narrower words fit more lanes; they add extra pairs.
+        row.values["config.resources.largest_m"] = large ? (fixed ? "24" : "12") : "24";
+        row.values["median_reference_pairs"] = "200";
+        row.values["median_extra_pairs"] = fixed ? "50" : "0";
+        table.add(k, row);
+    }
+    const FigurePlan plan = plan_figures(grid, table);
+    std::string fit, time;
+    bool frontier = false;
+    for (const Figure& f : plan.figures) {
+        if (f.file == "fit.csv") fit = f.data;
+        if (f.file == "time-b.png") time = f.script;
+        frontier |= f.file == "lanes-extra-b.png";
+    }
+    EXPECT_NE(time.find("'m=8 format=fixed16'"), std::string::npos) << time;
+    EXPECT_NE(time.find("'m=24 format=float32'"), std::string::npos) << time;
+    EXPECT_EQ(fit.substr(0, fit.find('\n')), "board,format,objects,largest_m,lanes,extra_pair_share,board_median_total_ns");
+    // float32 at N=800: m=12 was not swept, so no time; fixed16 at N=800: m=24 ran (point 7).
+    EXPECT_NE(fit.find("\nb,float32,800,12,23,0,\n"), std::string::npos) << fit;
+    EXPECT_NE(fit.find("\nb,fixed16,800,24,47,0.25,1007\n"), std::string::npos) << fit;
+    EXPECT_TRUE(frontier);
+}
+
 }  // namespace
 }  // namespace cdvp

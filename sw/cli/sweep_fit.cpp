@@ -1,0 +1,101 @@
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "sw/cli/sweep_samples.h"
+
+namespace cdvp::sweep_figures {
+
+namespace {
+
+// The extra pairs a number format adds, as a share of the float32
+// reference's pairs; NaN when the report has no such figures.
+double extra_share(const Row& row) {
+    const double extra = number(row, "median_extra_pairs");
+    const double reference = number(row, "median_reference_pairs");
+    if (std::isnan(extra) || std::isnan(reference)) return std::nan("");
+    return reference > 0 ? extra / reference : 0.0;
+}
+
+// What fits at one (board, variant, N).
+struct Fit {
+    const Sample* any = nullptr;      // a point that ran there
+    const Sample* at_best = nullptr;  // the point at the largest m, when the sweep ran it
+    double largest_m = std::nan("");
+};
+
+}  // namespace
+
+void add_fit_figures(const std::vector<Sample>& samples, const std::vector<std::string>& boards,
+                     const std::vector<std::string>& variant_axes, FigurePlan& plan) {
+    // board -> (variant order, N) -> fit
+    std::map<std::string, std::map<std::pair<std::string, double>, Fit>> fits;
+    for (const Sample& s : samples) {
+        const double largest = number(*s.row, "config.resources.largest_m");
+        if (std::isnan(largest)) continue;
+        Fit& fit = fits[s.board][{s.variant_order, s.n}];
+        fit.any = &s;
+        fit.largest_m = largest;
+        if (s.m == largest) fit.at_best = &s;
+    }
+    if (fits.empty()) {
+        plan.notes.push_back("no fit.csv: the points' reports have no config.resources.largest_m (no device family)");
+        return;
+    }
+    std::string csv = "board,";
+    for (const std::string& axis : variant_axes) csv += axis + ",";
+    csv += "objects,largest_m,lanes,extra_pair_share,board_median_total_ns\n";
+    for (const std::string& board : boards) {
+        std::map<std::string, Line> largest_by_variant;
+        // Lanes against extra pairs: one line per N, one point per variant.
+        std::map<double, std::vector<std::pair<const Sample*, double>>> frontier;
+        for (const auto& [key, fit] : fits[board]) {
+            const Sample& s = *fit.any;
+            const double lanes = fit.largest_m > 0 ? 2 * fit.largest_m - 1 : 0;
+            const double share = extra_share(*s.row);
+            csv += board + ",";
+            for (const std::string& v : s.variant_values) csv += v + ",";
+            csv += num(s.n) + "," + num(fit.largest_m) + "," + num(lanes) + "," + (std::isnan(share) ? "" : num(share)) +
+                   "," + (fit.at_best ? text(*fit.at_best->row, "median_total_ns") : "") + "\n";
+            Line& line = largest_by_variant[key.first];
+            line.variant = s.variant;
+            line.points.push_back({s.n, fit.largest_m});
+            if (!std::isnan(share) && !s.variant.empty()) frontier[s.n].push_back({&s, lanes});
+        }
+        std::ostringstream gp, plots;
+        std::size_t k = 0;
+        for (const auto& [order, line] : largest_by_variant) {
+            gp << datablock("f" + std::to_string(k), line.points);
+            plots << (k == 0 ? "" : ", ") << "$f" << k << " using 1:2 with linespoints pt 7 title "
+                  << quoted(line.variant.empty() ? board : line.variant);
+            ++k;
+        }
+        gp << "set title " << quoted("largest m that fits " + board + " (fit.csv)")
+           << "\nset xlabel 'N (objects)'\nset ylabel 'largest m (2m-1 lanes)'\nset logscale x\nset grid\n"
+              "set key outside right\nplot "
+           << plots.str() << "\n";
+        plan.figures.push_back({"largest-m-" + file_part(board) + ".png", gp.str(), ""});
+        if (frontier.empty()) continue;
+        std::ostringstream fp, fplots;
+        k = 0;
+        for (const auto& [n, points] : frontier) {
+            fp << "$x" << k << " << EOD\n";
+            for (const auto& [s, lanes] : points) {
+                fp << num(1 + extra_share(*s->row)) << ' ' << num(lanes) << ' ' << quoted(s->variant) << '\n';
+            }
+            fp << "EOD\n";
+            fplots << (k == 0 ? "" : ", ") << "$x" << k << " using 1:2 with linespoints pt 7 title "
+                   << quoted("N=" + num(n)) << ", $x" << k << " using 1:2:3 with labels offset 0,1 font ',8' notitle";
+            ++k;
+        }
+        fp << "set title " << quoted("lanes that fit " + board + " against the extra pairs of each format")
+           << "\nset xlabel 'pairs read back per pair of the float32 reference (float32 = 1)'\nset ylabel 'lanes (2m-1) that fit'\n"
+              "set logscale x\nset grid\nset key outside right\nplot "
+           << fplots.str() << "\n";
+        plan.figures.push_back({"lanes-extra-" + file_part(board) + ".png", fp.str(), ""});
+    }
+    plan.figures.push_back({"fit.csv", "", csv});
+}
+
+}  // namespace cdvp::sweep_figures
