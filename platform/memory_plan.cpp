@@ -42,10 +42,8 @@ uint32_t largest_tile(const BoardConfig& board, uint64_t capacity, uint64_t bloc
 MemoryPlan plan_memory(const Settings& settings, uint64_t capacity) {
     const DeviceSettings& device = settings.device;
     MemoryPlan plan;
-    plan.tiles = ssram_tiles(device);
-    plan.tiles.boxes = 0;
-    const uint32_t cycles_per_box = ssram_tiles(device).cycles_per_box;
-    plan.ssram_capacity = device.ssram_banks == 0 ? 0 : device.ssram_words / cycles_per_box;
+    plan.tiles = ssram_tiles(device);  // boxes = 0 until SSRAM serves
+    plan.ssram_capacity = device.ssram_banks == 0 ? 0 : device.ssram_words / plan.tiles.cycles_per_box;
     const uint32_t fitting = largest_tile(settings.board, capacity, device.block_rams);
     const std::string& asked = settings.memory.memory;
     if (asked == "block_ram") return plan;
