@@ -93,6 +93,7 @@ uint64_t SweepSchedule::pair_slot(uint32_t i, uint32_t j) const {
 void ScheduleWalker::restart() {
     slot_ = 0;
     block_ = 0;
+    started_ = 0;
     in_block_ = false;
 }
 
@@ -101,15 +102,17 @@ void ScheduleWalker::enter_block() {
     row_ = schedule_->tile_begin(block.row_tile);
     column_ = block.diagonal() ? row_ + 1 : schedule_->tile_begin(block.column_tile);
     in_block_ = true;
+    ++started_;
 }
 
-ScheduleWalker::Slot ScheduleWalker::next() {
+template <class Ready>
+ScheduleWalker::Slot ScheduleWalker::step(Ready ready) {
     const std::vector<SweepSchedule::Block>& blocks = schedule_->blocks();
     const uint32_t lanes = schedule_->lanes();
     while (block_ < blocks.size()) {
         const SweepSchedule::Block& block = blocks[block_];
         if (!in_block_) {
-            if (slot_ < block.start) {
+            if (!ready(block, block_)) {
                 ++slot_;
                 Slot wait;
                 wait.kind = Slot::kWait;
@@ -137,15 +140,12 @@ ScheduleWalker::Slot ScheduleWalker::next() {
     return Slot{};
 }
 
-uint64_t ScheduleWalker::loading_block() const {
-    const std::vector<SweepSchedule::Block>& blocks = schedule_->blocks();
-    if (!schedule_->tiled() || block_ >= blocks.size()) return blocks.size();
-    if (slot_ < blocks[block_].start) return block_;  // waiting for this block's tile
-    const uint64_t next = block_ + 1;
-    if (next >= blocks.size()) return blocks.size();
-    const uint32_t tile = blocks[next].column_tile;
-    const uint64_t load = schedule_->load_slots(schedule_->tile_end(tile) - schedule_->tile_begin(tile));
-    return slot_ < blocks[block_].start + load ? next : blocks.size();
+ScheduleWalker::Slot ScheduleWalker::next() {
+    return step([this](const SweepSchedule::Block& block, uint64_t) { return slot_ >= block.start; });
+}
+
+ScheduleWalker::Slot ScheduleWalker::next(uint64_t ready_blocks) {
+    return step([ready_blocks](const SweepSchedule::Block&, uint64_t k) { return k < ready_blocks; });
 }
 
 }  // namespace cdvp

@@ -78,9 +78,10 @@ private:
 
 // The slot sequence the address generator issues, one slot a clock edge that
 // moves the pipeline: a window of boxes (port 0 on `row`, ports 1..valid_lanes
-// on first_column, first_column+1, ...), a bubble while a tile loads, then
-// the end marker. begins_block is set on a block's first slot, so a loader
-// knows when the next tile's load starts.
+// on first_column, first_column+1, ...), a bubble while the next block's
+// tiles are not in their buffers, then the end marker. Which blocks are
+// ready comes from the caller: the schedule's own block starts (next()), or
+// a loader that moves the words (next(ready_blocks), the clocked engine).
 class ScheduleWalker {
 public:
     struct Slot {
@@ -93,17 +94,22 @@ public:
 
     explicit ScheduleWalker(const SweepSchedule& schedule) : schedule_(&schedule) { restart(); }
     void restart();
-    // The slot issued now, then the next.
+    // The slot issued now, then the next: blocks start at the schedule's starts.
     Slot next();
-    // Index of the block whose load runs now (its column tile), or blocks().size() when none.
-    uint64_t loading_block() const;
+    // The same, but block k may start once k < ready_blocks.
+    Slot next(uint64_t ready_blocks);
+    // Blocks started so far (a block of no slots starts and ends in one call).
+    uint64_t blocks_started() const { return started_; }
 
 private:
+    template <class Ready>
+    Slot step(Ready ready);
     void enter_block();
 
     const SweepSchedule* schedule_;
     uint64_t slot_ = 0;
     uint64_t block_ = 0;
+    uint64_t started_ = 0;
     uint32_t row_ = 0;
     uint32_t column_ = 0;
     bool in_block_ = false;

@@ -16,37 +16,30 @@ ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
       comparison_unit_(config.lanes(), config.compare),
       collector_(config.collector),
       line_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles) {
-    if (!config.tiles.tiled()) {
-        columns_.push_back(make_memories(config.m, capacity));
-        return;
-    }
-    const uint32_t depth = std::max(1u, std::min(config.tiles.boxes, capacity));
-    for (int buffer = 0; buffer < 2; ++buffer) {
-        columns_.push_back(make_memories(config.m, depth));
-        rows_.push_back(make_memories(1, depth));
+    if (config.tiles.tiled()) {
+        loader_ = std::make_unique<TileLoader>(config, capacity);
+    } else {
+        memories_.push_back(make_memories(config.m, capacity));
     }
 }
 
 uint32_t ClockedEngine::block_rams() const {
-    uint32_t total = 0;
-    for (const auto* set : {&columns_, &rows_}) {
-        for (const CoordinateMemories& memories : *set) total += kCoordinates * memories[0].block_rams();
-    }
-    return total;
+    return loader_ ? loader_->block_rams() : kCoordinates * memories_[0][0].block_rams();
 }
 
 void ClockedEngine::start(const CoordinateStore& store, uint32_t objects) {
     schedule_ = SweepSchedule(config_.m, config_.tiles, objects);
     walker_.restart();
-    if (schedule_.tiled()) {
-        // The host's writes went to the SSRAM banks; tiles load from there.
-        for (uint32_t c = 0; c < kCoordinates; ++c) ssram_[c].assign(store[c].begin(), store[c].begin() + objects);
-        loaded_blocks_ = 0;
+    if (loader_) {
+        // The host's writes went to the SSRAM banks; the first tile loads from slot 0.
+        loader_->start(store, objects, schedule_);
+        loads_begun_ = 0;
+        if (!schedule_.blocks().empty()) loader_->begin(loads_begun_++);
     } else {
         // The host's writes reach every copy of the block RAMs; loading them
         // here is the same, as nothing reads them before the sweep.
         for (uint32_t c = 0; c < kCoordinates; ++c) {
-            for (uint32_t i = 0; i < objects; ++i) columns_[0][c].write(i, store[c][i]);
+            for (uint32_t i = 0; i < objects; ++i) memories_[0][c].write(i, store[c][i]);
         }
     }
     block_ = 0;
@@ -117,29 +110,6 @@ SweepCounters ClockedEngine::counters_after(uint64_t edges) {
     return c;
 }
 
-// A tile's load writes its buffer from SSRAM in one go when it begins: the
-// buffer is idle until the block that reads it starts, which the schedule
-// places after the load's last word (n_b x cycles a box + latency slots).
-void ClockedEngine::load_through(uint64_t block) {
-    const auto& blocks = schedule_.blocks();
-    for (; loaded_blocks_ <= block && loaded_blocks_ < blocks.size(); ++loaded_blocks_) {
-        const SweepSchedule::Block& b = blocks[loaded_blocks_];
-        const auto write_tile = [&](CoordinateMemories& memories, uint32_t tile) {
-            const uint32_t first = schedule_.tile_begin(tile);
-            for (uint32_t c = 0; c < kCoordinates; ++c) {
-                for (uint32_t i = first; i < schedule_.tile_end(tile); ++i) memories[c].write(i - first, ssram_[c][i]);
-            }
-        };
-        write_tile(columns_[loaded_blocks_ % 2], b.column_tile);
-        // The row memory takes tile 0 with the first load, and tile a+1 from
-        // the same reads that bring it in as block (a, a+1)'s column tile.
-        if (loaded_blocks_ == 0 || b.column_tile == b.row_tile + 1) {
-            const uint32_t row_tile = loaded_blocks_ == 0 ? 0 : b.column_tile;
-            write_tile(rows_[row_tile % 2], row_tile);
-        }
-    }
-}
-
 uint32_t ClockedEngine::tile_of(bool column) const {
     const auto& blocks = schedule_.blocks();
     if (blocks.empty()) return 0;
@@ -148,7 +118,15 @@ uint32_t ClockedEngine::tile_of(bool column) const {
 }
 
 ClockedEngine::Slot ClockedEngine::issue() {
-    const ScheduleWalker::Slot next = walker_.next();
+    if (loader_) loader_->land();
+    const ScheduleWalker::Slot next =
+        loader_ ? walker_.next(loader_->ready_blocks()) : walker_.next(schedule_.blocks().size());
+    if (loader_) {
+        // A block that starts starts the next block's load, in this slot.
+        const auto& blocks = schedule_.blocks();
+        while (loads_begun_ < blocks.size() && loads_begun_ <= walker_.blocks_started()) loader_->begin(loads_begun_++);
+        loader_->read();
+    }
     waiting_ = next.kind == ScheduleWalker::Slot::kWait;
     if (next.kind == ScheduleWalker::Slot::kEnd) {
         if (end_issued_) return Slot{};
@@ -156,15 +134,14 @@ ClockedEngine::Slot ClockedEngine::issue() {
         return Slot{Slot::kEnd};
     }
     block_ = next.block;
-    if (schedule_.tiled()) load_through(waiting_ ? next.block : next.block + 1);
     if (waiting_) return Slot{};  // a bubble: the tile is still loading
     const AddressGenerator::Issue addresses{next.row, next.first_column, next.valid_lanes};
     last_issue_ = addresses;
-    CoordinateMemories& columns = columns_[schedule_.tiled() ? next.block % 2 : 0];
     const SweepSchedule::Block& block = schedule_.blocks()[next.block];
-    const uint32_t row_base = schedule_.tiled() ? schedule_.tile_begin(block.row_tile) : 0;
-    const uint32_t column_base = schedule_.tiled() ? schedule_.tile_begin(block.column_tile) : 0;
-    CoordinateMemories& rows = schedule_.tiled() ? rows_[block.row_tile % 2] : columns;
+    const uint32_t row_base = loader_ ? schedule_.tile_begin(block.row_tile) : 0;
+    const uint32_t column_base = loader_ ? schedule_.tile_begin(block.column_tile) : 0;
+    CoordinateMemories& columns = loader_ ? loader_->columns(next.block) : memories_[0];
+    CoordinateMemories& rows = loader_ ? loader_->rows(block.row_tile) : columns;
     for (uint32_t c = 0; c < kCoordinates; ++c) {
         rows[c].clock_read(0, addresses.row - row_base);
         for (uint32_t lane = 0; lane < addresses.valid_lanes; ++lane) {

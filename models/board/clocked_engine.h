@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "models/address_generator/address_generator.h"
@@ -9,6 +10,7 @@
 #include "models/board/board_engine.h"
 #include "models/coordinate_memory/coordinate_memory.h"
 #include "models/pair_collector/pair_collector.h"
+#include "models/tile_loader/tile_loader.h"
 
 namespace cdvp {
 
@@ -18,7 +20,9 @@ namespace cdvp {
 // On a tiled board (config.tiles) the boxes sit in SSRAM and the address
 // generator walks the tiled schedule (SweepSchedule): port 0 reads a
 // double-buffered row memory, ports 1..2m-1 a double-buffered column memory,
-// and a tile loads from SSRAM into the idle buffer while the other is compared.
+// and the loader (TileLoader) brings the next block's tile from SSRAM into
+// the idle buffer while the other is compared; the address generator issues
+// bubbles until it has landed.
 // Nothing outside the board sees it between host accesses, so a segment may
 // be stepped ahead in bulk (segment_edges()) while what each edge changed is
 // kept: counters_after() then answers for any earlier edge. For waveforms the
@@ -62,7 +66,7 @@ public:
     const AddressGenerator::Issue& last_issue() const { return last_issue_; }
     uint32_t row_tile() const { return tile_of(false); }
     uint32_t column_tile() const { return tile_of(true); }
-    bool loading() const { return schedule_.tiled() && walker_.loading_block() < schedule_.blocks().size(); }
+    bool loading() const { return loader_ != nullptr && loader_->busy(); }
     bool waiting() const { return waiting_; }
     const Slot& compare_output() const { return line_[head_]; }
     bool stalled() const { return stalled_; }
@@ -76,21 +80,17 @@ private:
     Slot issue();
     void stall();
     uint64_t stalls_through(uint64_t edges) const;
-    // Tiled: writes the tiles of every block up to `block` into their buffers.
-    void load_through(uint64_t block);
     uint32_t tile_of(bool column) const;
 
     BoardConfig config_;
-    // Untiled: one set of coordinate memories for every box (columns_[0]).
-    // Tiled: column tile buffers ping/pong, row tile buffers ping/pong, and
-    // the boxes in SSRAM as the host wrote them.
-    std::vector<CoordinateMemories> columns_;
-    std::vector<CoordinateMemories> rows_;
-    CoordinateStore ssram_;
+    // Untiled: one set of coordinate memories for every box. Tiled: the
+    // loader with the SSRAM and the tile buffers.
+    std::vector<CoordinateMemories> memories_;
+    std::unique_ptr<TileLoader> loader_;
     SweepSchedule schedule_;
     ScheduleWalker walker_{schedule_};
-    uint64_t loaded_blocks_ = 0;  // blocks whose tiles are in their buffers
-    uint64_t block_ = 0;          // the block of the last issued slot
+    uint64_t loads_begun_ = 0;
+    uint64_t block_ = 0;  // the block of the last issued slot
     bool waiting_ = false;
     ComparisonUnit comparison_unit_;
     PairCollector collector_;
