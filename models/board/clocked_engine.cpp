@@ -4,13 +4,6 @@
 
 namespace cdvp {
 
-namespace {
-CoordinateMemories make_memories(uint32_t m, uint32_t depth) {
-    return {CoordinateMemory(m, depth), CoordinateMemory(m, depth), CoordinateMemory(m, depth),
-            CoordinateMemory(m, depth), CoordinateMemory(m, depth), CoordinateMemory(m, depth)};
-}
-}  // namespace
-
 ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
     : config_(config),
       comparison_unit_(config.lanes(), config.compare),
@@ -19,7 +12,7 @@ ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
     if (config.tiles.tiled()) {
         loader_ = std::make_unique<TileLoader>(config, capacity);
     } else {
-        memories_.push_back(make_memories(config.m, capacity));
+        memories_.push_back(make_coordinate_memories(config.m, capacity));
     }
 }
 

@@ -12,6 +12,11 @@ namespace cdvp {
 // Coordinate memories in the board's order.
 enum Coordinate : uint32_t { kMinX, kMinY, kMinZ, kMaxX, kMaxY, kMaxZ, kCoordinates };
 using CoordinateMemories = std::array<CoordinateMemory, kCoordinates>;
+// Six memories of `copies` copies (2 x copies ports) and `depth` boxes each.
+inline CoordinateMemories make_coordinate_memories(uint32_t copies, uint32_t depth) {
+    return {CoordinateMemory(copies, depth), CoordinateMemory(copies, depth), CoordinateMemory(copies, depth),
+            CoordinateMemory(copies, depth), CoordinateMemory(copies, depth), CoordinateMemory(copies, depth)};
+}
 
 struct ComparisonUnitConfig {
     // Cycles from the block RAM outputs to the lane results. Default 2, an

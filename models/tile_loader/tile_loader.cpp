@@ -5,18 +5,11 @@
 
 namespace cdvp {
 
-namespace {
-CoordinateMemories make_memories(uint32_t copies, uint32_t depth) {
-    return {CoordinateMemory(copies, depth), CoordinateMemory(copies, depth), CoordinateMemory(copies, depth),
-            CoordinateMemory(copies, depth), CoordinateMemory(copies, depth), CoordinateMemory(copies, depth)};
-}
-}  // namespace
-
 TileLoader::TileLoader(const BoardConfig& config, uint32_t capacity) : tiles_(config.tiles) {
     const uint32_t depth = std::max(1u, std::min(config.tiles.boxes, capacity));
     for (int buffer = 0; buffer < 2; ++buffer) {
-        columns_.push_back(make_memories(config.m, depth));
-        rows_.push_back(make_memories(1, depth));
+        columns_.push_back(make_coordinate_memories(config.m, depth));
+        rows_.push_back(make_coordinate_memories(1, depth));
     }
 }
 
