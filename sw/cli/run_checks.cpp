@@ -150,18 +150,19 @@ void check_ssram(const RunOptions& o, const SettingValues& values, uint64_t max_
         throw InputError(values.where(setting("device.ssram_banks")) + ": the device has no off-chip SSRAM (0 banks); " +
                          memory + " needs some: use block_ram or give device.ssram_banks");
     }
+    if (settings.run.ignore_capacity != "yes" && max_objects > plan.ssram_capacity) {
+        throw InputError(values.where(setting("device.ssram_words")) + ": " + std::to_string(settings.device.ssram_words) +
+                         " words a bank in " + std::to_string(settings.device.ssram_banks) + " SSRAM banks hold " +
+                         std::to_string(plan.ssram_capacity) + " boxes, too few for " +
+                         objects_origin(o, values, max_objects) + " (" + memory +
+                         "): use fewer objects; --ignore-capacity runs it anyway");
+    }
     const uint64_t tiles = (max_objects + plan.tiles.boxes - 1) / plan.tiles.boxes;
     if (tiles > SweepSchedule::kMaxTiles) {
         throw InputError(values.where(setting("board.tile_boxes")) + ": tiles of " + std::to_string(plan.tiles.boxes) +
                          " boxes make " + std::to_string(tiles) + " tiles of " + objects_origin(o, values, max_objects) +
                          "; expected at most " + std::to_string(SweepSchedule::kMaxTiles) + " tiles: give larger tiles");
     }
-    if (settings.run.ignore_capacity == "yes" || max_objects <= plan.ssram_capacity) return;
-    throw InputError(values.where(setting("device.ssram_words")) + ": " + std::to_string(settings.device.ssram_words) +
-                     " words a bank in " + std::to_string(settings.device.ssram_banks) + " SSRAM banks hold " +
-                     std::to_string(plan.ssram_capacity) + " boxes, too few for " +
-                     objects_origin(o, values, max_objects) + " (" + memory +
-                     "): use fewer objects; --ignore-capacity runs it anyway");
 }
 
 // The tile buffers of a board in SSRAM do not fit the block RAMs.

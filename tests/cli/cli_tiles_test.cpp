@@ -110,6 +110,12 @@ TEST_F(CliTiles, ScenesPastTheSsramAreRefused) {
     // Three banks take turns: two cycles a box, half the boxes.
     expect_refusal(run(spheres(2000, 1) + "--m 8 -c device.ssram_banks=3 -c device.ssram_words=3000"),
                    "cdvp run: -c device.ssram_words: 3000 words a bank in 3 SSRAM banks hold 1500 boxes");
+    // Past the ADM-XRC-II's 524,288 boxes (at 512 a tile, also past the tiles the schedule allows):
+    // the SSRAM is named.
+    expect_refusal(run(spheres(524289, 1) + "--m 11"),
+                   "cdvp run: " + preset("adm-xrc-ii") +
+                       ": device.ssram_words: 524288 words a bank in 6 SSRAM banks hold 524288 boxes, too few for "
+                       "524289 objects (--objects) (memory=auto (the default of board.memory)): use fewer objects");
     expect_refusal(run(spheres(100, 1) + "-c board.memory=ssram -c device.ssram_banks=0"),
                    "cdvp run: -c device.ssram_banks: the device has no off-chip SSRAM");
     EXPECT_EQ(files(), std::vector<std::string>{}) << "a refused run leaves no output";
