@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "platform/memory_plan.h"
+
 namespace cdvp {
 
 namespace {
@@ -23,8 +25,9 @@ DeviceFit fit_on_device(const Settings& settings, uint64_t capacity) {
                   capacity_or_unbounded(d.block_rams), ""};
     const SynthesisTable& table = SynthesisTable::stored();
     const auto cost = [&](uint32_t m) {
-        BoardConfig board = settings.board;
-        board.m = m;
+        Settings at_m = settings;
+        at_m.board.m = m;
+        const BoardConfig board = planned_board(at_m, capacity);  // block RAM or SSRAM tiles at this m
         return board_resources(table, fit.device, kFormat, m, static_cast<double>(board.block_rams(capacity)));
     };
     fit.resources = cost(settings.board.m);

@@ -12,6 +12,11 @@ namespace cdvp {
 // Coordinate memories in the board's order.
 enum Coordinate : uint32_t { kMinX, kMinY, kMinZ, kMaxX, kMaxY, kMaxZ, kCoordinates };
 using CoordinateMemories = std::array<CoordinateMemory, kCoordinates>;
+// Six memories of `copies` copies (2 x copies ports) and `depth` boxes each.
+inline CoordinateMemories make_coordinate_memories(uint32_t copies, uint32_t depth) {
+    return {CoordinateMemory(copies, depth), CoordinateMemory(copies, depth), CoordinateMemory(copies, depth),
+            CoordinateMemory(copies, depth), CoordinateMemory(copies, depth), CoordinateMemory(copies, depth)};
+}
 
 struct ComparisonUnitConfig {
     // Cycles from the block RAM outputs to the lane results. Default 2, an
@@ -38,12 +43,17 @@ public:
     // The lane results for the current memory outputs; lanes beyond
     // valid_lanes are not evaluated (their bits are 0).
     uint64_t evaluate(const CoordinateMemories& memories, uint32_t valid_lanes) const {
+        return evaluate(memories, memories, valid_lanes);
+    }
+    // A tiled board: box i from port 0 of the row memories, the boxes j from
+    // ports 1..valid_lanes of the column memories.
+    uint64_t evaluate(const CoordinateMemories& rows, const CoordinateMemories& columns, uint32_t valid_lanes) const {
         float i_bounds[kCoordinates];
-        for (uint32_t c = 0; c < kCoordinates; ++c) i_bounds[c] = as_float(memories[c].output(0));
+        for (uint32_t c = 0; c < kCoordinates; ++c) i_bounds[c] = as_float(rows[c].output(0));
         uint64_t hits = 0;
         for (uint32_t port = 1; port <= valid_lanes; ++port) {
             float j_bounds[kCoordinates];
-            for (uint32_t c = 0; c < kCoordinates; ++c) j_bounds[c] = as_float(memories[c].output(port));
+            for (uint32_t c = 0; c < kCoordinates; ++c) j_bounds[c] = as_float(columns[c].output(port));
             hits |= static_cast<uint64_t>(lane_hit(i_bounds, j_bounds)) << (port - 1);
         }
         return hits;

@@ -24,6 +24,7 @@ struct Variant {
     uint32_t buffer_depth;
     bool dma, irq;
     double poll_gap_ns;
+    uint32_t tile_boxes = 0;  // 0: boxes in block RAM; else SSRAM tiles of this many boxes
 };
 
 PlatformConfig platform_for(const Variant& v, Fidelity fidelity) {
@@ -35,6 +36,7 @@ PlatformConfig platform_for(const Variant& v, Fidelity fidelity) {
     config.driver.use_dma = v.dma;
     config.driver.use_interrupts = v.irq;
     config.driver.poll_gap_ns = v.poll_gap_ns;
+    config.board.tiles.boxes = v.tile_boxes;
     config.fidelity = fidelity;
     return config;
 }
@@ -117,6 +119,26 @@ TEST(EngineEquivalence, AllOverlappingScenesWithTinyBuffers) {
     }
     const Totals t = expect_equivalent(variants, 60, scenes);
     EXPECT_GT(t.pauses, 1000u) << "hundreds of overflow pauses a frame";
+}
+
+// Boxes in SSRAM, swept in small tiles (partial last tiles, up to 20 tiles):
+// loads, bubbles and pauses at tile borders through the whole platform.
+TEST(EngineEquivalence, TiledBoardsOverModesTilesAndTinyBuffers) {
+    std::mt19937 rng(79);
+    std::vector<std::vector<FloatBox>> scenes;
+    for (uint32_t n : {0u, 1u, 2u, 3u, 31u, 64u, 97u, 160u}) {
+        scenes.push_back(testing::random_boxes(n, 0.8f * std::cbrt(static_cast<float>(n) + 1), 2.0f, rng));
+    }
+    scenes.push_back(std::vector<FloatBox>(50, FloatBox{{0, 0, 0}, {1, 1, 1}}));
+    const Totals t = expect_equivalent({{"t1_dma_irq_m1", 1, 1, 3, true, true, 0, 1},
+                                        {"t8_pio_poll_m3", 3, 5, 7, false, false, 29, 8},
+                                        {"t13_dma_poll_m2", 2, 3, 2, true, false, 11, 13},
+                                        {"t32_pio_irq_m8", 8, 15, 5, false, true, 0, 32},
+                                        {"t64_dma_irq_m32", 32, 63, 1000, true, true, 0, 64}},
+                                       160, scenes);
+    EXPECT_GT(t.pairs, 2000u) << "scenes with pairs to find";
+    EXPECT_GT(t.pauses, 500u) << "overflow pauses, some at tile borders";
+    EXPECT_GT(t.stalls, 500u) << "back-pressure and drain";
 }
 
 }  // namespace
