@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "platform/memory_plan.h"
+
 namespace cdvp {
 
 namespace {
@@ -21,8 +23,9 @@ DeviceFit fit_on_device(const Settings& settings, uint64_t capacity) {
                   capacity_or_unbounded(d.block_rams), ""};
     const SynthesisTable& table = SynthesisTable::stored();
     const auto cost = [&](uint32_t m) {
-        BoardConfig board = settings.board;
-        board.m = m;
+        Settings at_m = settings;
+        at_m.board.m = m;
+        const BoardConfig board = planned_board(at_m, capacity);  // block RAM or SSRAM tiles at this m
         // Lanes in the board's format; memories at the format's block RAM depth.
         return board_resources(table, fit.device, board.format.name(), m,
                                static_cast<double>(board.block_rams(capacity)));

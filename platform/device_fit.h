@@ -19,7 +19,8 @@ struct DeviceFit {
 // Whether a device family is set, so that resources can be costed.
 bool has_device_family(const Settings& settings);
 // The fit of settings.board on settings.device for boards of 'capacity'
-// boxes; only with has_device_family(settings).
+// boxes, in the memory plan_memory picks at each m (block RAM or SSRAM
+// tiles); only with has_device_family(settings).
 DeviceFit fit_on_device(const Settings& settings, uint64_t capacity);
 
 }  // namespace cdvp

@@ -50,12 +50,24 @@ struct DeviceSettings {
     uint64_t luts = 0;            // 0: unbounded
     uint64_t flip_flops = 0;      // 0: unbounded
     uint32_t block_rams = 0;      // 18-Kbit block RAMs; 0: unbounded
+    // Off-chip SSRAM beside the FPGA: banks, words a bank (36-bit, one float
+    // a word), read pipeline latency; one access a clock a bank. 0 banks: none.
+    uint32_t ssram_banks = 6;
+    uint64_t ssram_words = 524288;
+    uint32_t ssram_latency_cycles = 2;
+};
+
+// Where the board keeps its boxes (platform/memory_plan.h resolves it).
+struct MemorySettings {
+    std::string memory = "auto";  // auto | block_ram | ssram
+    uint64_t tile_boxes = 0;      // 0: the largest tile whose buffers fit the device
 };
 
 // Everything a run is configured by. Each member's initializer is its
 // setting's default (the table reads it from a default Settings).
 struct Settings {
     BoardConfig board;
+    MemorySettings memory;
     DeviceSettings device;
     std::string bus_type = "ideal";  // ideal | pci | pcie
     PciConfig pci;

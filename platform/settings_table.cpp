@@ -173,8 +173,21 @@ std::vector<Setting> board_settings() {
                           "pair buffer depth in pairs before the host drains it",
                           "assumption: one 2 MiB ZBT SSRAM bank of 64-bit entries (the ADM-XRC-II has six)")),
              "pair-buffer", "P"),
+        choice("board.memory", {"auto", "block_ram", "ssram"}, member(&S::memory, &MemorySettings::memory),
+                    "where the boxes live: block_ram (the coordinate memories hold all N), ssram (off-chip, swept "
+                    "in tiles through block-RAM buffers, docs/tiles.md) or auto (block RAM when the N boxes fit "
+                    "the device's block RAMs or --ignore-capacity is given, else SSRAM tiles)",
+                    "auto: the paper's board keeps its boxes in block RAM up to about 500"),
+        count("board.tile_boxes", "boxes", 0, address_map::kMaxObjects,
+                   member(&S::memory, &MemorySettings::tile_boxes),
+                   "boxes a tile when SSRAM serves; 0: the largest tile whose buffers, 6 x (2m+2) x ceil(T/512) "
+                   "block RAMs, fit the device",
+                   "0: as large as the device allows (fewer tiles, fewer loads)"),
     };
 }
+
+constexpr const char* kSsramSource =
+    "the ADM-XRC-II's six ZBT SSRAM banks (Alpha Data); 512K x 36 a bank is an assumption (not confirmed)";
 
 std::vector<Setting> device_settings() {
     using V = DeviceSettings;
@@ -194,6 +207,15 @@ std::vector<Setting> device_settings() {
         preset(count("device.block_rams", "block RAMs", 0, 100000, member(&S::device, &V::block_rams),
                      "the FPGA's 18-Kbit block RAMs, which bound m for N boxes (0: unbounded)",
                      "none without a preset; Xilinx DS031: the XC2V6000 has 144")),
+        preset(count("device.ssram_banks", "banks", 0, 64, member(&S::device, &V::ssram_banks),
+                     "independent off-chip SSRAM banks, one access a clock each; a tile loads a box a cycle "
+                     "with six (one per coordinate), ceil(6/banks) cycles with fewer; 0: no off-chip memory",
+                     kSsramSource)),
+        preset(count("device.ssram_words", "words", 0, 1ull << 32, member(&S::device, &V::ssram_words),
+                     "words of 36 bits a bank (one coordinate a word): a board in SSRAM holds this many boxes with "
+                     "six banks", kSsramSource)),
+        preset(count("device.ssram_latency_cycles", "cycles", 0, 64, member(&S::device, &V::ssram_latency_cycles),
+                     "SSRAM read pipeline: address to data, in board cycles", "pipelined ZBT SSRAM: 2 cycles")),
     };
 }
 

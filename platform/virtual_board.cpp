@@ -12,6 +12,13 @@ namespace {
 std::shared_ptr<const BusTiming> bus_or_ideal(const std::shared_ptr<const BusTiming>& bus) {
     return bus ? bus : std::make_shared<IdealBusTiming>();
 }
+// The driver knows the board's memory as it knows the bitstream it loaded.
+DriverConfig driver_for(const PlatformConfig& config) {
+    DriverConfig driver = config.driver;
+    driver.tiles = config.board.tiles;
+    return driver;
+}
+
 }  // namespace
 
 VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& config, uint32_t capacity,
@@ -22,7 +29,7 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
       bridge_("bridge", bus_or_ideal(config.bus)),
       bus_("pci", bus_or_ideal(config.bus)),
       memory_("memory", BoardDriver::host_memory_bytes(capacity, config.board.collector.buffer_depth)),
-      cpu_("cpu", memory_, bus_.interrupt_event(), board_.period(), config.driver, bus_or_ideal(config.bus),
+      cpu_("cpu", memory_, bus_.interrupt_event(), board_.period(), driver_for(config), bus_or_ideal(config.bus),
            sc_time(config.quantum_ns, SC_NS)),
       fpga_irq_("fpga_irq"),
       inta_("inta") {

@@ -1,21 +1,30 @@
 #include "models/board/board_config.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "models/address_generator/address_generator.h"
+#include "models/address_generator/sweep_schedule.h"
 #include "models/block_ram/block_ram.h"
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/control_registers/control_registers.h"
 
 namespace cdvp {
 
-uint64_t BoardConfig::sweep_cycles(uint64_t objects) const { return AddressGenerator::sweep_cycles(objects, m); }
+uint64_t BoardConfig::sweep_cycles(uint64_t objects) const {
+    if (!tiles.tiled()) return AddressGenerator::sweep_cycles(objects, m);
+    return SweepSchedule(m, tiles, static_cast<uint32_t>(objects)).slots();
+}
+
+uint64_t BoardConfig::primitives_for_depth(uint64_t depth) const {
+    return CascadedBlockRam::primitives_for(static_cast<uint32_t>(depth), format.boxes_per_block_ram());
+}
 
 uint64_t BoardConfig::block_rams(uint64_t capacity) const {
-    return uint64_t{kCoordinates} * m *
-           CascadedBlockRam::primitives_for(static_cast<uint32_t>(capacity), format.boxes_per_block_ram());
+    const uint64_t depth = tiles.tiled() ? std::min<uint64_t>(tiles.boxes, capacity) : capacity;
+    return uint64_t{kCoordinates} * memory_copies() * primitives_for_depth(depth);
 }
 
 uint64_t BoardConfig::block_ram_bytes(uint64_t capacity) const {
@@ -49,6 +58,10 @@ void BoardConfig::validate() const {
     require(collector.buffer_depth >= 1 && collector.buffer_depth <= address_map::kMaxBufferedPairs,
             "pair_buffer_depth: expected 1 to " + std::to_string(address_map::kMaxBufferedPairs) +
                 " pairs, got " + std::to_string(collector.buffer_depth));
+    require(tiles.load_latency_cycles <= 64,
+            "ssram_latency_cycles: expected at most 64 cycles, got " + std::to_string(tiles.load_latency_cycles));
+    require(tiles.cycles_per_box >= 1 && tiles.cycles_per_box <= kCoordinates,
+            "ssram cycles a box: expected 1 to 6, got " + std::to_string(tiles.cycles_per_box));
 }
 
 }  // namespace cdvp

@@ -7,6 +7,7 @@
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/number_format/number_format.h"
 #include "models/pair_collector/pair_collector.h"
+#include "models/board/tile_config.h"
 
 namespace cdvp {
 
@@ -20,6 +21,8 @@ struct BoardConfig {
     NumberFormat format;
     ComparisonUnitConfig compare;
     PairCollectorConfig collector;
+    // Block RAM (the seed's board) or SSRAM tiles (platform/memory_plan.h picks it).
+    TileConfig tiles;
 
     static constexpr uint32_t kMaxM = (ComparisonUnit::kMaxLanes + 1) / 2;  // 32
     // Cycles of the collector stage: the FIFO write to the pair buffer write.
@@ -30,14 +33,22 @@ struct BoardConfig {
     // S(N,m) + L + stall cycles from start to done.
     uint32_t pipeline_latency() const;
     // What a board of this configuration is, so that no caller reaches into
-    // its blocks: S(N,m), the address generator's cycles for N boxes; the
-    // block RAM primitives of the six coordinate memories for `capacity`
-    // boxes (6 x m x ceil(N/D), D the format's boxes per primitive: 512 for
-    // 19..32-bit words, 1024 for 10..18, 2048 for 8..9); and the bytes of
-    // block RAM words the clocked model keeps for them.
+    // its blocks: the address generator's slots for N boxes (S(N,m) on a
+    // board in block RAM, the tiled schedule's slots on one in SSRAM:
+    // SweepSchedule); the block RAM primitives of the coordinate memories
+    // for `capacity` boxes (6 x m x ceil(N/D)), or of the tile buffers
+    // (6 x (2m+2) x ceil(min(T,N)/D)), D the boxes one primitive holds in the
+    // number format (512 for 19..32-bit words, 1024 for 10..18, 2048 for
+    // 8..9); and the bytes of block RAM words the clocked model keeps for them.
     uint64_t sweep_cycles(uint64_t objects) const;
     uint64_t block_rams(uint64_t capacity) const;
     uint64_t block_ram_bytes(uint64_t capacity) const;
+    // Block RAM primitives one copy of a coordinate memory of `depth` boxes
+    // cascades in the format's aspect: every block RAM count goes through here.
+    uint64_t primitives_for_depth(uint64_t depth) const;
+    // Copies of each coordinate memory: m (2m ports); tiled, a double-buffered
+    // 2m-port column memory and a double-buffered row memory for port 0: 2m + 2.
+    uint64_t memory_copies() const { return tiles.tiled() ? 2ull * m + 2 : m; }
     // Clock period in picoseconds (the simulation's time resolution).
     double period_ps() const { return 1e6 / clock_mhz; }
     // Throws std::invalid_argument with one line "SETTING: expected ..., got ...",

@@ -4,28 +4,39 @@
 
 namespace cdvp {
 
-namespace {
-CoordinateMemories make_memories(uint32_t m, uint32_t depth, uint32_t words_per_primitive) {
-    const CoordinateMemory memory(m, depth, words_per_primitive);
-    return {memory, memory, memory, memory, memory, memory};
-}
-}  // namespace
-
 ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
     : config_(config),
-      memories_(make_memories(config.m, capacity, config.format.boxes_per_block_ram())),
-      address_generator_(config.m),
       comparison_unit_(config.lanes(), config.compare, config.format),
       collector_(config.collector),
-      line_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles) {}
+      line_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles) {
+    if (config.tiles.tiled()) {
+        loader_ = std::make_unique<TileLoader>(config, capacity);
+    } else {
+        memories_.push_back(make_coordinate_memories(config.m, capacity, config.format.boxes_per_block_ram()));
+    }
+}
+
+uint32_t ClockedEngine::block_rams() const {
+    return loader_ ? loader_->block_rams() : kCoordinates * memories_[0][0].block_rams();
+}
 
 void ClockedEngine::start(const CoordinateStore& store, uint32_t objects) {
-    // The host's writes reach every copy of the block RAMs; loading them here
-    // is the same, as nothing reads them before the sweep.
-    for (uint32_t c = 0; c < kCoordinates; ++c) {
-        for (uint32_t i = 0; i < objects; ++i) memories_[c].write(i, store[c][i]);
+    schedule_ = SweepSchedule(config_.m, config_.tiles, objects);
+    walker_.restart();
+    if (loader_) {
+        // The host's writes went to the SSRAM banks; the first tile loads from slot 0.
+        loader_->start(store, objects, schedule_);
+        loads_begun_ = 0;
+        if (!schedule_.blocks().empty()) loader_->begin(loads_begun_++);
+    } else {
+        // The host's writes reach every copy of the block RAMs; loading them
+        // here is the same, as nothing reads them before the sweep.
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
+            for (uint32_t i = 0; i < objects; ++i) memories_[0][c].write(i, store[c][i]);
+        }
     }
-    address_generator_.start(objects);
+    block_ = 0;
+    waiting_ = false;
     collector_.reset();
     for (auto& slot : line_) slot = Slot{};
     head_ = 0;
@@ -92,26 +103,49 @@ SweepCounters ClockedEngine::counters_after(uint64_t edges) {
     return c;
 }
 
+uint32_t ClockedEngine::tile_of(bool column) const {
+    const auto& blocks = schedule_.blocks();
+    if (blocks.empty()) return 0;
+    const SweepSchedule::Block& b = blocks[std::min<uint64_t>(block_, blocks.size() - 1)];
+    return column ? b.column_tile : b.row_tile;
+}
+
 ClockedEngine::Slot ClockedEngine::issue() {
-    if (address_generator_.exhausted()) {
+    if (loader_) loader_->land();
+    const ScheduleWalker::Slot next =
+        loader_ ? walker_.next(loader_->ready_blocks()) : walker_.next(schedule_.blocks().size());
+    if (loader_) {
+        // A block that starts starts the next block's load, in this slot.
+        const auto& blocks = schedule_.blocks();
+        while (loads_begun_ < blocks.size() && loads_begun_ <= walker_.blocks_started()) loader_->begin(loads_begun_++);
+        loader_->read();
+    }
+    waiting_ = next.kind == ScheduleWalker::Slot::kWait;
+    if (next.kind == ScheduleWalker::Slot::kEnd) {
         if (end_issued_) return Slot{};
         end_issued_ = true;
         return Slot{Slot::kEnd};
     }
-    const AddressGenerator::Issue addresses = address_generator_.current();
+    block_ = next.block;
+    if (waiting_) return Slot{};  // a bubble: the tile is still loading
+    const AddressGenerator::Issue addresses{next.row, next.first_column, next.valid_lanes};
     last_issue_ = addresses;
-    for (auto& memory : memories_) {
-        memory.clock_read(0, addresses.row);
+    const SweepSchedule::Block& block = schedule_.blocks()[next.block];
+    const uint32_t row_base = loader_ ? schedule_.tile_begin(block.row_tile) : 0;
+    const uint32_t column_base = loader_ ? schedule_.tile_begin(block.column_tile) : 0;
+    CoordinateMemories& columns = loader_ ? loader_->columns(next.block) : memories_[0];
+    CoordinateMemories& rows = loader_ ? loader_->rows(block.row_tile) : columns;
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        rows[c].clock_read(0, addresses.row - row_base);
         for (uint32_t lane = 0; lane < addresses.valid_lanes; ++lane) {
-            memory.clock_read(lane + 1, addresses.first_column + lane);
+            columns[c].clock_read(lane + 1, addresses.first_column + lane - column_base);
         }
     }
-    address_generator_.advance();
     // The hit mask is a pure function of the block RAM output registers just
     // loaded, so computing it here and presenting it compare-latency cycles
     // later is the same as computing it in the last compare stage.
     return Slot{Slot::kSweep, addresses.row, addresses.first_column, addresses.valid_lanes,
-                comparison_unit_.evaluate(memories_, addresses.valid_lanes)};
+                comparison_unit_.evaluate(rows, columns, addresses.valid_lanes)};
 }
 
 void ClockedEngine::stall() {

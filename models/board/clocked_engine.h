@@ -2,18 +2,27 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "models/address_generator/address_generator.h"
+#include "models/address_generator/sweep_schedule.h"
 #include "models/board/board_engine.h"
 #include "models/coordinate_memory/coordinate_memory.h"
 #include "models/pair_collector/pair_collector.h"
+#include "models/tile_loader/tile_loader.h"
 
 namespace cdvp {
 
 // Wires the blocks of the seed's microarchitecture:
 //   address generator -> six 2m-port coordinate memories (1 cycle)
 //   -> comparison unit (compare latency) -> pair FIFO -> pair buffer.
+// On a tiled board (config.tiles) the boxes sit in SSRAM and the address
+// generator walks the tiled schedule (SweepSchedule): port 0 reads a
+// double-buffered row memory, ports 1..2m-1 a double-buffered column memory,
+// and the loader (TileLoader) brings the next block's tile from SSRAM into
+// the idle buffer while the other is compared; the address generator issues
+// bubbles until it has landed.
 // Nothing outside the board sees it between host accesses, so a segment may
 // be stepped ahead in bulk (segment_edges()) while what each edge changed is
 // kept: counters_after() then answers for any earlier edge. For waveforms the
@@ -51,13 +60,19 @@ public:
     uint64_t edges_run() const { return edges_; }
     bool segment_over() const { return state_ != State::kRunning; }
 
-    // Probes for waveforms: the last edge's addresses, compare output and stall.
+    // Probes for waveforms: the last edge's addresses, compare output and stall;
+    // on a tiled board the block's row and column tiles, whether a tile is
+    // loading and whether the address generator waits for one.
     const AddressGenerator::Issue& last_issue() const { return last_issue_; }
+    uint32_t row_tile() const { return tile_of(false); }
+    uint32_t column_tile() const { return tile_of(true); }
+    bool loading() const { return loader_ != nullptr && loader_->busy(); }
+    bool waiting() const { return waiting_; }
     const Slot& compare_output() const { return line_[head_]; }
     bool stalled() const { return stalled_; }
     uint32_t fifo_level() const { return collector_.fifo_level(); }
-    // Block RAM primitives of the six coordinate memories.
-    uint32_t block_rams() const { return kCoordinates * memories_[0].block_rams(); }
+    // Block RAM primitives of the six coordinate memories (or tile buffers).
+    uint32_t block_rams() const;
 
 private:
     enum class State : uint8_t { kIdle, kRunning, kPaused, kDone };
@@ -65,10 +80,18 @@ private:
     Slot issue();
     void stall();
     uint64_t stalls_through(uint64_t edges) const;
+    uint32_t tile_of(bool column) const;
 
     BoardConfig config_;
-    CoordinateMemories memories_;
-    AddressGenerator address_generator_;
+    // Untiled: one set of coordinate memories for every box. Tiled: the
+    // loader with the SSRAM and the tile buffers.
+    std::vector<CoordinateMemories> memories_;
+    std::unique_ptr<TileLoader> loader_;
+    SweepSchedule schedule_;
+    ScheduleWalker walker_{schedule_};
+    uint64_t loads_begun_ = 0;
+    uint64_t block_ = 0;  // the block of the last issued slot
+    bool waiting_ = false;
     ComparisonUnit comparison_unit_;
     PairCollector collector_;
 

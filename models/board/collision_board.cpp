@@ -68,6 +68,13 @@ void CollisionBoard::trace(WaveList& waves) {
     waves.group("board: pair collector");
     waves.add(waves_.fifo_level, p + "collector.fifo_level", bits_for(config.collector.fifo_depth));
     waves.add(waves_.pair_count, p + "collector.pair_count", bits_for(config.collector.buffer_depth));
+    if (!config.tiles.tiled()) return;
+    waves.group("board: tile loader");
+    const int tile_bits = bits_for(uint64_t{core_.capacity()} / config.tiles.boxes + 1);
+    waves.add(waves_.row_tile, p + "tiles.row_tile", tile_bits);
+    waves.add(waves_.column_tile, p + "tiles.column_tile", tile_bits);
+    waves.add(waves_.loading, p + "tiles.loading");
+    waves.add(waves_.wait, p + "tiles.wait");
 }
 
 void CollisionBoard::set_tracing(bool on) {
@@ -229,6 +236,10 @@ void CollisionBoard::sample_trace() {
     waves_.fifo_level = engine.fifo_level();
     waves_.stall = engine.stalled();
     waves_.pair_count = core_.buffered_pairs();
+    waves_.row_tile = engine.row_tile();
+    waves_.column_tile = engine.column_tile();
+    waves_.loading = engine.loading();
+    waves_.wait = engine.waiting();
 }
 
 }  // namespace cdvp

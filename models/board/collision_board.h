@@ -86,6 +86,11 @@ private:
         uint32_t fifo_level = 0;
         bool stall = false;
         uint32_t pair_count = 0;
+        // A tiled board's loader: the block's tiles, a load under way, a bubble waiting for one.
+        uint32_t row_tile = 0;
+        uint32_t column_tile = 0;
+        bool loading = false;
+        bool wait = false;
     };
     Waves waves_;
 };

@@ -15,6 +15,13 @@ namespace cdvp {
 // Coordinate memories in the board's order.
 enum Coordinate : uint32_t { kMinX, kMinY, kMinZ, kMaxX, kMaxY, kMaxZ, kCoordinates };
 using CoordinateMemories = std::array<CoordinateMemory, kCoordinates>;
+// Six memories of `copies` copies (2 x copies ports) and `depth` boxes each,
+// in primitives of `words_per_primitive` (NumberFormat::boxes_per_block_ram).
+inline CoordinateMemories make_coordinate_memories(uint32_t copies, uint32_t depth,
+                                                   uint32_t words_per_primitive = BlockRam::kWords) {
+    const CoordinateMemory memory(copies, depth, words_per_primitive);
+    return {memory, memory, memory, memory, memory, memory};
+}
 
 struct ComparisonUnitConfig {
     // Cycles from the block RAM outputs to the lane results. Default 2, an
@@ -44,7 +51,12 @@ public:
     // The lane results for the current memory outputs; lanes beyond
     // valid_lanes are not evaluated (their bits are 0).
     uint64_t evaluate(const CoordinateMemories& memories, uint32_t valid_lanes) const {
-        return (this->*evaluate_)(memories, valid_lanes);
+        return evaluate(memories, memories, valid_lanes);
+    }
+    // A tiled board: box i from port 0 of the row memories, the boxes j from
+    // ports 1..valid_lanes of the column memories.
+    uint64_t evaluate(const CoordinateMemories& rows, const CoordinateMemories& columns, uint32_t valid_lanes) const {
+        return (this->*evaluate_)(rows, columns, valid_lanes);
     }
 
     // Six comparators ANDed. Bounds are ordered min_x, min_y, min_z, max_x, max_y, max_z.
@@ -73,13 +85,13 @@ public:
 private:
     // One lane test per format: float32 compares floats, fixedK the masked words.
     template <typename Bound>
-    uint64_t evaluate_as(const CoordinateMemories& memories, uint32_t valid_lanes) const {
+    uint64_t evaluate_as(const CoordinateMemories& rows, const CoordinateMemories& columns, uint32_t valid_lanes) const {
         Bound i_bounds[kCoordinates];
-        for (uint32_t c = 0; c < kCoordinates; ++c) i_bounds[c] = bound<Bound>(memories[c].output(0));
+        for (uint32_t c = 0; c < kCoordinates; ++c) i_bounds[c] = bound<Bound>(rows[c].output(0));
         uint64_t hits = 0;
         for (uint32_t port = 1; port <= valid_lanes; ++port) {
             Bound j_bounds[kCoordinates];
-            for (uint32_t c = 0; c < kCoordinates; ++c) j_bounds[c] = bound<Bound>(memories[c].output(port));
+            for (uint32_t c = 0; c < kCoordinates; ++c) j_bounds[c] = bound<Bound>(columns[c].output(port));
             hits |= static_cast<uint64_t>(lane_hit(i_bounds, j_bounds)) << (port - 1);
         }
         return hits;
@@ -94,7 +106,7 @@ private:
     uint32_t latency_;
     NumberFormat format_;
     uint32_t mask_;
-    uint64_t (ComparisonUnit::*evaluate_)(const CoordinateMemories&, uint32_t) const;
+    uint64_t (ComparisonUnit::*evaluate_)(const CoordinateMemories&, const CoordinateMemories&, uint32_t) const;
 };
 
 }  // namespace cdvp

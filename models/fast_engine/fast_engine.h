@@ -8,7 +8,7 @@
 // Guarantees, for every configuration and any float bit patterns (NaN, -0,
 // infinities, denormals, inverted boxes):
 //   - pairs(): exactly the pairs BoardCore finds, in its order (first index
-//     ascending, then second);
+//     ascending, then second; on a tiled board block by block first);
 //   - observe(e): CYCLES, STALLS, PAIR_COUNT, TOTAL_PAIRS and the phase that
 //     BoardCore shows after e step() calls into the current segment (START or
 //     RESUME to the next pause or done), back-pressure, end-of-sweep drain
@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "models/board/board_config.h"
 #include "models/fast_engine/pair_finder.h"
@@ -51,9 +52,15 @@ public:
     const PairList& pairs() const { return pairs_; }
 
 private:
+    // A tiled board's order: a stable counting sort of the finder's (i, j)
+    // order by block, O(pairs + blocks).
+    void order_by_block(uint32_t objects);
+
     BoardConfig config_;
     PairFinder finder_;
     PairList pairs_;
+    PairList by_block_;                // scratch of order_by_block
+    std::vector<uint64_t> block_ends_;  // scratch: pairs per block, then offsets
     SweepTimeline timeline_;
 };
 

@@ -27,11 +27,17 @@ SweepTimeline::SweepTimeline(const BoardConfig& config)
       fifo_depth_(config.collector.fifo_depth),
       drain_per_cycle_(config.collector.drain_per_cycle),
       buffer_depth_(config.collector.buffer_depth),
-      m_(config.m) {}
+      m_(config.m),
+      tiles_(config.tiles) {}
 
 void SweepTimeline::start(uint32_t objects, const std::vector<IndexPair>& pairs) {
     objects_ = objects;
-    sweep_cycles_ = AddressGenerator::sweep_cycles(objects, m_);
+    if (tiles_.tiled()) {
+        schedule_ = SweepSchedule(m_, tiles_, objects);
+        sweep_cycles_ = schedule_.slots();
+    } else {
+        sweep_cycles_ = AddressGenerator::sweep_cycles(objects, m_);
+    }
     pairs_ = &pairs;
     buffer_begin_ = 0;
     Cursor cursor;
@@ -84,6 +90,10 @@ void SweepTimeline::locate_head(Cursor& cursor) const {
         return;
     }
     const IndexPair& first = pairs[cursor.next_pair];
+    if (tiles_.tiled()) {
+        locate_tiled_head(cursor);
+        return;
+    }
     const uint32_t row = first.first;
     const uint32_t step = (first.second - row - 1) / lanes_;
     const uint64_t row_start = sweep_cycles_ - sweep_cycles32(objects_ - row, lanes_);
@@ -94,6 +104,22 @@ void SweepTimeline::locate_head(Cursor& cursor) const {
         ++hits;
     }
     cursor.head.slot = row_start + step;
+    cursor.head.hits = hits;
+}
+
+// Out of line, so that the untiled path above stays as it was.
+__attribute__((noinline)) void SweepTimeline::locate_tiled_head(Cursor& cursor) const {
+    const std::vector<IndexPair>& pairs = *pairs_;
+    const IndexPair& first = pairs[cursor.next_pair];
+    // The slot's hits: the following pairs the same slot compares.
+    const uint64_t slot = schedule_.pair_slot(first.first, first.second);
+    uint32_t hits = 1;
+    for (uint64_t k = cursor.next_pair + 1;
+         k < pairs.size() && pairs[k].first == first.first && schedule_.pair_slot(first.first, pairs[k].second) == slot;
+         ++k) {
+        ++hits;
+    }
+    cursor.head.slot = slot;
     cursor.head.hits = hits;
 }
 

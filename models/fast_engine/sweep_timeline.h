@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "models/address_generator/sweep_schedule.h"
 #include "models/board/board_config.h"
 #include "models/board/board_core.h"
 
@@ -23,7 +24,9 @@ struct BoardObservation {
 // edges. Only the pairs matter: a pair (i, j) of an N-box sweep leaves the
 // address generator's slot
 //     c(i, j) = S(N) - S(N - i) + (j - i - 1) / (2m - 1)
-// (row i starts after the rows before it; each cycle covers 2m-1 columns) and
+// (row i starts after the rows before it; each cycle covers 2m-1 columns; on
+// a tiled board SweepSchedule::pair_slot, whose slots include the bubbles
+// spent waiting for tiles) and
 // reaches the collector at the (c + 1 + D)-th edge that advances the pipeline,
 // D = block RAM + compare stages; the end marker is slot S(N). Between two
 // such events every edge only drains min(drain, fifo, room) pairs, so a run of
@@ -40,8 +43,9 @@ class SweepTimeline {
 public:
     explicit SweepTimeline(const BoardConfig& config);
 
-    // A sweep of `objects` boxes whose pairs, in BoardCore's order (first
-    // ascending, then second ascending, first < second < objects), are `pairs`.
+    // A sweep of `objects` boxes whose pairs, in BoardCore's order (the
+    // schedule's: by block, then first ascending, then second ascending;
+    // first < second < objects), are `pairs`.
     // The vector must outlive the sweep and stay unchanged. Runs the first
     // segment.
     void start(uint32_t objects, const std::vector<IndexPair>& pairs);
@@ -84,6 +88,7 @@ private:
 
     // Sets cursor.head to the slot of cursor.next_pair and its hits.
     void locate_head(Cursor& cursor) const;
+    void locate_tiled_head(Cursor& cursor) const;
     // Runs edges until the segment ends or `limit` edges into it; with
     // checkpoints, records a cursor every kCheckpointEvery events.
     void run(Cursor& cursor, uint64_t limit, std::vector<Cursor>* checkpoints) const;
@@ -98,6 +103,8 @@ private:
     uint32_t drain_per_cycle_;
     uint32_t buffer_depth_;
     uint32_t m_;
+    TileConfig tiles_;
+    SweepSchedule schedule_;  // tiled boards only
 
     uint32_t objects_ = 0;
     uint64_t sweep_cycles_ = 0;  // S(N, m): the end marker's slot

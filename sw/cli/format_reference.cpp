@@ -36,16 +36,27 @@ FormatReference::Check FormatReference::check(const std::vector<FloatBox>& boxes
         view[c] = words_[c].data();
     }
     float32_.find(n, view, result.reference);
-    // Both lists are in board order (first ascending, then second).
+    // The reference comes first index ascending, then second; a tiled board
+    // reports its pairs tile block by tile block, so the board's are sorted first.
+    const PairList board = sorted(board_pairs);
     const auto before = [](const IndexPair& a, const IndexPair& b) {
         return a.first != b.first ? a.first < b.first : a.second < b.second;
     };
-    auto board = board_pairs.begin();
+    auto next = board.begin();
     for (const IndexPair& pair : result.reference) {
-        board = std::lower_bound(board, board_pairs.end(), pair, before);
-        if (board == board_pairs.end() || !(*board == pair)) {
+        next = std::lower_bound(next, board.end(), pair, before);
+        if (next == board.end() || !(*next == pair)) {
             result.missing = pair;
             break;
+        }
+    }
+    // What the host keeps: the board's pairs in the board's order, less the extra ones.
+    if (!result.missing) {
+        result.kept.reserve(result.reference.size());
+        for (const IndexPair& pair : board_pairs) {
+            if (std::binary_search(result.reference.begin(), result.reference.end(), pair, before)) {
+                result.kept.push_back(pair);
+            }
         }
     }
     const uint64_t found = board_pairs.size();

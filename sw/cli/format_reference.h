@@ -36,16 +36,18 @@ public:
     FormatReference(NumberFormat format, double ns_per_pair) : format_(format), ns_per_pair_(ns_per_pair) {}
 
     struct Check {
-        PairList reference;              // the float32 pairs, in board order (empty under float32)
+        PairList reference;              // the float32 pairs, first index ascending (empty under float32)
+        PairList kept;                   // the board's pairs less the extra ones, in the board's order (ditto)
         ExtraPairs extra;
         std::optional<IndexPair> missing;  // a reference pair the board did not find: a fault
     };
-    // board_pairs in board order. Under float32 the board is the reference
+    // board_pairs in any order. Under float32 the board is the reference
     // (both engines are proven equal to its comparators): nothing is recomputed.
     Check check(const std::vector<FloatBox>& boxes, const PairList& board_pairs, const FramePhases& phases);
-    // The pairs the host keeps: the reference's (the board's under float32).
+    // The pairs the host keeps, in the board's order: the board's less the
+    // extra ones (all of the board's under float32).
     const PairList& kept(const Check& check, const PairList& board_pairs) const {
-        return format_.is_float() ? board_pairs : check.reference;
+        return format_.is_float() ? board_pairs : check.kept;
     }
 
 private:

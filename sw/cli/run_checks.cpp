@@ -10,6 +10,8 @@
 
 #include "models/control_registers/control_registers.h"
 #include "platform/device_fit.h"
+#include "models/address_generator/sweep_schedule.h"
+#include "platform/memory_plan.h"
 #include "platform/fault_injection.h"
 #include "models/common/user_text.h"
 #include "sw/scene/scene.h"
@@ -34,7 +36,7 @@ std::string objects_origin(const RunOptions& o, const SettingValues& values, uin
 // of overflowing the kernel's clock mid-run.
 void check_simulated_time(const RunOptions& o, const SettingValues& values, uint64_t max_objects,
                           uint64_t frame_count) {
-    const BoardConfig& board = values.settings().board;
+    const BoardConfig board = planned_board(values.settings(), max_objects);
     constexpr double kBudgetSeconds = 9223.0;   // 2^63 fs
     constexpr double kPerBoxSeconds = 10e-6;    // PIO of a box on the slowest bus, with margin
     constexpr double kPerFrameSeconds = 1e-3;   // driver calls, interrupts, status reads, with margin
@@ -61,7 +63,7 @@ void check_simulated_time(const RunOptions& o, const SettingValues& values, uint
 // scene and m from exhausting this machine's memory instead of failing
 // clearly, whatever the machine.
 void check_model_memory(const RunOptions& o, const SettingValues& values, uint64_t max_objects) {
-    const BoardConfig& board = values.settings().board;
+    const BoardConfig board = planned_board(values.settings(), max_objects);
     constexpr uint64_t kMaxModelBytes = uint64_t{2} << 30;
     const uint64_t bytes = board.block_ram_bytes(max_objects);
     if (bytes <= kMaxModelBytes) return;
@@ -139,16 +141,63 @@ Overflow overflow_of(const DeviceFit& fit) {
 
 std::string whole(double value) { return std::to_string(static_cast<uint64_t>(std::ceil(value))); }
 
+// A board in SSRAM: the SSRAM holds the boxes, and the tiles are few enough
+// to schedule (the model's bound, so --ignore-capacity does not lift it).
+void check_ssram(const RunOptions& o, const SettingValues& values, uint64_t max_objects, const MemoryPlan& plan) {
+    const Settings& settings = values.settings();
+    const std::string memory = values.value_and_origin(setting("board.memory"));
+    if (plan.ssram_capacity == 0) {
+        throw InputError(values.where(setting("device.ssram_banks")) + ": the device has no off-chip SSRAM (0 banks); " +
+                         memory + " needs some: use block_ram or give device.ssram_banks");
+    }
+    if (settings.run.ignore_capacity != "yes" && max_objects > plan.ssram_capacity) {
+        throw InputError(values.where(setting("device.ssram_words")) + ": " + std::to_string(settings.device.ssram_words) +
+                         " words a bank in " + std::to_string(settings.device.ssram_banks) + " SSRAM banks hold " +
+                         std::to_string(plan.ssram_capacity) + " boxes, too few for " +
+                         objects_origin(o, values, max_objects) + " (" + memory +
+                         "): use fewer objects; --ignore-capacity runs it anyway");
+    }
+    const uint64_t tiles = (max_objects + plan.tiles.boxes - 1) / plan.tiles.boxes;
+    if (tiles > SweepSchedule::kMaxTiles) {
+        throw InputError(values.where(setting("board.tile_boxes")) + ": tiles of " + std::to_string(plan.tiles.boxes) +
+                         " boxes make " + std::to_string(tiles) + " tiles of " + objects_origin(o, values, max_objects) +
+                         "; expected at most " + std::to_string(SweepSchedule::kMaxTiles) + " tiles: give larger tiles");
+    }
+}
+
+// The tile buffers of a board in SSRAM do not fit the block RAMs.
+[[noreturn]] void refuse_tile(const RunOptions& o, const SettingValues& values, uint64_t max_objects,
+                              const MemoryPlan& plan) {
+    const Settings& settings = values.settings();
+    BoardConfig board = planned_board(settings, max_objects);
+    uint32_t largest = 0;  // the largest m whose buffers hold a tile of this size
+    for (uint32_t m = 1; m <= BoardConfig::kMaxM; ++m) {
+        board.m = m;
+        if (board.block_rams(max_objects) <= settings.device.block_rams) largest = m;
+    }
+    board.m = settings.board.m;
+    throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(settings.device.block_rams) +
+                     " block RAMs are too few for the SSRAM tile buffers of " +
+                     values.value_and_origin(setting("board.m")) + " at " + objects_origin(o, values, max_objects) +
+                     " in tiles of " + std::to_string(plan.tiles.boxes) + " boxes: they need 6 x (2m+2) x ceil(T/512) = " +
+                     std::to_string(board.block_rams(max_objects)) +
+                     (largest > 0 ? " (largest m that fits: " + std::to_string(largest)
+                                  : " (not even m=1 fits: use smaller tiles or a larger device") +
+                     "; --ignore-capacity runs it anyway)");
+}
+
 void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects) {
     const Settings& settings = values.settings();
     if (settings.run.ignore_capacity == "yes") return;
-    const BoardConfig& board = settings.board;
+    const MemoryPlan plan = plan_memory(settings, max_objects);
+    const BoardConfig board = planned_board(settings, max_objects);
     const std::string m = values.value_and_origin(setting("board.m"));
     const std::string at = m + " at " + objects_origin(o, values, max_objects);
     const std::string explore = "; --ignore-capacity runs it anyway";
     // The coordinate memories alone: a check that needs no synthesis family.
     const uint32_t block_rams = settings.device.block_rams;
     const uint64_t needed = board.block_rams(max_objects);
+    if (plan.ssram && !plan.tile_fits) refuse_tile(o, values, max_objects, plan);
     if (block_rams != 0 && needed > block_rams) {
         const uint64_t largest = block_rams / (needed / board.m);  // block RAMs grow linearly with m
         throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(block_rams) +
@@ -174,6 +223,8 @@ void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_
 }  // namespace
 
 void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count) {
+    const MemoryPlan plan = plan_memory(values.settings(), max_objects);
+    if (plan.ssram) check_ssram(o, values, max_objects, plan);
     check_model_memory(o, values, max_objects);
     check_simulated_time(o, values, max_objects, frame_count);
     check_device_fits(o, values, max_objects);

@@ -19,6 +19,7 @@
 #include "platform/board_preset.h"
 #include "platform/config_file.h"
 #include "platform/fault_injection.h"
+#include "platform/memory_plan.h"
 #include "platform/virtual_board.h"
 #include "sw/cli/baseline_timing.h"
 #include "sw/cli/frame_source.h"
@@ -230,9 +231,12 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
              const std::vector<std::string>& command_line) {
     RunConfig run;
-    run.config = setup.platform.board;
-    run.source = source.describe();
     run.capacity = static_cast<uint32_t>(source.max_objects());
+    const MemoryPlan memory = plan_memory(setup.values.settings(), run.capacity);
+    setup.platform.board.tiles = memory.tiles;
+    run.config = setup.platform.board;
+    describe_memory(run, memory.ssram);
+    run.source = source.describe();
     run.board = setup.board;
     run.host = setup.values.settings().host.name;
     run.host_factor = setup.values.settings().host.speed_factor;
@@ -288,7 +292,8 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         }
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
-                         run.config.sweep_cycles(boxes.size()), result.phases, {}, sim_wall_ns, check.extra};
+                         run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_ns, check.extra};
+        stats.load_wait_slots = load_wait_slots(run, boxes.size());
         if (!setup.baselines.empty()) {
             stats.baselines =
                 setup.baselines.time_frame(boxes, sorted(reference.kept(check, result.pairs)), frame->number);

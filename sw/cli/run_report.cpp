@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "models/address_generator/sweep_schedule.h"
 #include "models/common/user_text.h"
 #include "sw/cli/version.h"
 
@@ -102,7 +103,11 @@ nlohmann::json config_json(const RunConfig& run) {
         {"drain_per_cycle", c.collector.drain_per_cycle},
         {"pair_buffer_depth", c.collector.buffer_depth},
         {"capacity", run.capacity},
-        {"block_rams", run.block_rams}};
+        {"block_rams", run.block_rams},
+        {"memory", run.ssram ? "SSRAM" : "block RAM"},
+        {"tile_boxes", c.tiles.boxes},
+        {"tiles", run.tiles},
+        {"load_wait_slots", run.load_wait_slots}};
     if (run.settings != nullptr) {
         config["seed"] = run.settings->settings().scene.seed;
         config["settings"] = settings_json(*run.settings);
@@ -130,6 +135,7 @@ nlohmann::json frame_json(const FrameStats& f) {
             {"compute_cycles", p.compute_cycles},
             {"stall_cycles", p.stall_cycles},
             {"sweep_cycles", f.sweep_cycles},
+            {"load_wait_slots", f.load_wait_slots},
             {"overflow_pauses", p.overflow_pauses},
             {"timeouts_recovered", p.timeouts_recovered},
             {"upload_ns", p.upload_ns},
@@ -318,6 +324,18 @@ void print_resources(std::ostream& out, const DeviceFit& fit) {
 
 }  // namespace
 
+void describe_memory(RunConfig& run, bool ssram) {
+    run.ssram = ssram;
+    const SweepSchedule at_capacity(run.config.m, run.config.tiles, run.capacity);
+    run.tiles = at_capacity.tiles();
+    run.load_wait_slots = at_capacity.wait_slots();
+}
+
+uint64_t load_wait_slots(const RunConfig& run, uint64_t objects) {
+    if (!run.ssram) return 0;
+    return SweepSchedule(run.config.m, run.config.tiles, static_cast<uint32_t>(objects)).wait_slots();
+}
+
 void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, double wall_seconds) {
     const BoardConfig& c = run.config;
     char line[512];
@@ -327,6 +345,12 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
                   run.fidelity.c_str());
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
     if (run.device_fit) print_resources(out, *run.device_fit);
+    if (run.ssram) {
+        std::snprintf(line, sizeof line,
+                      "  boxes in SSRAM: %u tiles of %u boxes at %u objects, %llu slots waiting for tile loads\n",
+                      run.tiles, c.tiles.boxes, run.capacity, static_cast<unsigned long long>(run.load_wait_slots));
+        out << line;
+    }
     out << "  frame  objects     pairs  S(N,m)+L  compute_cycles  stall_cycles  compute_us  total_us\n";
     for (const FrameStats& f : totals.shown()) {
         std::snprintf(line, sizeof line, "%7llu %8llu %9llu %9llu %15llu %13llu %11.2f %9.2f\n",

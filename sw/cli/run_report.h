@@ -29,7 +29,8 @@ struct FrameStats {
     uint64_t frame = 0;
     uint64_t objects = 0;
     uint64_t pairs = 0;
-    uint64_t sweep_cycles = 0;  // S(N, m)
+    uint64_t sweep_cycles = 0;  // S(N, m), or the tiled schedule's slots
+    uint64_t load_wait_slots = 0;  // of those, slots waiting for SSRAM tiles
     FramePhases phases;         // simulated; compute_cycles, stall_cycles, overflow_pauses inside
     std::map<std::string, BaselineTime> baselines;
     double sim_wall_ns = 0;     // the simulator's own wall time for the frame (no file I/O, no baselines)
@@ -41,6 +42,9 @@ struct RunConfig {
     BoardConfig config;
     uint32_t capacity = 0;
     uint32_t block_rams = 0;
+    bool ssram = false;        // the boxes live in SSRAM, swept in tiles of config.tiles.boxes
+    uint32_t tiles = 0;        // tiles at capacity
+    uint64_t load_wait_slots = 0;  // at capacity
     std::string source;
     std::string board = "ideal";  // preset name
     std::string bus;
@@ -57,6 +61,12 @@ struct RunConfig {
     std::optional<DeviceFit> device_fit;      // with a device family: the board's resources on it
     std::vector<std::string> command_line;
 };
+
+// The memory that serves the boxes: sets run.ssram, and the tiles and load
+// waits at run.capacity from run.config.
+void describe_memory(RunConfig& run, bool ssram);
+// Slots a frame of `objects` boxes waits for SSRAM tiles (0 in block RAM).
+uint64_t load_wait_slots(const RunConfig& run, uint64_t objects);
 
 // The frames of a run folded as they come: counts and sums for the totals
 // and the steady-state means (which leave out the warm-up frames when there

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "models/address_generator/address_generator.h"
+#include "models/address_generator/sweep_schedule.h"
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/control_registers/control_registers.h"
 #include "models/pci/dma_registers.h"
@@ -47,9 +48,11 @@ std::string microseconds(SimTime t) {
 // Cycles the board may run between START or RESUME and its next event: the
 // whole sweep, a full pair buffer's drain (every stall cycle moves a pair),
 // and the pipeline and FIFO tail.
-uint64_t worst_case_run_cycles(uint64_t objects, uint32_t m, uint32_t buffer_depth) {
+uint64_t worst_case_run_cycles(uint64_t objects, uint32_t m, const TileConfig& tiles, uint32_t buffer_depth) {
     constexpr uint64_t kPipelineSlack = 1024;
-    return AddressGenerator::sweep_cycles(objects, m) + buffer_depth + kPipelineSlack;
+    const uint64_t slots = tiles.tiled() ? SweepSchedule(m, tiles, static_cast<uint32_t>(objects)).slots()
+                                         : AddressGenerator::sweep_cycles(objects, m);
+    return slots + buffer_depth + kPipelineSlack;
 }
 }  // namespace
 
@@ -221,7 +224,7 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
 uint32_t BoardDriver::wait_for_board(uint32_t objects) {
     const SimTime started = mark_;
     const double worst_ns =
-        ns_from_fs(period_) * static_cast<double>(worst_case_run_cycles(objects, parallelism_, buffer_depth_));
+        ns_from_fs(period_) * static_cast<double>(worst_case_run_cycles(objects, parallelism_, config_.tiles, buffer_depth_));
     const SimTime timeout = timeout_for(worst_ns + bus_->interrupt_ns());
     const uint32_t status = wait_for(R::kStatus, R::kDone | R::kOverflow | R::kError, timeout, "board");
     mark_ = noticed_;

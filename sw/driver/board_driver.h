@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "models/board/tile_config.h"
 #include "models/common/aabb.h"
 #include "models/number_format/number_format.h"
 #include "models/pci/bus_timing.h"
@@ -47,6 +48,10 @@ struct DriverConfig {
     // status once (a lost interrupt recovers) and otherwise fails the frame.
     double timeout_factor = 2.0;
     double timeout_floor_ns = 100000.0;
+    // The board's memory as its bitstream was built (block RAM or SSRAM
+    // tiles): the driver knows it as it knows the board it loaded; it bounds
+    // the sweep's cycles. Not a setting: the platform copies the board's.
+    TileConfig tiles;
 };
 
 // Where a frame's simulated time went; the phases add up to total_ns.

@@ -52,6 +52,18 @@ TEST_F(CliFormat, AFixedFormatRunsAndReportsExtraPairsAgainstTheFloat32Reference
               float32["config"]["resources"]["pieces"]["lanes"]["luts"].get<double>());
 }
 
+TEST_F(CliFormat, AFixedFormatBoardSweepingSsramTiles) {
+    const std::string scene = "run --scene spheres --objects 1500 --frames 2 --board adm-xrc-ii --m 4 --quiet "
+                              "-c board.memory=ssram -c board.tile_boxes=256 --report r.json ";
+    const Result r = run(scene + "--format fixed16");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json fixed = report();
+    ASSERT_EQ(run(scene).status, 0);
+    const json float32 = report();
+    EXPECT_EQ(fixed["summary"]["reference_pairs"], float32["summary"]["pairs"]);
+    EXPECT_GE(fixed["summary"]["pairs"].get<uint64_t>(), float32["summary"]["pairs"].get<uint64_t>());
+}
+
 TEST_F(CliFormat, BothEnginesAgreeUnderAFixedFormat) {
     const std::string scene = "run --scene spheres --objects 300 --frames 2 --board adm-xrc-ii --format fixed12 --quiet ";
     ASSERT_EQ(run(scene + "--fidelity cycle --report r.json").status, 0);
@@ -143,6 +155,11 @@ TEST(FormatReference, AMissingPairIsFoundAndExtraPairsCosted) {
     EXPECT_EQ(own.extra.reference_pairs, 1u);
     EXPECT_EQ(&same.kept(own, board), &board);
     EXPECT_EQ(reference.kept(all, board), all.reference);
+    // A tiled board reports its pairs block by block, not in index order: the
+    // check does not depend on the order, and the host keeps the board's order.
+    const FormatReference::Check shuffled = reference.check(boxes, {{1, 2}, {0, 2}, {0, 1}}, phases);
+    EXPECT_FALSE(shuffled.missing);
+    EXPECT_EQ(shuffled.kept, (PairList{{1, 2}, {0, 1}}));
 }
 
 }  // namespace

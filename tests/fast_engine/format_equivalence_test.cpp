@@ -72,6 +72,20 @@ TEST(FormatEquivalence, AcrossBlockRamAspectsWithBackPressure) {
     }
 }
 
+// Boxes in SSRAM swept in tiles: the tile buffers in the format's aspect,
+// the pairs in the tiled schedule's order, in every format.
+TEST(FormatEquivalence, TiledBoardsInEveryFormat) {
+    std::mt19937 rng(94);
+    for (NumberFormat format : format_classes()) {
+        for (uint32_t tile : {7u, 64u}) {
+            BoardConfig config = make_config(format, 3, 5, 1 + tile % 3, 11);
+            config.tiles.boxes = tile;
+            expect_lockstep(config, testing::fixed_scene(150, format, 0.2, rng), 40, rng);
+            if (HasFailure()) return;
+        }
+    }
+}
+
 // The pair finder's both algorithms (all pairs; grid sweep with and without
 // grouping by cell) against the lane test of the format.
 TEST(FormatEquivalence, PairFinderEqualsTheLaneTestOfEachFormat) {

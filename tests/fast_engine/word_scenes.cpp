@@ -181,7 +181,8 @@ uint32_t expect_lockstep(const BoardConfig& config, const WordScene& scene, uint
                                 std::to_string(config.collector.fifo_depth) + " drain=" +
                                 std::to_string(config.collector.drain_per_cycle) + " buffer=" +
                                 std::to_string(config.collector.buffer_depth) + " compare latency=" +
-                                std::to_string(config.compare.latency_cycles) + " format=" + config.format.name();
+                                std::to_string(config.compare.latency_cycles) + " tile=" +
+                                std::to_string(config.tiles.boxes) + " format=" + config.format.name();
     BoardCore core(config, n);
     for (uint32_t c = 0; c < kCoordinates; ++c) {
         for (uint32_t i = 0; i < n; ++i) core.write_coordinate(static_cast<Coordinate>(c), i, scene.words[c][i]);
@@ -227,7 +228,8 @@ uint32_t expect_lockstep(const BoardConfig& config, const WordScene& scene, uint
         if (core.phase() == BoardCore::Phase::Done) {
             EXPECT_EQ(engine.pairs(), from_core) << context;
             EXPECT_EQ(core.counters().cycles,
-                      AddressGenerator::sweep_cycles(n, config.m) + config.pipeline_latency() + core.counters().stalls);
+                      config.sweep_cycles(n) + config.pipeline_latency() + core.counters().stalls)
+                << context << " tiles of " << config.tiles.boxes;
             return segment;
         }
         core.write_register(ControlRegisters::kControl, ControlRegisters::kResume);

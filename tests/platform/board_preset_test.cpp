@@ -76,7 +76,7 @@ TEST_F(PresetFile, EveryNumberOfEveryPresetIsRangeChecked) {
             }
         }
     }
-    EXPECT_EQ(29 + 29 + 23, fields) << "board 5, device 3, host 4, PCI bus 17, PCIe bus 11 fields";
+    EXPECT_EQ(32 + 32 + 26, fields) << "board 5, device 6, host 4, PCI bus 17, PCIe bus 11 fields";
 }
 
 TEST_F(PresetFile, CountsMustBeWholeNumbers) {

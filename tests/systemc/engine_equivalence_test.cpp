@@ -25,6 +25,7 @@ struct Variant {
     uint32_t buffer_depth;
     bool dma, irq;
     double poll_gap_ns;
+    uint32_t tile_boxes = 0;  // 0: boxes in block RAM; else SSRAM tiles of this many boxes
     NumberFormat format = NumberFormat::float32();
 };
 
@@ -38,6 +39,7 @@ PlatformConfig platform_for(const Variant& v, Fidelity fidelity) {
     config.driver.use_dma = v.dma;
     config.driver.use_interrupts = v.irq;
     config.driver.poll_gap_ns = v.poll_gap_ns;
+    config.board.tiles.boxes = v.tile_boxes;
     config.fidelity = fidelity;
     return config;
 }
@@ -140,7 +142,7 @@ TEST(EngineEquivalence, EveryNumberFormatClassThroughThePlatform) {
     std::vector<Variant> variants;
     static const char* names[] = {"float32", "fixed8", "fixed9", "fixed16", "fixed18", "fixed24", "fixed31", "fixed32"};
     for (const char* name : names) {
-        variants.push_back({name, 3, 5, 97, true, true, 0, NumberFormat::parse(name)});
+        variants.push_back({name, 3, 5, 97, true, true, 0, 0, NumberFormat::parse(name)});
     }
     std::vector<std::vector<PairList>> pairs;
     expect_equivalent(variants, 700, scenes, &pairs);
@@ -159,6 +161,28 @@ TEST(EngineEquivalence, EveryNumberFormatClassThroughThePlatform) {
         }
     }
     EXPECT_GT(extra, 0u) << "coarse formats add pairs";
+}
+
+// Boxes in SSRAM, swept in small tiles (partial last tiles, up to 20 tiles):
+// loads, bubbles and pauses at tile borders through the whole platform.
+TEST(EngineEquivalence, TiledBoardsOverModesTilesAndTinyBuffers) {
+    std::mt19937 rng(79);
+    std::vector<std::vector<FloatBox>> scenes;
+    for (uint32_t n : {0u, 1u, 2u, 3u, 31u, 64u, 97u, 160u}) {
+        scenes.push_back(testing::random_boxes(n, 0.8f * std::cbrt(static_cast<float>(n) + 1), 2.0f, rng));
+    }
+    scenes.push_back(std::vector<FloatBox>(50, FloatBox{{0, 0, 0}, {1, 1, 1}}));
+    const Totals t = expect_equivalent({{"t1_dma_irq_m1", 1, 1, 3, true, true, 0, 1},
+                                        {"t8_pio_poll_m3", 3, 5, 7, false, false, 29, 8},
+                                        {"t13_dma_poll_m2", 2, 3, 2, true, false, 11, 13},
+                                        {"t32_pio_irq_m8", 8, 15, 5, false, true, 0, 32},
+                                        {"t64_dma_irq_m32", 32, 63, 1000, true, true, 0, 64},
+                                        {"t16_fixed9_m4", 4, 7, 5, true, true, 0, 16, NumberFormat::fixed(9)},
+                                        {"t40_fixed24_m2", 2, 3, 3, false, true, 0, 40, NumberFormat::fixed(24)}},
+                                       160, scenes);
+    EXPECT_GT(t.pairs, 2000u) << "scenes with pairs to find";
+    EXPECT_GT(t.pauses, 500u) << "overflow pauses, some at tile borders";
+    EXPECT_GT(t.stalls, 500u) << "back-pressure and drain";
 }
 
 }  // namespace
