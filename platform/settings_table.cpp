@@ -173,16 +173,16 @@ std::vector<Setting> board_settings() {
                           "pair buffer depth in pairs before the host drains it",
                           "assumption: one 2 MiB ZBT SSRAM bank of 64-bit entries (the ADM-XRC-II has six)")),
              "pair-buffer", "P"),
-        choice("board.memory", {"auto", "block_ram", "ssram"}, member(&S::memory, &MemorySettings::memory),
-                    "where the boxes live: block_ram (the coordinate memories hold all N), ssram (off-chip, swept "
-                    "in tiles through block-RAM buffers, docs/tiles.md) or auto (block RAM when the N boxes fit "
-                    "the device's block RAMs or --ignore-capacity is given, else SSRAM tiles)",
+        flag(choice("board.memory", {"auto", "block_ram", "ssram"}, member(&S::memory, &MemorySettings::memory),
+                    "where the boxes live: block_ram, ssram (off-chip, swept in tiles; docs/tiles.md) or auto "
+                    "(block RAM while the boxes fit it or --ignore-capacity is given, else SSRAM)",
                     "auto: the paper's board keeps its boxes in block RAM up to about 500"),
-        count("board.tile_boxes", "boxes", 0, address_map::kMaxObjects,
+             "memory", "M"),
+        flag(count("board.tile_boxes", "boxes", 0, address_map::kMaxObjects,
                    member(&S::memory, &MemorySettings::tile_boxes),
-                   "boxes a tile when SSRAM serves; 0: the largest tile whose buffers, 6 x (2m+2) x ceil(T/512) "
-                   "block RAMs, fit the device",
+                   "boxes a tile when SSRAM serves; 0: the largest whose buffers fit the device's block RAMs",
                    "0: as large as the device allows (fewer tiles, fewer loads)"),
+             "tile-boxes", "T"),
     };
 }
 

@@ -115,7 +115,7 @@ TEST_F(CliTiles, ScenesPastTheSsramAreRefused) {
     expect_refusal(run(spheres(524289, 1) + "--m 11"),
                    "cdvp run: " + preset("adm-xrc-ii") +
                        ": device.ssram_words: 524288 words a bank in 6 SSRAM banks hold 524288 boxes, too few for "
-                       "524289 objects (--objects) (memory=auto (the default of board.memory)): use fewer objects");
+                       "524289 objects (--objects) (memory=auto (the default of --memory)): use fewer objects");
     expect_refusal(run(spheres(100, 1) + "-c board.memory=ssram -c device.ssram_banks=0"),
                    "cdvp run: -c device.ssram_banks: the device has no off-chip SSRAM");
     EXPECT_EQ(files(), std::vector<std::string>{}) << "a refused run leaves no output";

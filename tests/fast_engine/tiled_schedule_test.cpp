@@ -152,7 +152,9 @@ TEST(TiledSchedule, BlockRamsOfTheTileBuffers) {
             config.tiles = tiles_of(t);
             const uint64_t expected = 6ull * (2 * m + 2) * ceil_div(std::min(t, n), 512);
             EXPECT_EQ(config.block_rams(n), expected) << "m=" << m << " T=" << t << " N=" << n;
-            if (n <= 1000) EXPECT_EQ(ClockedEngine(config, n).block_rams(), expected);
+            if (n <= 1000) {
+                EXPECT_EQ(ClockedEngine(config, n).block_rams(), expected);
+            }
         }
     }
     BoardConfig untiled;

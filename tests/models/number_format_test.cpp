@@ -93,7 +93,9 @@ TEST(NumberFormat, Float32ComparesAsIeeeAndKeysKeepThatOrder) {
         for (uint32_t b : words) {
             if (f.excluded(a) || f.excluded(b)) continue;
             EXPECT_EQ(f.key(a) <= f.key(b), f.less_equal(a, b)) << std::hex << a << " " << b;
-            if (f.key(a) <= f.key(b)) EXPECT_LE(f.approximate(f.key(a)), f.approximate(f.key(b)));
+            if (f.key(a) <= f.key(b)) {
+                EXPECT_LE(f.approximate(f.key(a)), f.approximate(f.key(b)));
+            }
         }
     }
 }
@@ -106,13 +108,17 @@ TEST(NumberFormat, FixedComparesTheLowBitsUnsigned) {
         EXPECT_FALSE(f.less_equal(top, 0));
         EXPECT_FALSE(f.excluded(bits_of(std::numeric_limits<float>::quiet_NaN())));
         // Bits above K are not stored: they never change a comparison.
-        if (k < 32) EXPECT_TRUE(f.less_equal(top + 1, 0)) << k;  // top + 1 keeps nothing
+        if (k < 32) {
+            EXPECT_TRUE(f.less_equal(top + 1, 0)) << k;  // top + 1 keeps nothing
+        }
         std::mt19937 random(k);
         for (int n = 0; n < 2000; ++n) {
             const uint32_t a = random(), b = random();
             EXPECT_EQ(f.key(a) <= f.key(b), f.less_equal(a, b));
             EXPECT_EQ(f.less_equal(a, b), (a & top) <= (b & top));
-            if (f.key(a) <= f.key(b)) EXPECT_LE(f.approximate(f.key(a)), f.approximate(f.key(b)));
+            if (f.key(a) <= f.key(b)) {
+                EXPECT_LE(f.approximate(f.key(a)), f.approximate(f.key(b)));
+            }
         }
     }
 }

@@ -24,6 +24,10 @@
 namespace cdvp {
 namespace {
 
+// A FIFO entry is wider than 64 bits at m = 32 (GCC's extension, as Verilog's wide vectors).
+__extension__ typedef unsigned __int128 Word128;
+
+
 const std::string kSource = CDVP_SOURCE_DIR;
 
 // A scratch directory for one simulation, removed afterwards.
@@ -144,13 +148,13 @@ TEST(CompareLaneRtl, Float32LaneEqualsTheModelsLaneHitThroughItsPipeline) {
     std::vector<bool> expected;
     for (int v = 0; v < 4000; ++v) {
         uint32_t i[kCoordinates], j[kCoordinates];
-        for (int c = 0; c < kCoordinates; ++c) {
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
             i[c] = pick();
             j[c] = pick();
         }
         lines.push_back(box_hex(i) + box_hex(j));
         float fi[kCoordinates], fj[kCoordinates];
-        for (int c = 0; c < kCoordinates; ++c) {
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
             fi[c] = ComparisonUnit::as_float(i[c]);
             fj[c] = ComparisonUnit::as_float(j[c]);
         }
@@ -195,7 +199,7 @@ TEST(CompareLaneRtl, FixedPointLaneEqualsTheModelsLaneHitInThatFormat) {
         std::vector<bool> expected;
         for (int v = 0; v < 2000; ++v) {
             uint32_t i[kCoordinates], j[kCoordinates];
-            for (int c = 0; c < kCoordinates; ++c) {
+            for (uint32_t c = 0; c < kCoordinates; ++c) {
                 i[c] = pick();
                 j[c] = pick();
             }
@@ -274,9 +278,8 @@ TEST(PairCollectorRtl, PassesEveryPairOnInRowThenColumnOrderUnderBackPressure) {
                 }
             }
             // {drain, hits, row, first}: 1 + lanes + 16 + 16 bits.
-            const unsigned __int128 word = (static_cast<unsigned __int128>(drain) << (lanes + 32)) |
-                                           (static_cast<unsigned __int128>(hits) << 32) |
-                                           (static_cast<unsigned __int128>(row) << 16) | first;
+            const Word128 word = (static_cast<Word128>(drain) << (lanes + 32)) | (static_cast<Word128>(hits) << 32) |
+                                 (static_cast<Word128>(row) << 16) | first;
             char text[40];
             std::snprintf(text, sizeof text, "%llx%016llx", static_cast<unsigned long long>(word >> 64),
                           static_cast<unsigned long long>(word));
