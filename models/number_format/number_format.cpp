@@ -8,8 +8,6 @@
 namespace cdvp {
 
 namespace {
-constexpr uint32_t kSignBit = 0x8000'0000u;
-
 float as_float(uint32_t bits) {
     float value;
     std::memcpy(&value, &bits, sizeof value);
@@ -59,6 +57,5 @@ bool NumberFormat::less_equal(uint32_t a, uint32_t b) const {
     if (is_float()) return as_float(a) <= as_float(b);
     return (a & word_mask()) <= (b & word_mask());
 }
-
 
 }  // namespace cdvp
