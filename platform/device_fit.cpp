@@ -8,8 +8,6 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kFormat = "float32";  // the board's comparators
-
 double capacity_or_unbounded(uint64_t value) {
     return value == 0 ? std::numeric_limits<double>::infinity() : static_cast<double>(value);
 }
@@ -28,7 +26,9 @@ DeviceFit fit_on_device(const Settings& settings, uint64_t capacity) {
         Settings at_m = settings;
         at_m.board.m = m;
         const BoardConfig board = planned_board(at_m, capacity);  // block RAM or SSRAM tiles at this m
-        return board_resources(table, fit.device, kFormat, m, static_cast<double>(board.block_rams(capacity)));
+        // Lanes in the board's format; memories at the format's block RAM depth.
+        return board_resources(table, fit.device, board.format.name(), m,
+                               static_cast<double>(board.block_rams(capacity)));
     };
     fit.resources = cost(settings.board.m);
     fit.use = utilisation(fit.resources.total(), fit.device);

@@ -11,7 +11,7 @@ namespace cdvp {
 
 struct DeviceFit {
     DeviceCapacity device;     // unbounded resources as infinity
-    BoardResources resources;  // for the settings' m and format
+    BoardResources resources;  // for the settings' m and number format (lanes, block RAM depth)
     Utilisation use;           // over the device; overflow names the first resource that does not fit
     uint32_t largest_m = 0;    // the largest m (1 to BoardConfig::kMaxM) that fits; 0: none does
 };

@@ -61,7 +61,7 @@ std::string Setting::range_text() const {
         case SettingType::kCount: return describe_range(count_min, count_max);
         case SettingType::kReal: return describe_range(min, max);
         case SettingType::kChoice: return join(choices, " or ");
-        case SettingType::kText: return "";
+        case SettingType::kText: return accepts;
     }
     return "";
 }
@@ -110,7 +110,11 @@ SettingValue Setting::from_string(const std::string& value) const {
         return value;
     }
     if (type == SettingType::kText) {
-        if (value.empty()) throw std::invalid_argument("expected a non-empty string");
+        if (check) {
+            check(value);
+        } else if (value.empty()) {
+            throw std::invalid_argument("expected a non-empty string");
+        }
         return value;
     }
     throw std::invalid_argument("expected a number from " + range_text() + (unit.empty() ? "" : " " + unit) +

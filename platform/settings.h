@@ -95,6 +95,10 @@ struct Setting {
     uint64_t count_min = 0, count_max = 0;  // kCount
     double min = 0, max = 0;                // kReal
     std::vector<std::string> choices;       // kChoice
+    // kText with a grammar: what it accepts (for range_text) and the check,
+    // which throws std::invalid_argument "expected ..., got '...'".
+    std::string accepts;
+    std::function<void(const std::string&)> check;
     std::string flag;        // dedicated flag of `cdvp run` without "--"; empty: none
     std::string value_name;  // the flag's value in --help ("M"); empty: a switch that sets "yes"
     std::string help;

@@ -79,6 +79,19 @@ Setting choice(const char* name, std::vector<std::string> choices, Binding b, co
 Setting text(const char* name, Binding b, const char* help, const char* source) {
     return base(name, SettingType::kText, "", std::move(b), help, source);
 }
+// A text setting that only `check` accepts (it throws std::invalid_argument).
+Setting checked_text(const char* name, const char* accepts, std::function<void(const std::string&)> check, Binding b,
+                     const char* help, const char* source) {
+    Setting s = text(name, std::move(b), help, source);
+    s.accepts = accepts;
+    s.check = std::move(check);
+    return s;
+}
+// The board's number format, bound by name (NumberFormat::parse checks it).
+Binding number_format() {
+    return {[](const Settings& s) -> SettingValue { return s.board.format.name(); },
+            [](Settings& s, const SettingValue& value) { s.board.format = NumberFormat::parse(std::get<std::string>(value)); }};
+}
 // A dedicated flag of `cdvp run` sets it (--flag VALUE_NAME).
 Setting flag(Setting s, const char* name, const char* value_name) {
     s.flag = name;
@@ -131,6 +144,12 @@ std::vector<Setting> board_settings() {
                    "parallelism: 2m-port memories, 2m-1 comparison lanes",
                    "the user's choice (never a preset's); the paper's XC2V6000 fits m = 24 at 500 objects"),
              "m", "M"),
+        flag(checked_text("board.format", "float32 or fixed8 to fixed32",
+                          [](const std::string& text) { NumberFormat::parse(text); }, number_format(),
+                          "comparator and coordinate number format: float32, or K-bit fixed point over each frame's "
+                          "bounds (fewer LUTs a lane; extra pairs, never a lost one)",
+                          "the paper's board compares float32"),
+             "format", "FORMAT"),
         flag(preset(real("board.clock_mhz", "MHz", 1, 1000, member(&S::board, &B::clock_mhz), "board clock in MHz",
                          "assumption: the design runs at the ADM-XRC-II's local bus clock, up to 66 MHz (Alpha Data "
                          "SDK)")),

@@ -18,8 +18,8 @@ uint64_t BoardConfig::sweep_cycles(uint64_t objects) const {
     return SweepSchedule(m, tiles, static_cast<uint32_t>(objects)).slots();
 }
 
-uint64_t BoardConfig::primitives_for_depth(uint64_t depth) {
-    return CascadedBlockRam::primitives_for(static_cast<uint32_t>(depth));
+uint64_t BoardConfig::primitives_for_depth(uint64_t depth) const {
+    return CascadedBlockRam::primitives_for(static_cast<uint32_t>(depth), format.boxes_per_block_ram());
 }
 
 uint64_t BoardConfig::block_rams(uint64_t capacity) const {
@@ -28,7 +28,7 @@ uint64_t BoardConfig::block_rams(uint64_t capacity) const {
 }
 
 uint64_t BoardConfig::block_ram_bytes(uint64_t capacity) const {
-    return block_rams(capacity) * BlockRam::kWords * sizeof(uint32_t);
+    return block_rams(capacity) * format.boxes_per_block_ram() * sizeof(uint32_t);
 }
 
 uint32_t BoardConfig::pipeline_latency() const {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "models/comparison_unit/comparison_unit.h"
+#include "models/number_format/number_format.h"
 #include "models/pair_collector/pair_collector.h"
 #include "models/board/tile_config.h"
 
@@ -16,6 +17,8 @@ struct BoardConfig {
     // Board clock in MHz. Default 66: the ADM-XRC-II's local bus clock tops out
     // at 66 MHz and a Virtex-II -4 float datapath is plausible there (assumption).
     double clock_mhz = 66.0;
+    // The comparators' and coordinate memories' number format.
+    NumberFormat format;
     ComparisonUnitConfig compare;
     PairCollectorConfig collector;
     // Block RAM (the seed's board) or SSRAM tiles (platform/memory_plan.h picks it).
@@ -33,15 +36,16 @@ struct BoardConfig {
     // its blocks: the address generator's slots for N boxes (S(N,m) on a
     // board in block RAM, the tiled schedule's slots on one in SSRAM:
     // SweepSchedule); the block RAM primitives of the coordinate memories
-    // for `capacity` boxes (6 x m x ceil(N/512)), or of the tile buffers
-    // (6 x (2m+2) x ceil(min(T,N)/512)); and the bytes of block RAM words
-    // the clocked model keeps for them.
+    // for `capacity` boxes (6 x m x ceil(N/D)), or of the tile buffers
+    // (6 x (2m+2) x ceil(min(T,N)/D)), D the boxes one primitive holds in the
+    // number format (512 for 19..32-bit words, 1024 for 10..18, 2048 for
+    // 8..9); and the bytes of block RAM words the clocked model keeps for them.
     uint64_t sweep_cycles(uint64_t objects) const;
     uint64_t block_rams(uint64_t capacity) const;
     uint64_t block_ram_bytes(uint64_t capacity) const;
     // Block RAM primitives one copy of a coordinate memory of `depth` boxes
-    // cascades: every block RAM count goes through here.
-    static uint64_t primitives_for_depth(uint64_t depth);
+    // cascades in the format's aspect: every block RAM count goes through here.
+    uint64_t primitives_for_depth(uint64_t depth) const;
     // Copies of each coordinate memory: m (2m ports); tiled, a double-buffered
     // 2m-port column memory and a double-buffered row memory for port 0: 2m + 2.
     uint64_t memory_copies() const { return tiles.tiled() ? 2ull * m + 2 : m; }

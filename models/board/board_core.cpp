@@ -75,6 +75,7 @@ void BoardCore::declare_registers() {
     bank_.add("CAPACITY", R::kCapacity, A::kReadOnly, constant(capacity_));
     bank_.add("PAIR_BUFFER_DEPTH", R::kPairBufferDepth, A::kReadOnly, constant(config_.collector.buffer_depth));
     bank_.add("ERROR_CAUSE", R::kErrorCause, A::kReadOnly, [this] { return error_cause_; });
+    bank_.add("FORMAT", R::kFormat, A::kReadOnly, constant(config_.format.register_value()));
 }
 
 bool BoardCore::read_register(uint32_t offset, uint32_t& value) {
@@ -89,7 +90,7 @@ BoardCore::Write BoardCore::write_coordinate(Coordinate coordinate, uint32_t ind
         raise_error(ControlRegisters::kWriteWhileBusy);
         return Write::kRefused;
     }
-    store_[coordinate][index] = word;
+    store_[coordinate][index] = word & config_.format.word_mask();
     return Write::kDone;
 }
 
@@ -100,7 +101,13 @@ BoardCore::Write BoardCore::write_coordinates(Coordinate coordinate, uint32_t fi
         raise_error(ControlRegisters::kWriteWhileBusy);
         return Write::kRefused;
     }
-    std::memcpy(store_[coordinate].data() + first, words, std::size_t{count} * sizeof(uint32_t));
+    uint32_t* stored = store_[coordinate].data() + first;
+    std::memcpy(stored, words, std::size_t{count} * sizeof(uint32_t));
+    // The memories are as wide as the format: they keep a word's low bits.
+    const uint32_t mask = config_.format.word_mask();
+    if (mask != ~0u) {
+        for (uint32_t k = 0; k < count; ++k) stored[k] &= mask;
+    }
     return Write::kDone;
 }
 

@@ -6,13 +6,13 @@ namespace cdvp {
 
 ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
     : config_(config),
-      comparison_unit_(config.lanes(), config.compare),
+      comparison_unit_(config.lanes(), config.compare, config.format),
       collector_(config.collector),
       line_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles) {
     if (config.tiles.tiled()) {
         loader_ = std::make_unique<TileLoader>(config, capacity);
     } else {
-        memories_.push_back(make_coordinate_memories(config.m, capacity));
+        memories_.push_back(make_coordinate_memories(config.m, capacity, config.format.boxes_per_block_ram()));
     }
 }
 

@@ -1,21 +1,26 @@
-// The seed's comparison unit: 2m-1 lanes of six float comparators ANDed.
+// The seed's comparison unit: 2m-1 lanes of six comparators ANDed, in the
+// board's number format (float32 or fixedK).
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "models/coordinate_memory/coordinate_memory.h"
+#include "models/number_format/number_format.h"
 
 namespace cdvp {
 
 // Coordinate memories in the board's order.
 enum Coordinate : uint32_t { kMinX, kMinY, kMinZ, kMaxX, kMaxY, kMaxZ, kCoordinates };
 using CoordinateMemories = std::array<CoordinateMemory, kCoordinates>;
-// Six memories of `copies` copies (2 x copies ports) and `depth` boxes each.
-inline CoordinateMemories make_coordinate_memories(uint32_t copies, uint32_t depth) {
-    return {CoordinateMemory(copies, depth), CoordinateMemory(copies, depth), CoordinateMemory(copies, depth),
-            CoordinateMemory(copies, depth), CoordinateMemory(copies, depth), CoordinateMemory(copies, depth)};
+// Six memories of `copies` copies (2 x copies ports) and `depth` boxes each,
+// in primitives of `words_per_primitive` (NumberFormat::boxes_per_block_ram).
+inline CoordinateMemories make_coordinate_memories(uint32_t copies, uint32_t depth,
+                                                   uint32_t words_per_primitive = BlockRam::kWords) {
+    const CoordinateMemory memory(copies, depth, words_per_primitive);
+    return {memory, memory, memory, memory, memory, memory};
 }
 
 struct ComparisonUnitConfig {
@@ -27,18 +32,21 @@ struct ComparisonUnitConfig {
 
 // Lane k (0-based) compares box i on port 0 with box j on port k+1:
 // hit = min_i <= max_j && min_j <= max_i on x, y and z (closed intervals).
-// The comparisons are IEEE float32 comparisons: -0 equals +0, denormals are
-// compared as they are (the model never flushes to zero), infinities are
-// ordinary extremes. Lane results form a bit mask (bit k = lane k), so a
-// configuration has at most 63 lanes (m <= 32).
+// In float32 the comparisons are IEEE float32 comparisons: -0 equals +0,
+// denormals are compared as they are (the model never flushes to zero),
+// infinities are ordinary extremes. In fixedK they are unsigned comparisons
+// of the words' low K bits. Lane results form a bit mask (bit k = lane k), so
+// a configuration has at most 63 lanes (m <= 32).
 class ComparisonUnit {
 public:
     static constexpr uint32_t kMaxLanes = 63;
 
-    ComparisonUnit(uint32_t lanes, const ComparisonUnitConfig& config);
+    // The format is the hardware's: fixed at construction, as synthesis fixes it.
+    ComparisonUnit(uint32_t lanes, const ComparisonUnitConfig& config, NumberFormat format = NumberFormat::float32());
 
     uint32_t lanes() const { return lanes_; }
     uint32_t latency_cycles() const { return latency_; }
+    NumberFormat format() const { return format_; }
 
     // The lane results for the current memory outputs; lanes beyond
     // valid_lanes are not evaluated (their bits are 0).
@@ -48,25 +56,20 @@ public:
     // A tiled board: box i from port 0 of the row memories, the boxes j from
     // ports 1..valid_lanes of the column memories.
     uint64_t evaluate(const CoordinateMemories& rows, const CoordinateMemories& columns, uint32_t valid_lanes) const {
-        float i_bounds[kCoordinates];
-        for (uint32_t c = 0; c < kCoordinates; ++c) i_bounds[c] = as_float(rows[c].output(0));
-        uint64_t hits = 0;
-        for (uint32_t port = 1; port <= valid_lanes; ++port) {
-            float j_bounds[kCoordinates];
-            for (uint32_t c = 0; c < kCoordinates; ++c) j_bounds[c] = as_float(columns[c].output(port));
-            hits |= static_cast<uint64_t>(lane_hit(i_bounds, j_bounds)) << (port - 1);
-        }
-        return hits;
+        return (this->*evaluate_)(rows, columns, valid_lanes);
     }
 
     // Six comparators ANDed. Bounds are ordered min_x, min_y, min_z, max_x, max_y, max_z.
-    static bool lane_hit(const float* a, const float* b) {
+    template <typename Bound>
+    static bool lane_hit(const Bound* a, const Bound* b) {
         // Bitwise & keeps all six comparators evaluated, as in hardware, and
         // lets the compiler avoid branches.
         return (a[kMinX] <= b[kMaxX]) & (b[kMinX] <= a[kMaxX]) &
                (a[kMinY] <= b[kMaxY]) & (b[kMinY] <= a[kMaxY]) &
                (a[kMinZ] <= b[kMaxZ]) & (b[kMinZ] <= a[kMaxZ]);
     }
+    // The lane test of a format on two boxes' stored words.
+    static bool lane_hit(NumberFormat format, const uint32_t* a, const uint32_t* b);
 
     static float as_float(uint32_t bits) {
         float value;
@@ -80,8 +83,30 @@ public:
     }
 
 private:
+    // One lane test per format: float32 compares floats, fixedK the masked words.
+    template <typename Bound>
+    uint64_t evaluate_as(const CoordinateMemories& rows, const CoordinateMemories& columns, uint32_t valid_lanes) const {
+        Bound i_bounds[kCoordinates];
+        for (uint32_t c = 0; c < kCoordinates; ++c) i_bounds[c] = bound<Bound>(rows[c].output(0));
+        uint64_t hits = 0;
+        for (uint32_t port = 1; port <= valid_lanes; ++port) {
+            Bound j_bounds[kCoordinates];
+            for (uint32_t c = 0; c < kCoordinates; ++c) j_bounds[c] = bound<Bound>(columns[c].output(port));
+            hits |= static_cast<uint64_t>(lane_hit(i_bounds, j_bounds)) << (port - 1);
+        }
+        return hits;
+    }
+    template <typename Bound>
+    Bound bound(uint32_t word) const {
+        if constexpr (std::is_same_v<Bound, float>) return as_float(word);
+        else return word & mask_;
+    }
+
     uint32_t lanes_;
     uint32_t latency_;
+    NumberFormat format_;
+    uint32_t mask_;
+    uint64_t (ComparisonUnit::*evaluate_)(const CoordinateMemories&, const CoordinateMemories&, uint32_t) const;
 };
 
 }  // namespace cdvp

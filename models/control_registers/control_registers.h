@@ -43,6 +43,7 @@ struct ControlRegisters {
         kCapacity = 0x30,         // ro: memory depth in boxes
         kPairBufferDepth = 0x34,  // ro: pair buffer depth in pairs
         kErrorCause = 0x38,       // ro: why ERROR is set (a BoardError)
+        kFormat = 0x3C,           // ro: the comparators' number format: 0 float32, K fixedK (NumberFormat)
     };
     // ABORT stops any sweep and clears every status bit: the board is idle,
     // ready for a new START (a driver's recovery after a fault).

@@ -4,8 +4,8 @@
 
 namespace cdvp {
 
-CoordinateMemory::CoordinateMemory(uint32_t copies, uint32_t depth)
-    : depth_(depth), copies_(copies, CascadedBlockRam(depth)) {
+CoordinateMemory::CoordinateMemory(uint32_t copies, uint32_t depth, uint32_t words_per_primitive)
+    : depth_(depth), copies_(copies, CascadedBlockRam(depth, words_per_primitive)) {
     if (copies == 0) throw std::invalid_argument("a coordinate memory needs at least one block RAM copy");
 }
 

@@ -13,13 +13,14 @@ namespace cdvp {
 // port p%2. A write goes to all m copies, so they always hold the same data.
 class CoordinateMemory {
 public:
-    CoordinateMemory(uint32_t copies, uint32_t depth);
+    // words_per_primitive: the block RAM aspect's depth (NumberFormat::boxes_per_block_ram).
+    CoordinateMemory(uint32_t copies, uint32_t depth, uint32_t words_per_primitive = BlockRam::kWords);
 
     uint32_t copies() const { return static_cast<uint32_t>(copies_.size()); }
     uint32_t ports() const { return 2 * copies(); }
     uint32_t depth() const { return depth_; }
-    // Block RAM primitives this memory uses: m * ceil(depth / 512).
-    uint32_t block_rams() const { return copies() * CascadedBlockRam::primitives_for(depth_); }
+    // Block RAM primitives this memory uses: m * ceil(depth / words per primitive).
+    uint32_t block_rams() const { return copies() * copies_.front().primitives(); }
 
     void write(uint32_t address, uint32_t word);
 

@@ -3,10 +3,10 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "models/comparison_unit/comparison_unit.h"
+#include "models/number_format/number_format.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -14,35 +14,41 @@
 
 namespace cdvp {
 
-// Bounds by coordinate (Coordinate order), one float per box. The arrays
+// A stored word's key in the format's order, biased into int32 so that SSE2's
+// signed compare orders it: the fast engine compares these only.
+inline int32_t signed_key(NumberFormat format, uint32_t word) {
+    return static_cast<int32_t>(format.key(word) ^ 0x8000'0000u);
+}
+
+// Bounds by coordinate (Coordinate order), one signed key per box. The arrays
 // carry kBlock entries of padding so that a block may start at any box.
 struct BoxColumns {
     static constexpr std::size_t kBlock = 4;  // a multiple of 4: BlockTest tests groups of four
 
-    std::vector<float> bound[kCoordinates];
+    std::vector<int32_t> bound[kCoordinates];
 
     void resize(std::size_t boxes) {
-        for (auto& column : bound) column.resize(boxes + kBlock, std::numeric_limits<float>::quiet_NaN());
+        for (auto& column : bound) column.resize(boxes + kBlock, 0);
     }
-    void set(std::size_t k, const float (&bounds)[kCoordinates]) {
+    void set(std::size_t k, const int32_t (&bounds)[kCoordinates]) {
         for (uint32_t c = 0; c < kCoordinates; ++c) bound[c][k] = bounds[c];
     }
-    void get(std::size_t k, float (&bounds)[kCoordinates]) const {
+    void get(std::size_t k, int32_t (&bounds)[kCoordinates]) const {
         for (uint32_t c = 0; c < kCoordinates; ++c) bounds[c] = bound[c][k];
     }
 };
 
-// The comparison unit's test of box a against kBlock boxes at a time: bit k
-// of hits(q0) = ComparisonUnit::lane_hit(a, box q0 + k). Every comparison is
-// evaluated (no branch), as IEEE float comparisons: NaN never compares true,
-// -0 equals +0, infinities are ordinary.
+// The comparison unit's test of box a against kBlock boxes at a time, on
+// keys: bit k of hits(q0) = ComparisonUnit::lane_hit(a, box q0 + k), which for
+// keys of words the format does not exclude is the comparators' own answer.
+// Every comparison is evaluated (no branch).
 class BlockTest {
 public:
-    BlockTest(const BoxColumns& boxes, const float (&a)[kCoordinates]) {
+    BlockTest(const BoxColumns& boxes, const int32_t (&a)[kCoordinates]) {
         for (uint32_t c = 0; c < kCoordinates; ++c) {
             column_[c] = boxes.bound[c].data();
 #if defined(__SSE2__)
-            a_[c] = _mm_set1_ps(a[c]);
+            a_[c] = _mm_set1_epi32(a[c]);
 #else
             a_[c] = a[c];
 #endif
@@ -57,7 +63,7 @@ public:
 #else
         uint32_t hits = 0;
         for (std::size_t k = 0; k < BoxColumns::kBlock; ++k) {
-            float b[kCoordinates];
+            int32_t b[kCoordinates];
             for (uint32_t c = 0; c < kCoordinates; ++c) b[c] = column_[c][q0 + k];
             hits |= static_cast<uint32_t>(ComparisonUnit::lane_hit(a_, b)) << k;
         }
@@ -67,21 +73,23 @@ public:
 
 private:
 #if defined(__SSE2__)
-    uint32_t four(std::size_t q) const {
-        // a.min <= b.max and b.min <= a.max on each axis.
-        __m128 all = _mm_and_ps(_mm_cmple_ps(a_[kMinX], _mm_loadu_ps(column_[kMaxX] + q)),
-                                _mm_cmple_ps(_mm_loadu_ps(column_[kMinX] + q), a_[kMaxX]));
-        all = _mm_and_ps(all, _mm_cmple_ps(a_[kMinY], _mm_loadu_ps(column_[kMaxY] + q)));
-        all = _mm_and_ps(all, _mm_cmple_ps(_mm_loadu_ps(column_[kMinY] + q), a_[kMaxY]));
-        all = _mm_and_ps(all, _mm_cmple_ps(a_[kMinZ], _mm_loadu_ps(column_[kMaxZ] + q)));
-        all = _mm_and_ps(all, _mm_cmple_ps(_mm_loadu_ps(column_[kMinZ] + q), a_[kMaxZ]));
-        return static_cast<uint32_t>(_mm_movemask_ps(all));
+    __m128i load(uint32_t c, std::size_t q) const {
+        return _mm_loadu_si128(reinterpret_cast<const __m128i*>(column_[c] + q));
     }
-    __m128 a_[kCoordinates];
+    uint32_t four(std::size_t q) const {
+        // A miss: a.min > b.max or b.min > a.max on some axis.
+        __m128i miss = _mm_or_si128(_mm_cmpgt_epi32(a_[kMinX], load(kMaxX, q)), _mm_cmpgt_epi32(load(kMinX, q), a_[kMaxX]));
+        miss = _mm_or_si128(miss, _mm_cmpgt_epi32(a_[kMinY], load(kMaxY, q)));
+        miss = _mm_or_si128(miss, _mm_cmpgt_epi32(load(kMinY, q), a_[kMaxY]));
+        miss = _mm_or_si128(miss, _mm_cmpgt_epi32(a_[kMinZ], load(kMaxZ, q)));
+        miss = _mm_or_si128(miss, _mm_cmpgt_epi32(load(kMinZ, q), a_[kMaxZ]));
+        return ~static_cast<uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(miss))) & 0xFu;
+    }
+    __m128i a_[kCoordinates];
 #else
-    float a_[kCoordinates];
+    int32_t a_[kCoordinates];
 #endif
-    const float* column_[kCoordinates];
+    const int32_t* column_[kCoordinates];
 };
 
 // Bit k set = bit `Bit` of flags[q0 + k] is set, for the kBlock words from q0.

@@ -16,16 +16,8 @@ constexpr uint32_t kMinBoxesPerCell = 16;
 // boxes spanning many cells) is dropped for the plain sweep along x.
 constexpr uint64_t kMaxEntriesPerBox = 4;
 
-void read_box(const CoordinateWords& words, uint32_t i, float (&bounds)[kCoordinates]) {
-    for (uint32_t c = 0; c < kCoordinates; ++c) bounds[c] = ComparisonUnit::as_float(words[c][i]);
-}
-
-// Float bits mapped to unsigned integers in the floats' order (-0 just below
-// +0, which compare equal: either order is fine for the sweep).
-uint32_t ordered_key(float value) {
-    const uint32_t bits = ComparisonUnit::as_bits(value);
-    return (bits & 0x8000'0000u) != 0 ? ~bits : bits | 0x8000'0000u;
-}
+// The unsigned key of a signed one: the order the radix sort sorts by.
+uint32_t unsigned_key(int32_t key) { return static_cast<uint32_t>(key) ^ 0x8000'0000u; }
 
 // Visits the set bits of a block's hit mask as box positions.
 template <typename Visit>
@@ -38,14 +30,23 @@ void for_each_hit(uint32_t hits, std::size_t q0, Visit&& visit) {
 
 }  // namespace
 
-// The y-z grid: cell of v on an axis = floor((v - origin) / size), clamped.
-// Float arithmetic: each step is monotonic in v, which is all the sweep needs
-// (boxes whose hulls meet get spans that meet).
+// The y-z grid: cell of v on an axis = floor((v - origin) / size), clamped,
+// v a stored word's value (the float for float32, the code for fixedK: the
+// approximate value of its key, read from the word so no key is undone).
+// Float arithmetic: each step is monotonic in the key, which is all the sweep
+// needs (boxes whose hulls meet get spans that meet); -0 and +0, one key, give
+// one cell.
 struct PairFinder::Grid {
     uint32_t cells[2] = {1, 1};  // y, z
     float origin[2] = {0, 0};
     float inverse_size[2] = {0, 0};
 
+    // kFixed: fixed-point codes (mask: the format's word mask); else float32.
+    // A template parameter, so the per-box loops carry no test of the format.
+    template <bool kFixed>
+    static float value(uint32_t word, uint32_t mask) {
+        return kFixed ? NumberFormat::fixed_value(word & mask) : ComparisonUnit::as_float(word);
+    }
     uint16_t cell(int axis, float value) const {
         if (cells[axis] == 1) return 0;  // (and inverse_size 0 would turn infinities into NaN)
         const float at = (value - origin[axis]) * inverse_size[axis];
@@ -62,28 +63,34 @@ void PairFinder::find(uint32_t objects, const CoordinateWords& words, PairList& 
     }
 }
 
+// Over the boxes the format does not exclude, in index order: pairs come out
+// in BoardCore's order.
 void PairFinder::all_pairs(uint32_t objects, const CoordinateWords& words, PairList& out) {
     out.clear();
-    all_.resize(objects);
-    for (uint32_t i = 0; i < objects; ++i) {
-        float bounds[kCoordinates];
-        read_box(words, i, bounds);
-        all_.set(i, bounds);
-    }
-    for (uint32_t i = 0; i < objects; ++i) {
-        float a[kCoordinates];
-        all_.get(i, a);
+    load_valid(objects, words);
+    const std::size_t n = valid_.size();
+    all_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) all_.set(k, valid_[k].bound);
+    for (std::size_t p = 0; p < n; ++p) {
+        int32_t a[kCoordinates];
+        all_.get(p, a);
         const BlockTest test(all_, a);
-        for (std::size_t q0 = i + 1; q0 < objects; q0 += kBlock) {
-            const uint32_t hits = test.hits(q0) & block_mask_before(q0, objects);
-            for_each_hit(hits, q0, [&](std::size_t j) { out.push_back({i, static_cast<uint32_t>(j)}); });
+        const uint32_t i = valid_[p].index;
+        for (std::size_t q0 = p + 1; q0 < n; q0 += kBlock) {
+            const uint32_t hits = test.hits(q0) & block_mask_before(q0, n);
+            for_each_hit(hits, q0, [&](std::size_t q) { out.push_back({i, valid_[q].index}); });
         }
     }
 }
 
 void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList& out) {
+    words_ = words;
     load_valid(objects, words);
-    find_spans(choose_grid());
+    if (format_.is_float()) {
+        find_spans<false>(choose_grid<false>());
+    } else {
+        find_spans<true>(choose_grid<true>());
+    }
     cluster_by_first_cell();
     sort_by_min_x();
     bin();
@@ -91,17 +98,33 @@ void PairFinder::sweep(uint32_t objects, const CoordinateWords& words, PairList&
     order(objects, emit_pairs(), out);
 }
 
+// Keys a column at a time (a loop the compiler vectorises), then the boxes
+// packed from them, those with an excluded word (float32 NaN) left out.
 void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
+    excluded_.assign(objects, 0);
+    uint32_t* excluded = excluded_.data();
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        key_columns_[c].resize(objects);
+        int32_t* keys = key_columns_[c].data();
+        const uint32_t* column = words[c];
+        if (format_.is_float()) {
+            for (uint32_t i = 0; i < objects; ++i) {
+                keys[i] = signed_key(NumberFormat::float32(), column[i]);
+                excluded[i] |= NumberFormat::float32().excluded(column[i]) ? 1u : 0u;
+            }
+        } else {
+            const NumberFormat format = format_;
+            for (uint32_t i = 0; i < objects; ++i) keys[i] = signed_key(format, column[i]);
+        }
+    }
     valid_.resize(objects);
     std::size_t kept = 0;
     for (uint32_t i = 0; i < objects; ++i) {
         PackedBox& box = valid_[kept];
-        read_box(words, i, box.bound);
-        bool has_nan = false;
-        for (float bound : box.bound) has_nan |= std::isnan(bound);
+        for (uint32_t c = 0; c < kCoordinates; ++c) box.bound[c] = key_columns_[c][i];
         box.index = i;
         box.first_cell = 0;
-        kept += has_nan ? 0 : 1;  // every comparison with a NaN is false: it meets nothing
+        kept += excluded[i] == 0 ? 1 : 0;  // every comparison with a NaN is false: it meets nothing
     }
     valid_.resize(kept);
 }
@@ -109,14 +132,19 @@ void PairFinder::load_valid(uint32_t objects, const CoordinateWords& words) {
 // Cells about twice the mean box extent, so that most boxes touch one or two
 // cells per axis; none over kMaxCellsPerAxis a side or with fewer than
 // kMinBoxesPerCell boxes on average.
+template <bool kFixed>
 PairFinder::Grid PairFinder::choose_grid() const {
     Grid grid;
     const std::size_t n = valid_.size();
     for (int axis = 0; axis < 2; ++axis) {
         double low = INFINITY, high = -INFINITY, extent = 0;
         std::size_t finite = 0;
+        const uint32_t* lows = words_[kMinY + axis];
+        const uint32_t* highs = words_[kMaxY + axis];
+        const uint32_t mask = format_.word_mask();
         for (const PackedBox& box : valid_) {
-            const float lo = box.bound[kMinY + axis], hi = box.bound[kMaxY + axis];
+            const float lo = Grid::value<kFixed>(lows[box.index], mask);
+            const float hi = Grid::value<kFixed>(highs[box.index], mask);
             if (!std::isfinite(lo) || !std::isfinite(hi)) continue;
             low = std::min<double>(low, std::min(lo, hi));
             high = std::max<double>(high, std::max(lo, hi));
@@ -142,20 +170,25 @@ PairFinder::Grid PairFinder::choose_grid() const {
 // The cells of each box's y and z hulls [min(lo, hi), max(lo, hi)]: two boxes
 // that meet on an axis have intersecting hulls even when inverted. Each box
 // becomes a sort item: its min-x key, its position in valid_ and its cells.
+template <bool kFixed>
 void PairFinder::find_spans(const Grid& chosen) {
     const std::size_t n = valid_.size();
     Grid grid = chosen;
     items_.resize(n);
+    const uint32_t mask = format_.word_mask();
+    const auto value = [&](uint32_t c, uint32_t i) { return Grid::value<kFixed>(words_[c][i], mask); };
     for (int attempt = 0; attempt < 2; ++attempt) {
         entry_count_ = 0;
         for (std::size_t k = 0; k < n; ++k) {
             PackedBox& box = valid_[k];
-            const float* b = box.bound;
-            const CellSpan span = {grid.cell(0, std::min(b[kMinY], b[kMaxY])), grid.cell(0, std::max(b[kMinY], b[kMaxY])),
-                                   grid.cell(1, std::min(b[kMinZ], b[kMaxZ])), grid.cell(1, std::max(b[kMinZ], b[kMaxZ]))};
+            const int32_t* b = box.bound;
+            const float y0 = value(kMinY, box.index), y1 = value(kMaxY, box.index);
+            const float z0 = value(kMinZ, box.index), z1 = value(kMaxZ, box.index);
+            const CellSpan span = {grid.cell(0, std::min(y0, y1)), grid.cell(0, std::max(y0, y1)),
+                                   grid.cell(1, std::min(z0, z1)), grid.cell(1, std::max(z0, z1))};
             entry_count_ += uint64_t{span.y1 - span.y0 + 1u} * (span.z1 - span.z0 + 1u);
             box.first_cell = (uint32_t{span.y0} << 16) | span.z0;
-            items_[k] = {ordered_key(b[kMinX]), static_cast<uint32_t>(k), span};
+            items_[k] = {unsigned_key(b[kMinX]), static_cast<uint32_t>(k), span};
         }
         if (entry_count_ <= kMaxEntriesPerBox * n) break;
         grid = Grid{};  // huge boxes everywhere: one cell
@@ -282,13 +315,13 @@ void PairFinder::for_each_cell(const CellSpan& span, Visit&& visit) const {
 // so the sweep only records blocks with hits (without a branch) and
 // emit_pairs() turns them into pairs afterwards.
 void PairFinder::sweep_cells() {
-    const float* min_x = entries_.bound[kMinX].data();
+    const int32_t* min_x = entries_.bound[kMinX].data();
     hit_blocks_.resize(std::max<std::size_t>(hit_blocks_.size(), entry_count_ + 1));
     std::size_t recorded = 0;
     for (uint32_t cell = 0; cell + 1 < cell_begin_.size(); ++cell) {
         const std::size_t end = cell_begin_[cell + 1];
         for (std::size_t p = cell_begin_[cell]; p < end; ++p) {
-            float a[kCoordinates];
+            int32_t a[kCoordinates];
             entries_.get(p, a);
             const BlockTest test(entries_, a);
             for (std::size_t q0 = p + 1; q0 < end; q0 += kBlock) {

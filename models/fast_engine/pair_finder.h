@@ -11,21 +11,27 @@
 
 namespace cdvp {
 
-// The six coordinate memories' contents as the host wrote them: words[c][i]
-// is the float32 bit pattern of bound c (Coordinate order) of box i.
+// The six coordinate memories' contents: words[c][i] is the stored word of
+// bound c (Coordinate order) of box i (float32 bits, or a fixed-point code).
 using CoordinateWords = std::array<const uint32_t*, kCoordinates>;
 
-// Finds exactly the pairs (i, j), i < j < objects, for which
-// ComparisonUnit::lane_hit holds, in BoardCore's order (i ascending, then j
-// ascending). Small scenes: all pairs over structure-of-arrays, four boxes a
-// test. Larger ones: a sort on min x, boxes binned into a grid of y-z cells
-// and a sweep along x inside each cell (box pruning); a pair meeting in
-// several cells is reported by the first one only. Any bound may be any
-// float: a box with a NaN bound meets nothing and is left out before the
-// sort; inverted boxes (min > max) are tested as the comparators would.
-// Scratch memory is kept between calls; O(N + pairs).
+// Finds exactly the pairs (i, j), i < j < objects, for which the comparison
+// unit's lane test in the given number format holds, in BoardCore's order (i
+// ascending, then j ascending). Every bound becomes the format's ordered key
+// (NumberFormat::key), so all comparisons are integer ones. Small scenes: all
+// pairs over structure-of-arrays, four boxes a test. Larger ones: a sort on
+// min x, boxes binned into a grid of y-z cells (in value space, from the
+// format's monotone approximate value) and a sweep along x inside each cell
+// (box pruning); a pair meeting in several cells is reported by the first one
+// only. Any bound may be any word: a box with a word the format excludes
+// (float32 NaN) meets nothing and is left out first; inverted boxes (min >
+// max) are tested as the comparators would. Scratch memory is kept between
+// calls; O(N + pairs).
 class PairFinder {
 public:
+    explicit PairFinder(NumberFormat format = NumberFormat::float32()) : format_(format) {}
+    NumberFormat format() const { return format_; }
+
     // At most this many boxes: all pairs (no sort pays off below it).
     static constexpr uint32_t kBruteForceLimit = 256;
 
@@ -47,7 +53,7 @@ private:
     struct Grid;
     // One box in 32 bytes: bounds, index, and its first y and z cells ((y << 16) | z).
     struct PackedBox {
-        float bound[kCoordinates];
+        int32_t bound[kCoordinates];  // signed keys
         uint32_t index;
         uint32_t first_cell;
     };
@@ -62,7 +68,10 @@ private:
     };
 
     void load_valid(uint32_t objects, const CoordinateWords& words);
+    // kFixed: the keys are fixed-point codes (else float32 keys).
+    template <bool kFixed>
     Grid choose_grid() const;
+    template <bool kFixed>
     void find_spans(const Grid& grid);
     void cluster_by_first_cell();
     void sort_by_min_x();
@@ -85,7 +94,12 @@ private:
     template <typename Key>
     void counting_sort(uint32_t objects, const IndexPair* from, std::size_t count, IndexPair* to, Key key);
 
-    // Boxes without a NaN bound, in index order or grouped by first cell.
+    NumberFormat format_;
+    CoordinateWords words_{};  // the current sweep's
+    // The words' keys by coordinate, and whether a box has an excluded word.
+    std::vector<int32_t> key_columns_[kCoordinates];
+    std::vector<uint32_t> excluded_;
+    // Boxes without an excluded bound, in index order or grouped by first cell.
     std::vector<PackedBox> valid_, clustered_;
     uint32_t cluster_above_ = kClusterAbove;
     std::vector<SortItem> items_, spare_items_;

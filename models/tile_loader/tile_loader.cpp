@@ -8,8 +8,8 @@ namespace cdvp {
 TileLoader::TileLoader(const BoardConfig& config, uint32_t capacity) : tiles_(config.tiles) {
     const uint32_t depth = std::max(1u, std::min(config.tiles.boxes, capacity));
     for (int buffer = 0; buffer < 2; ++buffer) {
-        columns_.push_back(make_coordinate_memories(config.m, depth));
-        rows_.push_back(make_coordinate_memories(1, depth));
+        columns_.push_back(make_coordinate_memories(config.m, depth, config.format.boxes_per_block_ram()));
+        rows_.push_back(make_coordinate_memories(1, depth, config.format.boxes_per_block_ram()));
     }
 }
 

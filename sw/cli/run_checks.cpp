@@ -201,7 +201,8 @@ void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_
     if (block_rams != 0 && needed > block_rams) {
         const uint64_t largest = block_rams / (needed / board.m);  // block RAMs grow linearly with m
         throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(block_rams) +
-                         " block RAMs are too few for " + at + ": they need 6 x m x ceil(N/512) = " +
+                         " block RAMs are too few for " + at + ": they need 6 x m x ceil(N/" +
+                         std::to_string(board.format.boxes_per_block_ram()) + ") = " +
                          std::to_string(needed) +
                          (largest > 0 ? " (largest m that fits: " + std::to_string(largest) + explore + ")"
                                       : " (not even m=1 fits: use fewer objects or a larger device" + explore + ")"));
@@ -212,7 +213,8 @@ void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_
     const Overflow over = overflow_of(fit);
     throw InputError(values.where(setting(over.setting)) + ": " + whole(over.available) + " " + over.unit +
                      " are too few for " + at + ": the board needs " + whole(over.needed) + " (" +
-                     std::to_string(2 * board.m - 1) + " float32 lanes, the memories, address generator, pair FIFO "
+                     std::to_string(2 * board.m - 1) + " " + board.format.name() +
+                     " lanes, the memories, address generator, pair FIFO "
                      "and control, from synthesis for " + settings.device.family + ")" +
                      (fit.largest_m > 0 ? " (largest m that fits: " + std::to_string(fit.largest_m) + explore + ")"
                                         : " (not even m=1 fits" + explore + ")"));

@@ -31,6 +31,7 @@
 #include "sw/scene/output_target.h"
 #include "models/common/user_text.h"
 #include "sw/scene/pairs_csv.h"
+#include "sw/cli/format_reference.h"
 
 namespace po = boost::program_options;
 
@@ -262,6 +263,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         report->begin(run);
     }
     RunTotals totals(setup.values.settings().run.warmup);
+    FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair);
 
     // The later runs of the baselines (--repeat) count as frames too.
     const std::size_t baseline_runs = setup.baselines.empty() ? 1 : setup.values.settings().run.repeat;
@@ -282,16 +284,24 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
             return fault.kind == FrameFault::Kind::kDevice ? kExitDeviceFault : kExitBadInput;
         }
         const FrameResult& result = *frame_result;
+        const FormatReference::Check check = reference.check(boxes, result.pairs, result.phases);
+        if (check.missing) {
+            std::cerr << "cdvp run: frame " << frame->number << ": "
+                      << lost_pair_message(run.config.format, *frame, *check.missing) << '\n';
+            return kExitDeviceFault;
+        }
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
-                         run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_ns};
+                         run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_ns, check.extra};
         stats.load_wait_slots = load_wait_slots(run, boxes.size());
         if (!setup.baselines.empty()) {
-            stats.baselines = setup.baselines.time_frame(boxes, sorted(result.pairs), frame->number);
+            stats.baselines =
+                setup.baselines.time_frame(boxes, sorted(reference.kept(check, result.pairs)), frame->number);
         }
         if (report) report->frame(stats);
         totals.add(stats);
-        source.feed(result.pairs);
+        // The application gets the pairs the host keeps once it has dropped the extra ones.
+        source.feed(reference.kept(check, result.pairs));
         progress.update(totals.frames());
     }
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

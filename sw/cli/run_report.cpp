@@ -55,12 +55,12 @@ nlohmann::json piece_json(const Resources& r) {
     return {{"luts", r.luts}, {"flip_flops", r.flip_flops}, {"carry_cells", r.carry_cells}, {"block_rams", r.block_rams}};
 }
 
-nlohmann::json resources_json(const DeviceFit& fit) {
+nlohmann::json resources_json(const DeviceFit& fit, NumberFormat format) {
     const Resources total = fit.resources.total();
     const BoardResources& r = fit.resources;
     return {{"device", fit.device.name},
             {"family", fit.device.family},
-            {"format", "float32"},
+            {"format", format.name()},
             {"pair_fifo_memory", r.pair_fifo_memory},
             {"luts", usage_json(total.luts, fit.device.luts)},
             {"flip_flops", usage_json(total.flip_flops, fit.device.flip_flops)},
@@ -94,6 +94,7 @@ nlohmann::json config_json(const RunConfig& run) {
         {"baseline_runs", run.baseline_runs},
         {"inject", run.inject},
         {"m", c.m},
+        {"format", c.format.name()},
         {"lanes", c.lanes()},
         {"clock_mhz", c.clock_mhz},
         {"compare_latency_cycles", c.compare.latency_cycles},
@@ -111,15 +112,24 @@ nlohmann::json config_json(const RunConfig& run) {
         config["seed"] = run.settings->settings().scene.seed;
         config["settings"] = settings_json(*run.settings);
     }
-    if (run.device_fit) config["resources"] = resources_json(*run.device_fit);
+    if (run.device_fit) config["resources"] = resources_json(*run.device_fit, c.format);
     return config;
+}
+
+// Pairs against the float32 reference and the extra pairs' cost downstream.
+void add_extra(nlohmann::json& json, const ExtraPairs& e) {
+    json["reference_pairs"] = e.reference_pairs;
+    json["extra_pairs"] = e.extra_pairs;
+    json["extra_share"] = e.share();
+    json["extra_readback_ns"] = e.extra_readback_ns;
+    json["extra_driver_ns"] = e.extra_driver_ns;
 }
 
 nlohmann::json frame_json(const FrameStats& f) {
     const FramePhases& p = f.phases;
     nlohmann::json baselines = nlohmann::json::object();
     for (const auto& [name, t] : f.baselines) baselines[name] = {{"ns", t.ns}, {"scaled_ns", t.scaled_ns}};
-    return {{"frame", f.frame},
+    nlohmann::json frame = {{"frame", f.frame},
             {"objects", f.objects},
             {"pairs", f.pairs},
             {"compute_cycles", p.compute_cycles},
@@ -137,6 +147,8 @@ nlohmann::json frame_json(const FrameStats& f) {
             {"total_ns", p.total_ns},
             {"sim_wall_ns", f.sim_wall_ns},
             {"baselines", baselines}};
+    add_extra(frame, f.extra);
+    return frame;
 }
 
 // median_KEY, p10_KEY and p90_KEY: flat, like the mean_ keys beside them.
@@ -211,6 +223,7 @@ void RunTotals::add(const FrameStats& frame) {
     cycles_ += frame.phases.compute_cycles;
     stalls_ += frame.phases.stall_cycles;
     last_objects_ = frame.objects;
+    extra_ += frame.extra;
     if (shown_.size() < kRowsShown) shown_.push_back(frame);
 }
 
@@ -276,7 +289,9 @@ void ReportWriter::end(const RunTotals& totals, double host_factor) {
                               {"warmup_frames", totals.warmup_frames()},
                               {"frames_in_means", totals.frames_in_means()},
                               {"too_few_frames", totals.frames() > 0 && board.too_few_frames()},
-                              {"baselines", baselines}};
+                              {"baselines", baselines},
+                              {"pairs", totals.pairs()}};
+    add_extra(summary, totals.extra());
     add_spread(summary, "total_ns", board.spread);
     add_spread(summary, "sim_wall_ns", totals.sim_wall_figures().spread);
     for (int k = 0; k < RunTotals::kPhases; ++k) summary[std::string("mean_") + kPhaseNames[k]] = totals.mean_phase(k);
@@ -325,8 +340,9 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
     const BoardConfig& c = run.config;
     char line[512];
     // Names may be long and come from files: printed whole and escaped.
-    std::snprintf(line, sizeof line, ": m=%u (%u lanes), %.6g MHz, L=%u cycles, %u block RAMs, %s engine\n", c.m,
-                  c.lanes(), c.clock_mhz, c.pipeline_latency(), run.block_rams, run.fidelity.c_str());
+    std::snprintf(line, sizeof line, ": m=%u (%u %s lanes), %.6g MHz, L=%u cycles, %u block RAMs, %s engine\n", c.m,
+                  c.lanes(), c.format.name().c_str(), c.clock_mhz, c.pipeline_latency(), run.block_rams,
+                  run.fidelity.c_str());
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
     if (run.device_fit) print_resources(out, *run.device_fit);
     if (run.ssram) {
@@ -353,6 +369,16 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
                   static_cast<unsigned long long>(totals.frames()), static_cast<unsigned long long>(totals.pairs()),
                   static_cast<unsigned long long>(totals.cycles()), static_cast<unsigned long long>(totals.stalls()));
     out << line;
+    if (!c.format.is_float()) {
+        const ExtraPairs& e = totals.extra();
+        std::snprintf(line, sizeof line,
+                      "%s: %llu pairs of the float32 reference, %llu extra (%.2f%% of the board's), costing %.1f us "
+                      "of readback and %.1f us of driver time\n",
+                      c.format.name().c_str(), static_cast<unsigned long long>(e.reference_pairs),
+                      static_cast<unsigned long long>(e.extra_pairs), 100 * e.share(), e.extra_readback_ns / 1e3,
+                      e.extra_driver_ns / 1e3);
+        out << line;
+    }
     print_timing(out, run, totals);
     const double rate = wall_seconds > 0 ? static_cast<double>(totals.cycles()) / wall_seconds : 0.0;
     std::snprintf(line, sizeof line, "simulated in %.3f s wall time (%.2f M board cycles/s)\n", wall_seconds,

@@ -14,6 +14,7 @@
 #include "models/board/board_config.h"
 #include "platform/device_fit.h"
 #include "platform/setting_values.h"
+#include "sw/cli/format_reference.h"
 #include "sw/driver/board_driver.h"
 #include "sw/timing/frame_samples.h"
 
@@ -33,6 +34,7 @@ struct FrameStats {
     FramePhases phases;         // simulated; compute_cycles, stall_cycles, overflow_pauses inside
     std::map<std::string, BaselineTime> baselines;
     double sim_wall_ns = 0;     // the simulator's own wall time for the frame (no file I/O, no baselines)
+    ExtraPairs extra;           // against the float32 reference (none under float32)
 };
 
 // What the run is: its scene, board, bus, host and driver settings.
@@ -85,6 +87,7 @@ public:
     uint64_t frames_in_means() const { return frames_ > warmup_frames_ ? frames_ - warmup_frames_ : frames_; }
     const std::vector<FrameStats>& shown() const { return shown_; }
     uint64_t pairs() const { return pairs_; }
+    const ExtraPairs& extra() const { return extra_; }
     uint64_t cycles() const { return cycles_; }
     uint64_t stalls() const { return stalls_; }
     uint64_t last_objects() const { return last_objects_; }
@@ -107,6 +110,7 @@ private:
     };
     uint64_t warmup_frames_;
     uint64_t frames_ = 0, pairs_ = 0, cycles_ = 0, stalls_ = 0, last_objects_ = 0;
+    ExtraPairs extra_;
     Sums warmup_, rest_;
     FrameSamples board_total_{warmup_frames_}, sim_wall_{warmup_frames_};
     std::map<std::string, FrameSamples> baselines_;

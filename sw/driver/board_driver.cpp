@@ -11,6 +11,7 @@
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/control_registers/control_registers.h"
 #include "models/pci/dma_registers.h"
+#include "sw/driver/quantiser.h"
 
 namespace cdvp {
 
@@ -96,6 +97,7 @@ void BoardDriver::open() {
     capacity_ = read(R::kCapacity);
     buffer_depth_ = read(R::kPairBufferDepth);
     parallelism_ = read(R::kParallelism);
+    format_ = NumberFormat::from_register(read(R::kFormat));
     if (port_.memory_size() < host_memory_bytes(capacity_, buffer_depth_)) {
         throw std::runtime_error("host memory too small for the board's capacity and pair buffer");
     }
@@ -187,11 +189,11 @@ void BoardDriver::dma(uint64_t host_address, uint32_t local_address, uint32_t by
 void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
     const auto n = static_cast<uint32_t>(boxes.size());
     if (n == 0) return;
+    // In the board's format: float32 bit patterns, or fixed-point codes over
+    // the frame's bounds, rounded outward.
+    const Quantiser quantiser(format_, boxes);
     for (uint32_t c = 0; c < kCoordinates; ++c) {
-        auto* words = reinterpret_cast<uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
-        for (uint32_t i = 0; i < n; ++i) {
-            words[i] = ComparisonUnit::as_bits(c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3]);
-        }
+        quantiser.write_column(boxes, c, reinterpret_cast<uint32_t*>(port_.memory(coordinate_area(capacity_, c))));
     }
     auto local = [](uint32_t c) {
         return static_cast<uint32_t>(address_map::kCoordinateBase + c * address_map::kWindowSize);

@@ -11,6 +11,7 @@
 
 #include "models/board/tile_config.h"
 #include "models/common/aabb.h"
+#include "models/number_format/number_format.h"
 #include "models/pci/bus_timing.h"
 #include "sw/driver/host_port.h"
 
@@ -77,9 +78,12 @@ public:
     // Host RAM the driver needs for a board of this capacity and pair buffer.
     static uint64_t host_memory_bytes(uint32_t capacity, uint32_t buffer_depth);
 
-    // Checks the board's identity and reads its capacity.
+    // Checks the board's identity and reads its capacity and number format.
     void open();
     uint32_t capacity() const { return capacity_; }
+    // The board's comparators' format (its FORMAT register): the driver
+    // writes boxes in it (sw/driver/quantiser.h).
+    NumberFormat format() const { return format_; }
 
     // One frame: every overlapping pair into pairs (board order), or an
     // exception (DeviceFault when the simulated system faulted) and no pairs;
@@ -122,6 +126,7 @@ private:
     uint32_t capacity_ = 0;
     uint32_t buffer_depth_ = 0;
     uint32_t parallelism_ = 1;
+    NumberFormat format_;
     uint64_t cycles_seen_ = 0;
     double spent_[kPhases] = {};
     SimTime mark_ = 0;

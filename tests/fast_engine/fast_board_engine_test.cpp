@@ -71,6 +71,22 @@ TEST(FastBoardEngine, AnswersAsTheClockedEngine) {
     expect_same_engines(small_board(2, 5), testing::overlapping_scene(200, rng), rng);
 }
 
+TEST(FastBoardEngine, AnswersAsTheClockedEngineInEveryFormat) {
+    std::mt19937 rng(23);
+    for (uint32_t k : {0u, 8u, 9u, 16u, 18u, 24u, 31u, 32u}) {
+        const NumberFormat format = NumberFormat::from_register(k);
+        for (uint32_t n : {2u, 300u, 1100u}) {
+            BoardConfig config = small_board(3, 7);
+            config.format = format;
+            expect_same_engines(config, testing::fixed_scene(n, format, 0.2, rng), rng);
+            config = small_board(8, 262144);
+            config.format = format;
+            expect_same_engines(config, testing::fixed_scene(n, format, 0.05, rng), rng);
+            if (HasFailure()) return;
+        }
+    }
+}
+
 // ABORT at any edge: the buffer keeps what it held then, in both.
 TEST(FastBoardEngine, AbortKeepsTheBufferOfThatEdge) {
     std::mt19937 rng(22);

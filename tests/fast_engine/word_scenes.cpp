@@ -99,18 +99,34 @@ void sprinkle_special_values(WordScene& scene, double fraction, std::mt19937& rn
     }
 }
 
-PairList lane_hit_pairs(const WordScene& scene) {
+WordScene fixed_scene(uint32_t n, NumberFormat format, double size_share, std::mt19937& rng) {
+    const double top = format.max_code();
+    std::uniform_real_distribution<double> corner(0.0, top), side(0.0, size_share * top);
+    WordScene scene;
+    for (uint32_t i = 0; i < n; ++i) {
+        for (uint32_t axis = 0; axis < 3; ++axis) {
+            const double lo = corner(rng), hi = std::min(top, lo + side(rng));
+            // Bits above K are junk the memories drop.
+            const uint32_t junk = format.bits() == 32 ? 0u : static_cast<uint32_t>(rng()) & ~format.word_mask();
+            scene.words[axis].push_back(static_cast<uint32_t>(lo) | junk);
+            scene.words[axis + 3].push_back(static_cast<uint32_t>(hi) | junk);
+        }
+    }
+    return scene;
+}
+
+PairList lane_hit_pairs(const WordScene& scene, NumberFormat format) {
     PairList pairs;
-    auto box = [&](uint32_t i, float (&bounds)[kCoordinates]) {
-        for (uint32_t c = 0; c < kCoordinates; ++c) bounds[c] = ComparisonUnit::as_float(scene.words[c][i]);
+    auto box = [&](uint32_t i, uint32_t (&bounds)[kCoordinates]) {
+        for (uint32_t c = 0; c < kCoordinates; ++c) bounds[c] = scene.words[c][i];
     };
     for (uint32_t i = 0; i < scene.size(); ++i) {
-        float a[kCoordinates];
+        uint32_t a[kCoordinates];
         box(i, a);
         for (uint32_t j = i + 1; j < scene.size(); ++j) {
-            float b[kCoordinates];
+            uint32_t b[kCoordinates];
             box(j, b);
-            if (ComparisonUnit::lane_hit(a, b)) pairs.push_back({i, j});
+            if (ComparisonUnit::lane_hit(format, a, b)) pairs.push_back({i, j});
         }
     }
     return pairs;
@@ -166,7 +182,7 @@ uint32_t expect_lockstep(const BoardConfig& config, const WordScene& scene, uint
                                 std::to_string(config.collector.drain_per_cycle) + " buffer=" +
                                 std::to_string(config.collector.buffer_depth) + " compare latency=" +
                                 std::to_string(config.compare.latency_cycles) + " tile=" +
-                                std::to_string(config.tiles.boxes);
+                                std::to_string(config.tiles.boxes) + " format=" + config.format.name();
     BoardCore core(config, n);
     for (uint32_t c = 0; c < kCoordinates; ++c) {
         for (uint32_t i = 0; i < n; ++i) core.write_coordinate(static_cast<Coordinate>(c), i, scene.words[c][i]);

@@ -33,8 +33,12 @@ WordScene denormal_scene(uint32_t n, std::mt19937& rng);
 // inverts about as many boxes (min above max).
 void sprinkle_special_values(WordScene& scene, double fraction, std::mt19937& rng);
 
+// Fixed-point boxes of a format: corners uniform over its codes, sides up to
+// size_share of the range, random junk above the format's K bits.
+WordScene fixed_scene(uint32_t n, NumberFormat format, double size_share, std::mt19937& rng);
+
 // All pairs by the comparison unit's own test, in BoardCore's order.
-PairList lane_hit_pairs(const WordScene& scene);
+PairList lane_hit_pairs(const WordScene& scene, NumberFormat format = NumberFormat::float32());
 
 // Runs BoardCore edge by edge beside FastEngine on the same scene and
 // compares, in every segment, the registers after each probed edge, the edge

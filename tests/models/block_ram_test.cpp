@@ -43,6 +43,21 @@ TEST(CascadedBlockRam, DepthComesFromTheScene) {
     EXPECT_THROW(ram.write(1500, 0), std::out_of_range);
 }
 
+TEST(CascadedBlockRam, NarrowerAspectsAreDeeperPrimitives) {
+    EXPECT_EQ(CascadedBlockRam::primitives_for(2048, 2048), 1u);
+    EXPECT_EQ(CascadedBlockRam::primitives_for(2049, 2048), 2u);
+    EXPECT_EQ(CascadedBlockRam::primitives_for(1025, 1024), 2u);
+    CascadedBlockRam ram(3000, 1024);
+    EXPECT_EQ(ram.primitives(), 3u);
+    for (uint32_t a = 0; a < 3000; ++a) ram.write(a, a ^ 0x5A5A);
+    for (uint32_t a : {0u, 1023u, 1024u, 2047u, 2048u, 2999u}) {
+        ram.clock_read(0, a);
+        EXPECT_EQ(ram.output(0), a ^ 0x5A5A) << a;
+    }
+    EXPECT_EQ(CoordinateMemory(3, 3000, 2048).block_rams(), 3u * 2);
+    EXPECT_THROW(CascadedBlockRam(10, 1000), std::invalid_argument);
+}
+
 TEST(CoordinateMemory, WriteReachesAllCopiesAnd2mPortsRead) {
     const uint32_t m = 4;
     CoordinateMemory memory(m, 600);

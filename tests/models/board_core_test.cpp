@@ -214,6 +214,26 @@ TEST(BoardCore, AbortStopsASweepAndClearsEveryStatusBit) {
     EXPECT_EQ(core.write_register(ControlRegisters::kObjectCount, 4), BoardCore::Write::kDone) << "idle again";
 }
 
+TEST(BoardCore, FormatRegisterAndMemoriesAsWideAsTheFormat) {
+    for (uint32_t k : {0u, 8u, 16u, 32u}) {
+        BoardConfig config;
+        config.format = NumberFormat::from_register(k);
+        BoardCore core(config, 4);
+        uint32_t value = 99;
+        ASSERT_TRUE(core.read_register(ControlRegisters::kFormat, value));
+        EXPECT_EQ(value, k);
+        core.write_register(ControlRegisters::kFormat, 12);  // read-only: ignored
+        ASSERT_TRUE(core.read_register(ControlRegisters::kFormat, value));
+        EXPECT_EQ(value, k);
+        core.write_coordinate(kMinX, 0, 0xDEAD'BEEFu);
+        EXPECT_EQ(core.read_coordinate(kMinX, 0), 0xDEAD'BEEFu & config.format.word_mask()) << k;
+        const unsigned char words[8] = {0xFF, 0xFF, 0xFF, 0xFF, 0x34, 0x12, 0xCD, 0xAB};
+        core.write_coordinates(kMaxY, 1, words, 2);
+        EXPECT_EQ(core.read_coordinate(kMaxY, 1), 0xFFFF'FFFFu & config.format.word_mask());
+        EXPECT_EQ(core.read_coordinate(kMaxY, 2), 0xABCD'1234u & config.format.word_mask());
+    }
+}
+
 TEST(BoardConfig, RejectsAbsurdSettings) {
     auto invalid = [](auto change) {
         BoardConfig config;

@@ -5,6 +5,7 @@
 // and a host polling at odd moments.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <random>
 #include <string>
@@ -25,12 +26,14 @@ struct Variant {
     bool dma, irq;
     double poll_gap_ns;
     uint32_t tile_boxes = 0;  // 0: boxes in block RAM; else SSRAM tiles of this many boxes
+    NumberFormat format = NumberFormat::float32();
 };
 
 PlatformConfig platform_for(const Variant& v, Fidelity fidelity) {
     const BoardPreset preset = load_board_preset("adm-xrc-ii");
     PlatformConfig config{preset.board, preset.bus, preset.driver, {}};
     config.board.m = v.m;
+    config.board.format = v.format;
     if (v.fifo_depth != 0) config.board.collector.fifo_depth = v.fifo_depth;
     config.board.collector.buffer_depth = v.buffer_depth;
     config.driver.use_dma = v.dma;
@@ -63,9 +66,11 @@ struct Totals {
     uint64_t pairs = 0, stalls = 0, pauses = 0;
 };
 
-// One platform pair per variant, elaborated before the first frame.
+// One platform pair per variant, elaborated before the first frame; the
+// pairs of variant k in scene s into (*pairs)[k][s] when asked.
 Totals expect_equivalent(const std::vector<Variant>& variants, uint32_t capacity,
-                         const std::vector<std::vector<FloatBox>>& scenes) {
+                         const std::vector<std::vector<FloatBox>>& scenes,
+                         std::vector<std::vector<PairList>>* pairs = nullptr) {
     Totals totals;
     std::vector<std::unique_ptr<VirtualBoard>> cycle, fast;
     for (const Variant& v : variants) {
@@ -81,6 +86,10 @@ Totals expect_equivalent(const std::vector<Variant>& variants, uint32_t capacity
             expect_same_frame(a, b, std::string(variants[k].name) + ", scene " + std::to_string(s) + " (" +
                                         std::to_string(scenes[s].size()) + " boxes)");
             if (::testing::Test::HasFatalFailure()) return totals;
+            if (pairs != nullptr) {
+                pairs->resize(variants.size());
+                (*pairs)[k].push_back(a.pairs);
+            }
             totals.pairs += a.pairs.size();
             totals.stalls += a.phases.stall_cycles;
             totals.pauses += a.phases.overflow_pauses;
@@ -121,6 +130,39 @@ TEST(EngineEquivalence, AllOverlappingScenesWithTinyBuffers) {
     EXPECT_GT(t.pauses, 1000u) << "hundreds of overflow pauses a frame";
 }
 
+// Every class of number format through the whole platform: the driver reads
+// FORMAT and quantises, both engines compare in the format; and no pair of
+// the float32 board is missing from the fixed-point boards' pairs.
+TEST(EngineEquivalence, EveryNumberFormatClassThroughThePlatform) {
+    std::mt19937 rng(79);
+    std::vector<std::vector<FloatBox>> scenes;
+    for (uint32_t n : {0u, 1u, 40u, 700u}) {
+        scenes.push_back(testing::random_boxes(n, 1.5f * std::cbrt(static_cast<float>(n) + 1), 2.0f, rng));
+    }
+    std::vector<Variant> variants;
+    static const char* names[] = {"float32", "fixed8", "fixed9", "fixed16", "fixed18", "fixed24", "fixed31", "fixed32"};
+    for (const char* name : names) {
+        variants.push_back({name, 3, 5, 97, true, true, 0, 0, NumberFormat::parse(name)});
+    }
+    std::vector<std::vector<PairList>> pairs;
+    expect_equivalent(variants, 700, scenes, &pairs);
+    if (HasFatalFailure()) return;
+    const auto before = [](const IndexPair& a, const IndexPair& b) {
+        return a.first != b.first ? a.first < b.first : a.second < b.second;
+    };
+    uint64_t extra = 0;
+    for (std::size_t s = 0; s < scenes.size(); ++s) {
+        const PairList& reference = pairs[0][s];  // float32
+        for (std::size_t k = 1; k < variants.size(); ++k) {
+            const PairList& found = pairs[k][s];
+            EXPECT_TRUE(std::includes(found.begin(), found.end(), reference.begin(), reference.end(), before))
+                << variants[k].name << ": a pair of the float32 board is missing (" << scenes[s].size() << " boxes)";
+            extra += found.size() - reference.size();
+        }
+    }
+    EXPECT_GT(extra, 0u) << "coarse formats add pairs";
+}
+
 // Boxes in SSRAM, swept in small tiles (partial last tiles, up to 20 tiles):
 // loads, bubbles and pauses at tile borders through the whole platform.
 TEST(EngineEquivalence, TiledBoardsOverModesTilesAndTinyBuffers) {
@@ -134,7 +176,9 @@ TEST(EngineEquivalence, TiledBoardsOverModesTilesAndTinyBuffers) {
                                         {"t8_pio_poll_m3", 3, 5, 7, false, false, 29, 8},
                                         {"t13_dma_poll_m2", 2, 3, 2, true, false, 11, 13},
                                         {"t32_pio_irq_m8", 8, 15, 5, false, true, 0, 32},
-                                        {"t64_dma_irq_m32", 32, 63, 1000, true, true, 0, 64}},
+                                        {"t64_dma_irq_m32", 32, 63, 1000, true, true, 0, 64},
+                                        {"t16_fixed9_m4", 4, 7, 5, true, true, 0, 16, NumberFormat::fixed(9)},
+                                        {"t40_fixed24_m2", 2, 3, 3, false, true, 0, 40, NumberFormat::fixed(24)}},
                                        160, scenes);
     EXPECT_GT(t.pairs, 2000u) << "scenes with pairs to find";
     EXPECT_GT(t.pauses, 500u) << "overflow pauses, some at tile borders";
