@@ -77,21 +77,28 @@ void add_fit_figures(const std::vector<Sample>& samples, const std::vector<std::
            << plots.str() << "\n";
         plan.figures.push_back({"largest-m-" + file_part(board) + ".png", gp.str(), ""});
         if (frontier.empty()) continue;
+        // The variants along x in grid order: lanes that fit (left axis, solid) and
+        // extra pairs (right axis, dashed), one pair of lines per N.
         std::ostringstream fp, fplots;
         k = 0;
         for (const auto& [n, points] : frontier) {
             fp << "$x" << k << " << EOD\n";
+            std::size_t place = 0;
             for (const auto& [s, lanes] : points) {
-                fp << num(1 + extra_share(*s->row)) << ' ' << num(lanes) << ' ' << quoted(s->variant) << '\n';
+                std::string label;
+                for (const std::string& v : s->variant_values) label += (label.empty() ? "" : "/") + v;
+                fp << place++ << ' ' << num(lanes) << ' ' << num(100 * extra_share(*s->row)) << " \"" << label << "\"\n";
             }
             fp << "EOD\n";
-            fplots << (k == 0 ? "" : ", ") << "$x" << k << " using 1:2 with linespoints pt 7 title "
-                   << quoted("N=" + num(n)) << ", $x" << k << " using 1:2:3 with labels offset 0,1 font ',8' notitle";
+            fplots << (k == 0 ? "" : ", ") << "$x" << k << " using 1:2:xtic(4) with linespoints pt 7 lc " << k + 1
+                   << " title " << quoted("lanes, N=" + num(n)) << ", $x" << k << " using 1:3 axes x1y2 with linespoints"
+                   << " pt 6 dt 2 lc " << k + 1 << " title " << quoted("extra pairs, N=" + num(n));
             ++k;
         }
-        fp << "set title " << quoted("lanes that fit " + board + " against the extra pairs of each format")
-           << "\nset xlabel 'pairs read back per pair of the float32 reference (float32 = 1)'\nset ylabel 'lanes (2m-1) that fit'\n"
-              "set logscale x\nset grid\nset key outside right\nplot "
+        fp << "set title " << quoted("lanes that fit " + board + " and the extra pairs of each variant (fit.csv)")
+           << "\nset ylabel 'lanes (2m-1) that fit'\nset y2label 'extra pairs (% of the float32 reference)'\n"
+              "set ytics nomirror\nset y2tics\nset yrange [0:*]\nset y2range [0:*]\nset offsets 0.3, 0.3, 0, 0\n"
+              "set grid\nset key outside right\nplot "
            << fplots.str() << "\n";
         plan.figures.push_back({"lanes-extra-" + file_part(board) + ".png", fp.str(), ""});
     }
