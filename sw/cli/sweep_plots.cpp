@@ -85,10 +85,24 @@ std::string line_plot(const std::string& title, const std::string& ylabel, const
                       const std::string& extra_blocks, const std::string& extra_plots) {
     std::ostringstream gp;
     std::vector<std::string> plots;
+    // A colour per m and a dash and point type per variant, so that lines stay
+    // apart when there are more of them than colours.
+    std::vector<double> ms;
+    std::vector<std::string> variants;
+    for (const auto& [key, line] : lines) {
+        if (std::find(ms.begin(), ms.end(), line.m) == ms.end()) ms.push_back(line.m);
+        if (std::find(variants.begin(), variants.end(), line.variant) == variants.end()) variants.push_back(line.variant);
+    }
+    std::sort(ms.begin(), ms.end());
+    static const int kPointTypes[] = {7, 5, 9, 11, 13, 15};
     std::size_t k = 0;
     for (const auto& [key, line] : lines) {
+        const auto colour = std::find(ms.begin(), ms.end(), line.m) - ms.begin();
+        const auto variant = std::find(variants.begin(), variants.end(), line.variant) - variants.begin();
         gp << datablock("m" + std::to_string(k), line.points);
-        plots.push_back("$m" + std::to_string(k++) + " using 1:2 with linespoints pt 7 title " + quoted(line.title()));
+        plots.push_back("$m" + std::to_string(k++) + " using 1:2 with linespoints lc " + std::to_string(colour + 1) +
+                        " dt " + std::to_string(variant % 5 + 1) + " pt " + std::to_string(kPointTypes[variant % 6]) +
+                        " title " + quoted(line.title()));
     }
     gp << extra_blocks << "set title " << quoted(title) << "\nset xlabel 'N (objects)'\nset ylabel " << quoted(ylabel)
        << "\nset logscale x\nset logscale y\nset grid\nset key outside right\nplot ";
@@ -261,7 +275,7 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
             Series software = series(samples, board, baselines[b] + "_median_ns", 1e-3);
             if (software.empty()) continue;
             blocks << datablock("b" + std::to_string(b), software.begin()->second.points);
-            plots << ", $b" << b << " using 1:2 with lines dt 2 lw 2 title " << quoted(baselines[b] + " (software)");
+            plots << ", $b" << b << " using 1:2 with lines lc rgb 'gray30' dt 2 lw 3 title " << quoted(baselines[b] + " (software)");
         }
         plan.figures.push_back({"time-" + file_part(board) + ".png",
                                 line_plot("median frame time on " + board, "us per frame",
