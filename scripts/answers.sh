@@ -20,7 +20,7 @@ boards=adm-xrc-ii,pcie-gen3-x8
 
 # Extra pairs do not depend on m: one m that runs everywhere (in SSRAM tiles past the block RAMs).
 "$cdvp" sweep --board "$boards" --set format=float32,fixed32,fixed24,fixed18,fixed16,fixed12,fixed9,fixed8 \
-    --set objects=500,2000,10000,65536 --m 8 --frames 6 --warmup 1 --jobs "$jobs" --out "$out/formats"
+    --set objects=256:65536:x2 --m 8 --frames 6 --warmup 1 --jobs "$jobs" --out "$out/formats"
 
 # Board time and speedup against N, one line per m and format; 12 frames, medians after 2.
 "$cdvp" sweep --board "$boards" --set format=float32,fixed16 --set m=4,8,11,16,24,32 \

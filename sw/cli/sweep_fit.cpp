@@ -67,7 +67,9 @@ void add_fit_figures(const std::vector<Sample>& samples, const std::vector<std::
         std::size_t k = 0;
         for (const auto& [order, line] : largest_by_variant) {
             gp << datablock("f" + std::to_string(k), line.points);
-            plots << (k == 0 ? "" : ", ") << "$f" << k << " using 1:2 with linespoints pt 7 title "
+            // Variants often share a line: dashes and point types keep each visible.
+            plots << (k == 0 ? "" : ", ") << "$f" << k << " using 1:2 with linespoints lw 2 dt " << k % 5 + 1
+                  << " pt " << k % 14 + 1 << " ps 1.5 title "
                   << quoted(line.variant.empty() ? board : line.variant);
             ++k;
         }
