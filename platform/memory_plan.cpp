@@ -66,6 +66,17 @@ MemoryPlan plan_memory(const Settings& settings, uint64_t capacity) {
     return plan;
 }
 
+uint32_t largest_m_in_block_rams(Settings settings, uint64_t capacity) {
+    for (uint32_t m = BoardConfig::kMaxM; m >= 1; --m) {
+        settings.board.m = m;
+        const MemoryPlan plan = plan_memory(settings, capacity);
+        BoardConfig board = settings.board;
+        board.tiles = plan.tiles;
+        if (plan.tile_fits && board.block_rams(capacity) <= settings.device.block_rams) return m;
+    }
+    return 0;
+}
+
 BoardConfig planned_board(const Settings& settings, uint64_t capacity) {
     BoardConfig board = settings.board;
     board.tiles = plan_memory(settings, capacity).tiles;

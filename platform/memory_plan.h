@@ -25,6 +25,10 @@ struct MemoryPlan {
 // boxes asks for the largest whose buffers fit the device; when none does,
 // the plan keeps a one-primitive tile and tile_fits is false.
 MemoryPlan plan_memory(const Settings& settings, uint64_t capacity);
+// The largest m (1 to BoardConfig::kMaxM) whose coordinate memories or tile
+// buffers, in the memory plan_memory picks at that m, fit the device's block
+// RAMs; 0 when none does.
+uint32_t largest_m_in_block_rams(Settings settings, uint64_t capacity);
 // settings.board with the plan's tiles.
 BoardConfig planned_board(const Settings& settings, uint64_t capacity);
 // The largest tile (at most `capacity` boxes) whose buffers fit `block_rams`

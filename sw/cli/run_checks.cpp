@@ -199,7 +199,8 @@ void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_
     const uint64_t needed = board.block_rams(max_objects);
     if (plan.ssram && !plan.tile_fits) refuse_tile(o, values, max_objects, plan);
     if (block_rams != 0 && needed > block_rams) {
-        const uint64_t largest = block_rams / (needed / board.m);  // block RAMs grow linearly with m
+        // At a smaller m the boxes may fit, or move to SSRAM tiles (--memory auto).
+        const uint64_t largest = largest_m_in_block_rams(settings, max_objects);
         throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(block_rams) +
                          " block RAMs are too few for " + at + ": they need 6 x m x ceil(N/" +
                          std::to_string(board.format.boxes_per_block_ram()) + ") = " +

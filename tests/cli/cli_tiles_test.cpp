@@ -134,5 +134,19 @@ TEST_F(CliTiles, TileBuffersPastTheBlockRamsAndTooManyTilesAreRefused) {
                    "expected at most 1024 tiles");
 }
 
+TEST_F(CliTiles, TheLargestMOfARefusalCountsTheSsramTilesThatAutoWouldUse) {
+    // 1,600 boxes: in block RAM m <= 6 (6 x m x 4 <= 144), in SSRAM tiles m <= 11.
+    const Result refused = run(spheres(1600, 1) + "--m 16");
+    EXPECT_EQ(refused.status, 2);
+    EXPECT_NE(refused.err.find("(largest m that fits: 11; --ignore-capacity runs it anyway)"), std::string::npos)
+        << refused.err;
+    EXPECT_EQ(run(spheres(1600, 1) + "--m 11").status, 0);
+    EXPECT_EQ(run(spheres(1600, 1) + "--m 12").status, 2);
+    // Asked to stay in block RAM, it names the block RAM's largest m.
+    const Result in_block_ram = run(spheres(1600, 1) + "--m 16 --memory block_ram");
+    EXPECT_NE(in_block_ram.err.find("(largest m that fits: 6; --ignore-capacity"), std::string::npos) << in_block_ram.err;
+    EXPECT_EQ(run(spheres(1600, 1) + "--m 6 --memory block_ram").status, 0);
+}
+
 }  // namespace
 }  // namespace cdvp::test
