@@ -13,17 +13,10 @@
 namespace cdvp {
 namespace {
 
+using testing::collector_config;
 using testing::expect_lockstep;
 using testing::WordScene;
 
-BoardConfig make_config(uint32_t m, uint32_t fifo, uint32_t drain, uint32_t buffer) {
-    BoardConfig config;
-    config.m = m;
-    config.collector.fifo_depth = fifo;
-    config.collector.drain_per_cycle = drain;
-    config.collector.buffer_depth = buffer;
-    return config;
-}
 
 // Every edge of every segment, over small dense scenes: the smallest legal
 // FIFO, drains of 1 to 3, buffers of 1 to 7 pairs (a pause every few pairs).
@@ -32,7 +25,7 @@ TEST(FastEngine, EveryEdgeOfSmallScenesWithTinyFifoAndBuffer) {
     uint32_t pauses = 0;
     for (uint32_t m = 1; m <= 6; ++m) {
         for (uint32_t n = 0; n <= 40; ++n) {
-            const BoardConfig config = make_config(m, 2 * m - 1, 1 + n % 3, 1 + n % 7);
+            const BoardConfig config = collector_config(m, 2 * m - 1, 1 + n % 3, 1 + n % 7);
             pauses += expect_lockstep(config, testing::random_scene(n, 4.0f, 2.0f, rng), 0, rng) - 1;
             if (HasFailure()) return;
         }
@@ -45,8 +38,8 @@ TEST(FastEngine, EveryParallelismFrom1To32) {
     for (uint32_t m = 1; m <= 32; ++m) {
         const uint32_t lanes = 2 * m - 1;
         const WordScene scene = testing::random_scene(150, 12.0f, 4.0f, rng);
-        expect_lockstep(make_config(m, lanes, 1 + m % 4, 1 + m % 7), scene, 200, rng);
-        expect_lockstep(make_config(m, lanes + m % 5, 1, 262144), scene, 200, rng);
+        expect_lockstep(collector_config(m, lanes, 1 + m % 4, 1 + m % 7), scene, 200, rng);
+        expect_lockstep(collector_config(m, lanes + m % 5, 1, 262144), scene, 200, rng);
         if (HasFailure()) return;
     }
 }
@@ -57,8 +50,8 @@ TEST(FastEngine, AroundOneBlockRam) {
     for (uint32_t n : {511u, 512u, 513u}) {
         for (uint32_t m : {1u, 4u, 24u}) {
             const WordScene scene = testing::random_scene(n, 30.0f, 3.0f, rng);
-            expect_lockstep(make_config(m, 2 * m - 1, 1, 7), scene, 20, rng);
-            expect_lockstep(make_config(m, 64, 2, 262144), scene, 200, rng);
+            expect_lockstep(collector_config(m, 2 * m - 1, 1, 7), scene, 20, rng);
+            expect_lockstep(collector_config(m, 64, 2, 262144), scene, 200, rng);
             if (HasFailure()) return;
         }
     }
@@ -69,9 +62,9 @@ TEST(FastEngine, AllOverlappingScenes) {
     std::mt19937 rng(4);
     for (uint32_t m : {1u, 3u, 8u, 32u}) {
         const WordScene scene = testing::overlapping_scene(300, rng);
-        expect_lockstep(make_config(m, 2 * m - 1, 1, 262144), scene, 500, rng);
-        expect_lockstep(make_config(m, 2 * m - 1, 3, 5), scene, 10, rng);
-        expect_lockstep(make_config(m, 512, 1 + m % 3, 1000), scene, 100, rng);
+        expect_lockstep(collector_config(m, 2 * m - 1, 1, 262144), scene, 500, rng);
+        expect_lockstep(collector_config(m, 2 * m - 1, 3, 5), scene, 10, rng);
+        expect_lockstep(collector_config(m, 512, 1 + m % 3, 1000), scene, 100, rng);
         if (HasFailure()) return;
     }
 }
@@ -80,8 +73,8 @@ TEST(FastEngine, ClusteredScenes) {
     std::mt19937 rng(5);
     for (uint32_t m : {2u, 8u, 24u}) {
         const WordScene scene = testing::clustered_scene(1200, 6, rng);
-        expect_lockstep(make_config(m, 2 * m - 1, 1, 262144), scene, 500, rng);
-        expect_lockstep(make_config(m, 2 * m + 3, 2, 97), scene, 5, rng);
+        expect_lockstep(collector_config(m, 2 * m - 1, 1, 262144), scene, 500, rng);
+        expect_lockstep(collector_config(m, 2 * m + 3, 2, 97), scene, 5, rng);
         if (HasFailure()) return;
     }
 }
@@ -90,8 +83,8 @@ TEST(FastEngine, LargeRandomScenes) {
     std::mt19937 rng(6);
     for (uint32_t n : {2000u, 3000u}) {
         const WordScene scene = testing::random_scene(n, 4.0f * std::cbrt(static_cast<float>(n)), 2.0f, rng);
-        expect_lockstep(make_config(32, 63, 1, 262144), scene, 1000, rng);
-        expect_lockstep(make_config(8, 15, 2, 6), scene, 5, rng);
+        expect_lockstep(collector_config(32, 63, 1, 262144), scene, 1000, rng);
+        expect_lockstep(collector_config(8, 15, 2, 6), scene, 5, rng);
         if (HasFailure()) return;
     }
 }
@@ -101,8 +94,8 @@ TEST(FastEngine, NanZerosInfinitiesAndDenormals) {
     for (uint32_t n : {60u, 700u}) {
         WordScene special = testing::random_scene(n, 10.0f, 3.0f, rng);
         testing::sprinkle_special_values(special, 0.05, rng);
-        expect_lockstep(make_config(4, 7, 1, 3), special, 50, rng);
-        expect_lockstep(make_config(5, 9, 1, 262144), testing::denormal_scene(n, rng), 200, rng);
+        expect_lockstep(collector_config(4, 7, 1, 3), special, 50, rng);
+        expect_lockstep(collector_config(5, 9, 1, 262144), testing::denormal_scene(n, rng), 200, rng);
         if (HasFailure()) return;
     }
 }
@@ -113,8 +106,8 @@ TEST(FastEngine, DrainFasterThanTheLanes) {
     std::mt19937 rng(11);
     const WordScene scene = testing::overlapping_scene(120, rng);
     for (uint32_t m : {1u, 4u, 31u}) {
-        expect_lockstep(make_config(m, 2 * m - 1, 64, 262144), scene, 0, rng);
-        expect_lockstep(make_config(m, 2 * m + 10, 2 * m + 1, 5), scene, 0, rng);
+        expect_lockstep(collector_config(m, 2 * m - 1, 64, 262144), scene, 0, rng);
+        expect_lockstep(collector_config(m, 2 * m + 10, 2 * m + 1, 5), scene, 0, rng);
         if (HasFailure()) return;
     }
 }
@@ -123,7 +116,7 @@ TEST(FastEngine, CompareLatencyAndDefaults) {
     std::mt19937 rng(8);
     const WordScene scene = testing::random_scene(400, 15.0f, 3.0f, rng);
     for (uint32_t latency : {0u, 1u, 5u, 64u}) {
-        BoardConfig config = make_config(3, 5, 1, 4);
+        BoardConfig config = collector_config(3, 5, 1, 4);
         config.compare.latency_cycles = latency;
         expect_lockstep(config, scene, 20, rng);
     }
@@ -133,7 +126,7 @@ TEST(FastEngine, CompareLatencyAndDefaults) {
 TEST(FastEngine, ObservingPastTheSegmentSeesItsEnd) {
     std::mt19937 rng(9);
     const WordScene scene = testing::overlapping_scene(20, rng);
-    FastEngine engine(make_config(2, 3, 1, 50));
+    FastEngine engine(collector_config(2, 3, 1, 50));
     EXPECT_EQ(engine.phase(), BoardCore::Phase::Idle);
     EXPECT_THROW(engine.resume(), std::logic_error);
     engine.start(scene.size(), scene.view());
@@ -157,7 +150,7 @@ TEST(FastEngine, ObservingPastTheSegmentSeesItsEnd) {
 // One engine over many frames (as a shell would keep it): each frame as a fresh engine sees it.
 TEST(FastEngine, ReusedAcrossFramesOfAnySize) {
     std::mt19937 rng(12);
-    const BoardConfig config = make_config(6, 11, 2, 40);
+    const BoardConfig config = collector_config(6, 11, 2, 40);
     FastEngine reused(config);
     for (uint32_t n : {3000u, 5u, 700u, 0u, 1500u, 2u}) {
         const WordScene scene = testing::random_scene(n, 3.0f * std::cbrt(static_cast<float>(n) + 1), 2.0f, rng);
@@ -185,7 +178,7 @@ TEST(FastEngine, BeyondSixtyFiveThousandBoxes) {
     std::mt19937 rng(10);
     const uint32_t n = 70000;
     const WordScene scene = testing::random_scene(n, 4.0f * std::cbrt(static_cast<float>(n)), 2.0f, rng);
-    const BoardConfig config = make_config(16, 31, 1, 1024);
+    const BoardConfig config = collector_config(16, 31, 1, 1024);
     FastEngine engine(config);
     engine.start(n, scene.view());
     uint64_t segments = 1;

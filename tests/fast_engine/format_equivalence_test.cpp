@@ -21,12 +21,8 @@ std::vector<NumberFormat> format_classes() {
 }
 
 BoardConfig make_config(NumberFormat format, uint32_t m, uint32_t fifo, uint32_t drain, uint32_t buffer) {
-    BoardConfig config;
+    BoardConfig config = testing::collector_config(m, fifo, drain, buffer);
     config.format = format;
-    config.m = m;
-    config.collector.fifo_depth = fifo;
-    config.collector.drain_per_cycle = drain;
-    config.collector.buffer_depth = buffer;
     return config;
 }
 

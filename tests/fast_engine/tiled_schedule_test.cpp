@@ -214,12 +214,8 @@ TEST(TiledFastEngine, CyclesAreTheClosedFormPlusLatencyAndStallsOnBothEngines) {
 }
 
 BoardConfig tiled_config(uint32_t m, uint32_t tile, uint32_t fifo, uint32_t drain, uint32_t buffer) {
-    BoardConfig config;
-    config.m = m;
+    BoardConfig config = testing::collector_config(m, fifo, drain, buffer);
     config.tiles = tiles_of(tile, tile % 4, 1 + tile % 2);
-    config.collector.fifo_depth = fifo;
-    config.collector.drain_per_cycle = drain;
-    config.collector.buffer_depth = buffer;
     return config;
 }
 

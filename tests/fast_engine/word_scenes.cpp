@@ -132,6 +132,15 @@ PairList lane_hit_pairs(const WordScene& scene, NumberFormat format) {
     return pairs;
 }
 
+BoardConfig collector_config(uint32_t m, uint32_t fifo, uint32_t drain, uint32_t buffer) {
+    BoardConfig config;
+    config.m = m;
+    config.collector.fifo_depth = fifo;
+    config.collector.drain_per_cycle = drain;
+    config.collector.buffer_depth = buffer;
+    return config;
+}
+
 namespace {
 
 BoardObservation observe_core(BoardCore& core) {

@@ -37,6 +37,10 @@ void sprinkle_special_values(WordScene& scene, double fraction, std::mt19937& rn
 // size_share of the range, random junk above the format's K bits.
 WordScene fixed_scene(uint32_t n, NumberFormat format, double size_share, std::mt19937& rng);
 
+// A board of 2m-1 lanes with this pair FIFO (depth, drain a cycle) and pair
+// buffer; float32, untiled, the other settings at their defaults.
+BoardConfig collector_config(uint32_t m, uint32_t fifo, uint32_t drain, uint32_t buffer);
+
 // All pairs by the comparison unit's own test, in BoardCore's order.
 PairList lane_hit_pairs(const WordScene& scene, NumberFormat format = NumberFormat::float32());
 
