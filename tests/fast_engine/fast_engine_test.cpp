@@ -17,7 +17,6 @@ using testing::collector_config;
 using testing::expect_lockstep;
 using testing::WordScene;
 
-
 // Every edge of every segment, over small dense scenes: the smallest legal
 // FIFO, drains of 1 to 3, buffers of 1 to 7 pairs (a pause every few pairs).
 TEST(FastEngine, EveryEdgeOfSmallScenesWithTinyFifoAndBuffer) {
