@@ -1,0 +1,38 @@
+#include "sw/cli/exit_status.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <iostream>
+
+#include "models/common/user_text.h"
+#include "sw/scene/output_target.h"
+
+namespace cdvp {
+
+int exit_status_of(const std::string& program, const char* failure, const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const InputError& e) {
+        std::cerr << program << ": " << printable(e.what()) << '\n';
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << program << ": " << failure << ": " << printable(e.what()) << '\n';
+        return kExitInternal;
+    }
+}
+
+int print_to_stdout(const std::string& program, const std::string& text) {
+    if (standard_descriptor_was_closed(STDOUT_FILENO)) {
+        std::cerr << program << ": standard output: closed when cdvp started; expected it open\n";
+        return kExitBadInput;
+    }
+    errno = 0;
+    std::cout << text << std::flush;
+    if (std::cout) return kExitDone;
+    std::cerr << program << ": standard output: cannot write: " << std::strerror(errno != 0 ? errno : EIO) << '\n';
+    return kExitBadInput;
+}
+
+}  // namespace cdvp
