@@ -48,7 +48,7 @@ private:
 // is assumed registered with the primitive's output).
 class CascadedBlockRam {
 public:
-    // words_per_primitive: the primitives' aspect depth (NumberFormat::boxes_per_block_ram).
+    // words_per_primitive: the primitives' aspect depth (NumberFormat::block_ram_layout).
     explicit CascadedBlockRam(uint32_t depth, uint32_t words_per_primitive = BlockRam::kWords);
 
     uint32_t depth() const { return depth_; }

@@ -18,17 +18,22 @@ uint64_t BoardConfig::sweep_cycles(uint64_t objects) const {
     return SweepSchedule(m, tiles, static_cast<uint32_t>(objects)).slots();
 }
 
-uint64_t BoardConfig::primitives_for_depth(uint64_t depth) const {
-    return CascadedBlockRam::primitives_for(static_cast<uint32_t>(depth), format.boxes_per_block_ram());
+uint64_t BoardConfig::memory_depth(uint64_t capacity) const {
+    return tiles.tiled() ? std::min<uint64_t>(tiles.boxes, capacity) : capacity;
 }
 
 uint64_t BoardConfig::block_rams(uint64_t capacity) const {
-    const uint64_t depth = tiles.tiled() ? std::min<uint64_t>(tiles.boxes, capacity) : capacity;
-    return uint64_t{kCoordinates} * memory_copies() * primitives_for_depth(depth);
+    const uint64_t depth = memory_depth(capacity);
+    return memory_copies() * format.block_ram_layout(depth).primitives(depth);
 }
 
 uint64_t BoardConfig::block_ram_bytes(uint64_t capacity) const {
-    return block_rams(capacity) * format.boxes_per_block_ram() * sizeof(uint32_t);
+    // The model keeps each coordinate's words apart (packing changes the count
+    // of primitives, not the words): six columns of whole primitives a copy.
+    const uint64_t depth = memory_depth(capacity);
+    const BlockRamLayout layout = format.block_ram_layout(depth);
+    const uint64_t cascaded = (depth + layout.depth - 1) / layout.depth;
+    return memory_copies() * kCoordinates * cascaded * layout.depth * sizeof(uint32_t);
 }
 
 uint32_t BoardConfig::pipeline_latency() const {

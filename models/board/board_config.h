@@ -36,16 +36,16 @@ struct BoardConfig {
     // its blocks: the address generator's slots for N boxes (S(N,m) on a
     // board in block RAM, the tiled schedule's slots on one in SSRAM:
     // SweepSchedule); the block RAM primitives of the coordinate memories
-    // for `capacity` boxes (6 x m x ceil(N/D)), or of the tile buffers
-    // (6 x (2m+2) x ceil(min(T,N)/D)), D the boxes one primitive holds in the
-    // number format (512 for 19..32-bit words, 1024 for 10..18, 2048 for
-    // 8..9); and the bytes of block RAM words the clocked model keeps for them.
+    // for `capacity` boxes (G x m x ceil(N/D)), or of the tile buffers
+    // (G x (2m+2) x ceil(min(T,N)/D)), G primitives side by side for the six
+    // coordinates and D boxes a primitive in the number format's cheapest
+    // block RAM layout (NumberFormat::block_ram_layout; float32: 6 and 512);
+    // and the bytes of block RAM words the clocked model keeps for them.
     uint64_t sweep_cycles(uint64_t objects) const;
     uint64_t block_rams(uint64_t capacity) const;
     uint64_t block_ram_bytes(uint64_t capacity) const;
-    // Block RAM primitives one copy of a coordinate memory of `depth` boxes
-    // cascades in the format's aspect: every block RAM count goes through here.
-    uint64_t primitives_for_depth(uint64_t depth) const;
+    // Boxes each coordinate memory holds: all `capacity`, or one tile.
+    uint64_t memory_depth(uint64_t capacity) const;
     // Copies of each coordinate memory: m (2m ports); tiled, a double-buffered
     // 2m-port column memory and a double-buffered row memory for port 0: 2m + 2.
     uint64_t memory_copies() const { return tiles.tiled() ? 2ull * m + 2 : m; }

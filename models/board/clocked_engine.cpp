@@ -12,12 +12,13 @@ ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
     if (config.tiles.tiled()) {
         loader_ = std::make_unique<TileLoader>(config, capacity);
     } else {
-        memories_.push_back(make_coordinate_memories(config.m, capacity, config.format.boxes_per_block_ram()));
+        layout_ = config.format.block_ram_layout(capacity);
+        memories_.push_back(make_coordinate_memories(config.m, capacity, layout_));
     }
 }
 
 uint32_t ClockedEngine::block_rams() const {
-    return loader_ ? loader_->block_rams() : kCoordinates * memories_[0][0].block_rams();
+    return loader_ ? loader_->block_rams() : block_rams_of(memories_[0], layout_);
 }
 
 void ClockedEngine::start(const CoordinateStore& store, uint32_t objects) {

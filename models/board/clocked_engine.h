@@ -86,6 +86,7 @@ private:
     // Untiled: one set of coordinate memories for every box. Tiled: the
     // loader with the SSRAM and the tile buffers.
     std::vector<CoordinateMemories> memories_;
+    BlockRamLayout layout_;  // of memories_
     std::unique_ptr<TileLoader> loader_;
     SweepSchedule schedule_;
     ScheduleWalker walker_{schedule_};

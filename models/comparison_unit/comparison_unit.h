@@ -16,11 +16,16 @@ namespace cdvp {
 enum Coordinate : uint32_t { kMinX, kMinY, kMinZ, kMaxX, kMaxY, kMaxZ, kCoordinates };
 using CoordinateMemories = std::array<CoordinateMemory, kCoordinates>;
 // Six memories of `copies` copies (2 x copies ports) and `depth` boxes each,
-// in primitives of `words_per_primitive` (NumberFormat::boxes_per_block_ram).
+// in primitives `layout.depth` words deep (NumberFormat::block_ram_layout).
 inline CoordinateMemories make_coordinate_memories(uint32_t copies, uint32_t depth,
-                                                   uint32_t words_per_primitive = BlockRam::kWords) {
-    const CoordinateMemory memory(copies, depth, words_per_primitive);
+                                                   const BlockRamLayout& layout = BlockRamLayout{}) {
+    const CoordinateMemory memory(copies, depth, layout.depth);
     return {memory, memory, memory, memory, memory, memory};
+}
+// The primitives of six such memories: each coordinate's cascade of each
+// copy, shared by the coordinates that sit side by side in a word.
+inline uint32_t block_rams_of(const CoordinateMemories& memories, const BlockRamLayout& layout) {
+    return layout.word_groups() * memories[0].block_rams();
 }
 
 struct ComparisonUnitConfig {

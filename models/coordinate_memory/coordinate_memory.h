@@ -13,7 +13,7 @@ namespace cdvp {
 // port p%2. A write goes to all m copies, so they always hold the same data.
 class CoordinateMemory {
 public:
-    // words_per_primitive: the block RAM aspect's depth (NumberFormat::boxes_per_block_ram).
+    // words_per_primitive: the block RAM aspect's depth (NumberFormat::block_ram_layout).
     CoordinateMemory(uint32_t copies, uint32_t depth, uint32_t words_per_primitive = BlockRam::kWords);
 
     uint32_t copies() const { return static_cast<uint32_t>(copies_.size()); }

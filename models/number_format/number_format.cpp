@@ -1,5 +1,7 @@
 #include "models/number_format/number_format.h"
 
+#include <algorithm>
+
 #include <cstring>
 #include <stdexcept>
 
@@ -46,11 +48,19 @@ NumberFormat NumberFormat::from_register(uint32_t value) {
 
 std::string NumberFormat::name() const { return is_float() ? "float32" : "fixed" + std::to_string(fixed_bits_); }
 
-uint32_t NumberFormat::boxes_per_block_ram() const {
-    const uint32_t width = bits();
-    if (width <= 9) return 2048;   // 2Kx9
-    if (width <= 18) return 1024;  // 1Kx18
-    return 512;                    // 512x36
+BlockRamLayout NumberFormat::block_ram_layout(uint64_t boxes) const {
+    // An 18-Kbit primitive's aspects with their parity bits, widest first: a
+    // tie keeps the wider, shallower one (fewer cascaded primitives to mux).
+    constexpr BlockRamLayout kAspects[] = {{36, 512, 1}, {18, 1024, 1}, {9, 2048, 1}};
+    BlockRamLayout best;
+    bool found = false;
+    for (BlockRamLayout layout : kAspects) {
+        if (layout.width < bits()) continue;
+        layout.coordinates_per_word = std::min(layout.width / bits(), BlockRamLayout::kCoordinates);
+        if (!found || layout.primitives(boxes) < best.primitives(boxes)) best = layout;
+        found = true;
+    }
+    return best;
 }
 
 bool NumberFormat::less_equal(uint32_t a, uint32_t b) const {

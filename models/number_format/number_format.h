@@ -15,6 +15,20 @@ namespace cdvp {
 //            K bits wide and keep only those bits of what the host writes).
 // The fast engine compares ordered keys instead (key()): for every word that
 // is not excluded(), key(a) <= key(b) exactly when a <= b in the format.
+// The six coordinates of a box in block RAM: the primitives' aspect and how
+// many coordinates share one word of it.
+struct BlockRamLayout {
+    static constexpr uint32_t kCoordinates = 6;
+    uint32_t width = 36;                // bits a word
+    uint32_t depth = 512;               // words a primitive: boxes it holds
+    uint32_t coordinates_per_word = 1;  // coordinates of one box side by side in a word
+
+    // Primitives side by side to hold all six coordinates: ceil(6 / coordinates_per_word).
+    uint32_t word_groups() const { return (kCoordinates + coordinates_per_word - 1) / coordinates_per_word; }
+    // Primitives for one copy of the six coordinates of `boxes` boxes.
+    uint64_t primitives(uint64_t boxes) const { return word_groups() * ((boxes + depth - 1) / depth); }
+};
+
 class NumberFormat {
 public:
     static constexpr uint32_t kMinFixedBits = 8;
@@ -43,11 +57,14 @@ public:
     // Largest fixed-point value (the word mask), as the quantiser's scale.
     uint32_t max_code() const { return word_mask(); }
 
-    // Boxes one 18-Kbit block RAM primitive holds: its depth in the narrowest
-    // aspect ratio whose width holds a word (Virtex-II and UltraScale RAMB18:
-    // 512x36, 1Kx18, 2Kx9, ...). A narrower word makes the primitive deeper,
-    // which is how narrow words share the block RAM.
-    uint32_t boxes_per_block_ram() const;
+    // How the six coordinates of `boxes` boxes sit in 18-Kbit block RAM
+    // primitives (Virtex-II and UltraScale RAMB18: 512x36, 1Kx18, 2Kx9): the
+    // layout with the fewest primitives. Narrow words share the block RAM in
+    // two ways: a narrower aspect is deeper (fixed16 in 1K x 18), and several
+    // coordinates of one box fit side by side in a wider word (fixed16: min
+    // and max of an axis in one 36-bit word, three primitives a copy instead
+    // of six). A port reads all of a box's coordinates at one address either way.
+    BlockRamLayout block_ram_layout(uint64_t boxes) const;
 
     // The comparator's a <= b on two stored words.
     bool less_equal(uint32_t a, uint32_t b) const;

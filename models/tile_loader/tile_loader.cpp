@@ -7,16 +7,17 @@ namespace cdvp {
 
 TileLoader::TileLoader(const BoardConfig& config, uint32_t capacity) : tiles_(config.tiles) {
     const uint32_t depth = std::max(1u, std::min(config.tiles.boxes, capacity));
+    layout_ = config.format.block_ram_layout(depth);
     for (int buffer = 0; buffer < 2; ++buffer) {
-        columns_.push_back(make_coordinate_memories(config.m, depth, config.format.boxes_per_block_ram()));
-        rows_.push_back(make_coordinate_memories(1, depth, config.format.boxes_per_block_ram()));
+        columns_.push_back(make_coordinate_memories(config.m, depth, layout_));
+        rows_.push_back(make_coordinate_memories(1, depth, layout_));
     }
 }
 
 uint32_t TileLoader::block_rams() const {
     uint32_t total = 0;
     for (const auto* set : {&columns_, &rows_}) {
-        for (const CoordinateMemories& memories : *set) total += kCoordinates * memories[0].block_rams();
+        for (const CoordinateMemories& memories : *set) total += block_rams_of(memories, layout_);
     }
     return total;
 }

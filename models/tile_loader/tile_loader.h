@@ -51,6 +51,7 @@ private:
     void apply_due();
 
     TileConfig tiles_;
+    BlockRamLayout layout_;  // the tile buffers' primitives
     std::vector<CoordinateMemories> columns_, rows_;
     CoordinateStore ssram_;
     const SweepSchedule* schedule_ = nullptr;

@@ -202,8 +202,9 @@ void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_
         // At a smaller m the boxes may fit, or move to SSRAM tiles (--memory auto).
         const uint64_t largest = largest_m_in_block_rams(settings, max_objects);
         throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(block_rams) +
-                         " block RAMs are too few for " + at + ": they need 6 x m x ceil(N/" +
-                         std::to_string(board.format.boxes_per_block_ram()) + ") = " +
+                         " block RAMs are too few for " + at + ": they need " +
+                         std::to_string(board.format.block_ram_layout(max_objects).word_groups()) + " x m x ceil(N/" +
+                         std::to_string(board.format.block_ram_layout(max_objects).depth) + ") = " +
                          std::to_string(needed) +
                          (largest > 0 ? " (largest m that fits: " + std::to_string(largest) + explore + ")"
                                       : " (not even m=1 fits: use fewer objects or a larger device" + explore + ")"));

@@ -103,6 +103,21 @@ TEST_F(CliTiles, SixtyFiveThousandBoxesRunOnThePapersBoard) {
     expect_cycle_identity(big);
 }
 
+// fixed16 puts min and max of an axis in one 36-bit word: tile buffers of
+// 3 x (2m+2) primitives, so the XC2V6000 holds m = 23 instead of 11.
+TEST_F(CliTiles, PackedFixedPointWordsFitTwiceTheLanesInSsramTiles) {
+    const Result r = run(spheres(65536, 1) + "--m 23 --format fixed16 --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json packed = report();
+    EXPECT_EQ(packed["config"]["memory"], "SSRAM");
+    EXPECT_EQ(packed["config"]["resources"]["block_rams"]["used"], 144);
+    EXPECT_EQ(packed["config"]["resources"]["largest_m"], 23);
+    expect_cycle_identity(packed);
+    const Result wider = run(spheres(65536, 1) + "--m 24 --format fixed16");
+    EXPECT_EQ(wider.status, 2);
+    EXPECT_NE(wider.err.find("(largest m that fits: 23;"), std::string::npos) << wider.err;
+}
+
 TEST_F(CliTiles, ScenesPastTheSsramAreRefused) {
     expect_refusal(run(spheres(2000, 1) + "--m 8 -c device.ssram_words=1000 --report r.json"),
                    "cdvp run: -c device.ssram_words: 1000 words a bank in 6 SSRAM banks hold 1000 boxes, too few "

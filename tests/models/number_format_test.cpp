@@ -54,22 +54,39 @@ TEST(NumberFormat, WordMaskKeepsTheLowKBits) {
     EXPECT_EQ(NumberFormat::fixed(32).word_mask(), 0xFFFF'FFFFu);
 }
 
-TEST(NumberFormat, BlockRamAspectIsTheNarrowestThatHoldsAWord) {
-    EXPECT_EQ(NumberFormat::float32().boxes_per_block_ram(), 512u);
-    EXPECT_EQ(NumberFormat::fixed(8).boxes_per_block_ram(), 2048u);
-    EXPECT_EQ(NumberFormat::fixed(9).boxes_per_block_ram(), 2048u);
-    EXPECT_EQ(NumberFormat::fixed(10).boxes_per_block_ram(), 1024u);
-    EXPECT_EQ(NumberFormat::fixed(18).boxes_per_block_ram(), 1024u);
-    EXPECT_EQ(NumberFormat::fixed(19).boxes_per_block_ram(), 512u);
-    EXPECT_EQ(NumberFormat::fixed(32).boxes_per_block_ram(), 512u);
+// The layout with the fewest 18-Kbit primitives: a deeper aspect, or several
+// coordinates of a box side by side in one word.
+TEST(NumberFormat, BlockRamLayoutTakesTheFewestPrimitives) {
+    auto primitives = [](NumberFormat f, uint64_t boxes) { return f.block_ram_layout(boxes).primitives(boxes); };
+    const NumberFormat float32 = NumberFormat::float32();
+    EXPECT_EQ(float32.block_ram_layout(100).width, 36u);
+    EXPECT_EQ(float32.block_ram_layout(100).coordinates_per_word, 1u);
+    EXPECT_EQ(primitives(float32, 512), 6u);
+    EXPECT_EQ(primitives(float32, 513), 12u);
+    EXPECT_EQ(primitives(NumberFormat::fixed(19), 1024), 12u);  // only 512 x 36 holds 19 bits
+    // fixed16: min and max of an axis share a 36-bit word.
+    EXPECT_EQ(NumberFormat::fixed(16).block_ram_layout(512).coordinates_per_word, 2u);
+    EXPECT_EQ(primitives(NumberFormat::fixed(16), 512), 3u);
+    EXPECT_EQ(primitives(NumberFormat::fixed(16), 2048), 12u);  // 3 x 4 = 6 x 2 (1K x 18)
+    EXPECT_EQ(primitives(NumberFormat::fixed(18), 512), 3u);
+    // fixed12: three a word, at any depth better than 1K x 18.
+    EXPECT_EQ(primitives(NumberFormat::fixed(12), 1024), 4u);
+    EXPECT_EQ(primitives(NumberFormat::fixed(12), 2048), 8u);
+    // fixed8: four a 36-bit word for a small tile, 2K x 9 or 1K x 18 (two a word) for more.
+    EXPECT_EQ(primitives(NumberFormat::fixed(8), 512), 2u);
+    EXPECT_EQ(primitives(NumberFormat::fixed(8), 2048), 6u);
+    EXPECT_EQ(NumberFormat::fixed(9).block_ram_layout(2049).width, 18u);
+    EXPECT_EQ(primitives(NumberFormat::fixed(9), 2049), 9u);
+    EXPECT_EQ(primitives(NumberFormat::fixed(8), 0), 0u);
     BoardConfig board;
     board.m = 4;
-    EXPECT_EQ(board.block_rams(2048), 6u * 4 * 4);
+    EXPECT_EQ(board.block_rams(2048), 4u * 24);
     board.format = NumberFormat::fixed(16);
-    EXPECT_EQ(board.block_rams(2048), 6u * 4 * 2);
+    EXPECT_EQ(board.block_rams(2048), 4u * 12);
+    EXPECT_EQ(board.block_rams(500), 4u * 3);
     board.format = NumberFormat::fixed(9);
-    EXPECT_EQ(board.block_rams(2048), 6u * 4 * 1);
-    EXPECT_EQ(board.block_rams(2049), 6u * 4 * 2);
+    EXPECT_EQ(board.block_rams(2048), 4u * 6);
+    EXPECT_EQ(board.block_rams(2049), 4u * 9);
 }
 
 TEST(NumberFormat, Float32ComparesAsIeeeAndKeysKeepThatOrder) {
