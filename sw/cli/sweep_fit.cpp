@@ -2,6 +2,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <vector>
 
 #include "sw/cli/sweep_samples.h"
 
@@ -80,10 +81,22 @@ void add_fit_figures(const std::vector<Sample>& samples, const std::vector<std::
         plan.figures.push_back({"largest-m-" + file_part(board) + ".png", gp.str(), ""});
         if (frontier.empty()) continue;
         // The variants along x in grid order: lanes that fit (left axis, solid) and
-        // extra pairs (right axis, dashed), one pair of lines per N.
+        // extra pairs (right axis, dashed), one pair of lines per N; at most
+        // kMostN values of N, spread from the smallest to the largest.
+        constexpr std::size_t kMostN = 4;
+        std::vector<double> drawn_n;
+        for (const auto& [n, points] : frontier) drawn_n.push_back(n);
+        if (drawn_n.size() > kMostN) {
+            std::vector<double> spread;
+            for (std::size_t i = 0; i < kMostN; ++i) spread.push_back(drawn_n[i * (drawn_n.size() - 1) / (kMostN - 1)]);
+            plan.notes.push_back("lanes-extra-" + file_part(board) + ".png shows " + std::to_string(kMostN) + " of the " +
+                                 std::to_string(drawn_n.size()) + " values of N (fit.csv has them all)");
+            drawn_n = spread;
+        }
         std::ostringstream fp, fplots;
         k = 0;
-        for (const auto& [n, points] : frontier) {
+        for (const double n : drawn_n) {
+            const auto& points = frontier[n];
             fp << "$x" << k << " << EOD\n";
             std::size_t place = 0;
             for (const auto& [s, lanes] : points) {
