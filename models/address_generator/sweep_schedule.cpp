@@ -101,6 +101,8 @@ void ScheduleWalker::enter_block() {
     const SweepSchedule::Block& block = schedule_->blocks()[block_];
     row_ = schedule_->tile_begin(block.row_tile);
     column_ = block.diagonal() ? row_ + 1 : schedule_->tile_begin(block.column_tile);
+    row_end_ = schedule_->tile_end(block.row_tile);
+    column_end_ = schedule_->tile_end(block.column_tile);
     in_block_ = true;
     ++started_;
 }
@@ -121,8 +123,7 @@ ScheduleWalker::Slot ScheduleWalker::step(Ready ready) {
             }
             enter_block();
         }
-        const uint32_t row_end = schedule_->tile_end(block.row_tile);
-        const uint32_t column_end = schedule_->tile_end(block.column_tile);
+        const uint32_t row_end = row_end_, column_end = column_end_;
         if (row_ >= row_end || column_ >= column_end) {  // the block is done
             ++block_;
             in_block_ = false;

@@ -112,6 +112,7 @@ private:
     uint64_t started_ = 0;
     uint32_t row_ = 0;
     uint32_t column_ = 0;
+    uint32_t row_end_ = 0, column_end_ = 0;  // the block's tiles' ends, kept from enter_block()
     bool in_block_ = false;
 };
 

@@ -10,7 +10,7 @@ ComparisonUnit::ComparisonUnit(uint32_t lanes, const ComparisonUnitConfig& confi
       latency_(config.latency_cycles),
       format_(format),
       mask_(format.word_mask()),
-      evaluate_(format.is_float() ? &ComparisonUnit::evaluate_as<float> : &ComparisonUnit::evaluate_as<uint32_t>) {
+      is_float_(format.is_float()) {
     if (lanes == 0 || lanes > kMaxLanes) {
         throw std::invalid_argument("the comparison unit supports 1 to " + std::to_string(kMaxLanes) +
                                     " lanes, not " + std::to_string(lanes));
