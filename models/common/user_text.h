@@ -17,6 +17,14 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The operating system failed what the input was fine for: a write on a full
+// disk, an I/O error. what() is one line ending in the system's own error
+// text; the CLI exits with status 4, and a sweep does not take it for a result.
+class SystemError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 // 'text' safe to print on one line: control characters (a newline in a file
 // name, say) become escapes such as \n, \t and \x1b, and C1 controls in
 // UTF-8 \u0085 and the like; everything else is kept.

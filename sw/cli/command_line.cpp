@@ -57,7 +57,7 @@ int run_command_line(const char* program, int argc, char** argv, const std::stri
             return print_to_stdout(program, help.str());
         }
     }
-    return exit_status_of(program, "simulation failed", [&] {
+    return exit_status_of(program, [&] {
         try {
             return body(parse_strictly(argc, argv, options));
         } catch (const po::error& e) {

@@ -5,20 +5,27 @@
 #include <cerrno>
 #include <cstring>
 #include <iostream>
+#include <new>
 
 #include "models/common/user_text.h"
 #include "sw/scene/output_target.h"
 
 namespace cdvp {
 
-int exit_status_of(const std::string& program, const char* failure, const std::function<int()>& body) {
+int exit_status_of(const std::string& program, const std::function<int()>& body) {
     try {
         return body();
     } catch (const InputError& e) {
         std::cerr << program << ": " << printable(e.what()) << '\n';
         return kExitBadInput;
+    } catch (const SystemError& e) {
+        std::cerr << program << ": " << printable(e.what()) << '\n';
+        return kExitSystem;
+    } catch (const std::bad_alloc&) {
+        std::cerr << program << ": internal error (a cdvp bug): out of memory past the run's memory budget\n";
+        return kExitInternal;
     } catch (const std::exception& e) {
-        std::cerr << program << ": " << failure << ": " << printable(e.what()) << '\n';
+        std::cerr << program << ": internal error (a cdvp bug): " << printable(e.what()) << '\n';
         return kExitInternal;
     }
 }

@@ -12,12 +12,14 @@ constexpr int kExitDone = 0;
 constexpr int kExitInternal = 1;     // a cdvp bug
 constexpr int kExitBadInput = 2;     // a bad trace, flag, preset or output path
 constexpr int kExitDeviceFault = 3;  // the simulated system faulted (bus, DMA, driver timeout, board error)
+constexpr int kExitSystem = 4;       // the operating system failed a write or a resource (disk full, I/O error)
 
 // Runs a command's body and maps what escapes it to the exit status: an
-// InputError is bad input (kExitBadInput, "PROGRAM: message"), any other
-// exception an internal failure (kExitInternal, "PROGRAM: FAILURE: message");
-// each one line on stderr.
-int exit_status_of(const std::string& program, const char* failure, const std::function<int()>& body);
+// InputError is bad input (kExitBadInput, "PROGRAM: message"), a SystemError
+// the system's failure (kExitSystem, "PROGRAM: message" with the system's
+// own error text), any other exception a bug (kExitInternal, "PROGRAM:
+// internal error (a cdvp bug): message"); each one line on stderr.
+int exit_status_of(const std::string& program, const std::function<int()>& body);
 
 // Prints 'text' (help, version) on standard output: kExitDone, or
 // kExitBadInput with one line on stderr when it cannot be written.

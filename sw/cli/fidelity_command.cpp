@@ -259,7 +259,7 @@ int fidelity_levels(int argc, char** argv) {
 }  // namespace
 
 int fidelity_command(int argc, char** argv) {
-    return exit_status_of("cdvp fidelity", "failed", [&] { return fidelity_levels(argc, argv); });
+    return exit_status_of("cdvp fidelity", [&] { return fidelity_levels(argc, argv); });
 }
 
 }  // namespace cdvp

@@ -106,7 +106,7 @@ int merge_shards(int argc, char** argv) {
 }  // namespace
 
 int merge_command(int argc, char** argv) {
-    return exit_status_of("cdvp merge", "failed", [&] { return merge_shards(argc, argv); });
+    return exit_status_of("cdvp merge", [&] { return merge_shards(argc, argv); });
 }
 
 }  // namespace cdvp

@@ -390,7 +390,7 @@ int run_command(int argc, char** argv) {
             return print_to_stdout("cdvp run", run_options_help() + '\n');
         }
     }
-    return exit_status_of("cdvp run", "simulation failed", [&] { return run_checked(argc, argv); });
+    return exit_status_of("cdvp run", [&] { return run_checked(argc, argv); });
 }
 
 }  // namespace cdvp

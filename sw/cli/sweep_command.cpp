@@ -294,7 +294,7 @@ int run_sweep(const SweepOptions& o) {
 }  // namespace
 
 int sweep_command(int argc, char** argv) {
-    const int status = exit_status_of("cdvp sweep", "failed", [&] {
+    const int status = exit_status_of("cdvp sweep", [&] {
         const std::optional<SweepOptions> options = parse_sweep_options(argc, argv);
         return options ? run_sweep(*options) : print_to_stdout("cdvp sweep", sweep_help());
     });
