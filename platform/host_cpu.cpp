@@ -99,6 +99,8 @@ void HostCpu::run() {
             fault_ = FrameFault{FrameFault::Kind::kDevice, e.what()};
         } catch (const SimulatedTimeLimit& e) {
             fault_ = FrameFault{FrameFault::Kind::kTimeLimit, e.what()};
+        } catch (const PairBudgetExceeded& e) {
+            fault_ = FrameFault{FrameFault::Kind::kPairBudget, e.what(), e.found()};
         } catch (...) {
             internal_error_ = std::current_exception();
         }

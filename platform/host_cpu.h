@@ -26,10 +26,14 @@ struct FrameResult {
 // Why a frame did not complete. Faults travel by value from the CPU thread to
 // the caller: an exception rethrown on the main stack after the coroutines
 // have run trips AddressSanitizer's stale stack bounds (docs/testing.md).
+// kPairBudget: the frame's pairs outgrew the run's pair budget, bad input
+// like kTimeLimit (the system did not fault); pairs_found says where the
+// search stopped.
 struct FrameFault {
-    enum class Kind : uint8_t { kNone, kDevice, kTimeLimit };
+    enum class Kind : uint8_t { kNone, kDevice, kTimeLimit, kPairBudget };
     Kind kind = Kind::kNone;
     std::string message;  // the driver's message, one line
+    uint64_t pairs_found = 0;
     explicit operator bool() const { return kind != Kind::kNone; }
 };
 

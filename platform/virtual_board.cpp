@@ -16,6 +16,7 @@ std::shared_ptr<const BusTiming> bus_or_ideal(const std::shared_ptr<const BusTim
 DriverConfig driver_for(const PlatformConfig& config) {
     DriverConfig driver = config.driver;
     driver.tiles = config.board.tiles;
+    driver.pair_budget = config.pair_budget;
     return driver;
 }
 
@@ -25,7 +26,8 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
                            const std::string& vcd_base)
     : sc_module(name),
       faults_(config.faults),
-      board_("board", config.board, capacity, config.fidelity),
+      pair_budget_(config.pair_budget),
+      board_("board", config.board, capacity, config.fidelity, config.pair_budget),
       bridge_("bridge", bus_or_ideal(config.bus)),
       bus_("pci", bus_or_ideal(config.bus)),
       memory_("memory", BoardDriver::host_memory_bytes(capacity, config.board.collector.buffer_depth)),
@@ -81,6 +83,9 @@ const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes, u
     const FrameResult* result = try_run_frame(boxes, number, fault);
     if (result != nullptr) return *result;
     if (fault.kind == FrameFault::Kind::kTimeLimit) throw SimulatedTimeLimit(fault.message);
+    if (fault.kind == FrameFault::Kind::kPairBudget) {
+        throw PairBudgetExceeded(fault.pairs_found, pair_budget_.max_pairs());
+    }
     throw DeviceFault(fault.message);
 }
 

@@ -33,6 +33,9 @@ struct PlatformConfig {
     // How far the host CPU may run ahead of the rest of the simulation, in
     // ns; 0 synchronises at every access (exact). See HostCpu.
     double quantum_ns = 0.0;
+    // The most pairs a frame may hold, in the fast engine's search and the
+    // driver's read-back (models/common/pair_budget.h); unlimited by default.
+    PairBudget pair_budget{};
 };
 
 // Elaborate once, then run any number of frames: each run_frame() hands the
@@ -53,7 +56,7 @@ public:
     // number --inject's frame=N selects). Returns the result, or null with
     // fault set when the simulated system faulted; never partial pairs.
     const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
-    // The same, throwing DeviceFault or SimulatedTimeLimit for a fault (for
+    // The same, throwing DeviceFault, SimulatedTimeLimit or PairBudgetExceeded for a fault (for
     // callers that never run under AddressSanitizer's checks of the main
     // stack, such as tests). Without a number, frames are numbered 0, 1, 2, ...
     const FrameResult& run_frame(const std::vector<FloatBox>& boxes);
@@ -75,6 +78,7 @@ public:
 
 private:
     FaultPlan faults_;
+    PairBudget pair_budget_;
     uint64_t frames_ = 0;
     CollisionBoard board_;
     PciBridge bridge_;

@@ -22,13 +22,13 @@ BoardCore::Write from(RegisterResult r) {
 }
 }  // namespace
 
-BoardCore::BoardCore(const BoardConfig& config, uint32_t capacity, Fidelity fidelity)
+BoardCore::BoardCore(const BoardConfig& config, uint32_t capacity, Fidelity fidelity, PairBudget budget)
     : config_((config.validate(), config)), capacity_(capacity) {
     if (capacity > address_map::kMaxObjects) {
         throw std::invalid_argument("board capacity " + std::to_string(capacity) + " exceeds the address map's " +
                                     std::to_string(address_map::kMaxObjects) + " boxes");
     }
-    engine_ = make_engine(fidelity, config_, capacity);
+    engine_ = make_engine(fidelity, config_, capacity, budget);
     for (auto& words : store_) words.assign(capacity, 0);
     declare_registers();
 }

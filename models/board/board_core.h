@@ -20,8 +20,10 @@ class BoardCore {
 public:
     enum class Phase : uint8_t { Idle, Running, Paused, Done };
 
-    // capacity: boxes the coordinate memories hold (their depth).
-    BoardCore(const BoardConfig& config, uint32_t capacity, Fidelity fidelity = Fidelity::kCycle);
+    // capacity: boxes the coordinate memories hold (their depth); budget: the
+    // most pairs the engine may find in a sweep (see make_engine).
+    BoardCore(const BoardConfig& config, uint32_t capacity, Fidelity fidelity = Fidelity::kCycle,
+              PairBudget budget = {});
 
     const BoardConfig& config() const { return config_; }
     uint32_t capacity() const { return capacity_; }

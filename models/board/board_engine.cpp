@@ -15,10 +15,11 @@ const char* to_string(Fidelity fidelity) {
     return "unknown";
 }
 
-std::unique_ptr<BoardEngine> make_engine(Fidelity fidelity, const BoardConfig& config, uint32_t capacity) {
+std::unique_ptr<BoardEngine> make_engine(Fidelity fidelity, const BoardConfig& config, uint32_t capacity,
+                                         PairBudget budget) {
     switch (fidelity) {
         case Fidelity::kCycle: return std::make_unique<ClockedEngine>(config, capacity);
-        case Fidelity::kFast: return std::make_unique<FastBoardEngine>(config);
+        case Fidelity::kFast: return std::make_unique<FastBoardEngine>(config, budget);
     }
     throw std::invalid_argument("unknown fidelity");
 }

@@ -13,6 +13,7 @@
 
 #include "models/board/board_config.h"
 #include "models/common/aabb.h"
+#include "models/common/pair_budget.h"
 #include "models/comparison_unit/comparison_unit.h"
 
 namespace cdvp {
@@ -72,6 +73,10 @@ enum class Fidelity : uint8_t { kCycle, kFast };
 const char* to_string(Fidelity fidelity);
 
 // The engine of a board with this configuration and coordinate-memory depth.
-std::unique_ptr<BoardEngine> make_engine(Fidelity fidelity, const BoardConfig& config, uint32_t capacity);
+// A fast engine finds a sweep's pairs at START and throws PairBudgetExceeded
+// there when they outgrow `budget`; the clocked one holds no more pairs than
+// its pair buffer (the driver's read-back holds the budget for it).
+std::unique_ptr<BoardEngine> make_engine(Fidelity fidelity, const BoardConfig& config, uint32_t capacity,
+                                         PairBudget budget = {});
 
 }  // namespace cdvp

@@ -12,11 +12,11 @@ namespace cdvp {
 using namespace sc_core;
 
 CollisionBoard::CollisionBoard(const sc_module_name& name, const BoardConfig& config, uint32_t capacity,
-                               Fidelity fidelity)
+                               Fidelity fidelity, PairBudget budget)
     : sc_module(name),
       socket("socket"),
       irq("irq"),
-      core_(config, capacity, fidelity),
+      core_(config, capacity, fidelity, budget),
       period_(1.0 / config.clock_mhz, SC_US) {
     socket.register_b_transport(this, &CollisionBoard::b_transport);
     socket.register_transport_dbg(this, &CollisionBoard::transport_dbg);

@@ -31,7 +31,7 @@ public:
     sc_core::sc_out<bool> irq;
 
     CollisionBoard(const sc_core::sc_module_name& name, const BoardConfig& config, uint32_t capacity,
-                   Fidelity fidelity = Fidelity::kCycle);
+                   Fidelity fidelity = Fidelity::kCycle, PairBudget budget = {});
 
     const BoardCore& core() const { return core_; }
     // Faults to inject (board-error); null for none. Not owned.

@@ -14,7 +14,7 @@ namespace cdvp {
 // ends, counters after any edge, buffer contents and abort.
 class FastBoardEngine : public BoardEngine {
 public:
-    explicit FastBoardEngine(const BoardConfig& config) : engine_(config) {}
+    explicit FastBoardEngine(const BoardConfig& config, PairBudget budget = {}) : engine_(config, budget) {}
 
     std::string name() const override { return "fast"; }
     void start(const CoordinateStore& store, uint32_t objects) override;

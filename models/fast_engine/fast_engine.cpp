@@ -4,7 +4,8 @@
 
 namespace cdvp {
 
-FastEngine::FastEngine(const BoardConfig& config) : config_(config), finder_(config.format), timeline_(config) {}
+FastEngine::FastEngine(const BoardConfig& config, PairBudget budget)
+    : config_(config), finder_(config.format, budget), timeline_(config) {}
 
 void FastEngine::start(uint32_t objects, const CoordinateWords& words) {
     finder_.find(objects, words, pairs_);

@@ -31,7 +31,8 @@ namespace cdvp {
 
 class FastEngine {
 public:
-    explicit FastEngine(const BoardConfig& config);
+    // A sweep whose pairs outgrow `budget` throws PairBudgetExceeded at start().
+    explicit FastEngine(const BoardConfig& config, PairBudget budget = {});
 
     const BoardConfig& config() const { return config_; }
 

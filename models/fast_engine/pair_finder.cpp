@@ -80,6 +80,7 @@ void PairFinder::all_pairs(uint32_t objects, const CoordinateWords& words, PairL
             const uint32_t hits = test.hits(q0) & block_mask_before(q0, n);
             for_each_hit(hits, q0, [&](std::size_t q) { out.push_back({i, valid_[q].index}); });
         }
+        budget_.check(out.size());  // a row adds fewer than n pairs
     }
 }
 
@@ -326,7 +327,7 @@ void PairFinder::sweep_cells() {
             const BlockTest test(entries_, a);
             for (std::size_t q0 = p + 1; q0 < end; q0 += kBlock) {
                 const uint32_t hits = test.hits(q0) & block_mask_before(q0, end);
-                if (recorded + 1 == hit_blocks_.size()) hit_blocks_.resize(2 * hit_blocks_.size());
+                if (recorded + 1 == hit_blocks_.size()) grow_hit_blocks(recorded);
                 hit_blocks_[recorded] = {static_cast<uint32_t>(p), static_cast<uint32_t>(q0), hits};
                 recorded += hits != 0 ? 1 : 0;
                 if (q0 + kBlock >= end || !(min_x[q0 + kBlock - 1] <= a[kMaxX])) break;
@@ -340,18 +341,36 @@ void PairFinder::sweep_cells() {
 // share exactly when it is the first on y of one of them and the first on z
 // of one of them; the others are dropped. Every lane is written and the end
 // moves on by the lane's hit bit: no branch per hit.
+inline uint32_t PairFinder::first_cell_hits(const HitBlock& block) const {
+    const uint32_t* first = entry_first_.data();
+    const uint32_t own = first[block.p];
+    const uint32_t any_y = (own & 1) != 0 ? ~0u : 0u, any_z = (own & 2) != 0 ? ~0u : 0u;
+    return block.hits & (any_y | block_flag_bits<0>(first, block.q0)) & (any_z | block_flag_bits<1>(first, block.q0));
+}
+
+// Until the blocks could hold more pairs than the budget (kBlock a block at
+// most) nothing is counted, so a search within its budget does no more work
+// than before; past that, the pairs of the blocks so far are counted exactly
+// (a pair met in several cells once), each time the list doubles.
+void PairFinder::grow_hit_blocks(std::size_t recorded) {
+    if (uint64_t{kBlock} * recorded > budget_.max_pairs()) {
+        uint64_t pairs = 0;
+        for (std::size_t r = 0; r < recorded; ++r) {
+            pairs += static_cast<uint64_t>(__builtin_popcount(first_cell_hits(hit_blocks_[r])));
+        }
+        budget_.check(pairs);
+    }
+    hit_blocks_.resize(2 * hit_blocks_.size());
+}
+
 std::size_t PairFinder::emit_pairs() {
     const uint32_t* index = entry_index_.data();
-    const uint32_t* first = entry_first_.data();
     unordered_.resize(std::max<std::size_t>(unordered_.size(), kBlock * (hit_block_count_ + 1)));
     IndexPair* out = unordered_.data();
     std::size_t found = 0;
     for (std::size_t r = 0; r < hit_block_count_; ++r) {
         const HitBlock& block = hit_blocks_[r];
-        const uint32_t own = first[block.p];
-        const uint32_t any_y = (own & 1) != 0 ? ~0u : 0u, any_z = (own & 2) != 0 ? ~0u : 0u;
-        const uint32_t hits = block.hits & (any_y | block_flag_bits<0>(first, block.q0)) &
-                              (any_z | block_flag_bits<1>(first, block.q0));
+        const uint32_t hits = first_cell_hits(block);
         const uint32_t i = index[block.p];
         for (std::size_t k = 0; k < kBlock; ++k) {
             const uint32_t j = index[block.q0 + k];  // padding past the cell's end: never counted
@@ -360,6 +379,7 @@ std::size_t PairFinder::emit_pairs() {
             found += (hits >> k) & 1u;
         }
     }
+    budget_.check(found);  // before the ordered lists are sized for them
     return found;
 }
 

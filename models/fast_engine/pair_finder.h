@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "models/common/aabb.h"
+#include "models/common/pair_budget.h"
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/fast_engine/box_block.h"
 
@@ -27,10 +28,18 @@ using CoordinateWords = std::array<const uint32_t*, kCoordinates>;
 // (float32 NaN) meets nothing and is left out first; inverted boxes (min >
 // max) are tested as the comparators would. Scratch memory is kept between
 // calls; O(N + pairs).
+//
+// A search that finds more pairs than its budget throws PairBudgetExceeded
+// as soon as it knows: the list of blocks with hits is checked when it
+// grows (and only once it could hold more pairs than the budget), the pairs
+// once they are counted. No list outgrows the budget by more than its first
+// size (a block a box) or one doubling, and the per-block work is unchanged.
 class PairFinder {
 public:
-    explicit PairFinder(NumberFormat format = NumberFormat::float32()) : format_(format) {}
+    explicit PairFinder(NumberFormat format = NumberFormat::float32(), PairBudget budget = {})
+        : format_(format), budget_(budget) {}
     NumberFormat format() const { return format_; }
+    const PairBudget& budget() const { return budget_; }
 
     // At most this many boxes: all pairs (no sort pays off below it).
     static constexpr uint32_t kBruteForceLimit = 256;
@@ -87,6 +96,9 @@ private:
     void for_each_cell(const CellSpan& span, Visit&& visit) const;
     void bin();
     void sweep_cells();
+    // Doubles the list of hit blocks once the first `recorded` are filled,
+    // after checking the pairs they hold against the budget.
+    void grow_hit_blocks(std::size_t recorded);
     // Writes the pairs of the recorded hit blocks into unordered_: how many.
     std::size_t emit_pairs();
     // Sorts the first `found` pairs of unordered_ into out, BoardCore's order.
@@ -95,6 +107,7 @@ private:
     void counting_sort(uint32_t objects, const IndexPair* from, std::size_t count, IndexPair* to, Key key);
 
     NumberFormat format_;
+    PairBudget budget_;
     CoordinateWords words_{};  // the current sweep's
     // The words' keys by coordinate, and whether a box has an excluded word.
     std::vector<int32_t> key_columns_[kCoordinates];
@@ -116,6 +129,9 @@ private:
     struct HitBlock {
         uint32_t p, q0, hits;
     };
+    // The hits of a block that the block's cell is the first cell to report:
+    // the pairs it adds (emit_pairs).
+    uint32_t first_cell_hits(const HitBlock& block) const;
     std::vector<HitBlock> hit_blocks_;  // the first hit_block_count_ are this sweep's
     std::size_t hit_block_count_ = 0;
     PairList unordered_, by_second_;  // unordered_ keeps its largest size: only a prefix is used

@@ -16,7 +16,7 @@ class BruteBroadPhase : public BroadPhase {
 public:
     std::string name() const override { return "brute"; }
     void find_pairs(const std::vector<FloatBox>& boxes, PairList& out) override {
-        brute_force_pairs(boxes, out);
+        brute_force_pairs(boxes, out, budget_);
     }
 };
 

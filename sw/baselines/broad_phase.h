@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "models/common/aabb.h"
+#include "models/common/pair_budget.h"
 
 namespace cdvp {
 
@@ -18,7 +19,14 @@ public:
     // reference_pairs): each pair once, first < second (indices into boxes), in any order.
     // Consecutive calls with the same box count are the same objects moved, so incremental
     // methods keep their state (frame coherence); a different count rebuilds.
+    // Throws PairBudgetExceeded before `out` outgrows the pair budget.
     virtual void find_pairs(const std::vector<FloatBox>& boxes, PairList& out) = 0;
+
+    // The most pairs find_pairs may collect (run.max_pairs; unlimited by default).
+    void set_pair_budget(PairBudget budget) { budget_ = budget; }
+
+protected:
+    PairBudget budget_;
 };
 
 // Names: "sap" (Bullet btAxisSweep3), "dbvt" (Bullet btDbvtBroadphase),

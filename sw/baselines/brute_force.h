@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "models/common/aabb.h"
+#include "models/common/pair_budget.h"
 
 namespace cdvp {
 
@@ -23,7 +24,8 @@ inline bool boxes_overlap(const FloatBox& a, const FloatBox& b) {
 PairList reference_pairs(const std::vector<FloatBox>& boxes);
 
 // The same loop as a plain scalar baseline: the speed yardstick for the
-// cycle-level model. Appends to out (cleared first) and returns its size.
-size_t brute_force_pairs(const std::vector<FloatBox>& boxes, PairList& out);
+// cycle-level model. Appends to out (cleared first) and returns its size;
+// throws PairBudgetExceeded rather than outgrow the budget.
+size_t brute_force_pairs(const std::vector<FloatBox>& boxes, PairList& out, const PairBudget& budget = {});
 
 }  // namespace cdvp

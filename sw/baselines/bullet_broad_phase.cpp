@@ -131,7 +131,7 @@ private:
             auto b = static_cast<uint32_t>(
                 reinterpret_cast<std::uintptr_t>(pairs[k].m_pProxy1->m_clientObject));
             if (a > b) std::swap(a, b);
-            if (boxes_overlap(boxes[a], boxes[b])) out.push_back({a, b});
+            if (boxes_overlap(boxes[a], boxes[b])) budget_.push(out, {a, b});
         }
     }
 

@@ -60,7 +60,7 @@ void SoaBroadPhase::find_pairs(const std::vector<FloatBox>& boxes, PairList& out
         for (std::size_t j0 = i + 1; j0 < n; j0 += kBlock) {
             if (!test_block(lo, hi, lo_i, hi_i, j0, hit)) continue;
             for (std::size_t k = 0; k < kBlock; ++k) {
-                if (hit[k]) out.push_back({i, static_cast<uint32_t>(j0 + k)});
+                if (hit[k]) budget_.push(out, {i, static_cast<uint32_t>(j0 + k)});
             }
         }
     }

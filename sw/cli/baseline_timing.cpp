@@ -33,7 +33,8 @@ std::runtime_error mismatch(const std::string& name, std::size_t found, uint64_t
 
 }  // namespace
 
-BaselineTimer::BaselineTimer(const std::string& names, double host_factor) : host_factor_(host_factor) {
+BaselineTimer::BaselineTimer(const std::string& names, double host_factor, PairBudget budget)
+    : host_factor_(host_factor), budget_(budget) {
     std::stringstream list(names);
     for (std::string name; std::getline(list, name, ',');) {
         // Each is timed once a frame; a repeat would be run twice and reported once.
@@ -42,6 +43,7 @@ BaselineTimer::BaselineTimer(const std::string& names, double host_factor) : hos
         }
         try {
             first_run_.push_back(make_broad_phase(name));
+            first_run_.back()->set_pair_budget(budget_);
         } catch (const std::invalid_argument& e) {
             throw InputError(std::string("--baseline: ") + e.what());
         }
@@ -79,6 +81,7 @@ void BaselineTimer::repeat(FrameSource& source, uint32_t runs, RunTotals& totals
         std::vector<std::unique_ptr<BroadPhase>> fresh;
         for (const std::string& name : names_) {
             fresh.push_back(make_broad_phase(name));
+            fresh.back()->set_pair_budget(budget_);
             totals.baseline_samples(name).start_run();
         }
         source.rewind();

@@ -21,8 +21,9 @@ namespace cdvp {
 class BaselineTimer {
 public:
     // names: --baseline's comma-separated list (empty: none). Throws
-    // InputError for an unknown name or one given twice.
-    BaselineTimer(const std::string& names, double host_factor);
+    // InputError for an unknown name or one given twice. Each baseline
+    // collects at most `budget` pairs a frame (PairBudgetExceeded past it).
+    BaselineTimer(const std::string& names, double host_factor, PairBudget budget = {});
     BaselineTimer() = default;  // none
 
     bool empty() const { return names_.empty(); }
@@ -46,6 +47,7 @@ private:
     std::vector<std::string> names_;
     std::vector<std::unique_ptr<BroadPhase>> first_run_;
     double host_factor_ = 1.0;
+    PairBudget budget_;
     std::vector<uint64_t> board_digests_;  // one a frame of the first run
 };
 

@@ -33,7 +33,9 @@ struct ExtraPairs {
 
 class FormatReference {
 public:
-    FormatReference(NumberFormat format, double ns_per_pair) : format_(format), ns_per_pair_(ns_per_pair) {}
+    // The float32 reference finds at most `budget` pairs (PairBudgetExceeded past it).
+    FormatReference(NumberFormat format, double ns_per_pair, PairBudget budget = {})
+        : format_(format), ns_per_pair_(ns_per_pair), float32_(NumberFormat::float32(), budget) {}
 
     struct Check {
         PairList reference;              // the float32 pairs, first index ascending (empty under float32)

@@ -246,6 +246,7 @@ uint32_t BoardDriver::wait_for_board(uint32_t objects) {
 void BoardDriver::read_pairs(PairList& pairs) {
     const uint32_t count = read(R::kPairCount);
     if (count == 0) return;
+    config_.pair_budget.check(uint64_t{pairs.size()} + count);
     const uint64_t area = pair_area(capacity_);
     if (config_.use_dma) {
         dma(area, static_cast<uint32_t>(address_map::kPairBuffer), 8 * count, true);

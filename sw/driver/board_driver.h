@@ -11,6 +11,7 @@
 
 #include "models/board/tile_config.h"
 #include "models/common/aabb.h"
+#include "models/common/pair_budget.h"
 #include "models/number_format/number_format.h"
 #include "models/pci/bus_timing.h"
 #include "sw/driver/host_port.h"
@@ -52,6 +53,10 @@ struct DriverConfig {
     // tiles): the driver knows it as it knows the board it loaded; it bounds
     // the sweep's cycles. Not a setting: the platform copies the board's.
     TileConfig tiles;
+    // The most pairs a frame may hold (run.max_pairs): the read-back stops
+    // with PairBudgetExceeded before the pairs past it are copied. Not a
+    // setting of its own: the platform passes the run's budget.
+    PairBudget pair_budget{};
 };
 
 // Where a frame's simulated time went; the phases add up to total_ns.
@@ -86,7 +91,8 @@ public:
     NumberFormat format() const { return format_; }
 
     // One frame: every overlapping pair into pairs (board order), or an
-    // exception (DeviceFault when the simulated system faulted) and no pairs;
+    // exception (DeviceFault when the simulated system faulted,
+    // PairBudgetExceeded when the pairs outgrow the budget) and no pairs;
     // after a fault the driver aborts the DMA engine and the board, so the
     // next frame starts clean.
     FramePhases run_frame(const std::vector<FloatBox>& boxes, PairList& pairs);

@@ -156,6 +156,26 @@ TEST_P(BroadPhaseTest, EveryBoxOverlapsEveryOther) {
     expect_exact(*phase_, boxes, "all overlapping again");
 }
 
+// A baseline collects no more pairs than its budget: at the budget it finds
+// them all, one below it stops at the pair past it.
+TEST_P(BroadPhaseTest, StopsAtItsPairBudget) {
+    const Boxes boxes = test::all_overlapping(60, 3);
+    const uint64_t all = 60u * 59u / 2u;
+    PairList pairs;
+    phase_->set_pair_budget(PairBudget(all));
+    phase_->find_pairs(boxes, pairs);
+    EXPECT_EQ(pairs.size(), all);
+    phase_->set_pair_budget(PairBudget(all - 1));
+    try {
+        phase_->find_pairs(boxes, pairs);
+        ADD_FAILURE() << phase_->name() << " went past its budget";
+    } catch (const PairBudgetExceeded& e) {
+        EXPECT_EQ(e.found(), all);
+        EXPECT_EQ(e.budget(), all - 1);
+        EXPECT_LE(pairs.size(), all - 1) << "the list never holds more than the budget";
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Baselines, BroadPhaseTest, ::testing::ValuesIn(broad_phase_names()),
                          [](const auto& info) { return info.param; });
 

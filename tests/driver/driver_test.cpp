@@ -112,5 +112,36 @@ TEST(DriverWithoutKernel, RunsFramesThroughOverflowPausesByPioAndPolling) {
     }
 }
 
+// The read-back holds the pair budget for every engine: the clocked board
+// pauses at each full buffer, and the driver refuses the buffer that would
+// take the frame past its budget, with no pairs handed out.
+TEST(DriverWithoutKernel, RefusesTheBufferThatWouldPassThePairBudget) {
+    BoardConfig config;
+    config.m = 3;
+    config.collector.buffer_depth = 40;
+    BoardCore board(config, 300);
+    const SimTime period = fs_from_ns(15.0);
+    DirectPort port(board, period, fs_from_ns(100.0));
+    std::mt19937 rng(4);
+    const std::vector<FloatBox> boxes = testing::random_boxes(300, 12.0f, 3.0f, rng);
+    const uint64_t all = reference_pairs(boxes).size();
+    ASSERT_GT(all, 200u);
+    DriverConfig driver_config;
+    driver_config.use_dma = false;
+    driver_config.use_interrupts = false;
+    driver_config.pair_budget = PairBudget(100);
+    BoardDriver driver(port, period, driver_config, nullptr);
+    driver.open();
+    PairList pairs;
+    try {
+        driver.run_frame(boxes, pairs);
+        ADD_FAILURE() << "a frame of " << all << " pairs passed a budget of 100";
+    } catch (const PairBudgetExceeded& e) {
+        EXPECT_EQ(e.found(), 120u) << "three full buffers of 40";
+        EXPECT_EQ(e.budget(), 100u);
+    }
+    EXPECT_TRUE(pairs.empty());
+}
+
 }  // namespace
 }  // namespace cdvp
