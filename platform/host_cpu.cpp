@@ -52,7 +52,6 @@ std::string HostCpu::write(uint64_t address, const void* data, uint32_t length) 
 unsigned char* HostCpu::memory(uint64_t address) { return memory_.data(address); }
 uint64_t HostCpu::memory_size() const { return memory_.size(); }
 SimTime HostCpu::now() const { return quantum_keeper_.get_current_time().value(); }
-SimTime HostCpu::end_of_time() const { return sc_max_time().value(); }
 void HostCpu::wait(SimTime duration) {
     quantum_keeper_.inc(sc_time::from_value(duration));
     if (quantum_keeper_.need_sync()) quantum_keeper_.sync();

@@ -88,7 +88,6 @@ private:
     unsigned char* memory(uint64_t address) override;
     uint64_t memory_size() const override;
     SimTime now() const override;
-    SimTime end_of_time() const override;
     void wait(SimTime duration) override;
     void wait_for_interrupt(SimTime timeout) override;
     std::string transport(tlm::tlm_command command, uint64_t address, void* data, uint32_t length);

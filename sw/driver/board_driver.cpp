@@ -6,8 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "models/address_generator/address_generator.h"
-#include "models/address_generator/sweep_schedule.h"
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/control_registers/control_registers.h"
 #include "models/pci/dma_registers.h"
@@ -45,15 +43,6 @@ std::string microseconds(SimTime t) {
     return text;
 }
 
-// Cycles the board may run between START or RESUME and its next event: the
-// whole sweep, a full pair buffer's drain (every stall cycle moves a pair),
-// and the pipeline and FIFO tail.
-uint64_t worst_case_run_cycles(uint64_t objects, uint32_t m, const TileConfig& tiles, uint32_t buffer_depth) {
-    constexpr uint64_t kPipelineSlack = 1024;
-    const uint64_t slots = tiles.tiled() ? SweepSchedule(m, tiles, static_cast<uint32_t>(objects)).slots()
-                                         : AddressGenerator::sweep_cycles(objects, m);
-    return slots + buffer_depth + kPipelineSlack;
-}
 }  // namespace
 
 uint64_t BoardDriver::host_memory_bytes(uint32_t capacity, uint32_t buffer_depth) {
@@ -98,6 +87,7 @@ void BoardDriver::open() {
     buffer_depth_ = read(R::kPairBufferDepth);
     parallelism_ = read(R::kParallelism);
     format_ = NumberFormat::from_register(read(R::kFormat));
+    time_.emplace(config_, *bus_, period_, parallelism_, buffer_depth_);
     if (port_.memory_size() < host_memory_bytes(capacity_, buffer_depth_)) {
         throw std::runtime_error("host memory too small for the board's capacity and pair buffer");
     }
@@ -120,18 +110,18 @@ void BoardDriver::poll_pause() {
     port_.wait(gap > 0 ? gap : period_);
 }
 
-SimTime BoardDriver::timeout_for(double expected_ns) const {
-    const double ns = config_.timeout_floor_ns + config_.timeout_factor * expected_ns;
-    const double left_ns = ns_from_fs(port_.end_of_time() - port_.now());
-    if (!(ns < 0.99 * left_ns)) {  // a margin for rounding near 2^64 fs
-        char text[160];
-        std::snprintf(text, sizeof text,
-                      "the frame could take %.3g s of simulated time; the simulator's clock has %.3g s left "
-                      "(2^64 fs in all)",
-                      ns * 1e-9, left_ns * 1e-9);
-        throw SimulatedTimeLimit(text);
+// Compared in ns before converting: a timeout too long for 64-bit
+// femtoseconds never reaches fs_from_ns.
+SimTime BoardDriver::timeout_for(double worst_ns) const {
+    const double timeout_ns = time_->timeout_ns(worst_ns);
+    const double now_ns = ns_from_fs(port_.now());
+    if (!(now_ns + timeout_ns <= ns_from_fs(kSimulatedTimeLimit))) {
+        throw SimulatedTimeLimit("a wait from " + simulated_seconds(now_ns) + " of simulated time could last until " +
+                                 simulated_seconds(now_ns + timeout_ns) + ", past the limit of " +
+                                 simulated_seconds(ns_from_fs(kSimulatedTimeLimit)) +
+                                 " (2^63 fs, half SystemC's 64-bit femtosecond clock)");
     }
-    return fs_from_ns(ns);
+    return fs_from_ns(timeout_ns);
 }
 
 // By interrupt: each interrupt (the line is shared) or the timeout is
@@ -158,8 +148,8 @@ uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, SimTime t
 
 // Starts the bridge's DMA engine (registers already set) and waits for it
 // by interrupt or polling; a fault the engine reports fails the frame.
-void BoardDriver::run_dma(uint32_t control, double expected_ns) {
-    const SimTime timeout = timeout_for(expected_ns + bus_->interrupt_ns());
+void BoardDriver::run_dma(uint32_t control, double worst_ns) {
+    const SimTime timeout = timeout_for(worst_ns);
     write(D::kBase + D::kControl,
           control | D::kStart | (config_.use_interrupts ? uint32_t{D::kInterruptOnDone} : 0u));
     const uint32_t status = wait_for(D::kBase + D::kStatus, D::kDone | D::kError, timeout, "DMA");
@@ -183,7 +173,7 @@ void BoardDriver::dma(uint64_t host_address, uint32_t local_address, uint32_t by
     write(D::kBase + D::kLocalAddress, local_address);
     write(D::kBase + D::kBytes, bytes);
     const Direction direction = to_host ? Direction::kToHost : Direction::kToBoard;
-    run_dma(to_host ? uint32_t{D::kToHost} : 0u, bus_->dma_ns(bytes, direction));
+    run_dma(to_host ? uint32_t{D::kToHost} : 0u, time_->dma_worst_ns(bytes, direction));
 }
 
 void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
@@ -216,16 +206,13 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
     cpu_work(config_.call_ns + config_.ns_per_box * n);  // packing and the chain, done natively above
     write(D::kBase + D::kChainLo, static_cast<uint32_t>(chain));
     write(D::kBase + D::kChainHi, static_cast<uint32_t>(chain >> 32));
-    run_dma(D::kChain, kCoordinates * (bus_->dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) +
-                                       bus_->dma_ns(4 * uint64_t{n}, Direction::kToBoard)));
+    run_dma(D::kChain, time_->upload_worst_ns(n));
     charge(kUpload);
 }
 
 uint32_t BoardDriver::wait_for_board(uint32_t objects) {
     const SimTime started = mark_;
-    const double worst_ns =
-        ns_from_fs(period_) * static_cast<double>(worst_case_run_cycles(objects, parallelism_, config_.tiles, buffer_depth_));
-    const SimTime timeout = timeout_for(worst_ns + bus_->interrupt_ns());
+    const SimTime timeout = timeout_for(time_->board_worst_ns(objects));
     const uint32_t status = wait_for(R::kStatus, R::kDone | R::kOverflow | R::kError, timeout, "board");
     mark_ = noticed_;
     if (config_.use_interrupts) write(R::kControl, R::kAcknowledge);

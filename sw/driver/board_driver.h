@@ -5,15 +5,16 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "models/board/tile_config.h"
 #include "models/common/aabb.h"
-#include "models/common/pair_budget.h"
 #include "models/number_format/number_format.h"
 #include "models/pci/bus_timing.h"
+#include "sw/driver/driver_config.h"
+#include "sw/driver/frame_time.h"
 #include "sw/driver/host_port.h"
 
 namespace cdvp {
@@ -25,38 +26,12 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// A frame would run the simulated clock past what SystemC can represent
-// (2^64 fs, about 5.1 hours): refused before the board starts.
+// A wait's deadline would pass kSimulatedTimeLimit (sw/driver/frame_time.h):
+// refused before the wait starts. cdvp run's estimate before any work holds
+// a whole run to the same limit, so a run it lets through never meets this.
 class SimulatedTimeLimit : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
-};
-
-struct DriverConfig {
-    bool use_dma = true;          // false: boxes and pairs by programmed I/O
-    bool use_interrupts = true;   // false: poll the status register
-    double poll_gap_ns = 0.0;     // CPU time between two status polls
-    // Host CPU work, per frame (assumptions of the host preset): packing a box
-    // (six double-to-float conversions and stores), unpacking a pair, and a
-    // call into the kernel driver per board operation.
-    double ns_per_box = 0.0;
-    double ns_per_pair = 0.0;
-    double call_ns = 0.0;
-    // Simulated-time timeouts: a wait for the DMA engine or the board gives
-    // up after timeout_factor x its worst-case time plus timeout_floor_ns
-    // (worst case: the bus's DMA time, or every sweep cycle plus a full pair
-    // buffer's drain, plus an interrupt). On timeout the driver polls the
-    // status once (a lost interrupt recovers) and otherwise fails the frame.
-    double timeout_factor = 2.0;
-    double timeout_floor_ns = 100000.0;
-    // The board's memory as its bitstream was built (block RAM or SSRAM
-    // tiles): the driver knows it as it knows the board it loaded; it bounds
-    // the sweep's cycles. Not a setting: the platform copies the board's.
-    TileConfig tiles;
-    // The most pairs a frame may hold (run.max_pairs): the read-back stops
-    // with PairBudgetExceeded before the pairs past it are copied. Not a
-    // setting of its own: the platform passes the run's budget.
-    PairBudget pair_budget{};
 };
 
 // Where a frame's simulated time went; the phases add up to total_ns.
@@ -110,13 +85,13 @@ private:
     FramePhases frame(const std::vector<FloatBox>& boxes, PairList& pairs);
     // Stops the DMA engine and the board and clears their status (best effort).
     void recover();
-    // How long a wait whose worst case is expected_ns may take; refuses a
-    // deadline past the simulator's clock.
-    SimTime timeout_for(double expected_ns) const;
+    // How long a wait whose worst case is worst_ns may take (FrameTime);
+    // throws SimulatedTimeLimit for a deadline past kSimulatedTimeLimit.
+    SimTime timeout_for(double worst_ns) const;
     // Waits for the interrupt or a poll to find any of bits in the register's
     // value, until the timeout; returns the value. what names the wait.
     uint32_t wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what);
-    void run_dma(uint32_t control, double expected_ns);
+    void run_dma(uint32_t control, double worst_ns);
     void dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host);
     [[noreturn]] void dma_fault();
     uint64_t read_counter(uint32_t low_offset);
@@ -138,6 +113,7 @@ private:
     SimTime mark_ = 0;
     SimTime noticed_ = 0;  // when the last wait_for noticed its event
     std::shared_ptr<const BusTiming> bus_;
+    std::optional<FrameTime> time_;  // from open(), once the board's m and pair buffer are known
     uint32_t timeouts_recovered_ = 0;
 };
 

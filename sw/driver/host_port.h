@@ -31,8 +31,6 @@ public:
     virtual uint64_t memory_size() const = 0;
 
     virtual SimTime now() const = 0;
-    // The latest time the simulator can represent.
-    virtual SimTime end_of_time() const = 0;
     // Lets `duration` of host time pass.
     virtual void wait(SimTime duration) = 0;
     // Waits until the interrupt handler runs or `timeout` passes, whichever comes first.

@@ -32,7 +32,6 @@ public:
     unsigned char* memory(uint64_t address) override { return memory_.data() + address; }
     uint64_t memory_size() const override { return memory_.size(); }
     SimTime now() const override { return now_; }
-    SimTime end_of_time() const override { return UINT64_MAX; }
     void wait(SimTime duration) override { now_ += duration; }
     void wait_for_interrupt(SimTime timeout) override { now_ += timeout; }  // never comes: no interrupt line here
 

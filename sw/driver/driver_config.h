@@ -1,0 +1,38 @@
+// How the driver works a board (transfer, waiting, timeouts) and what its
+// host's CPU costs: the settings of the driver, apart from the driver itself
+// so that the estimate before a run (sw/driver/frame_time.h) reads the same.
+#pragma once
+
+#include "models/board/tile_config.h"
+#include "models/common/pair_budget.h"
+
+namespace cdvp {
+
+struct DriverConfig {
+    bool use_dma = true;          // false: boxes and pairs by programmed I/O
+    bool use_interrupts = true;   // false: poll the status register
+    double poll_gap_ns = 0.0;     // CPU time between two status polls
+    // Host CPU work, per frame (assumptions of the host preset): packing a box
+    // (six double-to-float conversions and stores), unpacking a pair, and a
+    // call into the kernel driver per board operation.
+    double ns_per_box = 0.0;
+    double ns_per_pair = 0.0;
+    double call_ns = 0.0;
+    // Simulated-time timeouts: a wait for the DMA engine or the board gives
+    // up after timeout_factor x its worst-case time plus timeout_floor_ns
+    // (worst case: the bus's DMA time, or every sweep cycle plus a full pair
+    // buffer's drain, plus an interrupt). On timeout the driver polls the
+    // status once (a lost interrupt recovers) and otherwise fails the frame.
+    double timeout_factor = 2.0;
+    double timeout_floor_ns = 100000.0;
+    // The board's memory as its bitstream was built (block RAM or SSRAM
+    // tiles): the driver knows it as it knows the board it loaded; it bounds
+    // the sweep's cycles. Not a setting: the platform copies the board's.
+    TileConfig tiles;
+    // The most pairs a frame may hold (run.max_pairs): the read-back stops
+    // with PairBudgetExceeded before the pairs past it are copied. Not a
+    // setting of its own: the platform passes the run's budget.
+    PairBudget pair_budget{};
+};
+
+}  // namespace cdvp

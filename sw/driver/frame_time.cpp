@@ -1,0 +1,110 @@
+#include "sw/driver/frame_time.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "models/address_generator/address_generator.h"
+#include "models/address_generator/sweep_schedule.h"
+#include "models/comparison_unit/comparison_unit.h"
+#include "models/pci/dma_registers.h"
+
+namespace cdvp {
+
+namespace {
+
+// Edges beyond the sweep a run between events may take: the pipeline's and
+// the FIFO's tail (the pipeline is at most 66 edges deep).
+constexpr uint64_t kPipelineSlack = 1024;
+// Register accesses a frame makes besides its data (chain and DMA registers,
+// the object count and START, the counters at the end), and a segment (the
+// status, acknowledge, counters, pair count, RESUME and the read-back's
+// DMA registers): generous counts, so that the bound holds as the driver
+// changes.
+constexpr double kAccessesPerFrame = 32;
+constexpr double kAccessesPerSegment = 32;
+
+}  // namespace
+
+std::string simulated_seconds(double ns) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.3f s", ns * 1e-9);
+    return text;
+}
+
+FrameTime::FrameTime(const DriverConfig& config, const BusTiming& bus, SimTime period_fs, uint32_t m,
+                     uint32_t buffer_depth, double quantum_ns)
+    : config_(config),
+      bus_(bus),
+      period_ns_(ns_from_fs(period_fs)),
+      m_(m),
+      buffer_depth_(std::max<uint32_t>(buffer_depth, 1)),
+      quantum_ns_(quantum_ns) {}
+
+double FrameTime::timeout_ns(double worst_ns) const {
+    return config_.timeout_floor_ns + config_.timeout_factor * worst_ns;
+}
+
+double FrameTime::upload_worst_ns(uint32_t objects) const {
+    return kCoordinates * (bus_.dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) +
+                           bus_.dma_ns(4 * uint64_t{objects}, Direction::kToBoard)) +
+           bus_.interrupt_ns();
+}
+
+double FrameTime::dma_worst_ns(uint64_t bytes, Direction direction) const {
+    return bus_.dma_ns(bytes, direction) + bus_.interrupt_ns();
+}
+
+// Every stall edge moves a pair, so a run between two events drains at most
+// one buffer beyond the sweep.
+uint64_t FrameTime::worst_run_cycles(uint32_t objects) const {
+    const uint64_t slots = config_.tiles.tiled() ? SweepSchedule(m_, config_.tiles, objects).slots()
+                                                 : AddressGenerator::sweep_cycles(objects, m_);
+    return slots + buffer_depth_ + kPipelineSlack;
+}
+
+double FrameTime::board_worst_ns(uint32_t objects) const {
+    return period_ns_ * static_cast<double>(worst_run_cycles(objects)) + bus_.interrupt_ns();
+}
+
+double FrameTime::longest_timeout_ns(uint32_t objects) const {
+    const double worst = std::max({upload_worst_ns(objects), board_worst_ns(objects),
+                                   dma_worst_ns(8 * uint64_t{buffer_depth_}, Direction::kToHost)});
+    return timeout_ns(worst);
+}
+
+double FrameTime::access_ns() const { return std::max(bus_.pio_read_ns(), bus_.pio_write_ns()); }
+
+// A poll may just miss the event: one more gap and read, and the read that finds it.
+double FrameTime::notice_ns() const {
+    const double notice = config_.use_interrupts
+                              ? bus_.interrupt_ns()
+                              : 2 * bus_.pio_read_ns() + std::max(config_.poll_gap_ns, period_ns_);
+    return notice + quantum_ns_;  // a CPU that ran ahead notices up to a quantum late
+}
+
+uint64_t FrameTime::waits(uint64_t pairs) const { return 1 + 2 * segments(pairs); }
+
+double FrameTime::frame_bound_ns(uint32_t objects, uint64_t pairs) const {
+    const uint64_t segments = this->segments(pairs);
+    const double n = objects, p = static_cast<double>(pairs), s = static_cast<double>(segments);
+    // Upload: the DMA chain and its notice, or every word by programmed I/O.
+    double ns = config_.use_dma ? upload_worst_ns(objects) + notice_ns() : kCoordinates * n * bus_.pio_write_ns();
+    // The board: every slot of the sweep, a stall a pair, each segment's tail.
+    const double cycles = static_cast<double>(worst_run_cycles(objects) - buffer_depth_) + p +
+                          s * static_cast<double>(kPipelineSlack);
+    ns += cycles * period_ns_ + s * notice_ns();
+    // Read-back: full buffers at each pause, then the rest.
+    if (config_.use_dma) {
+        const uint64_t last = std::min<uint64_t>(pairs, buffer_depth_);
+        ns += (s - 1) * dma_worst_ns(8 * uint64_t{buffer_depth_}, Direction::kToHost) +
+              dma_worst_ns(8 * last, Direction::kToHost) + s * notice_ns();
+    } else {
+        ns += 2 * p * bus_.pio_read_ns();
+    }
+    // Registers, and the driver's own work.
+    ns += (kAccessesPerFrame + kAccessesPerSegment * s) * access_ns();
+    ns += (1 + s) * config_.call_ns + n * config_.ns_per_box + p * config_.ns_per_pair;
+    return ns;
+}
+
+}  // namespace cdvp
