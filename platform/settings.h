@@ -39,6 +39,11 @@ struct RunSettings {
     uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
     uint32_t repeat = 1;
     std::string ignore_capacity = "no";  // no | yes
+    // Budgets, checked before any work (sw/cli/run_budgets.h). 0: derived
+    // (from this machine's memory; from the memory budget).
+    uint64_t max_memory_mib = 0;
+    uint64_t max_pairs = 0;
+    uint64_t max_trace_mib = 16384;
 };
 
 // The FPGA the board is built on, and what it holds (a preset's device

@@ -349,6 +349,21 @@ std::vector<Setting> host_and_run_settings() {
                            "device would give",
                            "no: a board that does not fit is refused naming the resource"),
                     "ignore-capacity"),
+        flag(count("run.max_memory", "MiB", 0, uint64_t{1} << 30, member(&S::run, &RunSettings::max_memory_mib),
+                   "memory budget: a run whose estimate (boxes, board model, engine, pairs, baselines, frames) "
+                   "exceeds it is refused before any work; 0: half of this machine's memory, or of a cgroup's "
+                   "memory limit or RLIMIT_AS when lower",
+                   "half: the rest for the system, the page cache and other work (assumption)"),
+             "max-memory", "MiB"),
+        flag(count("run.max_pairs", "pairs", 0, uint64_t{1} << 43, member(&S::run, &RunSettings::max_pairs),
+                   "the most pairs a frame may hold, refused where they are found; 0: as many as the memory budget "
+                   "leaves room for, at the bytes a pair costs on its way through the run",
+                   "0: derived from run.max_memory (docs/numerics.md)"),
+             "max-pairs", "P"),
+        flag(count("run.max_trace_size", "MiB", 1, uint64_t{1} << 20, member(&S::run, &RunSettings::max_trace_mib),
+                   "the largest trace, a file or a pipe (a pipe is copied to $TMPDIR as it is read)",
+                   "assumption: room for 65,536 boxes x 2,000 frames at full precision (about 110 bytes a box)"),
+             "max-trace-size", "MiB"),
     };
 }
 

@@ -12,9 +12,6 @@ constexpr std::size_t kBlock = BoxColumns::kBlock;
 // that the binning costs more than the sweep it saves.
 constexpr uint32_t kMaxCellsPerAxis = 1024;
 constexpr uint32_t kMinBoxesPerCell = 16;
-// A grid whose cell entries exceed this many per box (huge or infinite
-// boxes spanning many cells) is dropped for the plain sweep along x.
-constexpr uint64_t kMaxEntriesPerBox = 4;
 
 // The unsigned key of a signed one: the order the radix sort sorts by.
 uint32_t unsigned_key(int32_t key) { return static_cast<uint32_t>(key) ^ 0x8000'0000u; }

@@ -58,6 +58,14 @@ public:
     // Grid cells of the last sweep (1 when it swept along x alone).
     uint32_t last_cells() const { return cells_y_ * cells_z_; }
 
+    // A grid whose cell entries exceed this many per box (huge or infinite
+    // boxes spanning many cells) is dropped for the plain sweep along x.
+    static constexpr uint64_t kMaxEntriesPerBox = 4;
+    // The most scratch a search keeps a box searched and a pair found, for
+    // the memory estimate before a run (sw/cli/run_footprint.h).
+    static constexpr uint64_t scratch_bytes_per_box();
+    static constexpr uint64_t scratch_bytes_per_pair();
+
 private:
     struct Grid;
     // One box in 32 bytes: bounds, index, and its first y and z cells ((y << 16) | z).
@@ -138,5 +146,19 @@ private:
     std::vector<uint64_t> row_next_;
     BoxColumns all_;
 };
+
+// Keys and exclusion flags; boxes packed, and grouped by cell; sort items and
+// their spare; up to kMaxEntriesPerBox cell entries (box, bounds, index,
+// flags) and a block of hits each (the first list of hit blocks); row offsets.
+constexpr uint64_t PairFinder::scratch_bytes_per_box() {
+    const uint64_t entry = sizeof(uint32_t) + kCoordinates * sizeof(int32_t) + 2 * sizeof(uint32_t) + sizeof(HitBlock);
+    return kCoordinates * sizeof(int32_t) + sizeof(uint32_t) + 2 * sizeof(PackedBox) + 2 * sizeof(SortItem) +
+           kMaxEntriesPerBox * entry + sizeof(uint64_t);
+}
+// A block with hits holds at least one pair: its record (the list doubles as
+// it grows), its kBlock unordered pairs; then the pair sorted twice.
+constexpr uint64_t PairFinder::scratch_bytes_per_pair() {
+    return 2 * sizeof(HitBlock) + BoxColumns::kBlock * sizeof(IndexPair) + 2 * sizeof(IndexPair);
+}
 
 }  // namespace cdvp

@@ -21,12 +21,13 @@ namespace cdvp {
 class BaselineTimer {
 public:
     // names: --baseline's comma-separated list (empty: none). Throws
-    // InputError for an unknown name or one given twice. Each baseline
-    // collects at most `budget` pairs a frame (PairBudgetExceeded past it).
-    BaselineTimer(const std::string& names, double host_factor, PairBudget budget = {});
+    // InputError for an unknown name or one given twice.
+    BaselineTimer(const std::string& names, double host_factor);
     BaselineTimer() = default;  // none
 
     bool empty() const { return names_.empty(); }
+    // Each baseline collects at most `budget` pairs a frame (PairBudgetExceeded past it).
+    void set_pair_budget(PairBudget budget);
     const std::vector<std::string>& names() const { return names_; }
 
     // First run: times each baseline on the frame, checks it finds the

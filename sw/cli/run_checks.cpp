@@ -24,59 +24,17 @@ namespace {
 
 const Setting& setting(const char* name) { return *find_setting(name); }
 
-// Where the object count came from: the trace's largest frame, or the setting.
-std::string objects_origin(const RunOptions& o, const SettingValues& values, uint64_t max_objects) {
+}  // namespace
+
+std::string objects_origin(const std::string& trace, const SettingValues& values, uint64_t max_objects) {
     const std::string count = std::to_string(max_objects);
-    if (!o.trace.empty()) return count + " objects (the largest frame of --trace " + excerpt(o.trace) + ")";
+    if (!trace.empty()) return count + " objects (the largest frame of --trace " + excerpt(trace) + ")";
     return count + " objects (" + values.origin_text(setting("scene.objects")) + ")";
 }
 
-// SystemC counts time in 64-bit femtoseconds (2^64 fs = 5.1 hours). A run
-// whose generous estimate exceeds half of that is refused up front instead
-// of overflowing the kernel's clock mid-run.
-void check_simulated_time(const RunOptions& o, const SettingValues& values, uint64_t max_objects,
-                          uint64_t frame_count) {
-    const BoardConfig board = planned_board(values.settings(), max_objects);
-    constexpr double kBudgetSeconds = 9223.0;   // 2^63 fs
-    constexpr double kPerBoxSeconds = 10e-6;    // PIO of a box on the slowest bus, with margin
-    constexpr double kPerFrameSeconds = 1e-3;   // driver calls, interrupts, status reads, with margin
-    const double frames = static_cast<double>(frame_count);
-    const double frame_seconds = static_cast<double>(board.sweep_cycles(max_objects)) /
-                                     (board.clock_mhz * 1e6) +
-                                 static_cast<double>(max_objects) * kPerBoxSeconds + kPerFrameSeconds;
-    const double total = frames * frame_seconds;
-    if (total <= kBudgetSeconds) return;
-    const std::string frames_origin =
-        !o.trace.empty() ? "the frames of --trace " + excerpt(o.trace) : values.origin_text(setting("scene.frames"));
-    std::ostringstream message;
-    message << "a run of " << frame_count << (frame_count == 1 ? " frame (" : " frames (") << frames_origin << ") of up to "
-            << objects_origin(o, values, max_objects) << " at " << values.value_and_origin(setting("board.m"))
-            << " and " << values.value_and_origin(setting("board.clock_mhz"))
-            << " would simulate about " << std::fixed << std::setprecision(0) << total << " s, more than the "
-            << kBudgetSeconds
-            << " s SystemC's 64-bit femtosecond time allows: use fewer objects or frames, or a larger m";
-    throw InputError(message.str());
+std::string frames_origin(const std::string& trace, const SettingValues& values) {
+    return !trace.empty() ? "the frames of --trace " + excerpt(trace) : values.origin_text(setting("scene.frames"));
 }
-
-// The model keeps every block RAM word: six coordinate memories of m
-// copies each (2m ports from dual-port RAMs). A fixed bound keeps a large
-// scene and m from exhausting this machine's memory instead of failing
-// clearly, whatever the machine.
-void check_model_memory(const RunOptions& o, const SettingValues& values, uint64_t max_objects) {
-    const BoardConfig board = planned_board(values.settings(), max_objects);
-    constexpr uint64_t kMaxModelBytes = uint64_t{2} << 30;
-    const uint64_t bytes = board.block_ram_bytes(max_objects);
-    if (bytes <= kMaxModelBytes) return;
-    std::ostringstream message;
-    message << "the board model for " << objects_origin(o, values, max_objects) << " at "
-            << values.value_and_origin(setting("board.m")) << " needs "
-            << std::fixed << std::setprecision(1) << static_cast<double>(bytes) / (1 << 30)
-            << " GiB of block RAM words (6 coordinate memories x m copies); at most 2 GiB: use fewer objects or a "
-               "smaller m";
-    throw InputError(message.str());
-}
-
-}  // namespace
 
 void check_path_lengths(const RunOptions& o, const po::variables_map& vm) {
     const std::pair<const char*, const std::string*> paths[] = {
@@ -86,6 +44,59 @@ void check_path_lengths(const RunOptions& o, const po::variables_map& vm) {
         if (vm.count(flag) == 0 || path->size() < PATH_MAX) continue;
         throw InputError(std::string("--") + flag + ": expected a path of at most " + std::to_string(PATH_MAX - 1) +
                          " bytes, got '" + excerpt(*path) + "'");
+    }
+}
+
+// A --vcd-frames window that starts after the run's last frame would trace
+// nothing: refused, as an --inject for such a frame is.
+void check_trace_window(const std::pair<uint64_t, uint64_t>& window, std::optional<uint64_t> last,
+                        const std::string& source) {
+    if (window.first == 0 && window.second == UINT64_MAX) return;
+    if (!last || window.first > *last) {
+        throw InputError("--vcd-frames: " + std::to_string(window.first) + ":" + std::to_string(window.second) +
+                         (last ? " starts after the run's last frame " + std::to_string(*last)
+                               : std::string(" asks for frames of a run with none")) +
+                         " (" + excerpt(source) + ")");
+    }
+}
+
+// --vcd-frames A:B, frame numbers as the run numbers them.
+std::pair<uint64_t, uint64_t> vcd_window(const RunOptions& o, const po::variables_map& vm) {
+    if (vm.count("vcd-frames") == 0) return {0, UINT64_MAX};
+    if (vm.count("vcd") == 0) throw InputError("--vcd-frames: traces a window of frames into --vcd; give --vcd too");
+    const std::string& text = o.vcd_frames;
+    const std::size_t colon = text.find(':');
+    auto number = [&](const std::string& digits, uint64_t& value) {
+        if (digits.empty() || digits.size() > 19 || digits.find_first_not_of("0123456789") != std::string::npos) {
+            return false;
+        }
+        value = std::stoull(digits);
+        return true;
+    };
+    uint64_t first = 0, last = 0;
+    if (colon == std::string::npos || !number(text.substr(0, colon), first) || !number(text.substr(colon + 1), last) ||
+        first > last) {
+        throw InputError("--vcd-frames: expected A:B, frame numbers with A <= B, got '" + excerpt(text) + "'");
+    }
+    return {first, last};
+}
+
+void check_source_options(const RunOptions& o, const po::variables_map& vm) {
+    if (vm.count("trace") == vm.count("scene")) throw InputError("give exactly one of --trace FILE or --scene spheres");
+    if (vm.count("trace")) {
+        if (o.trace.empty()) throw InputError("--trace: expected a file path, got ''");
+    } else if (o.scene != "spheres") {
+        throw InputError("--scene: expected 'spheres', got '" + excerpt(o.scene) + "'");
+    }
+}
+
+// A trace brings its own objects and frames: scene.* settings go with --scene only.
+void check_scene_settings(const po::variables_map& vm, const SettingValues& values) {
+    if (vm.count("trace") == 0) return;
+    for (const Setting* s : values.effective()) {
+        if (s->section() == "scene" && !values.is_default(*s)) {
+            throw InputError(values.where(*s) + " goes with --scene, not --trace");
+        }
     }
 }
 
@@ -154,13 +165,13 @@ void check_ssram(const RunOptions& o, const SettingValues& values, uint64_t max_
         throw InputError(values.where(setting("device.ssram_words")) + ": " + std::to_string(settings.device.ssram_words) +
                          " words a bank in " + std::to_string(settings.device.ssram_banks) + " SSRAM banks hold " +
                          std::to_string(plan.ssram_capacity) + " boxes, too few for " +
-                         objects_origin(o, values, max_objects) + " (" + memory +
+                         objects_origin(o.trace, values, max_objects) + " (" + memory +
                          "): use fewer objects; --ignore-capacity runs it anyway");
     }
     const uint64_t tiles = (max_objects + plan.tiles.boxes - 1) / plan.tiles.boxes;
     if (tiles > SweepSchedule::kMaxTiles) {
         throw InputError(values.where(setting("board.tile_boxes")) + ": tiles of " + std::to_string(plan.tiles.boxes) +
-                         " boxes make " + std::to_string(tiles) + " tiles of " + objects_origin(o, values, max_objects) +
+                         " boxes make " + std::to_string(tiles) + " tiles of " + objects_origin(o.trace, values, max_objects) +
                          "; expected at most " + std::to_string(SweepSchedule::kMaxTiles) + " tiles: give larger tiles");
     }
 }
@@ -178,7 +189,7 @@ void check_ssram(const RunOptions& o, const SettingValues& values, uint64_t max_
     board.m = settings.board.m;
     throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(settings.device.block_rams) +
                      " block RAMs are too few for the SSRAM tile buffers of " +
-                     values.value_and_origin(setting("board.m")) + " at " + objects_origin(o, values, max_objects) +
+                     values.value_and_origin(setting("board.m")) + " at " + objects_origin(o.trace, values, max_objects) +
                      " in tiles of " + std::to_string(plan.tiles.boxes) + " boxes: they need 6 x (2m+2) x ceil(T/512) = " +
                      std::to_string(board.block_rams(max_objects)) +
                      (largest > 0 ? " (largest m that fits: " + std::to_string(largest)
@@ -192,7 +203,7 @@ void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_
     const MemoryPlan plan = plan_memory(settings, max_objects);
     const BoardConfig board = planned_board(settings, max_objects);
     const std::string m = values.value_and_origin(setting("board.m"));
-    const std::string at = m + " at " + objects_origin(o, values, max_objects);
+    const std::string at = m + " at " + objects_origin(o.trace, values, max_objects);
     const std::string explore = "; --ignore-capacity runs it anyway";
     // The coordinate memories alone: a check that needs no synthesis family.
     const uint32_t block_rams = settings.device.block_rams;
@@ -224,11 +235,11 @@ void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_
 
 }  // namespace
 
-void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count) {
+void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count,
+                      RunBudgets& budgets) {
     const MemoryPlan plan = plan_memory(values.settings(), max_objects);
     if (plan.ssram) check_ssram(o, values, max_objects, plan);
-    check_model_memory(o, values, max_objects);
-    check_simulated_time(o, values, max_objects, frame_count);
+    budgets.check_scene(max_objects, frame_count);
     check_device_fits(o, values, max_objects);
 }
 

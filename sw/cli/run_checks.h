@@ -1,6 +1,6 @@
 // The checks `cdvp run` makes before any work: board settings against each
-// other, the scene against the board's block RAMs, this machine's memory and
-// SystemC's time, and the --inject specs against the driver and the frames.
+// other, the scene against the board's block RAMs and the run's budgets
+// (sw/cli/run_budgets.h), and the --inject specs against the driver and the frames.
 // Every message names where each value came from: a flag, its default, the
 // preset's or config file's key, a -c, or the trace.
 #pragma once
@@ -9,12 +9,14 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <boost/program_options.hpp>
 
 #include "models/common/fault_plan.h"
 #include "platform/setting_values.h"
+#include "sw/cli/run_budgets.h"
 #include "sw/cli/run_options.h"
 #include "sw/driver/board_driver.h"
 
@@ -23,6 +25,20 @@ namespace cdvp {
 // A path longer than the system's PATH_MAX can name no file; refused quoting
 // its start, so that no later message repeats it whole. Throws InputError.
 void check_path_lengths(const RunOptions& o, const boost::program_options::variables_map& vm);
+
+// Exactly one of --trace FILE (a path) and --scene spheres. Throws InputError.
+void check_source_options(const RunOptions& o, const boost::program_options::variables_map& vm);
+// A trace brings its own objects and frames: scene.* settings go with --scene
+// only. Throws InputError.
+void check_scene_settings(const boost::program_options::variables_map& vm, const SettingValues& values);
+
+// --vcd-frames A:B, frame numbers as the run numbers them (0 to 2^64-1
+// without it); it needs --vcd. Throws InputError.
+std::pair<uint64_t, uint64_t> vcd_window(const RunOptions& o, const boost::program_options::variables_map& vm);
+// A window that starts after the run's last frame (nothing: no frames) would
+// trace nothing: refused, as an --inject for such a frame is. Throws InputError.
+void check_trace_window(const std::pair<uint64_t, uint64_t>& window, std::optional<uint64_t> last,
+                        const std::string& source);
 
 // The --inject specs; a fault the driver's mode can never meet is refused
 // rather than silently never injected. Throws InputError.
@@ -36,11 +52,19 @@ std::vector<FaultSpec> fault_specs(const std::vector<std::string>& texts, const 
 void check_inject_frames(const std::vector<FaultSpec>& specs, std::optional<uint64_t> last_frame,
                          const std::function<bool(uint64_t)>& has_frame, const std::string& frames_origin);
 
-// The scene must fit this machine's memory, SystemC's time and, unless
-// run.ignore_capacity, the device: its block RAMs (device.block_rams, 0:
-// unbounded) and, with a device family, the LUTs and flip-flops the
+// The scene must fit its memory (block RAM or SSRAM tiles), the run's
+// budgets (memory, pairs and simulated time: RunBudgets::check_scene) and,
+// unless run.ignore_capacity, the device: its block RAMs (device.block_rams,
+// 0: unbounded) and, with a device family, the LUTs and flip-flops the
 // synthesis-backed resource model gives the board. Throws InputError naming
 // the resource and the largest m that fits.
-void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count);
+void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count,
+                      RunBudgets& budgets);
+
+// Where a run's counts came from, inside a sentence: "500 objects (the
+// default of --objects)", "20 objects (the largest frame of --trace t.csv)";
+// "the frames of --trace t.csv", "--frames". trace: empty for a generated scene.
+std::string objects_origin(const std::string& trace, const SettingValues& values, uint64_t max_objects);
+std::string frames_origin(const std::string& trace, const SettingValues& values);
 
 }  // namespace cdvp

@@ -84,61 +84,9 @@ void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out
     if (gtkw) out.gtkw = &out.files.file(*gtkw);
 }
 
-// A --vcd-frames window that starts after the run's last frame would trace
-// nothing: refused, as an --inject for such a frame is.
-void check_trace_window(const std::pair<uint64_t, uint64_t>& window, std::optional<uint64_t> last,
-                        const std::string& source) {
-    if (window.first == 0 && window.second == UINT64_MAX) return;
-    if (!last || window.first > *last) {
-        throw InputError("--vcd-frames: " + std::to_string(window.first) + ":" + std::to_string(window.second) +
-                         (last ? " starts after the run's last frame " + std::to_string(*last)
-                               : std::string(" asks for frames of a run with none")) +
-                         " (" + excerpt(source) + ")");
-    }
-}
-
-// --vcd-frames A:B, frame numbers as the run numbers them.
-std::pair<uint64_t, uint64_t> vcd_window(const RunOptions& o, const po::variables_map& vm) {
-    if (vm.count("vcd-frames") == 0) return {0, UINT64_MAX};
-    if (vm.count("vcd") == 0) throw InputError("--vcd-frames: traces a window of frames into --vcd; give --vcd too");
-    const std::string& text = o.vcd_frames;
-    const std::size_t colon = text.find(':');
-    auto number = [&](const std::string& digits, uint64_t& value) {
-        if (digits.empty() || digits.size() > 19 || digits.find_first_not_of("0123456789") != std::string::npos) {
-            return false;
-        }
-        value = std::stoull(digits);
-        return true;
-    };
-    uint64_t first = 0, last = 0;
-    if (colon == std::string::npos || !number(text.substr(0, colon), first) || !number(text.substr(colon + 1), last) ||
-        first > last) {
-        throw InputError("--vcd-frames: expected A:B, frame numbers with A <= B, got '" + excerpt(text) + "'");
-    }
-    return {first, last};
-}
-
-void check_source_options(const RunOptions& o, const po::variables_map& vm) {
-    if (vm.count("trace") == vm.count("scene")) throw InputError("give exactly one of --trace FILE or --scene spheres");
-    if (vm.count("trace")) {
-        if (o.trace.empty()) throw InputError("--trace: expected a file path, got ''");
-    } else if (o.scene != "spheres") {
-        throw InputError("--scene: expected 'spheres', got '" + excerpt(o.scene) + "'");
-    }
-}
-
-// A trace brings its own objects and frames: scene.* settings go with --scene only.
-void check_scene_settings(const po::variables_map& vm, const SettingValues& values) {
-    if (vm.count("trace") == 0) return;
-    for (const Setting* s : values.effective()) {
-        if (s->section() == "scene" && !values.is_default(*s)) {
-            throw InputError(values.where(*s) + " goes with --scene, not --trace");
-        }
-    }
-}
-
-std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm, const Settings& settings) {
-    if (vm.count("trace")) return trace_source(o.trace);
+std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm, const Settings& settings,
+                                         const RunBudgets& budgets) {
+    if (vm.count("trace")) return trace_source(o.trace, budgets.trace_limits());
     BouncingSpheresConfig spheres;
     spheres.objects = static_cast<std::size_t>(settings.scene.objects);
     spheres.seed = settings.scene.seed;
@@ -228,8 +176,31 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     return setup;
 }
 
+// What the budgets see of the run (its board is planned for each scene).
+RunShape run_shape(const po::variables_map& vm, const Setup& setup) {
+    RunShape shape;
+    shape.trace = vm.count("trace") != 0;
+    shape.clocked = setup.platform.fidelity == Fidelity::kCycle;
+    shape.pairs_out = vm.count("pairs-out") != 0;
+    shape.baselines = setup.baselines.names();
+    shape.repeat = shape.baselines.empty() ? 1 : setup.values.settings().run.repeat;
+    shape.board = setup.platform.board;
+    return shape;
+}
+
+// A stage on the host (the float32 reference, a baseline) whose pairs outgrow
+// the budget is refused as the board's read-back is.
+template <typename Stage>
+auto within_budget(const RunBudgets& budgets, uint64_t frame, Stage&& stage) {
+    try {
+        return stage();
+    } catch (const PairBudgetExceeded& e) {
+        throw InputError(budgets.pair_budget_refusal(frame, e.found()));
+    }
+}
+
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
-             const std::vector<std::string>& command_line) {
+             const std::vector<std::string>& command_line, const RunBudgets& budgets) {
     RunConfig run;
     run.capacity = static_cast<uint32_t>(source.max_objects());
     const MemoryPlan memory = plan_memory(setup.values.settings(), run.capacity);
@@ -249,6 +220,8 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.baseline_names = setup.baselines.names();
     run.baseline_runs = setup.values.settings().run.repeat;
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
+    run.budgets = {budgets.memory_bytes(), budgets.pair_budget().max_pairs(), budgets.footprint().before_pairs(),
+                   budgets.footprint().per_pair};
     VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
     run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
     if (has_device_family(setup.values.settings())) run.device_fit = fit_on_device(setup.values.settings(), run.capacity);
@@ -263,7 +236,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         report->begin(run);
     }
     RunTotals totals(setup.values.settings().run.warmup);
-    FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair);
+    FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair, budgets.pair_budget());
 
     // The later runs of the baselines (--repeat) count as frames too.
     const std::size_t baseline_runs = setup.baselines.empty() ? 1 : setup.values.settings().run.repeat;
@@ -280,11 +253,16 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         const double sim_wall_ns =
             std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - sim_start).count();
         if (frame_result == nullptr) {
-            std::cerr << "cdvp run: frame " << frame->number << ": " << printable(fault.message) << '\n';
+            std::cerr << "cdvp run: "
+                      << (fault.kind == FrameFault::Kind::kPairBudget
+                              ? budgets.pair_budget_refusal(frame->number, fault.pairs_found)
+                              : "frame " + std::to_string(frame->number) + ": " + printable(fault.message))
+                      << '\n';
             return fault.kind == FrameFault::Kind::kDevice ? kExitDeviceFault : kExitBadInput;
         }
         const FrameResult& result = *frame_result;
-        const FormatReference::Check check = reference.check(boxes, result.pairs, result.phases);
+        const FormatReference::Check check =
+            within_budget(budgets, frame->number, [&] { return reference.check(boxes, result.pairs, result.phases); });
         if (check.missing) {
             std::cerr << "cdvp run: frame " << frame->number << ": "
                       << lost_pair_message(run.config.format, *frame, *check.missing) << '\n';
@@ -295,8 +273,9 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
                          run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_ns, check.extra};
         stats.load_wait_slots = load_wait_slots(run, boxes.size());
         if (!setup.baselines.empty()) {
-            stats.baselines =
-                setup.baselines.time_frame(boxes, sorted(reference.kept(check, result.pairs)), frame->number);
+            stats.baselines = within_budget(budgets, frame->number, [&] {
+                return setup.baselines.time_frame(boxes, sorted(reference.kept(check, result.pairs)), frame->number);
+            });
         }
         if (report) report->frame(stats);
         totals.add(stats);
@@ -350,22 +329,26 @@ int run_checked(int argc, char** argv) {
         check_source_options(o, vm);
         Setup setup = make_setup(o, vm);
         check_scene_settings(vm, setup.values);
+        RunBudgets budgets(setup.values, setup.platform, run_shape(vm, setup), vm.count("trace") ? o.trace : "");
         // A generated scene is checked before it is generated (millions of
         // spheres take a while to place), a trace once it is read.
         const SceneSettings& scene = setup.values.settings().scene;
         if (vm.count("scene")) {
-            check_scene_fits(o, setup.values, scene.objects, scene.frames);
+            check_scene_fits(o, setup.values, scene.objects, scene.frames, budgets);
             const std::optional<uint64_t> last =
                 scene.frames > 0 ? std::optional<uint64_t>(scene.frames - 1) : std::nullopt;
             check_inject_frames(setup.platform.faults, last, [](uint64_t) { return true; },
                                 "--frames " + std::to_string(scene.frames));
         }
-        std::unique_ptr<FrameSource> source = open_source(o, vm, setup.values.settings());
-        check_scene_fits(o, setup.values, source->max_objects(), source->frame_count());
+        std::unique_ptr<FrameSource> source = open_source(o, vm, setup.values.settings(), budgets);
+        check_scene_fits(o, setup.values, source->max_objects(), source->frame_count(), budgets);
         check_inject_frames(setup.platform.faults, source->last_frame(),
                             [&source](uint64_t n) { return source->has_frame(n); }, source->describe());
         check_trace_window(setup.trace_window, source->last_frame(), source->describe());
-        return simulate(o, *source, setup, out, command_line(argc, argv));
+        // Every stage that collects a frame's pairs holds the same budget.
+        setup.platform.pair_budget = budgets.pair_budget();
+        setup.baselines.set_pair_budget(budgets.pair_budget());
+        return simulate(o, *source, setup, out, command_line(argc, argv), budgets);
     } catch (po::error_with_option_name& e) {
         // boost quotes an unknown option as typed: keep a huge one short.
         const std::string name = e.get_option_name();

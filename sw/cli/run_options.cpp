@@ -11,10 +11,16 @@ namespace cdvp {
 
 namespace {
 
-// The dedicated flags of the settings of 'sections', in table order.
-void add_setting_flags(po::options_description& group, const std::vector<std::string>& sections, RunOptions& o) {
+// The run's budgets (run.max_*) have a group of their own.
+bool is_budget(const Setting& s) { return s.name.rfind("run.max_", 0) == 0; }
+
+// The dedicated flags of the settings of 'sections' (budgets: only those, or
+// none of them), in table order.
+void add_setting_flags(po::options_description& group, const std::vector<std::string>& sections, RunOptions& o,
+                       bool budgets = false) {
     for (const Setting& s : settings_table()) {
         if (s.flag.empty() || std::find(sections.begin(), sections.end(), s.section()) == sections.end()) continue;
+        if (is_budget(s) != budgets) continue;
         group.add_options()(s.flag.c_str(), new SettingFlag(s, &o.flags), s.help.c_str());
     }
 }
@@ -47,6 +53,8 @@ po::options_description run_options(RunOptions& o) {
         ("inject", po::value(&o.inject)->value_name("KIND@frame=N[,n=K]"),
          "inject a bus or board fault into frame N (repeatable): target-abort, master-abort, retry, disconnect, "
          "lost-irq, dma-hang, board-error (docs/faults.md)");
+    po::options_description budgets("Budgets (checked before the work, and the pairs as they are found; docs/numerics.md)");
+    add_setting_flags(budgets, {"run"}, o, true);
     po::options_description output("Output (written only if the whole run succeeds)");
     output.add_options()
         ("pairs-out", po::value(&o.pairs_out)->value_name("FILE"), "overlapping pairs CSV (frame,a,b)")
@@ -65,7 +73,7 @@ po::options_description run_options(RunOptions& o) {
         "Settings come in layers, each over the last: defaults < --board preset < --config FILE\n"
         "< -c NAME=VALUE < the dedicated flags below.\n"
         "Options are spelt in full (no abbreviations); numbers show their range and default");
-    all.add(input).add(board).add(settings).add(host).add(output);
+    all.add(input).add(board).add(settings).add(host).add(budgets).add(output);
     return all;
 }
 

@@ -113,6 +113,11 @@ nlohmann::json config_json(const RunConfig& run) {
         config["settings"] = settings_json(*run.settings);
     }
     if (run.device_fit) config["resources"] = resources_json(*run.device_fit, c.format);
+    config["budgets"] = {{"memory_bytes", run.budgets.memory_bytes},
+                         {"pairs_per_frame", run.budgets.pairs},
+                         {"estimate_before_pairs_bytes", run.budgets.estimate_bytes},
+                         {"estimate_bytes_per_pair", run.budgets.bytes_per_pair},
+                         {"simulated_time_limit_s", ns_from_fs(kSimulatedTimeLimit) * 1e-9}};
     return config;
 }
 

@@ -60,6 +60,14 @@ struct RunConfig {
     const SettingValues* settings = nullptr;  // every setting in effect and where it came from
     std::optional<DeviceFit> device_fit;      // with a device family: the board's resources on it
     std::vector<std::string> command_line;
+    // The budgets the run is held to, and its memory estimate before any
+    // pair and for each pair of a frame (sw/cli/run_budgets.h).
+    struct Budgets {
+        uint64_t memory_bytes = 0;
+        uint64_t pairs = 0;
+        uint64_t estimate_bytes = 0;
+        uint64_t bytes_per_pair = 0;
+    } budgets;
 };
 
 // The memory that serves the boxes: sets run.ssram, and the tiles and load

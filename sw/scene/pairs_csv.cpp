@@ -29,13 +29,20 @@ void write_pairs_header(std::ostream& out) {
     out << kPairsHeader << '\n';
 }
 
+// In chunks, so that the text of a frame's pairs never sits in memory whole.
 void write_frame_pairs(std::ostream& out, uint64_t frame, const std::vector<IdPair>& pairs) {
+    constexpr std::size_t kChunkBytes = 1 << 16;
     std::string text;
+    text.reserve(kChunkBytes + 72);
     char buf[72];
     for (const IdPair& p : pairs) {
         std::snprintf(buf, sizeof buf, "%" PRIu64 ",%" PRIu64 ",%" PRIu64 "\n", frame,
                       p.a, p.b);
         text += buf;
+        if (text.size() >= kChunkBytes) {
+            out << text;
+            text.clear();
+        }
     }
     out << text;
 }

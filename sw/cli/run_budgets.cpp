@@ -1,0 +1,164 @@
+#include "sw/cli/run_budgets.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "models/common/user_text.h"
+#include "models/control_registers/control_registers.h"
+#include "platform/memory_plan.h"
+#include "sw/cli/run_checks.h"
+#include "sw/driver/frame_time.h"
+
+namespace cdvp {
+
+namespace {
+
+const Setting& setting(const char* name) { return *find_setting(name); }
+
+// The largest pair budget: more than a frame of the address map's boxes can hold.
+constexpr uint64_t kMaxPairBudget = uint64_t{1} << 43;
+
+std::string count_text(uint64_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+RunBudgets::RunBudgets(const SettingValues& values, const PlatformConfig& platform, RunShape shape,
+                       std::string trace, MachineMemory machine)
+    : values_(values), platform_(platform), shape_(std::move(shape)), trace_(std::move(trace)), machine_(machine) {
+    const Setting& max_memory = setting("run.max_memory");
+    const uint64_t mib = values_.settings().run.max_memory_mib;
+    const uint64_t least = machine_.least();
+    if (mib == 0) {
+        memory_bytes_ = least / 2;
+        memory_origin_ = (values_.is_default(max_memory) ? values_.origin_text(max_memory)
+                                                         : values_.value_and_origin(max_memory)) +
+                         ": half of " + machine_.describe_least();
+        return;
+    }
+    memory_bytes_ = mib << 20;
+    memory_origin_ = values_.value_and_origin(max_memory);
+    if (least != 0 && memory_bytes_ > least) {
+        throw InputError(values_.where(max_memory) + ": a memory budget of " + size_text(memory_bytes_) +
+                         " is more than " + machine_.describe_least() + "; expected at most " +
+                         std::to_string(least >> 20) + " MiB (0: half of it)");
+    }
+}
+
+TraceLimits RunBudgets::trace_limits() const {
+    const uint64_t program = program_bytes(shape_);
+    const uint64_t room = memory_bytes_ > program ? memory_bytes_ - program : 0;
+    const uint64_t boxes = room / bytes_per_box(shape_);
+    if (boxes >= address_map::kMaxObjects) return TraceLimits{address_map::kMaxObjects, "the board's address map"};
+    return TraceLimits{static_cast<std::size_t>(boxes), "what the memory budget of " + size_text(memory_bytes_) + " (" +
+                                                            memory_origin_ + ") holds at " +
+                                                            std::to_string(bytes_per_box(shape_)) + " bytes a box"};
+}
+
+uint64_t RunBudgets::max_trace_frames() const {
+    const uint64_t program = program_bytes(shape_);
+    return (memory_bytes_ > program ? memory_bytes_ - program : 0) / bytes_per_frame(shape_);
+}
+
+uint64_t RunBudgets::max_trace_bytes() const { return values_.settings().run.max_trace_mib << 20; }
+
+std::string RunBudgets::trace_size_origin() const {
+    return values_.value_and_origin(setting("run.max_trace_size"));
+}
+
+std::string RunBudgets::objects_text(uint64_t max_objects) const {
+    return objects_origin(trace_, values_, max_objects);
+}
+
+std::string RunBudgets::frames_text(uint64_t frames) const {
+    return count_text(frames, "frame", "frames") + " (" + frames_origin(trace_, values_) + ")";
+}
+
+std::string RunBudgets::pairs_origin() const {
+    const Setting& max_pairs = setting("run.max_pairs");
+    if (values_.settings().run.max_pairs != 0) return values_.value_and_origin(max_pairs);
+    return (values_.is_default(max_pairs) ? values_.origin_text(max_pairs) : values_.value_and_origin(max_pairs)) +
+           ": what the memory budget of " + size_text(memory_bytes_) + " leaves, at " +
+           std::to_string(footprint_.per_pair) + " bytes a pair";
+}
+
+void RunBudgets::check_scene(uint64_t max_objects, uint64_t frames) {
+    shape_.board = planned_board(values_.settings(), max_objects);
+    check_memory(max_objects, frames);
+    check_time(max_objects, frames);
+}
+
+void RunBudgets::check_memory(uint64_t max_objects, uint64_t frames) {
+    footprint_ = estimate_footprint(shape_, max_objects, frames);
+    const Footprint& f = footprint_;
+    const std::string budget = "the memory budget of " + size_text(memory_bytes_) + " (" + memory_origin_ + ")";
+    if (f.before_pairs() > memory_bytes_) {
+        const std::string model = shape_.clocked ? ", the board model's block RAM words at " +
+                                                       values_.value_and_origin(setting("board.m")) + " " +
+                                                       size_text(f.model)
+                                                 : "";
+        throw InputError(values_.where(setting("run.max_memory")) + ": " + budget + " is too little for " +
+                         objects_text(max_objects) + " in " + frames_text(frames) + ": they need an estimated " +
+                         size_text(f.before_pairs()) + " before any pair (the boxes " + size_text(f.boxes) + model +
+                         ", the frames " + size_text(f.frames) + ", the program " + size_text(f.program) +
+                         "); use fewer objects or frames, fewer baselines" + (shape_.clocked ? ", a smaller m" : "") +
+                         ", or a larger --max-memory");
+    }
+    const uint64_t asked = values_.settings().run.max_pairs;
+    if (asked == 0) {
+        pairs_ = std::min((memory_bytes_ - f.before_pairs()) / f.per_pair, kMaxPairBudget);
+        return;
+    }
+    pairs_ = asked;
+    if (f.with_pairs(asked) > memory_bytes_) {
+        throw InputError(values_.where(setting("run.max_pairs")) + ": " + std::to_string(asked) +
+                         " pairs a frame at " + std::to_string(f.per_pair) + " bytes a pair need an estimated " +
+                         size_text(f.with_pairs(asked) - f.before_pairs()) + ", with the " +
+                         size_text(f.before_pairs()) + " the rest of the run needs for " + objects_text(max_objects) +
+                         " more than " + budget + ": give a smaller --max-pairs (0: what the budget leaves) or a "
+                         "larger --max-memory");
+    }
+}
+
+// Each frame at most as long as the driver's bounds allow with the frame's
+// pairs at most the pair budget (and no more than its boxes can make); each
+// injected fault may stretch a wait to its whole timeout; and the last wait's
+// deadline may lie a whole timeout past the last frame.
+void RunBudgets::check_time(uint64_t max_objects, uint64_t frames) const {
+    const BoardConfig& board = shape_.board;
+    DriverConfig driver = platform_.driver;
+    driver.tiles = board.tiles;
+    const IdealBusTiming ideal;
+    const BusTiming& bus = platform_.bus ? *platform_.bus : ideal;
+    const FrameTime time(driver, bus, fs_from_ns(1000.0 / board.clock_mhz), board.m, board.collector.buffer_depth,
+                         platform_.quantum_ns);
+    const auto n = static_cast<uint32_t>(max_objects);
+    const uint64_t most_pairs = max_objects < 2 ? 0 : max_objects * (max_objects - 1) / 2;
+    const uint64_t pairs = std::min(pairs_, most_pairs);
+    const double frame_ns = time.frame_bound_ns(n, pairs);
+    const double timeout_ns = time.longest_timeout_ns(n);
+    double faults = 0;
+    for (const FaultSpec& spec : platform_.faults) faults += static_cast<double>(std::min<uint64_t>(spec.count, time.waits(pairs)));
+    const double total_ns = static_cast<double>(frames) * frame_ns + (faults + 1) * timeout_ns;
+    const double limit_ns = ns_from_fs(kSimulatedTimeLimit);
+    if (total_ns <= limit_ns) return;
+    const bool pairs_dominate = frame_ns > 2 * time.frame_bound_ns(n, 0);
+    throw InputError("a run of " + frames_text(frames) + " of up to " + objects_text(max_objects) + " at " +
+                     values_.value_and_origin(setting("board.m")) + " and " +
+                     values_.value_and_origin(setting("board.clock_mhz")) + " could take up to " +
+                     simulated_seconds(total_ns) + " of simulated time (up to " + simulated_seconds(frame_ns) +
+                     " a frame of up to " + std::to_string(pairs) + " pairs, and " + simulated_seconds(timeout_ns) +
+                     " for a wait's timeout), past the limit of " + simulated_seconds(limit_ns) +
+                     " (2^63 fs, half SystemC's 64-bit femtosecond clock): use fewer objects or frames, or a larger m" +
+                     (pairs_dominate ? ", or a smaller --max-pairs (" + pairs_origin() + ")" : ""));
+}
+
+std::string RunBudgets::pair_budget_refusal(uint64_t frame, uint64_t found) const {
+    return "frame " + std::to_string(frame) + ": " + std::to_string(found) + " pairs found, more than the pair budget of " +
+           std::to_string(pairs_) + " (" + pairs_origin() +
+           "); expected at most that many pairs a frame: give a larger --max-pairs or --max-memory, or a scene "
+           "whose boxes overlap less";
+}
+
+}  // namespace cdvp
