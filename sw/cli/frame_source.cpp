@@ -1,11 +1,6 @@
 #include "sw/cli/frame_source.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstdlib>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +9,7 @@
 
 #include "models/control_registers/control_registers.h"
 #include "sw/scene/csv_reader.h"
+#include "sw/scene/input_spool.h"
 #include "sw/scene/trace_csv.h"
 
 namespace cdvp {
@@ -39,71 +35,29 @@ uint64_t frame_digest(const Frame& frame) {
     return hash;
 }
 
-// A pipe's bytes (a FIFO, /dev/stdin, a process substitution) copied to an
-// unlinked temporary file in $TMPDIR, so that the trace can be read twice
-// like a file without its frames in memory. Unlinked at once: nothing is left
-// behind, whatever ends the process. Throws InputError.
-class Spool {
-public:
-    explicit Spool(const std::string& path) {
-        const char* tmp = std::getenv("TMPDIR");
-        const std::string directory = tmp != nullptr && tmp[0] != '\0' ? tmp : "/tmp";
-        fd_ = open(directory.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
-        if (fd_ < 0) {  // a file system without O_TMPFILE
-            std::string name = directory + "/cdvp-trace.XXXXXX";
-            fd_ = mkstemp(name.data());
-            if (fd_ >= 0) unlink(name.c_str());
-        }
-        if (fd_ < 0) fail(path, "cannot create a temporary file in " + directory, errno);
-        std::ifstream in = open_input(path);
-        std::vector<char> buffer(1 << 16);
-        while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0) {
-            const char* data = buffer.data();
-            for (std::size_t left = static_cast<std::size_t>(in.gcount()); left > 0;) {
-                const ssize_t put = write(fd_, data, left);
-                if (put < 0 && errno == EINTR) continue;
-                if (put < 0) fail(path, "cannot copy the pipe to a temporary file in " + directory, errno);
-                data += put;
-                left -= static_cast<std::size_t>(put);
-            }
-        }
-        if (in.bad()) fail(path, "cannot read", errno);
-    }
-    ~Spool() { close(fd_); }
-    Spool(const Spool&) = delete;
-    Spool& operator=(const Spool&) = delete;
-    // A path that opens the file anew, at its start.
-    std::string path() const { return "/proc/self/fd/" + std::to_string(fd_); }
-
-private:
-    [[noreturn]] void fail(const std::string& path, const std::string& what, int err) {
-        if (fd_ >= 0) close(fd_);
-        throw InputError(path + ": " + what + ": " + std::strerror(err));
-    }
-    int fd_ = -1;
-};
-
 // The trace is read twice: once up front, so that bad input fails before
 // anything is simulated or written and the frame count and the largest frame
 // are known; then frame by frame while the board runs, so memory holds one
 // frame, not the file. Each frame of the second reading must equal the
 // first's (by digest), or the run fails as bad input. A pipe cannot be read
-// twice: it is spooled to a temporary file first.
+// twice: the first reading copies it to a temporary file as it goes, and the
+// second reads the copy. Either way the first reading holds the input to the
+// same limits (sw/scene/input_spool.h), so a bad or endless one stops at its
+// first line or byte past them.
 class TraceSource : public FrameSource {
 public:
-    TraceSource(const std::string& path, const TraceLimits& limits) : path_(path) {
+    TraceSource(const std::string& path, const TraceLimits& limits, const InputLimits& input) : path_(path) {
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path, ec) && !std::filesystem::is_directory(path, ec) &&
             std::filesystem::exists(path, ec)) {
-            spool_.emplace(path);
-        }
-        readable_ = spool_ ? spool_->path() : path;
-        in_ = open_input(readable_);
-        TraceReader check(in_, path_, limits);
-        while (std::optional<Frame> frame = check.next_frame()) {
-            max_objects_ = std::max(max_objects_, frame->boxes.size());
-            digests_.push_back(frame_digest(*frame));
-            numbers_.push_back(frame->number);
+            spool_.emplace(path, input);
+            read_first(spool_->stream(), limits);
+            spool_->finish();
+            readable_ = spool_->path();
+        } else {
+            LimitedFile file(path, input);
+            read_first(file.stream(), limits);
+            readable_ = path;
         }
         rewind();
     }
@@ -144,12 +98,20 @@ public:
     std::string describe() const override { return "trace " + path_; }
 
 private:
+    void read_first(std::istream& in, const TraceLimits& limits) {
+        TraceReader check(in, path_, limits);
+        while (std::optional<Frame> frame = check.next_frame()) {
+            max_objects_ = std::max(max_objects_, frame->boxes.size());
+            digests_.push_back(frame_digest(*frame));
+            numbers_.push_back(frame->number);
+        }
+    }
     [[noreturn]] void changed(const std::string& how) const {
         throw InputError(path_ + ": the file changed while being read (" + how + "); expected it unchanged during the run");
     }
 
     std::string path_;
-    std::optional<Spool> spool_;  // a pipe's copy
+    std::optional<InputSpool> spool_;  // a pipe's copy
     std::string readable_;        // the file read: the path, or the pipe's copy
     std::ifstream in_;
     std::optional<TraceReader> reader_;
@@ -194,8 +156,9 @@ private:
 
 TraceLimits board_trace_limits() { return TraceLimits{address_map::kMaxObjects, "the board's address map"}; }
 
-std::unique_ptr<FrameSource> trace_source(const std::string& path, const TraceLimits& limits) {
-    return std::make_unique<TraceSource>(path, limits);
+std::unique_ptr<FrameSource> trace_source(const std::string& path, const TraceLimits& limits,
+                                          const InputLimits& input) {
+    return std::make_unique<TraceSource>(path, limits, input);
 }
 
 std::unique_ptr<FrameSource> spheres_source(const BouncingSpheresConfig& config, std::size_t frames) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sw/scene/input_spool.h"
 #include "sw/scene/scene.h"
 #include "sw/scene/trace_csv.h"
 #include "models/common/aabb.h"
@@ -40,10 +41,13 @@ TraceLimits board_trace_limits();
 
 // The frames of a trace file, all checked up front (bad input fails before
 // anything is simulated or written), then read again one frame at a time so
-// memory holds the largest frame, not the file. A frame with more boxes than
-// the board's address map holds fails as bad input naming its line. A pipe
-// is first copied to an unlinked temporary file, so it too is read twice.
-std::unique_ptr<FrameSource> trace_source(const std::string& path, const TraceLimits& limits = board_trace_limits());
+// memory holds the largest frame, not the file. A frame with more boxes, or
+// a trace with more frames, than `limits` allow fails as bad input naming its
+// line; so does a trace past `input`'s size or line limits, a file or a pipe
+// (which is copied to an unlinked temporary file as the first reading goes,
+// so it too is read twice).
+std::unique_ptr<FrameSource> trace_source(const std::string& path, const TraceLimits& limits = board_trace_limits(),
+                                          const InputLimits& input = {});
 
 // The paper's application: spheres bouncing off the walls and each other,
 // stepped on the broad phase's pairs (no frame is kept).

@@ -46,25 +46,28 @@ RunBudgets::RunBudgets(const SettingValues& values, const PlatformConfig& platfo
     }
 }
 
+// What the memory budget holds beyond the program, at `bytes` each.
 TraceLimits RunBudgets::trace_limits() const {
     const uint64_t program = program_bytes(shape_);
     const uint64_t room = memory_bytes_ > program ? memory_bytes_ - program : 0;
-    const uint64_t boxes = room / bytes_per_box(shape_);
-    if (boxes >= address_map::kMaxObjects) return TraceLimits{address_map::kMaxObjects, "the board's address map"};
-    return TraceLimits{static_cast<std::size_t>(boxes), "what the memory budget of " + size_text(memory_bytes_) + " (" +
-                                                            memory_origin_ + ") holds at " +
-                                                            std::to_string(bytes_per_box(shape_)) + " bytes a box"};
+    const auto held = [&](uint64_t bytes, const char* what) {
+        return "what the memory budget of " + size_text(memory_bytes_) + " (" + memory_origin_ + ") holds at " +
+               std::to_string(bytes) + " bytes " + what;
+    };
+    TraceLimits limits{address_map::kMaxObjects, "the board's address map"};
+    if (const uint64_t boxes = room / bytes_per_box(shape_); boxes < address_map::kMaxObjects) {
+        limits = TraceLimits{static_cast<std::size_t>(boxes), held(bytes_per_box(shape_), "a box")};
+    }
+    limits.max_frames = room / bytes_per_frame(shape_);
+    limits.frames_reason = held(bytes_per_frame(shape_), "a frame");
+    return limits;
 }
 
-uint64_t RunBudgets::max_trace_frames() const {
-    const uint64_t program = program_bytes(shape_);
-    return (memory_bytes_ > program ? memory_bytes_ - program : 0) / bytes_per_frame(shape_);
-}
-
-uint64_t RunBudgets::max_trace_bytes() const { return values_.settings().run.max_trace_mib << 20; }
-
-std::string RunBudgets::trace_size_origin() const {
-    return values_.value_and_origin(setting("run.max_trace_size"));
+InputLimits RunBudgets::input_limits() const {
+    InputLimits limits;
+    limits.max_bytes = values_.settings().run.max_trace_mib << 20;
+    limits.max_bytes_origin = values_.value_and_origin(setting("run.max_trace_size"));
+    return limits;
 }
 
 std::string RunBudgets::objects_text(uint64_t max_objects) const {

@@ -14,6 +14,7 @@
 #include "platform/virtual_board.h"
 #include "sw/cli/machine_memory.h"
 #include "sw/cli/run_footprint.h"
+#include "sw/scene/input_spool.h"
 #include "sw/scene/trace_csv.h"
 
 namespace cdvp {
@@ -36,10 +37,7 @@ public:
     // without the board model), the most frames it may have (each leaves a
     // number and a digest) and its largest size in bytes.
     TraceLimits trace_limits() const;
-    uint64_t max_trace_frames() const;
-    uint64_t max_trace_bytes() const;
-    // "-c run.max_trace_size=64 (...)": where the size limit came from, with its value.
-    std::string trace_size_origin() const;
+    InputLimits input_limits() const;
 
     // A scene of frames of up to max_objects boxes against the memory budget
     // (everything but the pairs, then the pair budget's pairs), and against

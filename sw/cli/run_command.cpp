@@ -86,7 +86,7 @@ void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out
 
 std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm, const Settings& settings,
                                          const RunBudgets& budgets) {
-    if (vm.count("trace")) return trace_source(o.trace, budgets.trace_limits());
+    if (vm.count("trace")) return trace_source(o.trace, budgets.trace_limits(), budgets.input_limits());
     BouncingSpheresConfig spheres;
     spheres.objects = static_cast<std::size_t>(settings.scene.objects);
     spheres.seed = settings.scene.seed;

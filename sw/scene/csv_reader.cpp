@@ -34,6 +34,11 @@ std::string_view trim(std::string_view s) {
 
 }  // namespace
 
+std::string line_too_long(std::size_t max_bytes) {
+    const std::string limit = std::to_string(max_bytes);
+    return "line longer than " + limit + " bytes; expected at most " + limit + " bytes a line, counting its line end";
+}
+
 std::string shorten_found(std::string_view text) { return excerpt(std::string(text)); }
 
 std::string quote_found(std::string_view text) {
@@ -80,9 +85,7 @@ bool CsvReader::read_line() {
             ++line_;
         }
         if (++bytes > kMaxLineBytes) {
-            fail("line longer than " + std::to_string(kMaxLineBytes) +
-                 " bytes; expected at most " + std::to_string(kMaxLineBytes) +
-                 " bytes a line, counting its line end");
+            fail(line_too_long(kMaxLineBytes));
         }
         if (c == '\n') {
             break;

@@ -22,6 +22,10 @@ namespace cdvp {
 // The longest line a CSV input may hold, counting its LF or CRLF.
 constexpr std::size_t kMaxLineBytes = 4096;
 
+// The refusal of a line past `max_bytes`, after "NAME:LINE: ": one text for
+// the reader and for an input read under limits (sw/scene/input_spool.h).
+std::string line_too_long(std::size_t max_bytes);
+
 // 'text' cut to ~40 characters and with control characters replaced, so an
 // error message stays one short line; quote_found adds single quotes.
 std::string shorten_found(std::string_view text);

@@ -106,6 +106,12 @@ std::optional<Frame> TraceReader::next_frame() {
     } else if (!read_row(row)) {
         return std::nullopt;
     }
+    if (frames_ == limits_.max_frames) {  // the row just read starts the frame beyond
+        const std::string limit = std::to_string(limits_.max_frames);
+        reader_.fail("frame " + std::to_string(row.frame) + " is one more than " + limit +
+                     " frames; expected at most " + limit + " frames (" + limits_.frames_reason + ")");
+    }
+    ++frames_;
     Frame frame;
     frame.number = row.frame;
     std::size_t first_line = reader_.line();

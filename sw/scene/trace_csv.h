@@ -22,8 +22,8 @@
 // did not write. min <= max on every axis (-0 and +0 are equal). See
 // docs/numerics.md for what the board then does with the doubles.
 //
-// A reader may limit the boxes of one frame (TraceLimits); the row that goes
-// beyond the limit fails, before the rest of the file is read.
+// A reader may limit the boxes of one frame and the frames (TraceLimits); the
+// row that goes beyond a limit fails, before the rest of the file is read.
 #pragma once
 
 #include <cstddef>
@@ -48,6 +48,9 @@ struct TraceLimits {
     std::size_t max_boxes_per_frame = std::numeric_limits<std::size_t>::max();
     // Why, for the error message: "... expected at most N boxes a frame (WHY)".
     std::string reason = "the limit";
+    // Most frames the trace may hold, and why.
+    uint64_t max_frames = std::numeric_limits<uint64_t>::max();
+    std::string frames_reason = "the limit";
 };
 
 // Reads a trace one frame at a time, so memory is bounded by the largest
@@ -74,6 +77,7 @@ private:
     CsvReader reader_;
     TraceLimits limits_;
     std::optional<Row> pending_;  // first row of the next frame, already read
+    uint64_t frames_ = 0;         // returned so far
 };
 
 // Parses a whole trace into memory; 'name' prefixes error messages.

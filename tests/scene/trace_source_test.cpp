@@ -123,5 +123,49 @@ TEST(TraceSource, FrameLimitIsTheBoardsAddressMap) {
     }
 }
 
+TEST(TraceSource, FramesPastTheLimitAreRefusedAtTheFirstRowBeyond) {
+    test::TempDir dir;
+    const std::string path = dir.file("t.csv");
+    test::spit(path, trace_text(3, 2));
+    TraceLimits limits = board_trace_limits();
+    limits.max_frames = 2;
+    limits.frames_reason = "the memory budget";
+    try {
+        trace_source(path, limits);
+        FAIL() << "no exception";
+    } catch (const InputError& e) {
+        EXPECT_EQ(path + ":6: frame 2 is one more than 2 frames; expected at most 2 frames (the memory budget)",
+                  std::string(e.what()));
+    }
+}
+
+// A trace of any kind is held to the size limit while it is first read.
+TEST(TraceSource, FilesAndPipesPastTheSizeLimitAreRefused) {
+    test::TempDir dir;
+    const std::string text = trace_text(3, 40);
+    InputLimits input;
+    input.max_bytes = text.size() - 1;
+    input.max_bytes_origin = "the test's";
+    const std::string file = dir.file("t.csv");
+    test::spit(file, text);
+    EXPECT_THROW(trace_source(file, board_trace_limits(), input), InputError);
+    const std::string fifo = dir.file("fifo");
+    ASSERT_EQ(0, mkfifo(fifo.c_str(), 0600));
+    std::thread writer([&] { test::spit(fifo, text); });
+    try {
+        trace_source(fifo, board_trace_limits(), input);
+        ADD_FAILURE() << "no exception";
+    } catch (const InputError& e) {
+        EXPECT_EQ(fifo + ": more than " + std::to_string(input.max_bytes) + " bytes; expected at most " +
+                      std::to_string(input.max_bytes) + " bytes (the test's)",
+                  std::string(e.what()));
+    }
+    writer.join();
+    input.max_bytes = text.size();
+    std::thread again([&] { test::spit(fifo, text); });
+    EXPECT_EQ(trace_source(fifo, board_trace_limits(), input)->frame_count(), 3u) << "at the limit it is read";
+    again.join();
+}
+
 }  // namespace
 }  // namespace cdvp
