@@ -35,14 +35,19 @@ RunBudgets::RunBudgets(const SettingValues& values, const PlatformConfig& platfo
         memory_origin_ = (values_.is_default(max_memory) ? values_.origin_text(max_memory)
                                                          : values_.value_and_origin(max_memory)) +
                          ": half of " + machine_.describe_least();
-        return;
+    } else {
+        memory_bytes_ = mib << 20;
+        memory_origin_ = values_.value_and_origin(max_memory);
+        if (least != 0 && memory_bytes_ > least) {
+            throw InputError(values_.where(max_memory) + ": a memory budget of " + size_text(memory_bytes_) +
+                             " is more than " + machine_.describe_least() + "; expected at most " +
+                             std::to_string(least >> 20) + " MiB (0: half of it)");
+        }
     }
-    memory_bytes_ = mib << 20;
-    memory_origin_ = values_.value_and_origin(max_memory);
-    if (least != 0 && memory_bytes_ > least) {
-        throw InputError(values_.where(max_memory) + ": a memory budget of " + size_text(memory_bytes_) +
-                         " is more than " + machine_.describe_least() + "; expected at most " +
-                         std::to_string(least >> 20) + " MiB (0: half of it)");
+    if (const uint64_t program = program_bytes(shape_); memory_bytes_ <= program) {
+        throw InputError(values_.where(max_memory) + ": the memory budget of " + size_text(memory_bytes_) + " (" +
+                         memory_origin_ + ") is too little for the program itself: it needs an estimated " +
+                         size_text(program) + " before any scene; give a larger --max-memory");
     }
 }
 

@@ -127,6 +127,10 @@ TEST_F(CliBudget, ASceneBeyondTheMemoryBudgetIsRefusedBeforeItIsGenerated) {
 TEST_F(CliBudget, ABudgetBeyondThisMachineAndPairsBeyondTheBudgetAreRefused) {
     expect_cheap_refusal(measure(with_outputs({"run", "--scene", "spheres", "--max-memory", "1073741824"})),
                          "cdvp run: --max-memory: a memory budget of 1073741824 MiB is more than ", {});
+    expect_cheap_refusal(measure(with_outputs({"run", "--trace", trace("small.csv"), "--max-memory", "10"})),
+                         "cdvp run: --max-memory: the memory budget of 10 MiB (--max-memory 10) is too little for the "
+                         "program itself: it needs an estimated ",
+                         {});
     const Measured m =
         measure(with_outputs({"run", "--scene", "spheres", "--max-memory", "100", "--max-pairs", "1000000000"}));
     expect_cheap_refusal(m, "cdvp run: --max-pairs: 1000000000 pairs a frame at ", {});
@@ -174,9 +178,9 @@ TEST_F(CliBudget, AFrameOrAFrameCountBeyondTheMemoryBudgetIsRefusedAsTheTraceIsR
     std::string text = kHeader;
     for (int f = 0; f < 100000; ++f) text += std::to_string(f) + ",0,0,0,0,1,1,1\n";
     write("long.csv", text);
-    const Measured many = measure(with_outputs({"run", "--trace", "long.csv", "--max-memory", "34"}));
+    const Measured many = measure(with_outputs({"run", "--trace", "long.csv", "--max-memory", "35"}));
     expect_refusal(many.result, "cdvp run: long.csv:");
-    EXPECT_NE(many.result.err.find(" frames (what the memory budget of 34 MiB (--max-memory 34) holds at "),
+    EXPECT_NE(many.result.err.find(" frames (what the memory budget of 35 MiB (--max-memory 35) holds at "),
               std::string::npos)
         << many.result.err;
     EXPECT_EQ(files(), (std::vector<std::string>{"long.csv", "wide.csv"}));
