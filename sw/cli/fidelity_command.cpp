@@ -216,19 +216,22 @@ int fidelity_levels(int argc, char** argv) {
             std::cerr << "\rcdvp fidelity: level " << k + 1 << " of " << kLevels.size() << " (" << kLevels[k].fidelity
                       << ", quantum " << kLevels[k].quantum_ns << " ns)   " << std::flush;
         }
-        ScratchFile report(".json"), pairs(".csv"), errors(".err");
+        ScratchFile report(".json"), pairs(".csv");
+        CapturedOutput errors("cdvp-level-stderr");
         std::vector<std::string> args{self, "run"};
         args.insert(args.end(), forwarded.begin(), forwarded.end());
         std::ostringstream quantum;
         quantum << kLevels[k].quantum_ns;
         args.insert(args.end(), {"--fidelity", kLevels[k].fidelity, "--quantum-ns", quantum.str(), "--report",
                                  report.path(), "--pairs-out", pairs.path(), "-q"});
-        const int wait_status = run_child(args, errors.path());
+        ChildStreams streams;
+        streams.err = errors.fd();
+        const int wait_status = run_child(args, streams);
         if (show_progress) std::cerr << '\r' << std::string(60, ' ') << '\r';
         if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
         if (WEXITSTATUS(wait_status) != 0) {
             // The level's own one-line error, under this command's name.
-            const std::string message = renamed_message(slurp(errors.path()), "cdvp fidelity");
+            const std::string message = renamed_message(errors.text(64 * 1024), "cdvp fidelity");
             std::cerr << (spool ? spool->restore_names(message) : message);
             return WEXITSTATUS(wait_status);
         }
@@ -248,10 +251,7 @@ int fidelity_levels(int argc, char** argv) {
         return kExitInternal;
     }
     if (!quiet) files.set_standard_output(table_text(results));
-    if (const std::optional<std::string> error = files.try_commit()) {
-        std::cerr << "cdvp fidelity: " << printable(*error) << '\n';
-        return kExitBadInput;
-    }
+    if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp fidelity", *failure);
     made.keep();
     return kExitDone;
 }

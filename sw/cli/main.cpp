@@ -37,8 +37,9 @@ constexpr const char* kUsage =
     "Run 'cdvp <command> --help' for a command's options; 'cdvp --version' prints the version.\n"
     "\n"
     "Exit status: 0 done; 1 internal failure (a cdvp bug); 2 bad input (file, flag, preset or\n"
-    "output path), with one line on stderr naming it; 3 the simulated system faulted;\n"
-    "128+N killed by signal N (temporary files removed).\n";
+    "output path), with one line on stderr naming it; 3 the simulated system faulted; 4 the\n"
+    "system failed a write (a full disk, an I/O error), with its own words; 128+N killed by\n"
+    "signal N (temporary files removed).\n";
 
 }  // namespace
 
