@@ -236,6 +236,10 @@ int fidelity_levels(int argc, char** argv) {
             return WEXITSTATUS(wait_status);
         }
         results.push_back(read_level(report.path(), pairs.path()));
+        if (results.back().frames == 0) {
+            throw InputError("the scene has no frames to time (--frames 0, or an empty trace); fidelity compares "
+                             "frames: give at least one");
+        }
     }
 
     made.create(out_dir);

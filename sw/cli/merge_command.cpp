@@ -98,8 +98,9 @@ Manifest shards_manifest(const std::vector<std::string>& shards) {
         std::optional<Manifest> m = read_manifest(manifest_path(dir));
         if (!m) throw InputError(excerpt(dir) + ": not a sweep directory (no sweep.json)");
         if (!manifests.empty()) {
-            if (const std::optional<std::string> other = difference(manifests[0], *m)) {
-                throw InputError(excerpt(dir) + ": a shard of another sweep than " + excerpt(shards[0]) + " (" + *other + ")");
+            if (const std::optional<SweepDifference> other = difference(manifests[0], *m)) {
+                throw InputError(excerpt(dir) + ": a shard of another sweep than " + excerpt(shards[0]) + " (" +
+                                 other->what + ")");
             }
             if (m->shard.count != manifests[0].shard.count) {
                 throw InputError(excerpt(dir) + ": shard " + m->shard.text() + " of a sweep cut in " +

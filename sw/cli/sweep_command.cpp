@@ -105,8 +105,11 @@ void remove_stale_temporaries(const std::string& dir) {
 void check_out_dir(const std::string& out, const std::optional<Manifest>& existing, const Manifest& wanted) {
     const std::string dir = excerpt(out);
     if (existing) {
-        if (const std::optional<std::string> other = difference(*existing, wanted)) {
-            throw InputError("--out: " + dir + " holds another sweep (" + *other +
+        if (const std::optional<SweepDifference> other = difference(*existing, wanted)) {
+            if (other->input_changed) {
+                throw InputError("--out: " + dir + ": " + other->what + ": restore it to resume, or give a new --out");
+            }
+            throw InputError("--out: " + dir + " holds another sweep (" + other->what +
                              "); give a new --out, or the same command to resume it");
         }
         if (existing->shard.text() != wanted.shard.text()) {

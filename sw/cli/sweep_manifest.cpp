@@ -184,27 +184,30 @@ std::optional<Manifest> read_manifest(const std::string& path) {
     return manifest;
 }
 
-std::optional<std::string> difference(const Manifest& existing, const Manifest& wanted) {
+std::optional<SweepDifference> difference(const Manifest& existing, const Manifest& wanted) {
+    const auto other = [](std::string what) { return std::optional<SweepDifference>({std::move(what), false}); };
     if (existing.cdvp_version != wanted.cdvp_version) {
-        return "a sweep of cdvp " + excerpt(existing.cdvp_version) + ", this is " + wanted.cdvp_version;
+        return other("a sweep of cdvp " + excerpt(existing.cdvp_version) + ", this is " + wanted.cdvp_version);
     }
-    if (existing.axes.size() != wanted.axes.size()) return std::string("other axes");
+    if (existing.axes.size() != wanted.axes.size()) return other("other axes");
     for (std::size_t a = 0; a < existing.axes.size(); ++a) {
         const Axis& e = existing.axes[a];
         const Axis& w = wanted.axes[a];
-        if (e.name != w.name || e.key != w.key || e.flag != w.flag) return std::string("other axes");
-        if (e.values != w.values) return "other values of " + excerpt(w.name);
+        if (e.name != w.name || e.key != w.key || e.flag != w.flag) return other("other axes");
+        if (e.values != w.values) return other("other values of " + excerpt(w.name));
     }
-    if (existing.run_options != wanted.run_options) return std::string("other options given to every point");
-    if (existing.inputs.size() != wanted.inputs.size()) return std::string("other input files");
+    if (existing.run_options != wanted.run_options) return other("other options given to every point");
+    if (existing.inputs.size() != wanted.inputs.size()) return other("other input files");
     for (std::size_t k = 0; k < existing.inputs.size(); ++k) {
         const SweepInput& e = existing.inputs[k];
         const SweepInput& w = wanted.inputs[k];
-        if (e.option != w.option || e.value != w.value) return std::string("other input files");
+        if (e.option != w.option || e.value != w.value) return other("other input files");
         if (e.sha256 != w.sha256) {
-            return w.option + " " + excerpt(w.value) + " changed since the sweep began (" + std::to_string(e.bytes) +
-                   " bytes, sha256 " + e.sha256.substr(0, 12) + "... then; " + std::to_string(w.bytes) +
-                   " bytes, sha256 " + w.sha256.substr(0, 12) + "... now)";
+            return SweepDifference{w.option + " " + excerpt(w.value) + " changed since the sweep began (" +
+                                       std::to_string(e.bytes) + " bytes, sha256 " + e.sha256.substr(0, 12) +
+                                       "... then; " + std::to_string(w.bytes) + " bytes, sha256 " +
+                                       w.sha256.substr(0, 12) + "... now)",
+                                   true};
         }
     }
     return std::nullopt;

@@ -45,9 +45,14 @@ constexpr const char* kManifestFormat = "cdvp sweep 2";
 // the file (and line and column, or the field) when it is not a manifest.
 std::optional<Manifest> read_manifest(const std::string& path);
 
-// What makes 'existing' another sweep than 'wanted' ("the values of m",
-// "the options given to every point", "--config cfg.json, changed since the
-// sweep began"), or nothing when they are one sweep; shards are not compared.
-std::optional<std::string> difference(const Manifest& existing, const Manifest& wanted);
+// What makes 'existing' another sweep than 'wanted' ("other values of m",
+// "other options given to every point"), or an input file changed since
+// ("--config cfg.json changed since the sweep began (sha256 ... then, ...
+// now)"), or nothing when they are one sweep; shards are not compared.
+struct SweepDifference {
+    std::string what;
+    bool input_changed = false;  // the same sweep, over a file that is not what it read
+};
+std::optional<SweepDifference> difference(const Manifest& existing, const Manifest& wanted);
 
 }  // namespace cdvp

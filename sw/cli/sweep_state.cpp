@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
@@ -116,6 +117,7 @@ std::vector<std::string> directory_contents(const std::string& dir) {
         const std::string name = entry.path().filename().string();
         if (name != DirectoryLock::kFileName) names.push_back(name);
     }
+    std::sort(names.begin(), names.end());
     return names;
 }
 

@@ -234,13 +234,14 @@ TEST_F(ManifestFile, RoundTripsAndTellsWhatMakesAnotherSweep) {
     Manifest other = manifest();
     other.inputs[0].sha256 = std::string(64, 'b');
     ASSERT_TRUE(difference(*read, other));
-    EXPECT_EQ(difference(*read, other)->find("--config c.json changed since the sweep began"), 0u);
+    EXPECT_EQ(difference(*read, other)->what.find("--config c.json changed since the sweep began"), 0u);
+    EXPECT_TRUE(difference(*read, other)->input_changed);
     other = manifest();
     other.axes[0].values = {"1", "3"};
-    EXPECT_EQ(*difference(*read, other), "other values of m");
+    EXPECT_EQ(difference(*read, other)->what, "other values of m");
     other = manifest();
     other.run_options = {"--frames=3"};
-    EXPECT_EQ(*difference(*read, other), "other options given to every point");
+    EXPECT_EQ(difference(*read, other)->what, "other options given to every point");
     EXPECT_FALSE(read_manifest(temp_.file("none.json")));
 }
 
