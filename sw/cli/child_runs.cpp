@@ -127,14 +127,17 @@ pid_t start_child(const std::vector<std::string>& args, const ChildStreams& stre
     argv.push_back(nullptr);
     const int null_in = streams.in < 0 ? open("/dev/null", O_RDONLY | O_CLOEXEC) : -1;
     const pid_t parent = getpid();
-    const pid_t pid = fork();
+    // vfork: the child borrows this process's memory until it execs, so
+    // starting a point costs the same however large the sweep's table has
+    // grown (fork would copy its page tables).
+    const pid_t pid = vfork();
     if (pid < 0) {
         const int error = errno;
         if (null_in >= 0) close(null_in);
         throw_os_error(args[0] + ": cannot start", error);
     }
     if (pid == 0) {
-        // Only async-signal-safe calls from here to exec.
+        // Only system calls on values computed before vfork from here to exec.
         prctl(PR_SET_PDEATHSIG, SIGTERM);
         if (getppid() != parent) _exit(127);  // the parent died before the line above
         const int in = streams.in >= 0 ? streams.in : null_in;
