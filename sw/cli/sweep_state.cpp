@@ -13,6 +13,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/cli/child_runs.h"
+#include "sw/cli/digest.h"
 #include "sw/cli/directory_lock.h"
 #include "sw/cli/sweep_csv.h"
 
@@ -68,11 +69,16 @@ public:
         if (*status != PointStatus::kOk && value(row, "reason").empty()) {
             return "field 'reason': empty; a " + value(row, "status") + " point gives its reason";
         }
-        std::optional<std::string> report;
+        std::optional<std::string> report;  // its digest
         if (*status == PointStatus::kOk) {
             const std::string path = report_path(dir_, point);
-            report = read_whole_file(path);
-            if (!report) return "the point's report " + excerpt(path) + " cannot be read: " + std::strerror(errno);
+            struct stat status_of {};
+            if (lstat(path.c_str(), &status_of) == 0 && !S_ISREG(status_of.st_mode)) {
+                return "the point's report " + excerpt(path) + " is not a regular file";
+            }
+            const std::optional<FileDigest> digest = digest_file(path);
+            if (!digest) return "the point's report " + excerpt(path) + " cannot be read: " + std::strerror(errno);
+            report = digest->sha256;
         }
         if (value(row, kChecksumColumn) != row_checksum(row, report ? &*report : nullptr)) {
             return std::string("field 'checksum': does not match the row") + (report ? " and its report" : "") +
@@ -127,6 +133,10 @@ TableRead read_table(const std::string& dir, const Grid& grid, const Shard& shar
     const std::string label = excerpt(path);
     TableRead result;
     if (!exists(path)) return result;
+    struct stat status {};
+    if (lstat(path.c_str(), &status) != 0 || !S_ISREG(status.st_mode)) {
+        throw InputError(label + ": expected a regular file (the sweep's table)");
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw_os_error(label + ": cannot read", errno);
     CsvRecords records(in, label);

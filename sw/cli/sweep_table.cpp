@@ -101,7 +101,7 @@ std::optional<PointStatus> parse_point_status(const std::string& text) {
     return std::nullopt;
 }
 
-std::string row_checksum(const Row& row, const std::string* report_text) {
+std::string row_checksum(const Row& row, const std::string* report_sha256) {
     std::string fields;
     for (const auto& [column, value] : row) {
         if (column == kChecksumColumn || value.empty()) continue;
@@ -110,7 +110,7 @@ std::string row_checksum(const Row& row, const std::string* report_text) {
         fields += value;
         fields += '\0';
     }
-    if (report_text != nullptr) fields += sha256_hex(*report_text);
+    if (report_sha256 != nullptr) fields += *report_sha256;
     return sha256_hex(fields).substr(0, 16);
 }
 
@@ -176,7 +176,8 @@ PointRow report_row(const Grid& grid, const Point& point, const std::string& rep
         put(name + "_speedup", number_text(board_ns > 0 ? ns / board_ns : 0));
     }
     put("point_wall_s", number_text(wall_seconds));
-    row[kChecksumColumn] = row_checksum(row, &report_text);
+    const std::string report_sha256 = sha256_hex(report_text);
+    row[kChecksumColumn] = row_checksum(row, &report_sha256);
     return {order, row};
 }
 

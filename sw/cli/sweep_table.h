@@ -49,10 +49,11 @@ PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, co
 
 // The "checksum" column: the first 16 hex digits of the SHA-256 of the row's
 // other non-empty fields (by column name, so neither the columns' order nor
-// empty columns count) and, for a point that ran, of its report's bytes. A
-// resume or merge recomputes it: an edited row or report does not match.
+// empty columns count) and, for a point that ran, of its report's SHA-256
+// (hex). A resume or merge recomputes it: an edited row or report does not
+// match.
 constexpr const char* kChecksumColumn = "checksum";
-std::string row_checksum(const Row& row, const std::string* report_text);
+std::string row_checksum(const Row& row, const std::string* report_sha256);
 
 // Columns whose values are measured, so differ from run to run: wall times,
 // baseline times and speedups, and the checksum over them.

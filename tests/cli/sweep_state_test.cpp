@@ -4,6 +4,7 @@
 // and one writer per directory.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -154,6 +155,17 @@ TEST_F(SweepDir, ALastRowCutShortIsLeftOutToRunAgain) {
     EXPECT_TRUE(read.rewrite);
     EXPECT_EQ(table.size(), 2u);
     EXPECT_FALSE(table.has(2));
+}
+
+TEST_F(SweepDir, AReportOrTableThatIsNoRegularFileIsRefusedUnread) {
+    const std::string report = report_path(dir(), grid_.point(2));
+    fs::remove(report);
+    fs::create_symlink("/dev/zero", report);  // read to the end, it would never end
+    EXPECT_EQ(refusal(), table_path(dir()) + ":4: the point's report " + report + " is not a regular file");
+    const std::string table = csv();
+    fs::remove(table_path(dir()));
+    ASSERT_EQ(mkfifo(table_path(dir()).c_str(), 0600), 0);
+    EXPECT_EQ(refusal(), table_path(dir()) + ": expected a regular file (the sweep's table)");
 }
 
 TEST_F(SweepDir, AHeaderOfAnotherGridIsRefused) {
