@@ -8,6 +8,7 @@
 #include "platform/board_preset.h"
 #include "platform/config_file.h"
 #include "platform/settings.h"
+#include "sw/cli/forwarded_options.h"
 #include "sw/cli/run_options.h"
 
 namespace po = boost::program_options;
@@ -131,60 +132,21 @@ void resolve_axis(Axis& axis, const std::string& label, const std::set<std::stri
     }
 }
 
-// What a passed-on option sets, for the check against the axes.
-std::string option_key(const po::option& option) {
-    if (option.string_key == "-c") return parse_override(option.value.at(0)).setting->name;
-    if (const Setting* s = setting_of(option.string_key)) return s->name;
-    return option.string_key;
-}
-
-// The option as one word each, so that no value can be read as an option.
-std::vector<std::string> option_words(const po::option& option) {
-    if (option.string_key == "-c") return {"-c", option.value.at(0)};
-    if (option.value.empty()) return {"--" + option.string_key};
-    return {"--" + option.string_key + "=" + option.value.at(0)};
-}
-
 }  // namespace
 
 std::string sweep_help() { return kHelp; }
 
 std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
-    RunOptions unused;
-    const po::options_description run = run_options_description(unused);
-    std::set<std::string> run_flags;
-    std::vector<std::string> sets;
-    po::options_description all = own_options(sets);
-    for (const auto& option : run.options()) {
-        const std::string name = option->long_name();
-        if (name == "help" || name == "quiet" || is_axis_option(name)) continue;
-        if (name != "report" && name != "pairs-out" && name != "vcd" && name != "vcd-frames" && !name.empty()) {
-            run_flags.insert(name);
-        }
-        all.add(option);
-    }
-    for (const char* axis : {"board", "scene", "trace", "fidelity"}) run_flags.insert(axis);
     for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
         if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return std::nullopt;
     }
-    po::parsed_options parsed(&all);
-    po::variables_map vm;
-    try {
-        parsed = po::command_line_parser(argc, argv)
-                     .options(all)
-                     .style(po::command_line_style::default_style & ~po::command_line_style::allow_guessing)
-                     .run();
-        po::store(parsed, vm);  // checks every value of a setting's flag, and options given twice
-    } catch (po::error& e) {
-        throw InputError(option_error_text(e, "cdvp sweep"));
-    }
-    for (const std::string& stray : po::collect_unrecognized(parsed.options, po::include_positional)) {
-        throw InputError("unexpected argument '" + excerpt(stray) + "'");
-    }
+    std::vector<std::string> sets;
+    const ParsedCommandLine line = parse_with_run_options(argc, argv, own_options(sets), "cdvp sweep");
+    std::set<std::string> run_flags = run_option_names();
+    for (const char* own : {"help", "quiet", "report", "pairs-out", "vcd", "vcd-frames"}) run_flags.erase(own);
 
     SweepOptions o;
-    std::vector<std::pair<std::string, std::string>> passed_keys;  // key, the option as typed
-    for (const po::option& option : parsed.options) {
+    for (const po::option& option : line.own) {
         const std::string& key = option.string_key;
         if (is_axis_option(key)) {
             Axis axis{key, expand_list(option.value.at(0), "--" + key, false)};
@@ -194,8 +156,6 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
             Axis axis = parse_set(option.value.at(0));
             resolve_axis(axis, "--set " + axis.name, run_flags);
             o.axes.push_back(axis);
-        } else if (key == "report" || key == "pairs-out" || key == "vcd" || key == "vcd-frames") {
-            throw InputError("--" + key + ": set by cdvp sweep for each point, or not for it; leave it out");
         } else if (key == "out") {
             o.out_dir = option.value.at(0);
             if (o.out_dir.empty()) throw InputError("--out: expected a directory, got ''");
@@ -204,30 +164,29 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
             o.jobs = parse_jobs(option.value.at(0));
         } else if (key == "shard") {
             o.shard = parse_shard(option.value.at(0));
-        } else if (key == "no-plots" || key == "rerun-invalid" || key == "quiet" || key == "help") {
-            continue;  // switches, read from vm below
-        } else {
-            passed_keys.emplace_back(option_key(option), option.original_tokens.at(0));
-            for (const std::string& word : option_words(option)) o.run_options.push_back(word);
-            if (key == "config") {
-                if (option.value.at(0).empty()) throw InputError("--config: expected a file path, got ''");
-                read_config_file(option.value.at(0));  // refused here, naming file and line
-                o.inputs.push_back({"--config", option.value.at(0), option.value.at(0)});
-            }
         }
     }
-    o.quiet = vm["quiet"].as<bool>();
-    o.plots = !vm["no-plots"].as<bool>();
-    o.rerun_invalid = vm["rerun-invalid"].as<bool>();
-    if (o.out_dir.empty()) throw InputError("--out DIR is required (see cdvp sweep --help)");
-    for (const auto& [key, typed] : passed_keys) {
+    for (const ForwardedOption& option : line.forwarded) {
+        if (option.key == "report" || option.key == "pairs-out" || option.key == "vcd" || option.key == "vcd-frames") {
+            throw InputError("--" + option.key + ": set by cdvp sweep for each point, or not for it; leave it out");
+        }
         for (const Axis& axis : o.axes) {
-            if (axis.key == key) {
-                throw InputError(excerpt(typed) + ": " + key + " is an axis of the sweep (" + excerpt(axis.name) +
-                                 "); give it once");
+            if (axis.key == option.key) {
+                throw InputError(excerpt(option.typed) + ": " + option.key + " is an axis of the sweep (" +
+                                 excerpt(axis.name) + "); give it once");
             }
         }
+        o.run_options.insert(o.run_options.end(), option.words.begin(), option.words.end());
+        if (option.key == "config") {
+            if (option.value.empty()) throw InputError("--config: expected a file path, got ''");
+            read_config_file(option.value);  // refused here, naming file and line
+            o.inputs.push_back({"--config", option.value, option.value});
+        }
     }
+    o.quiet = line.values["quiet"].as<bool>();
+    o.plots = !line.values["no-plots"].as<bool>();
+    o.rerun_invalid = line.values["rerun-invalid"].as<bool>();
+    if (o.out_dir.empty()) throw InputError("--out DIR is required (see cdvp sweep --help)");
     std::set<std::string> sources;
     for (const Axis& axis : o.axes) {
         if (axis.key == "scene" || axis.key == "trace") sources.insert(axis.key);
