@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "platform/nesting_limit.h"
 
 namespace cdvp {
 
@@ -108,17 +109,7 @@ std::optional<std::string> control_in(const json& value, const std::string& wher
 
 // "FILE:LINE:COLUMN" of a byte offset (nlohmann counts from 1).
 std::string position(const std::string& path, const std::string& text, std::size_t byte) {
-    const std::size_t end = std::min(byte == 0 ? 0 : byte - 1, text.size());
-    std::size_t line = 1, column = 1;
-    for (std::size_t k = 0; k < end; ++k) {
-        if (text[k] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
-    return path + ":" + std::to_string(line) + ":" + std::to_string(column);
+    return text_position(path, text, byte == 0 ? 0 : byte - 1);
 }
 
 // Parses the preset text, refusing a key given twice in one object (JSON
@@ -165,7 +156,8 @@ json parse_strictly(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-json parse_preset(const std::string& path, const std::string& text) {
+json parse_preset(const std::string& path, const std::string& text, const std::string& what) {
+    check_json_nesting(path, text, what);  // before the walks below, which recurse
     json root = parse_strictly(path, text);
     if (std::optional<std::string> found = control_in(root, "")) throw InputError(path + ": " + *found);
     return root;
