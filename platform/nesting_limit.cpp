@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "platform/json_strings.h"
 
 namespace cdvp {
 
@@ -19,24 +20,14 @@ namespace {
                      " nests " + containers + " at most " + limit + " deep");
 }
 
-// The offset of the bracket that opens level kMaxNesting + 1, if any:
-// brackets outside strings, a backslash escaping the character after it.
+// The offset of the bracket that opens level kMaxNesting + 1, if any.
 std::optional<std::size_t> too_deep_json(const std::string& text) {
+    JsonStrings strings;
     int depth = 0;
-    bool in_string = false, escaped = false;
     for (std::size_t k = 0; k < text.size(); ++k) {
         const char c = text[k];
-        if (in_string) {
-            if (escaped) {
-                escaped = false;
-            } else if (c == '\\') {
-                escaped = true;
-            } else if (c == '"') {
-                in_string = false;
-            }
-        } else if (c == '"') {
-            in_string = true;
-        } else if (c == '{' || c == '[') {
+        if (strings.inside(c)) continue;
+        if (c == '{' || c == '[') {
             if (++depth > kMaxNesting) return k;
         } else if ((c == '}' || c == ']') && depth > 0) {
             --depth;

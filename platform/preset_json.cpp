@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "platform/json_strings.h"
 #include "platform/nesting_limit.h"
 
 namespace cdvp {
@@ -112,6 +113,16 @@ std::string position(const std::string& path, const std::string& text, std::size
     return text_position(path, text, byte == 0 ? 0 : byte - 1);
 }
 
+// nlohmann takes a NUL byte for the end of the input: the offset of one
+// outside strings, after which text would be ignored.
+std::optional<std::size_t> nul_outside_strings(const std::string& text) {
+    JsonStrings strings;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (!strings.inside(text[k]) && text[k] == '\0') return k;
+    }
+    return std::nullopt;
+}
+
 // Parses the preset text, refusing a key given twice in one object (JSON
 // leaves that open; nlohmann would keep the last silently).
 json parse_strictly(const std::string& path, const std::string& text) {
@@ -148,6 +159,10 @@ json parse_strictly(const std::string& path, const std::string& text) {
         const std::string what = e.what();
         const std::size_t detail = what.find("] ");
         throw InputError(path + ": invalid JSON: " + (detail == std::string::npos ? what : what.substr(detail + 2)));
+    }
+    if (const std::optional<std::size_t> nul = nul_outside_strings(text)) {
+        throw InputError(text_position(path, text, *nul) +
+                         ": invalid JSON: syntax error while parsing value - unexpected NUL byte; expected end of input");
     }
     if (!duplicate.empty()) throw InputError(path + ": " + duplicate + ": key given twice");
     if (!root.is_object()) throw InputError(path + ": expected a JSON object");

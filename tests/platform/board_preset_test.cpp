@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -126,6 +127,12 @@ TEST_F(PresetFile, SyntaxErrorsGiveLineAndColumn) {
     // A number beyond double's range is the library's out_of_range, not a parse_error.
     EXPECT_EQ(error_for("{\"name\": 1e3000}"), path_ + ": invalid JSON: number overflow parsing '1e3000'");
     EXPECT_EQ(path_ + ": expected a JSON object", error_for("[1, 2]"));
+    // nlohmann takes a NUL byte for the end of the input: what follows one is refused, not ignored.
+    const std::string preset_then_nul = read(boards_directory() + "/adm-xrc-ii.json") + '\0' + "{\"name\": \"x\"}";
+    const std::string line = std::to_string(std::count(preset_then_nul.begin(), preset_then_nul.end(), '\n') + 1);
+    EXPECT_EQ(path_ + ":" + line + ":1: invalid JSON: syntax error while parsing value - unexpected NUL byte; expected "
+                                   "end of input",
+              error_for(preset_then_nul));
 }
 
 TEST_F(PresetFile, KeysGivenTwiceAreRefused) {

@@ -192,6 +192,16 @@ TEST_F(ConfigFile, RefusalsNameFileLineAndSetting) {
     EXPECT_EQ(": board.m: given twice", error_for("twice.json", R"({"board.m": 4, "board": {"m": 5}})"));
 }
 
+// nlohmann takes a NUL byte for the end of the input: what follows one is
+// refused, not ignored (found by tests/fuzz/config_fuzzer).
+TEST_F(ConfigFile, RefusalsStayOnOneLineAndReadTheWholeFile) {
+    using namespace std::string_literals;
+    EXPECT_EQ(":1:20: invalid JSON: syntax error while parsing value - unexpected NUL byte; expected end of input",
+              error_for("nul.json", "{\"board\": {\"m\": 4}}\0{\"board\": {\"m\": 5}}"s));
+    EXPECT_EQ(": host.name: control character \\x00 in a string; expected printable text",
+              error_for("nul_in_string.json", "{\"host\": {\"name\": \"a\0b\"}}"s));
+}
+
 // Every way a config file nests, at the limit and one level past it: at the
 // limit the file is read on (and refused for an unknown name or a value that
 // is no number), past it refused from the text, before toml::parse or any
