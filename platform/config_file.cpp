@@ -109,9 +109,10 @@ std::vector<Assignment> read_config_file(const std::string& path) {
         try {
             reader.add_toml(toml::parse(text, path), "");
         } catch (const toml::parse_error& e) {
+            // toml++ quotes what it saw as it is, a newline included ("saw 't\n'").
             throw InputError(path + ":" + std::to_string(e.source().begin.line) + ":" +
                              std::to_string(e.source().begin.column) + ": invalid TOML: " +
-                             std::string(e.description()));
+                             printable(std::string(e.description())));
         }
     } else {
         reader.add_json(parse_preset(path, text, what), "");

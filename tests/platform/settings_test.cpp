@@ -192,10 +192,13 @@ TEST_F(ConfigFile, RefusalsNameFileLineAndSetting) {
     EXPECT_EQ(": board.m: given twice", error_for("twice.json", R"({"board.m": 4, "board": {"m": 5}})"));
 }
 
-// nlohmann takes a NUL byte for the end of the input: what follows one is
-// refused, not ignored (found by tests/fuzz/config_fuzzer).
+// toml++ quotes what it saw as it is, a newline included; the refusal stays
+// one line. nlohmann takes a NUL byte for the end of the input: what follows
+// one is refused, not ignored (both found by tests/fuzz/config_fuzzer).
 TEST_F(ConfigFile, RefusalsStayOnOneLineAndReadTheWholeFile) {
     using namespace std::string_literals;
+    EXPECT_EQ(":1:6: invalid TOML: Error while parsing boolean: expected 'true', saw 't\\n'",
+              error_for("bool.toml", "x = t\n"));
     EXPECT_EQ(":1:20: invalid JSON: syntax error while parsing value - unexpected NUL byte; expected end of input",
               error_for("nul.json", "{\"board\": {\"m\": 4}}\0{\"board\": {\"m\": 5}}"s));
     EXPECT_EQ(": host.name: control character \\x00 in a string; expected printable text",
