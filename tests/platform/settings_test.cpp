@@ -205,6 +205,17 @@ TEST_F(ConfigFile, RefusalsStayOnOneLineAndReadTheWholeFile) {
               error_for("nul_in_string.json", "{\"host\": {\"name\": \"a\0b\"}}"s));
 }
 
+// A TOML float beyond int64_t's range is shown as %g, as written (found by
+// tests/fuzz/config_fuzzer: the check for a whole number converted it first).
+TEST_F(ConfigFile, HugeNumbersAreShownInRefusals) {
+    EXPECT_EQ(":2: board.clock_mhz: expected 1 to 1000 MHz, got 1.11111e+34",
+              error_for("huge.toml", "[board]\nclock_mhz = 11111111000000000000000000000001111.0\n"));
+    EXPECT_EQ(":2: board.clock_mhz: expected 1 to 1000 MHz, got -1e+300",
+              error_for("low.toml", "[board]\nclock_mhz = -1e300\n"));
+    EXPECT_EQ(":2: board.clock_mhz: expected 1 to 1000 MHz, got 100000000000000",
+              error_for("whole.toml", "[board]\nclock_mhz = 1e14\n"));
+}
+
 // Every way a config file nests, at the limit and one level past it: at the
 // limit the file is read on (and refused for an unknown name or a value that
 // is no number), past it refused from the text, before toml::parse or any
