@@ -7,7 +7,7 @@
 
 #include "models/common/user_text.h"
 #include "models/common/number_text.h"
-#include "platform/nesting_limit.h"
+#include "models/common/nesting_limit.h"
 #include "platform/preset_json.h"
 
 namespace cdvp {

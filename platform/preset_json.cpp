@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "models/common/user_text.h"
-#include "platform/json_strings.h"
-#include "platform/nesting_limit.h"
+#include "models/common/json_strings.h"
+#include "models/common/nesting_limit.h"
 
 namespace cdvp {
 

@@ -11,7 +11,7 @@
 namespace cdvp {
 
 // Throws InputError "PATH: ..." naming the position or the key; text nesting
-// deeper than kMaxNesting (platform/nesting_limit.h) is refused as 'what'
+// deeper than kMaxNesting (models/common/nesting_limit.h) is refused as 'what'
 // ("a board preset") before it is parsed.
 nlohmann::json parse_preset(const std::string& path, const std::string& text, const std::string& what);
 

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "models/common/user_text.h"
+#include "models/common/nesting_limit.h"
 #include "sw/cli/child_runs.h"
 #include "sw/cli/digest.h"
 
@@ -15,38 +16,20 @@ namespace {
 
 using nlohmann::json;
 
-// The manifest nests four levels; anything deeper is not one, and is refused
-// before the parser builds it.
-constexpr int kMaxManifestDepth = 8;
 // sweep.json lists every value of every axis: 100,000 values of a long path
 // stay far below this.
 constexpr std::size_t kMaxManifestBytes = std::size_t{256} << 20;
 
-std::string position(const std::string& text, std::size_t byte) {
-    std::size_t line = 1, column = 1;
-    for (std::size_t k = 0; k < byte && k < text.size(); ++k) {
-        if (text[k] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
-    return std::to_string(line) + ":" + std::to_string(column);
-}
-
 json parse_manifest_text(const std::string& text, const std::string& path) {
-    const json::parser_callback_t depth_check = [&](int depth, json::parse_event_t, json&) {
-        if (depth > kMaxManifestDepth) {
-            throw InputError(excerpt(path) + ": nested deeper than " + std::to_string(kMaxManifestDepth) +
-                             " levels; expected the manifest cdvp sweep writes");
-        }
-        return true;
-    };
+    const std::string label = excerpt(path);
+    check_json_nesting(label, text, "a sweep manifest");  // before the parser builds anything deep
+    if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+        throw InputError(text_position(label, text, nul) + ": a NUL byte; expected the manifest cdvp sweep writes");
+    }
     try {
-        return json::parse(text, depth_check);
+        return json::parse(text);
     } catch (const json::parse_error& e) {
-        throw InputError(excerpt(path) + ":" + position(text, e.byte == 0 ? 0 : e.byte - 1) +
+        throw InputError(text_position(label, text, e.byte == 0 ? 0 : e.byte - 1) +
                          ": not JSON; expected the manifest cdvp sweep writes");
     }
 }

@@ -260,7 +260,10 @@ TEST_F(ManifestFile, RoundTripsAndTellsWhatMakesAnotherSweep) {
 TEST_F(ManifestFile, ADamagedManifestIsRefusedNamingTheFileAndWhere) {
     EXPECT_EQ(refusal("{\n  \"format\": x\n}"), path() + ":2:13: not JSON; expected the manifest cdvp sweep writes");
     EXPECT_EQ(refusal(std::string(20000, '[') + std::string(20000, ']')),
-              path() + ": nested deeper than 8 levels; expected the manifest cdvp sweep writes");
+              path() + ":1:65: nesting deeper than 64 levels; a sweep manifest nests objects and arrays at most 64 deep");
+    EXPECT_EQ(refusal(manifest().to_json().dump() + std::string(1, '\0') + "junk"),
+              path() + ":1:" + std::to_string(manifest().to_json().dump().size() + 1) +
+                  ": a NUL byte; expected the manifest cdvp sweep writes");
     nlohmann::json text = manifest().to_json();
     text.erase("axes");
     EXPECT_EQ(refusal(text.dump()), path() + ": field 'axes': is missing; expected the manifest cdvp sweep writes");

@@ -33,7 +33,7 @@
 
 #include "models/common/user_text.h"
 #include "platform/config_file.h"
-#include "platform/nesting_limit.h"
+#include "models/common/nesting_limit.h"
 #include "platform/setting_values.h"
 
 namespace {

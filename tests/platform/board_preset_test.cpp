@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/nesting_limit.h"
+#include "models/common/nesting_limit.h"
 #include "sw/scene/scene.h"
 #include "tests/platform/nested_text.h"
 

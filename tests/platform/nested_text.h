@@ -1,4 +1,4 @@
-// Texts nested a chosen number of levels deep, as platform/nesting_limit.h
+// Texts nested a chosen number of levels deep, as models/common/nesting_limit.h
 // counts them, for the preset and config file tests of the nesting limit.
 #pragma once
 

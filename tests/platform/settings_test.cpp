@@ -18,7 +18,7 @@
 #include "models/common/user_text.h"
 #include "platform/board_preset.h"
 #include "platform/config_file.h"
-#include "platform/nesting_limit.h"
+#include "models/common/nesting_limit.h"
 #include "tests/platform/nested_text.h"
 
 namespace cdvp {

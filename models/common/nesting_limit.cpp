@@ -1,4 +1,4 @@
-#include "platform/nesting_limit.h"
+#include "models/common/nesting_limit.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
-#include "platform/json_strings.h"
+#include "models/common/json_strings.h"
 
 namespace cdvp {
 
