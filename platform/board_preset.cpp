@@ -129,6 +129,14 @@ std::string read_preset_text(const std::string& path, bool is_path, const std::s
     if (!is_path && stat(path.c_str(), &status) != 0) {
         std::string known;
         for (const std::string& n : board_preset_names()) known += (known.empty() ? "" : ", ") + n;
+        const char* env = std::getenv("CDVP_BOARDS");
+        const std::string where = env != nullptr && env[0] != '\0'
+                                      ? "$CDVP_BOARDS (" + excerpt(env) + ")"
+                                      : "the presets directory " + excerpt(boards_directory());
+        if (known.empty()) {
+            throw InputError("--board: unknown board '" + excerpt(name) + "': " + where +
+                             " holds no preset (NAME.json); give a .json path, or unset CDVP_BOARDS");
+        }
         throw InputError("--board: unknown board '" + excerpt(name) + "'; expected one of: " + known);
     }
     return read_small_file(path, kWhat);
