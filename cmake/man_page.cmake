@@ -36,6 +36,25 @@ foreach(row IN LISTS rows)
 endforeach()
 
 string(APPEND include_text [=[
+[EXAMPLES]
+.TP
+.B cdvp run \-\-board adm\-xrc\-ii \-\-scene spheres \-\-objects 500 \-\-frames 30 \-\-m 24 \-\-baseline sap,dbvt,brute,soa
+The paper's board and scene against four software broad phases: frame times, pairs and cycles.
+.TP
+.B cdvp run \-\-trace scene.csv \-\-m 8 \-\-vcd waves.vcd \-\-vcd\-frames 0:0
+Waveforms of the first frame, with a GTKWave save file beside them (\fBgtkwave \-a waves.gtkw waves.vcd\fR).
+.TP
+.B cdvp sweep \-\-board adm\-xrc\-ii,pcie\-gen3\-x8 \-\-set m=1,2,4,8,16,24 \-\-set objects=50:2000:x2 \-\-frames 30 \-\-baseline sap,soa \-\-out results/ \-\-jobs 2
+A grid of boards, parallelisms and scene sizes: results/sweep.csv, each point's report, crossovers and figures. The same command again resumes it.
+.TP
+.B cdvp sweep ... \-\-shard 2/4 \-\-out results/shard\-2 && cdvp merge \-\-out results/all results/shard\-*
+A sweep spread over machines, then merged (all or nothing).
+.TP
+.B cdvp bullet \-\-scene boxes \-\-frames 60 \-\-board adm\-xrc\-ii \-\-m 4
+A Bullet world stepped with the virtual board as its broad phase, beside Bullet's own.
+.TP
+.B cdvp settings
+Every setting with its unit, default, range and source.
 [ENVIRONMENT]
 .TP
 .B CDVP_BOARDS
@@ -51,6 +70,12 @@ The board presets: adm\-xrc\-ii, adm\-xrc\-ii\-64, pcie\-gen3\-x8.
 .TP
 .I PREFIX/share/doc/cdvp
 The README (file formats, timing assumptions, the worked example) and docs/.
+[SEE ALSO]
+.BR gtkwave (1),
+.BR gnuplot (1),
+.BR parallel (1),
+.BR yosys (1);
+the README and docs/ in \fIPREFIX/share/doc/cdvp\fR (docs/sweep.md, docs/settings.md, docs/timing.md).
 ]=])
 
 get_filename_component(include_file "${OUT}.include" ABSOLUTE)

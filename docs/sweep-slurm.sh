@@ -3,7 +3,7 @@
 # its own directory. Submit, then merge once every task has finished:
 #
 #   jobid=$(sbatch --parsable docs/sweep-slurm.sh)
-#   sbatch --dependency=afterok:$jobid --wrap "cdvp merge results/all results/shard-*"
+#   sbatch --dependency=afterok:$jobid --wrap "cdvp merge --out results/all results/shard-*"
 #
 # Each shard is resumable: resubmitting a failed task (sbatch --array=K ...)
 # runs only the points it had not finished.

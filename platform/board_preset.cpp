@@ -122,14 +122,24 @@ void refuse_undeclared_keys(const PresetReader& r, const std::string& section, c
     }
 }
 
+constexpr const char* kWhat = "a board preset";  // in refusals of the file as a whole
+
 std::string read_preset_text(const std::string& path, bool is_path, const std::string& name) {
     struct stat status {};
     if (!is_path && stat(path.c_str(), &status) != 0) {
         std::string known;
         for (const std::string& n : board_preset_names()) known += (known.empty() ? "" : ", ") + n;
+        const char* env = std::getenv("CDVP_BOARDS");
+        const std::string where = env != nullptr && env[0] != '\0'
+                                      ? "$CDVP_BOARDS (" + excerpt(env) + ")"
+                                      : "the presets directory " + excerpt(boards_directory());
+        if (known.empty()) {
+            throw InputError("--board: unknown board '" + excerpt(name) + "': " + where +
+                             " holds no preset (NAME.json); give a .json path, or unset CDVP_BOARDS");
+        }
         throw InputError("--board: unknown board '" + excerpt(name) + "'; expected one of: " + known);
     }
-    return read_small_file(path, "a board preset");
+    return read_small_file(path, kWhat);
 }
 
 bool names_a_path(const std::string& name) {
@@ -172,7 +182,7 @@ namespace {
 
 BoardPreset read_board_preset(const std::string& name) {
     const std::string path = board_preset_path(name);
-    const PresetReader r(path, parse_preset(path, read_preset_text(path, names_a_path(name), name)));
+    const PresetReader r(path, parse_preset(path, read_preset_text(path, names_a_path(name), name), kWhat));
     r.only("", {"name", "description", "board", "device", "bus", "host"});
     BoardPreset p;
     p.path = path;

@@ -7,6 +7,7 @@
 
 #include "models/common/user_text.h"
 #include "models/common/number_text.h"
+#include "models/common/nesting_limit.h"
 #include "platform/preset_json.h"
 
 namespace cdvp {
@@ -100,18 +101,21 @@ private:
 }  // namespace
 
 std::vector<Assignment> read_config_file(const std::string& path) {
-    const std::string text = read_small_file(path, "a config file");
+    const std::string what = "a config file";
+    const std::string text = read_small_file(path, what);
     ConfigReader reader(path);
     if (ends_with(path, ".toml")) {
+        check_toml_nesting(path, text, what);  // toml::parse and add_toml recurse
         try {
             reader.add_toml(toml::parse(text, path), "");
         } catch (const toml::parse_error& e) {
+            // toml++ quotes what it saw as it is, a newline included ("saw 't\n'").
             throw InputError(path + ":" + std::to_string(e.source().begin.line) + ":" +
                              std::to_string(e.source().begin.column) + ": invalid TOML: " +
-                             std::string(e.description()));
+                             printable(std::string(e.description())));
         }
     } else {
-        reader.add_json(parse_preset(path, text), "");
+        reader.add_json(parse_preset(path, text, what), "");
     }
     return std::move(reader.values);
 }

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "models/common/json_strings.h"
+#include "models/common/nesting_limit.h"
 
 namespace cdvp {
 
@@ -108,17 +110,17 @@ std::optional<std::string> control_in(const json& value, const std::string& wher
 
 // "FILE:LINE:COLUMN" of a byte offset (nlohmann counts from 1).
 std::string position(const std::string& path, const std::string& text, std::size_t byte) {
-    const std::size_t end = std::min(byte == 0 ? 0 : byte - 1, text.size());
-    std::size_t line = 1, column = 1;
-    for (std::size_t k = 0; k < end; ++k) {
-        if (text[k] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
+    return text_position(path, text, byte == 0 ? 0 : byte - 1);
+}
+
+// nlohmann takes a NUL byte for the end of the input: the offset of one
+// outside strings, after which text would be ignored.
+std::optional<std::size_t> nul_outside_strings(const std::string& text) {
+    JsonStrings strings;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (!strings.inside(text[k]) && text[k] == '\0') return k;
     }
-    return path + ":" + std::to_string(line) + ":" + std::to_string(column);
+    return std::nullopt;
 }
 
 // Parses the preset text, refusing a key given twice in one object (JSON
@@ -158,6 +160,10 @@ json parse_strictly(const std::string& path, const std::string& text) {
         const std::size_t detail = what.find("] ");
         throw InputError(path + ": invalid JSON: " + (detail == std::string::npos ? what : what.substr(detail + 2)));
     }
+    if (const std::optional<std::size_t> nul = nul_outside_strings(text)) {
+        throw InputError(text_position(path, text, *nul) +
+                         ": invalid JSON: syntax error while parsing value - unexpected NUL byte; expected end of input");
+    }
     if (!duplicate.empty()) throw InputError(path + ": " + duplicate + ": key given twice");
     if (!root.is_object()) throw InputError(path + ": expected a JSON object");
     return root;
@@ -165,7 +171,8 @@ json parse_strictly(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-json parse_preset(const std::string& path, const std::string& text) {
+json parse_preset(const std::string& path, const std::string& text, const std::string& what) {
+    check_json_nesting(path, text, what);  // before the walks below, which recurse
     json root = parse_strictly(path, text);
     if (std::optional<std::string> found = control_in(root, "")) throw InputError(path + ": " + *found);
     return root;

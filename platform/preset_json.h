@@ -10,8 +10,10 @@
 
 namespace cdvp {
 
-// Throws InputError "PATH: ..." naming the position or the key.
-nlohmann::json parse_preset(const std::string& path, const std::string& text);
+// Throws InputError "PATH: ..." naming the position or the key; text nesting
+// deeper than kMaxNesting (models/common/nesting_limit.h) is refused as 'what'
+// ("a board preset") before it is parsed.
+nlohmann::json parse_preset(const std::string& path, const std::string& text, const std::string& what);
 
 // A small hand-written file's text (a preset, a config file): a regular file
 // of at most 1 MiB, or InputError "PATH: ... not WHAT".

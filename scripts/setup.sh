@@ -8,6 +8,7 @@ packages=(
   libsystemc-dev                 # SystemC 2.3.4 + TLM-2.0 (pkg-config: systemc)
   libboost-program-options-dev   # command line
   nlohmann-json3-dev             # JSON reports
+  libssl-dev                     # SHA-256 digests of a sweep's inputs and rows (OpenSSL libcrypto)
   libtomlplusplus-dev            # TOML config files (cdvp run --config)
   libgtest-dev libgmock-dev      # tests
   libbenchmark-dev               # benchmarks

@@ -21,7 +21,8 @@ std::string show(double value) {
 }  // namespace
 
 std::string show_number(double value) {
-    if (value == static_cast<double>(static_cast<int64_t>(value)) && std::abs(value) < 1e15) {
+    // The magnitude first: converting a double beyond int64_t's range (or NaN) is undefined.
+    if (std::abs(value) < 1e15 && value == static_cast<double>(static_cast<int64_t>(value))) {
         return std::to_string(static_cast<int64_t>(value));
     }
     return show(value);

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cerrno>
 #include <cstddef>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -24,6 +26,26 @@ class SystemError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+// Whether a failed create, write or sync is the system's doing (a full disk
+// or quota, an I/O error, no memory or descriptors) rather than the path's
+// (missing, not writable, a directory).
+inline bool is_system_failure(int error) {
+    switch (error) {
+        case ENOSPC: case EDQUOT: case EIO: case EFBIG: case ENOMEM: case ENFILE: case EMFILE: case ENOBUFS:
+            return true;
+        default:
+            return false;
+    }
+}
+
+// "MESSAGE: <the system's text for 'error'>" as a SystemError or an
+// InputError, as is_system_failure() tells.
+[[noreturn]] inline void throw_os_error(const std::string& message, int error) {
+    const std::string text = message + ": " + std::strerror(error);
+    if (is_system_failure(error)) throw SystemError(text);
+    throw InputError(text);
+}
 
 // 'text' safe to print on one line: control characters (a newline in a file
 // name, say) become escapes such as \n, \t and \x1b, and C1 controls in

@@ -241,10 +241,7 @@ int simulate(const BulletOptions& o, const po::variables_map& vm) {
                                      << '\n';
     }
     if (!o.quiet) files.set_standard_output(summary(spec, setup, rows));
-    if (const std::optional<std::string> error = files.try_commit()) {
-        std::cerr << "cdvp bullet: " << printable(*error) << '\n';
-        return kExitBadInput;
-    }
+    if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp bullet", *failure);
     return kExitDone;
 }
 

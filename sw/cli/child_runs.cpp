@@ -1,12 +1,15 @@
 #include "sw/cli/child_runs.h"
 
-#include <spawn.h>
+#include <sys/mman.h>
+#include <sys/prctl.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -18,15 +21,43 @@
 #include "models/common/user_text.h"
 #include "sw/scene/output_cleanup.h"
 
-extern char** environ;
-
 namespace cdvp {
+
+CapturedOutput::CapturedOutput(const char* name) : fd_(memfd_create(name, MFD_CLOEXEC)) {
+    if (fd_ < 0) throw_os_error(std::string("cannot keep a child's output (memfd_create ") + name + ")", errno);
+}
+
+CapturedOutput::~CapturedOutput() { close(fd_); }
+
+std::string CapturedOutput::text(std::size_t max_bytes) const {
+    std::string text(max_bytes, '\0');
+    std::size_t done = 0;
+    while (done < max_bytes) {
+        const ssize_t got = pread(fd_, text.data() + done, max_bytes - done, static_cast<off_t>(done));
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) break;
+        done += static_cast<std::size_t>(got);
+    }
+    text.resize(done);
+    return text;
+}
+
+void CapturedOutput::clear() {
+    if (ftruncate(fd_, 0) != 0) throw_os_error("cannot reuse a child's output", errno);
+    lseek(fd_, 0, SEEK_SET);
+}
 
 ScratchFile::ScratchFile(const std::string& suffix) {
     const char* dir = std::getenv("TMPDIR");
-    std::string pattern = std::string(dir != nullptr && *dir != '\0' ? dir : "/tmp") + "/cdvp-XXXXXX" + suffix;
+    const std::string directory = dir != nullptr && *dir != '\0' ? dir : "/tmp";
+    std::string pattern = directory + "/cdvp-XXXXXX" + suffix;
     const int fd = mkstemps(pattern.data(), static_cast<int>(suffix.size()));
-    if (fd < 0) throw std::runtime_error("cannot create a temporary file in $TMPDIR: " + std::string(std::strerror(errno)));
+    if (fd < 0) {
+        const int error = errno;
+        throw_os_error((dir != nullptr && *dir != '\0' ? "TMPDIR: " : "the temporary directory ") + excerpt(directory) +
+                           ": cannot create a temporary file (set TMPDIR to a writable directory)",
+                       error);
+    }
     close(fd);
     path_ = pattern;
     slot_ = TemporaryRegistry::hold(path_);
@@ -37,12 +68,28 @@ ScratchFile::~ScratchFile() {
     TemporaryRegistry::release(slot_);
 }
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+std::optional<std::string> read_whole_file(const std::string& path) {
+    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return std::nullopt;
+    std::string text;
+    char block[1 << 16];
+    for (;;) {
+        const ssize_t got = read(fd, block, sizeof block);
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) {
+            const int error = errno;
+            close(fd);
+            errno = error;
+            return std::nullopt;
+        }
+        if (got == 0) break;
+        text.append(block, static_cast<std::size_t>(got));
+    }
+    close(fd);
+    return text;
 }
+
+std::string slurp(const std::string& path) { return read_whole_file(path).value_or(std::string()); }
 
 std::string self_path() {
     std::string path(4096, '\0');
@@ -52,20 +99,56 @@ std::string self_path() {
     return path;
 }
 
-pid_t start_child(const std::vector<std::string>& args, const std::string& err_path, const char* out_path) {
+namespace {
+
+// args[0] as a path to exec: itself when it names a directory, else the
+// first executable of that name on PATH (looked up before fork, as exec in
+// the child may not allocate).
+std::string executable(const std::string& name) {
+    if (name.find('/') != std::string::npos) return name;
+    const char* path = std::getenv("PATH");
+    std::string dirs = path != nullptr ? path : "/usr/bin:/bin";
+    for (std::size_t start = 0; start <= dirs.size();) {
+        const std::size_t colon = std::min(dirs.find(':', start), dirs.size());
+        const std::string dir = dirs.substr(start, colon - start);
+        const std::string candidate = (dir.empty() ? "." : dir) + "/" + name;
+        if (access(candidate.c_str(), X_OK) == 0) return candidate;
+        start = colon + 1;
+    }
+    return name;
+}
+
+}  // namespace
+
+pid_t start_child(const std::vector<std::string>& args, const ChildStreams& streams) {
+    const std::string program = executable(args[0]);
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_path.c_str(), O_WRONLY | O_TRUNC, 0600);
-    if (out_path != nullptr) {
-        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out_path, O_WRONLY | O_TRUNC, 0600);
+    const int null_in = streams.in < 0 ? open("/dev/null", O_RDONLY | O_CLOEXEC) : -1;
+    const pid_t parent = getpid();
+    // vfork: the child borrows this process's memory until it execs, so
+    // starting a point costs the same however large the sweep's table has
+    // grown (fork would copy its page tables).
+    const pid_t pid = vfork();
+    if (pid < 0) {
+        const int error = errno;
+        if (null_in >= 0) close(null_in);
+        throw_os_error(args[0] + ": cannot start", error);
     }
-    pid_t pid = 0;
-    const int error = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (error != 0) throw std::runtime_error(args[0] + ": cannot start: " + std::strerror(error));
+    if (pid == 0) {
+        // Only system calls on values computed before vfork from here to exec.
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        if (getppid() != parent) _exit(127);  // the parent died before the line above
+        const int in = streams.in >= 0 ? streams.in : null_in;
+        if (in >= 0) dup2(in, STDIN_FILENO);
+        if (streams.out >= 0) dup2(streams.out, STDOUT_FILENO);
+        if (streams.err >= 0) dup2(streams.err, STDERR_FILENO);
+        for (const int fd : streams.inherited) fcntl(fd, F_SETFD, 0);
+        execv(program.c_str(), argv.data());
+        _exit(127);
+    }
+    if (null_in >= 0) close(null_in);
     return pid;
 }
 
@@ -76,16 +159,27 @@ int wait_child(pid_t pid) {
     return status;
 }
 
-int run_child(const std::vector<std::string>& args, const std::string& err_path, const char* out_path) {
-    return wait_child(start_child(args, err_path, out_path));
+int run_child(const std::vector<std::string>& args, const ChildStreams& streams) {
+    return wait_child(start_child(args, streams));
 }
 
 std::optional<std::string> run_gnuplot(const std::string& script) {
-    ScratchFile script_file(".gp"), errors(".err");
-    std::ofstream(script_file.path()) << script;
-    const int status = run_child({"gnuplot", script_file.path()}, errors.path());
+    // The script in memory too, read by gnuplot through its descriptor.
+    CapturedOutput script_file("cdvp-figures.gp"), errors("cdvp-gnuplot-errors");
+    for (std::size_t done = 0; done < script.size();) {
+        const ssize_t put = write(script_file.fd(), script.data() + done, script.size() - done);
+        if (put < 0 && errno == EINTR) continue;
+        if (put <= 0) throw_os_error("cannot hand gnuplot its script", errno);
+        done += static_cast<std::size_t>(put);
+    }
+    const std::string script_path = "/proc/self/fd/" + std::to_string(script_file.fd());
+    ChildStreams streams;
+    streams.err = errors.fd();
+    streams.inherited = {script_file.fd()};
+    const int status = run_child({"gnuplot", script_path}, streams);
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return std::nullopt;
-    return slurp(errors.path());
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 127) return std::string("gnuplot: not found on PATH");
+    return errors.text(64 * 1024);
 }
 
 std::string renamed_message(std::string message, const std::string& program) {
@@ -149,14 +243,22 @@ CreatedDirectories::~CreatedDirectories() {
 void commit_text_file(const std::string& path, const std::string& text, const std::string& label) {
     const CleanupSignalsBlocked held;
     const std::string temp = path + ".part-" + std::to_string(getpid());
-    FILE* file = std::fopen(temp.c_str(), "wb");
-    if (file == nullptr) throw InputError(label + ": " + excerpt(temp) + ": cannot write: " + std::strerror(errno));
-    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-    const int write_error = errno;
-    if (std::fclose(file) != 0 || !written || std::rename(temp.c_str(), path.c_str()) != 0) {
-        const int error = written ? errno : write_error;
+    const int fd = open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) throw_os_error(label + ": " + excerpt(temp) + ": cannot write", errno);
+    int error = 0;
+    for (std::size_t done = 0; done < text.size() && error == 0;) {
+        const ssize_t put = write(fd, text.data() + done, text.size() - done);
+        if (put < 0 && errno == EINTR) continue;
+        if (put < 0) error = errno;
+        if (put > 0) done += static_cast<std::size_t>(put);
+    }
+    // Synced before the rename: a crash leaves the old file or the whole new one.
+    if (error == 0 && fdatasync(fd) != 0) error = errno;
+    if (close(fd) != 0 && error == 0) error = errno;
+    if (error == 0 && std::rename(temp.c_str(), path.c_str()) != 0) error = errno;
+    if (error != 0) {
         unlink(temp.c_str());
-        throw InputError(label + ": " + excerpt(path) + ": cannot write: " + std::strerror(error));
+        throw_os_error(label + ": " + excerpt(path) + ": cannot write", error);
     }
 }
 

@@ -1,8 +1,9 @@
 // What the commands that drive `cdvp run` as child processes share (`cdvp
-// fidelity`, `cdvp sweep`, `cdvp merge`): scratch files removed on every way
-// out, starting and reaping children, a trace from a pipe spooled once,
-// forwarded options found by name, directories made for --out, and text
-// files committed whole (temporary file, then rename).
+// fidelity`, `cdvp sweep`, `cdvp merge`): a child's output captured in
+// memory, children that die with their parent, scratch files removed on every
+// way out, a trace from a pipe spooled once, forwarded options found by name,
+// directories made for --out, and text files committed whole (temporary
+// file, synced, then rename).
 #pragma once
 
 #include <sys/types.h>
@@ -14,8 +15,28 @@
 
 namespace cdvp {
 
-// A file in $TMPDIR for a child's output, removed on every way out (a
-// cleanup signal included: see TemporaryRegistry).
+// A child's stdout or stderr kept in an anonymous in-memory file (memfd): no
+// name in any directory, so nothing is left behind however the process ends,
+// and no $TMPDIR is needed.
+class CapturedOutput {
+public:
+    explicit CapturedOutput(const char* name);
+    ~CapturedOutput();
+    CapturedOutput(const CapturedOutput&) = delete;
+    CapturedOutput& operator=(const CapturedOutput&) = delete;
+    int fd() const { return fd_; }
+    // What was written, from the start, at most 'max_bytes'.
+    std::string text(std::size_t max_bytes = std::size_t{1} << 20) const;
+    // Empties it for the next child.
+    void clear();
+
+private:
+    int fd_ = -1;
+};
+
+// A file in $TMPDIR for a child's output, removed on every way out but
+// SIGKILL (a cleanup signal included: see TemporaryRegistry). Throws
+// InputError naming TMPDIR when it cannot be made there.
 class ScratchFile {
 public:
     explicit ScratchFile(const std::string& suffix);
@@ -31,18 +52,28 @@ private:
 
 // The whole file (empty when it cannot be read).
 std::string slurp(const std::string& path);
+// The whole file, or nothing when it cannot be opened or read (errno tells why).
+std::optional<std::string> read_whole_file(const std::string& path);
 
 // The running cdvp executable, for its child runs.
 std::string self_path();
 
-// Starts args[0] (looked up in PATH) with stderr into err_path and, when
-// given, stdout into out_path; returns its pid. Throws when it cannot start.
-pid_t start_child(const std::vector<std::string>& args, const std::string& err_path,
-                  const char* out_path = nullptr);
+// Where a child's standard streams go and which descriptors it inherits.
+struct ChildStreams {
+    int in = -1;   // standard input; -1: /dev/null
+    int out = -1;  // standard output; -1: this process's
+    int err = -1;  // standard error; -1: this process's
+    std::vector<int> inherited;  // descriptors the child keeps open (its /proc/self/fd/N paths)
+};
+
+// Starts args[0] (an absolute path, or looked up in PATH) with 'streams'; the
+// child gets SIGTERM should this process die first (even by SIGKILL), so no
+// point outlives its sweep. Returns its pid; throws when it cannot start.
+pid_t start_child(const std::vector<std::string>& args, const ChildStreams& streams);
 // Waits for that child (restarting after a signal handler ran); its wait status.
 int wait_child(pid_t pid);
 // start_child, then wait_child.
-int run_child(const std::vector<std::string>& args, const std::string& err_path, const char* out_path = nullptr);
+int run_child(const std::vector<std::string>& args, const ChildStreams& streams);
 
 // Runs gnuplot (found on PATH) on 'script'; nothing when it drew, else
 // what it said on stderr.
@@ -85,6 +116,7 @@ class CreatedDirectories {
 public:
     // 'label' names the path in messages ("--out").
     void create(const std::string& path, const std::string& label = "--out");
+    bool made_any() const { return !made_.empty(); }
     void keep() { made_.clear(); }
     ~CreatedDirectories();
 
@@ -92,10 +124,11 @@ private:
     std::vector<std::string> made_;
 };
 
-// Replaces 'path' with 'text' whole: written to a temporary beside it, then
-// renamed over it, with the cleanup signals held back meanwhile so that an
-// interrupted command leaves the old file or the new one, never a part.
-// Throws InputError naming 'label' and the path when it cannot.
+// Replaces 'path' with 'text' whole: written to a temporary beside it,
+// synced, then renamed over it, with the cleanup signals held back meanwhile
+// so that an interrupted command leaves the old file or the new one, never a
+// part. Throws SystemError (a full disk, an I/O error) or InputError, naming
+// 'label' and the path, with the system's own error text.
 void commit_text_file(const std::string& path, const std::string& text, const std::string& label);
 
 }  // namespace cdvp

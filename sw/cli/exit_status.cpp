@@ -8,6 +8,7 @@
 #include <new>
 
 #include "models/common/user_text.h"
+#include "sw/scene/output_set.h"
 #include "sw/scene/output_target.h"
 
 namespace cdvp {
@@ -30,6 +31,11 @@ int exit_status_of(const std::string& program, const std::function<int()>& body)
     }
 }
 
+int commit_failed(const std::string& program, const OutputFailure& failure) {
+    std::cerr << program << ": " << printable(failure.message) << '\n';
+    return failure.system() ? kExitSystem : kExitBadInput;
+}
+
 int print_to_stdout(const std::string& program, const std::string& text) {
     if (standard_descriptor_was_closed(STDOUT_FILENO)) {
         std::cerr << program << ": standard output: closed when cdvp started; expected it open\n";
@@ -38,8 +44,9 @@ int print_to_stdout(const std::string& program, const std::string& text) {
     errno = 0;
     std::cout << text << std::flush;
     if (std::cout) return kExitDone;
-    std::cerr << program << ": standard output: cannot write: " << std::strerror(errno != 0 ? errno : EIO) << '\n';
-    return kExitBadInput;
+    const int error = errno != 0 ? errno : EIO;
+    std::cerr << program << ": standard output: cannot write: " << std::strerror(error) << '\n';
+    return is_system_failure(error) ? kExitSystem : kExitBadInput;
 }
 
 }  // namespace cdvp

@@ -21,8 +21,13 @@ constexpr int kExitSystem = 4;       // the operating system failed a write or a
 // internal error (a cdvp bug): message"); each one line on stderr.
 int exit_status_of(const std::string& program, const std::function<int()>& body);
 
+struct OutputFailure;
+// Prints a failed commit's one line under 'program'; its exit status
+// (kExitSystem for a full disk or an I/O error, else kExitBadInput).
+int commit_failed(const std::string& program, const OutputFailure& failure);
+
 // Prints 'text' (help, version) on standard output: kExitDone, or
-// kExitBadInput with one line on stderr when it cannot be written.
+// kExitSystem or kExitBadInput with one line on stderr when it cannot be written.
 int print_to_stdout(const std::string& program, const std::string& text);
 
 }  // namespace cdvp

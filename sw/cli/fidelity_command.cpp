@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sw/cli/child_runs.h"
+#include "sw/cli/forwarded_options.h"
 #include "sw/cli/run_command.h"
 #include "sw/scene/output_set.h"
 #include "models/common/user_text.h"
@@ -146,44 +147,33 @@ std::string plot_script(const std::string& csv_path, const std::string& png_path
     return gp.str();
 }
 
-// The options that fidelity sets itself or that do not apply to it.
-bool reserved(const std::string& arg) {
-    for (const char* option : {"--fidelity", "--quantum-ns", "--report", "--pairs-out", "--vcd", "--inject",
-                               "--baseline"}) {
-        if (arg == option || arg.rfind(std::string(option) + "=", 0) == 0) return true;
+// What fidelity sets for each level itself, or what does not apply to it.
+bool reserved(const std::string& key) {
+    for (const char* option : {"run.fidelity", "run.quantum_ns", "report", "pairs-out", "vcd", "vcd-frames", "inject",
+                               "baseline"}) {
+        if (key == option) return true;
     }
     return false;
 }
 
-// A -c override of a setting each level sets itself ("-c NAME=VALUE" or "-cNAME=VALUE").
-void refuse_reserved_override(const std::string& value) {
-    const std::string name = value.substr(0, value.find('='));
-    if (name == "run.fidelity" || name == "run.quantum_ns") {
-        throw InputError("-c " + name + ": set by cdvp fidelity for each level; leave it out");
-    }
-}
-
 int fidelity_levels(int argc, char** argv) {
-    std::vector<std::string> forwarded;
-    std::string out_dir;
-    bool quiet = false;
-    for (int k = 1; k < argc; ++k) {
-        const std::string arg = argv[k];
-        if (arg == "--help" || arg == "-h") return print_to_stdout("cdvp fidelity", kHelp);
-        if (arg == "-q" || arg == "--quiet") {
-            quiet = true;
-        } else if (arg == "--out") {
-            if (k + 1 == argc) throw InputError("--out: expected a directory");
-            out_dir = argv[++k];
-        } else if (arg.rfind("-c", 0) == 0 && (arg.size() > 2 || k + 1 < argc)) {
-            refuse_reserved_override(arg.size() > 2 ? arg.substr(2) : std::string(argv[k + 1]));
-            forwarded.push_back(arg);
-        } else if (reserved(arg)) {
-            throw InputError(excerpt(arg) + ": set by cdvp fidelity for each level, or not for it; leave it out");
-        } else {
-            forwarded.push_back(arg);
-        }
+    for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return print_to_stdout("cdvp fidelity", kHelp);
     }
+    namespace po = boost::program_options;
+    po::options_description own;
+    own.add_options()("out", po::value<std::string>(), "")("quiet,q", po::bool_switch(), "");
+    const ParsedCommandLine line = parse_with_run_options(argc, argv, own, "cdvp fidelity");
+    std::vector<std::string> forwarded;
+    for (const ForwardedOption& option : line.forwarded) {
+        if (reserved(option.key)) {
+            throw InputError((option.typed.rfind("-c", 0) == 0 ? "-c " + option.key : excerpt(option.typed)) +
+                             ": set by cdvp fidelity for each level, or not for it; leave it out");
+        }
+        forwarded.insert(forwarded.end(), option.words.begin(), option.words.end());
+    }
+    const std::string out_dir = line.values.count("out") ? line.values["out"].as<std::string>() : std::string();
+    const bool quiet = line.values["quiet"].as<bool>();
     if (out_dir.empty()) throw InputError("--out DIR is required (see cdvp fidelity --help)");
     struct stat status {};
     if (stat(out_dir.c_str(), &status) == 0 && !S_ISDIR(status.st_mode)) {
@@ -216,23 +206,30 @@ int fidelity_levels(int argc, char** argv) {
             std::cerr << "\rcdvp fidelity: level " << k + 1 << " of " << kLevels.size() << " (" << kLevels[k].fidelity
                       << ", quantum " << kLevels[k].quantum_ns << " ns)   " << std::flush;
         }
-        ScratchFile report(".json"), pairs(".csv"), errors(".err");
+        ScratchFile report(".json"), pairs(".csv");
+        CapturedOutput errors("cdvp-level-stderr");
         std::vector<std::string> args{self, "run"};
         args.insert(args.end(), forwarded.begin(), forwarded.end());
         std::ostringstream quantum;
         quantum << kLevels[k].quantum_ns;
         args.insert(args.end(), {"--fidelity", kLevels[k].fidelity, "--quantum-ns", quantum.str(), "--report",
                                  report.path(), "--pairs-out", pairs.path(), "-q"});
-        const int wait_status = run_child(args, errors.path());
+        ChildStreams streams;
+        streams.err = errors.fd();
+        const int wait_status = run_child(args, streams);
         if (show_progress) std::cerr << '\r' << std::string(60, ' ') << '\r';
         if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
         if (WEXITSTATUS(wait_status) != 0) {
             // The level's own one-line error, under this command's name.
-            const std::string message = renamed_message(slurp(errors.path()), "cdvp fidelity");
+            const std::string message = renamed_message(errors.text(64 * 1024), "cdvp fidelity");
             std::cerr << (spool ? spool->restore_names(message) : message);
             return WEXITSTATUS(wait_status);
         }
         results.push_back(read_level(report.path(), pairs.path()));
+        if (results.back().frames == 0) {
+            throw InputError("the scene has no frames to time (--frames 0, or an empty trace); fidelity compares "
+                             "frames: give at least one");
+        }
     }
 
     made.create(out_dir);
@@ -248,10 +245,7 @@ int fidelity_levels(int argc, char** argv) {
         return kExitInternal;
     }
     if (!quiet) files.set_standard_output(table_text(results));
-    if (const std::optional<std::string> error = files.try_commit()) {
-        std::cerr << "cdvp fidelity: " << printable(*error) << '\n';
-        return kExitBadInput;
-    }
+    if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp fidelity", *failure);
     made.keep();
     return kExitDone;
 }

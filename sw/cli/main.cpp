@@ -34,12 +34,14 @@ constexpr const char* kUsage =
     "  bullet    step a Bullet scene with the board as its broad phase, against Bullet's own\n"
     "  record    write a Bullet scene's AABBs as a trace for 'cdvp run --trace'\n"
     "\n"
-    "Run 'cdvp <command> --help' for a command's options; 'cdvp --version' prints the version.\n"
+    "Run 'cdvp <command> --help' (or 'cdvp help <command>') for a command's options; 'cdvp --version'\n"
+    "prints the version.\n"
     "\n"
     "Exit status: 0 done; 1 internal failure (a cdvp bug); 2 bad input (file, flag, preset or\n"
     "output path, or a run past its memory, pair, time or input budgets), with one line on\n"
-    "stderr naming it; 3 the simulated system faulted; 4 the operating system failed (a full\n"
-    "disk, an I/O error); 128+N killed by signal N (temporary files removed).\n";
+    "stderr naming it; 3 the simulated system faulted; 4 the system failed a write (a full\n"
+    "disk, an I/O error), with its own words; 128+N killed by signal N (temporary files\n"
+    "removed).\n";
 
 }  // namespace
 
@@ -52,19 +54,37 @@ int sc_main(int argc, char** argv) {
     if (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
         return cdvp::print_to_stdout("cdvp", kUsage);
     }
-    const std::string command = argv[1];
+    std::string command = argv[1];
     if (command == "--version") {
         return cdvp::print_to_stdout("cdvp", std::string("cdvp ") + cdvp::kCdvpVersion + "\n");
     }
-    if (command == "run") return cdvp::run_command(argc - 1, argv + 1);
-    if (command == "fidelity") return cdvp::fidelity_command(argc - 1, argv + 1);
-    if (command == "settings") return cdvp::settings_command(argc - 1, argv + 1);
-    if (command == "sweep") return cdvp::sweep_command(argc - 1, argv + 1);
-    if (command == "merge") return cdvp::merge_command(argc - 1, argv + 1);
-    if (command == "bullet") return cdvp::bullet_command(argc - 1, argv + 1);
-    if (command == "record") return cdvp::record_command(argc - 1, argv + 1);
+    // The command's own argv: its name, then its arguments; "cdvp help
+    // COMMAND" is "cdvp COMMAND --help".
+    int command_argc = argc - 1;
+    char** command_argv = argv + 1;
+    char help_flag[] = "--help";
+    char* help_argv[] = {nullptr, help_flag, nullptr};
+    if (command == "help") {
+        if (argc > 3) {
+            std::cerr << "cdvp help: unexpected argument '" << cdvp::excerpt(argv[3]) << "' (see cdvp --help)\n";
+            return 2;
+        }
+        if (argc == 2) return cdvp::print_to_stdout("cdvp", kUsage);
+        command = argv[2];
+        help_argv[0] = argv[2];
+        command_argc = 2;
+        command_argv = help_argv;
+    }
+    using Command = int (*)(int, char**);
+    const std::pair<const char*, Command> commands[] = {
+        {"run", cdvp::run_command},       {"fidelity", cdvp::fidelity_command}, {"settings", cdvp::settings_command},
+        {"sweep", cdvp::sweep_command},   {"merge", cdvp::merge_command},       {"bullet", cdvp::bullet_command},
+        {"record", cdvp::record_command}};
+    for (const auto& [name, run] : commands) {
+        if (command == name) return run(command_argc, command_argv);
+    }
     std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
-              << "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record (see cdvp --help)\n";
+              << "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, help (see cdvp --help)\n";
     return 2;
 }
 

@@ -42,10 +42,7 @@ int record(const RecordOptions& o, const po::variables_map& vm) {
         frames.push_back(world->aabbs(frame));  // the AABBs this step's broad phase saw
     }
     write_trace_csv(files.file(trace).stream(), frames);
-    if (const std::optional<std::string> error = files.try_commit()) {
-        std::cerr << "cdvp record: " << printable(*error) << '\n';
-        return kExitBadInput;
-    }
+    if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp record", *failure);
     if (!o.quiet) {
         std::cout << "recorded " << frames.size() << " frames of " << frames.back().boxes.size() << " boxes ("
                   << spec.name << ") to " << printable(o.out) << '\n';

@@ -298,10 +298,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         out.files.set_standard_output(summary.str());
     }
     // Reported by value, not thrown: see OutputFile::try_finish.
-    if (const std::optional<std::string> error = out.files.try_commit()) {
-        std::cerr << "cdvp run: " << printable(*error) << '\n';
-        return 2;
-    }
+    if (const std::optional<OutputFailure> failure = out.files.try_commit()) return commit_failed("cdvp run", *failure);
     return 0;
 }
 

@@ -25,7 +25,9 @@ void add_setting_flags(po::options_description& group, const std::vector<std::st
     }
 }
 
-po::options_description run_options(RunOptions& o) {
+}  // namespace
+
+po::options_description run_options_description(RunOptions& o) {
     po::options_description input("Input (one of)");
     input.add_options()
         ("trace", po::value(&o.trace)->value_name("FILE"), "scene trace CSV (see README: file formats)")
@@ -77,8 +79,6 @@ po::options_description run_options(RunOptions& o) {
     return all;
 }
 
-}  // namespace
-
 po::variables_map parse_strictly(int argc, char** argv, const po::options_description& description) {
     const po::parsed_options parsed =
         po::command_line_parser(argc, argv)
@@ -95,13 +95,25 @@ po::variables_map parse_strictly(int argc, char** argv, const po::options_descri
 }
 
 po::variables_map parse_run_options(int argc, char** argv, RunOptions& options) {
-    return parse_strictly(argc, argv, run_options(options));
+    return parse_strictly(argc, argv, run_options_description(options));
+}
+
+std::string option_error_text(po::error& error, const std::string& program) {
+    if (auto* named = dynamic_cast<po::error_with_option_name*>(&error)) {
+        // boost quotes an unknown option as typed: keep a huge one short.
+        const std::string name = named->get_option_name();
+        if (name.size() > kExcerptBytes) {
+            named->set_option_name("");  // boost then quotes the original token
+            named->set_original_token(excerpt(name));
+        }
+    }
+    return printable(error.what()) + " (see " + program + " --help)";
 }
 
 std::string run_options_help() {
     RunOptions defaults;
     std::ostringstream text;
-    text << run_options(defaults);
+    text << run_options_description(defaults);
     return text.str();
 }
 

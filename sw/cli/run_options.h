@@ -36,7 +36,15 @@ boost::program_options::variables_map parse_run_options(int argc, char** argv, R
 // arguments (a stray one is refused as InputError), notified.
 boost::program_options::variables_map parse_strictly(int argc, char** argv,
                                                      const boost::program_options::options_description& options);
+// A command-line error's one line, an unknown option of any length quoted
+// by its first bytes only, and pointing at PROGRAM --help.
+std::string option_error_text(boost::program_options::error& error, const std::string& program);
+
 // The --help text.
 std::string run_options_help();
+// Every option of `cdvp run`, bound to 'options' (the dedicated flags of the
+// settings table among them): what other commands pass on to a run parse
+// with it.
+boost::program_options::options_description run_options_description(RunOptions& options);
 
 }  // namespace cdvp

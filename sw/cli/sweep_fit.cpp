@@ -12,7 +12,7 @@ namespace {
 
 // The extra pairs a number format adds, as a share of the float32
 // reference's pairs; NaN when the report has no such figures.
-double extra_share(const Row& row) {
+double extra_share(const RowView& row) {
     const double extra = number(row, "median_extra_pairs");
     const double reference = number(row, "median_reference_pairs");
     if (std::isnan(extra) || std::isnan(reference)) return std::nan("");
@@ -33,7 +33,7 @@ void add_fit_figures(const std::vector<Sample>& samples, const std::vector<std::
     // board -> (variant order, N) -> fit
     std::map<std::string, std::map<std::pair<std::string, double>, Fit>> fits;
     for (const Sample& s : samples) {
-        const double largest = number(*s.row, "config.resources.largest_m");
+        const double largest = number(s.row, "config.resources.largest_m");
         if (std::isnan(largest)) continue;
         Fit& fit = fits[s.board][{s.variant_order, s.n}];
         fit.any = &s;
@@ -54,11 +54,11 @@ void add_fit_figures(const std::vector<Sample>& samples, const std::vector<std::
         for (const auto& [key, fit] : fits[board]) {
             const Sample& s = *fit.any;
             const double lanes = fit.largest_m > 0 ? 2 * fit.largest_m - 1 : 0;
-            const double share = extra_share(*s.row);
+            const double share = extra_share(s.row);
             csv += board + ",";
             for (const std::string& v : s.variant_values) csv += v + ",";
             csv += num(s.n) + "," + num(fit.largest_m) + "," + num(lanes) + "," + (std::isnan(share) ? "" : num(share)) +
-                   "," + (fit.at_best ? text(*fit.at_best->row, "median_total_ns") : "") + "\n";
+                   "," + (fit.at_best ? text(fit.at_best->row, "median_total_ns") : "") + "\n";
             Line& line = largest_by_variant[key.first];
             line.variant = s.variant;
             line.points.push_back({s.n, fit.largest_m});
@@ -102,7 +102,7 @@ void add_fit_figures(const std::vector<Sample>& samples, const std::vector<std::
             for (const auto& [s, lanes] : points) {
                 std::string label;
                 for (const std::string& v : s->variant_values) label += (label.empty() ? "" : "/") + v;
-                fp << place++ << ' ' << num(lanes) << ' ' << num(100 * extra_share(*s->row)) << " \"" << label << "\"\n";
+                fp << place++ << ' ' << num(lanes) << ' ' << num(100 * extra_share(s->row)) << " \"" << label << "\"\n";
             }
             fp << "EOD\n";
             fplots << (k == 0 ? "" : ", ") << "$x" << k << " using 1:2:xtic(4) with linespoints pt 7 lc " << k + 1

@@ -3,9 +3,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <map>
 #include <set>
 
 #include "models/common/user_text.h"
+#include "sw/cli/digest.h"
 
 namespace cdvp {
 
@@ -66,31 +69,58 @@ std::vector<std::string> expand_range(const std::string& list, const std::string
 }
 
 // Text safe in a file name: anything but letters, digits, '.', '+', '-' and
-// '_' becomes '-'; at most 40 characters.
-std::string sanitized(std::string name) {
+// the characters in 'also' becomes '-'. A value's fragment keeps no '_' (it
+// joins the axes) and no '~' (it marks a digest); an axis name keeps '_'.
+std::string sanitized(std::string name, const char* also = "") {
     for (char& c : name) {
         const bool kept = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
-                          c == '+' || c == '-' || c == '_';
+                          c == '+' || c == '-' || (c != '\0' && std::strchr(also, c) != nullptr);
         if (!kept) c = '-';
     }
-    return name.empty() ? "-" : name.substr(0, 40);
+    return name.empty() ? "-" : name;
 }
 
 bool ends_with(const std::string& text, const std::string& end) {
     return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
-// The piece of a point id that an axis value gives: a file (a trace, a
-// preset) is named by its file name without the extension.
-std::string id_fragment(const std::string& value) {
+// The readable part of a value's fragment: a file (a trace, a preset) is
+// named by its file name without the extension.
+std::string readable_fragment(const std::string& value) {
     std::string name = value;
-    if (const std::size_t slash = name.find_last_of('/'); slash != std::string::npos) name = name.substr(slash + 1);
+    if (const std::size_t slash = name.find_last_of('/'); slash != std::string::npos && slash + 1 < name.size()) {
+        name = name.substr(slash + 1);
+    }
     for (const char* extension : {".json", ".csv"}) {
         if (ends_with(name, extension) && name.size() > std::string(extension).size()) {
             name.resize(name.size() - std::string(extension).size());
         }
     }
     return sanitized(name);
+}
+
+// One fragment per value, unique within the axis (see kMaxFragmentBytes).
+std::vector<std::string> axis_fragments(const std::vector<std::string>& values) {
+    std::vector<std::string> fragments;
+    std::map<std::string, std::size_t> uses;
+    for (const std::string& value : values) {
+        fragments.push_back(readable_fragment(value));
+        ++uses[fragments.back()];
+    }
+    constexpr std::size_t kDigestHex = 8;
+    constexpr std::size_t kKeptBytes = kMaxFragmentBytes - 1 - kDigestHex;
+    std::map<std::string, std::size_t> digested;
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        std::string& fragment = fragments[k];
+        if (fragment.size() <= kMaxFragmentBytes && uses[fragment] == 1) continue;
+        fragment = fragment.substr(0, kKeptBytes) + "~" + sha256_hex(values[k]).substr(0, kDigestHex);
+        ++digested[fragment];
+    }
+    // Two digests alike: their places in the list tell them apart.
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        if (digested.count(fragments[k]) != 0 && digested[fragments[k]] > 1) fragments[k] += "~" + std::to_string(k + 1);
+    }
+    return fragments;
 }
 
 }  // namespace
@@ -150,56 +180,63 @@ Shard parse_shard(const std::string& text) {
 
 Grid::Grid(std::vector<Axis> axes) : axes_(std::move(axes)) {
     if (axes_.empty()) throw InputError("a sweep needs at least one axis (--board LIST, --set NAME=LIST, ...)");
-    std::set<std::string> names;
-    for (const Axis& axis : axes_) {
-        if (!names.insert(axis.name).second) throw InputError("--set " + excerpt(axis.name) + ": the axis is given twice");
+    std::map<std::string, std::string> names;  // key -> the name it was first given as
+    for (Axis& axis : axes_) {
+        if (axis.key.empty()) {
+            axis.key = axis.name;
+            if (!is_setting_name(axis.name)) axis.flag = axis.name;
+        }
+        const auto [first, fresh] = names.emplace(axis.key, axis.name);
+        if (!fresh) {
+            throw InputError("--set " + excerpt(axis.name) + ": " +
+                             (first->second == axis.name ? std::string("the axis is given twice")
+                                                         : "the same setting as the axis " + excerpt(first->second)) +
+                             "; give it once");
+        }
         if (axis.values.empty()) throw InputError(excerpt(axis.name) + ": an axis without values");
         if (size_ > kMaxPoints / axis.values.size()) {
             throw InputError("the grid has more than " + std::to_string(kMaxPoints) + " points");
         }
         size_ *= axis.values.size();
+        fragments_.push_back(axis_fragments(axis.values));
     }
+}
+
+const Axis* Grid::find(const std::string& key) const {
+    for (const Axis& axis : axes_) {
+        if (axis.key == key) return &axis;
+    }
+    return nullptr;
 }
 
 Point Grid::point(std::size_t index) const {
     Point point;
     point.index = index;
     point.values.resize(axes_.size());
+    std::vector<std::size_t> places(axes_.size());
     std::size_t rest = index;
     for (std::size_t a = axes_.size(); a-- > 0;) {
-        point.values[a] = axes_[a].values[rest % axes_[a].values.size()];
+        places[a] = rest % axes_[a].values.size();
+        point.values[a] = axes_[a].values[places[a]];
         rest /= axes_[a].values.size();
     }
-    point.id = id_of(point.values);
-    return point;
-}
-
-std::string Grid::id_of(const std::vector<std::string>& values) const {
-    std::string id;
     for (std::size_t a = 0; a < axes_.size(); ++a) {
-        // Two values of one axis that would give one fragment (x.csv in two
-        // folders) are told apart by their place in the list.
-        std::string fragment = id_fragment(values[a]);
-        for (const std::string& other : axes_[a].values) {
-            if (other != values[a] && id_fragment(other) == fragment) {
-                for (std::size_t k = 0; k < axes_[a].values.size(); ++k) {
-                    if (axes_[a].values[k] == values[a]) fragment += "." + std::to_string(k + 1);
-                }
-                break;
-            }
-        }
-        id += (a == 0 ? "" : "_") + sanitized(axes_[a].name) + "-" + fragment;
+        point.id += (a == 0 ? "" : "_") + sanitized(axes_[a].name, "_") + "-" + fragments_[a][places[a]];
     }
-    return id;
+    if (point.id.size() > kMaxIdBytes) {
+        const std::string suffix = "~p" + std::to_string(index);
+        point.id = point.id.substr(0, kMaxIdBytes - suffix.size()) + suffix;
+    }
+    return point;
 }
 
 std::vector<std::string> Grid::run_arguments(const Point& point) const {
     std::vector<std::string> args;
     for (std::size_t a = 0; a < axes_.size(); ++a) {
-        if (is_setting_name(axes_[a].name)) {
-            args.insert(args.end(), {"-c", axes_[a].name + "=" + point.values[a]});
+        if (axes_[a].flag.empty()) {
+            args.insert(args.end(), {"-c", axes_[a].key + "=" + point.values[a]});
         } else {
-            args.insert(args.end(), {"--" + axes_[a].name, point.values[a]});
+            args.push_back("--" + axes_[a].flag + "=" + point.values[a]);
         }
     }
     return args;

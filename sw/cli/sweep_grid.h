@@ -1,6 +1,7 @@
 // The grid of `cdvp sweep`: axes parsed from the command line, expanded into
-// points in a fixed order, each with a readable id and its `cdvp run`
-// arguments. Plain C++, no processes.
+// points in a fixed order, each with an id that is unique and short enough
+// for a file name by construction, and its `cdvp run` arguments. Plain C++,
+// no processes.
 #pragma once
 
 #include <cstddef>
@@ -12,8 +13,16 @@ namespace cdvp {
 
 // One axis: a setting and the values it takes, in the order given.
 struct Axis {
-    std::string name;  // "board", "m", "objects", "bus.interrupt_ns", ...
+    std::string name;  // as the user gave it, and the CSV column: "board", "m", "bus.interrupt_ns", ...
     std::vector<std::string> values;
+    // What the axis sets, whatever its spelling: a setting's dotted name
+    // ("board.m" for m and board.m alike) or a flag of cdvp run that is no
+    // setting ("board", "trace"). Empty: the name itself.
+    std::string key = {};
+    // The flag of cdvp run a point is given each value by ("--FLAG=V"); empty:
+    // the setting, by "-c KEY=V". Left empty with an empty key: the name
+    // when it has no dot.
+    std::string flag = {};
 };
 
 // Expands LIST: "a,b,c" (as written) and, with 'ranges', "A:B:xF" (A, A*F, A*F^2, ... up to B
@@ -26,7 +35,8 @@ constexpr std::size_t kMaxAxisValues = 100000;
 std::vector<std::string> expand_list(const std::string& list, const std::string& label, bool ranges = true);
 
 // "NAME=LIST" of --set into an axis; the same errors, and a missing '=' or a
-// name that is not a flag or setting name ([a-z0-9_.-], starting with a letter).
+// name that is not a flag or setting name ([a-z0-9_.-], starting with a
+// letter).
 Axis parse_set(const std::string& text);
 
 // Which points of the grid a shard runs: those whose index % count == index_1 - 1.
@@ -46,9 +56,21 @@ struct Point {
     std::vector<std::string> values;  // one per axis
 };
 
+// Point ids: NAME-FRAGMENT for each axis, joined by '_'. A value's fragment
+// is its text (a file by its name without .json or .csv) with anything but
+// letters, digits, '.', '+' and '-' made '-', so it holds no '_' and no '~';
+// a fragment longer than kMaxFragmentBytes, or one that two values of the
+// axis share, is cut and given '~' and 8 hex digits of the value's SHA-256
+// (and '~' and its place in the list should two of those meet). An id longer
+// than kMaxIdBytes is cut and ends in "~p" and the point's index. Each step
+// keeps ids apart, so no two points of a grid share one, and every id fits a
+// file name with room for a temporary's suffix.
+constexpr std::size_t kMaxFragmentBytes = 40;
+constexpr std::size_t kMaxIdBytes = 200;
+
 class Grid {
 public:
-    // Refuses an empty grid, repeated axis names, and more than
+    // Refuses an empty grid, two axes of one key, and more than
     // kMaxPoints points (InputError).
     static constexpr std::size_t kMaxPoints = 1000000;
     explicit Grid(std::vector<Axis> axes);
@@ -56,15 +78,19 @@ public:
     const std::vector<Axis>& axes() const { return axes_; }
     std::size_t size() const { return size_; }
     Point point(std::size_t index) const;
+    // The id fragment of each value of axis 'a', in the order of its values.
+    const std::vector<std::string>& fragments(std::size_t a) const { return fragments_[a]; }
+    // The axis that sets 'key' (a setting's dotted name or a flag), if any.
+    const Axis* find(const std::string& key) const;
 
-    // The arguments of `cdvp run` that set the point's axes: "--NAME V" for
-    // a flag, "-c NAME=V" for a dotted setting name.
+    // The arguments of `cdvp run` that set the point's axes, each one word
+    // so that no value is ever taken for an option: "--NAME=V" for a flag,
+    // "-c" "KEY=V" for a setting.
     std::vector<std::string> run_arguments(const Point& point) const;
 
 private:
-    std::string id_of(const std::vector<std::string>& values) const;
-
     std::vector<Axis> axes_;
+    std::vector<std::vector<std::string>> fragments_;
     std::size_t size_ = 1;
 };
 

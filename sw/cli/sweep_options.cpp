@@ -1,6 +1,17 @@
 #include "sw/cli/sweep_options.h"
 
+#include <set>
+
+#include <boost/program_options.hpp>
+
 #include "models/common/user_text.h"
+#include "platform/board_preset.h"
+#include "platform/config_file.h"
+#include "platform/settings.h"
+#include "sw/cli/forwarded_options.h"
+#include "sw/cli/run_options.h"
+
+namespace po = boost::program_options;
 
 namespace cdvp {
 
@@ -8,7 +19,7 @@ namespace {
 
 constexpr const char* kHelp =
     "Usage: cdvp sweep [--board LIST] [--set NAME=LIST]... [--fidelity LIST] [--scene LIST | --trace LIST]\n"
-    "                  [options of cdvp run] --out DIR [--jobs J] [--shard K/N] [--no-plots] [-q]\n"
+    "                  [options of cdvp run] --out DIR [--jobs J] [--shard K/N] [--no-plots] [--rerun-invalid] [-q]\n"
     "\n"
     "Runs 'cdvp run' once for every point of the grid (every combination of the axes' values, the\n"
     "first axis outermost) and gathers the points into DIR/sweep.csv, one row per point, with each\n"
@@ -17,33 +28,46 @@ constexpr const char* kHelp =
     "Axes:\n"
     "  --board LIST, --fidelity LIST, --scene LIST, --trace LIST   comma-separated values\n"
     "  --set NAME=LIST     NAME: a flag of cdvp run without its dashes (m, objects, frames, seed,\n"
-    "                      clock-mhz, quantum-ns, transfer, wait, ...), passed as --NAME V, or a\n"
-    "                      dotted setting name (bus.interrupt_ns), passed as -c NAME=V.\n"
+    "                      clock-mhz, quantum-ns, transfer, wait, ...) or a setting's name\n"
+    "                      (bus.interrupt_ns; cdvp settings lists them); a flag and its setting\n"
+    "                      are one axis. Values are checked before any point runs.\n"
     "                      LIST: a,b,c | A:B:xF (A, A*F, ... up to B) | A:B:+S (A, A+S, ... up to B)\n"
     "Every other option is passed on to every point unchanged (--frames 30 --baseline sap,soa ...);\n"
     "without --scene or --trace the points run --scene spheres.\n"
     "\n"
-    "  --out DIR           the sweep's directory (made with its parents). Rerunning the same command\n"
-    "                      into it skips the points already in sweep.csv; another grid is refused.\n"
+    "  --out DIR           the sweep's directory (made with its parents; new, empty or this sweep's).\n"
+    "                      Rerunning the same command into it runs only the points not done yet, after\n"
+    "                      checking every row kept; another grid, other options or a changed input\n"
+    "                      file is refused. One sweep or merge at a time writes a directory.\n"
     "  --jobs J            points run in J processes at once (1 to 24; 1)\n"
     "  --shard K/N         run only the points whose index % N is K-1, for 'cdvp merge'\n"
     "  --no-plots          write no figures (shards on a cluster, say: cdvp merge draws them)\n"
+    "  --rerun-invalid     rows of sweep.csv that do not match the grid or their reports are run\n"
+    "                      again instead of refused\n"
     "  -q [ --quiet ]      print nothing but errors (else: a progress bar on a terminal, a summary)\n"
     "\n"
     "A point that cdvp run refuses (status 2: m does not fit the device, say) or that faults\n"
     "(status 3) is a row with its status and reason; if every point is refused, the sweep exits 2\n"
-    "with the first reason.\n"
+    "with the first reason. A point whose output the system could not write (status 4, a full\n"
+    "disk) is no row: the sweep stops with that status, and a rerun runs the point again.\n"
     "\n"
-    "'cdvp merge OUT SHARD_DIR...' merges the shard directories of one sweep into OUT (cdvp merge --help).\n";
+    "'cdvp merge --out OUT SHARD_DIR...' merges the shard directories of one sweep (cdvp merge --help).\n";
 
-// "--NAME V" or "--NAME=V" at args[k]: the value, advancing k past it.
-std::optional<std::string> value_of(const std::vector<std::string>& args, std::size_t& k, const std::string& name) {
-    if (args[k] == name) {
-        if (k + 1 == args.size()) throw InputError(name + ": expected a value");
-        return args[++k];
-    }
-    if (args[k].rfind(name + "=", 0) == 0) return args[k].substr(name.size() + 1);
-    return std::nullopt;
+// The sweep's own options; the axis options take lists.
+po::options_description own_options(std::vector<std::string>& sets) {
+    po::options_description own;
+    own.add_options()
+        ("board", po::value<std::string>(), "")("fidelity", po::value<std::string>(), "")
+        ("scene", po::value<std::string>(), "")("trace", po::value<std::string>(), "")
+        ("set", po::value(&sets)->composing(), "")("out", po::value<std::string>(), "")
+        ("jobs", po::value<std::string>(), "")("shard", po::value<std::string>(), "")
+        ("no-plots", po::bool_switch(), "")("rerun-invalid", po::bool_switch(), "")
+        ("quiet,q", po::bool_switch(), "")("help,h", po::bool_switch(), "");
+    return own;
+}
+
+bool is_axis_option(const std::string& key) {
+    return key == "board" || key == "fidelity" || key == "scene" || key == "trace";
 }
 
 unsigned parse_jobs(const std::string& text) {
@@ -55,19 +79,56 @@ unsigned parse_jobs(const std::string& text) {
     return static_cast<unsigned>(std::stoul(text));
 }
 
-// An option given to every point that an axis also sets.
-void refuse_axis_options(const SweepOptions& o) {
-    for (std::size_t k = 0; k < o.run_options.size(); ++k) {
-        const std::string& arg = o.run_options[k];
-        std::string name;
-        if (arg.rfind("--", 0) == 0) name = arg.substr(2, arg.find('=') - 2);
-        if (arg == "-c" && k + 1 < o.run_options.size()) name = o.run_options[k + 1].substr(0, o.run_options[k + 1].find('='));
-        if (arg.rfind("-c", 0) == 0 && arg.size() > 2) name = arg.substr(2, arg.find('=') - 2);  // -cNAME=V
-        for (const Axis& axis : o.axes) {
-            if (!name.empty() && axis.name == name) {
-                throw InputError(excerpt(arg) + ": " + name + " is an axis of the sweep; give it once");
+// The setting a name means: by its dotted name or by its flag.
+const Setting* setting_of(const std::string& name) {
+    if (const Setting* s = find_setting(name)) return s;
+    for (const Setting& s : settings_table()) {
+        if (!s.flag.empty() && s.flag == name) return &s;
+    }
+    return nullptr;
+}
+
+// Every name an axis may have, for the nearest one in a refusal.
+std::vector<std::string> axis_names(const std::set<std::string>& run_flags) {
+    std::vector<std::string> names(run_flags.begin(), run_flags.end());
+    for (const Setting& s : settings_table()) names.push_back(s.name);
+    return names;
+}
+
+// Names the axis by what it sets and checks its values: a setting's by the
+// setting's own parser, so that a bad value is refused before any point runs
+// and two spellings of one value are one value.
+void resolve_axis(Axis& axis, const std::string& label, const std::set<std::string>& run_flags) {
+    if (const Setting* s = setting_of(axis.name)) {
+        axis.key = s->name;
+        axis.flag = s->value_name.empty() ? std::string() : s->flag;  // a switch's value goes through -c
+        std::vector<std::pair<std::string, std::string>> seen;  // canonical text, as given
+        for (const std::string& value : axis.values) {
+            std::string canonical;
+            try {
+                canonical = to_text(s->parse_text(value));
+            } catch (const std::invalid_argument& e) {
+                throw InputError(label + ": " + e.what());
             }
+            for (const auto& [other, given] : seen) {
+                if (other == canonical) {
+                    throw InputError(label + ": '" + excerpt(value) + "' is the same value as '" + excerpt(given) +
+                                     "'; give each value once");
+                }
+            }
+            seen.emplace_back(canonical, value);
         }
+        return;
+    }
+    if (run_flags.count(axis.name) == 0) {
+        throw InputError(label + ": no flag of cdvp run or setting has this name; the nearest is '" +
+                         nearest_name(axis.name, axis_names(run_flags)) + "' (see cdvp run --help, cdvp settings)");
+    }
+    axis.key = axis.flag = axis.name;
+    // Refused here, naming the file and key or line, rather than by every point.
+    for (const std::string& value : axis.values) {
+        if (axis.key == "board") load_board_preset(value);
+        if (axis.key == "config") read_config_file(value);
     }
 }
 
@@ -76,54 +137,66 @@ void refuse_axis_options(const SweepOptions& o) {
 std::string sweep_help() { return kHelp; }
 
 std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
-    const std::vector<std::string> args(argv + 1, argv + argc);
+    for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return std::nullopt;
+    }
+    std::vector<std::string> sets;
+    const ParsedCommandLine line = parse_with_run_options(argc, argv, own_options(sets), "cdvp sweep");
+    std::set<std::string> run_flags = run_option_names();
+    for (const char* own : {"help", "quiet", "report", "pairs-out", "vcd", "vcd-frames"}) run_flags.erase(own);
+
     SweepOptions o;
-    bool out_given = false;
-    for (std::size_t k = 0; k < args.size(); ++k) {
-        const std::string& arg = args[k];
-        if (arg == "--help" || arg == "-h") return std::nullopt;
-        if (arg == "-q" || arg == "--quiet") {
-            o.quiet = true;  // the points run quiet anyway
-            continue;
-        }
-        if (arg == "--no-plots") {
-            o.plots = false;
-            continue;
-        }
-        bool axis_flag = false;
-        for (const char* name : {"board", "fidelity", "scene", "trace"}) {
-            if (const std::optional<std::string> list = value_of(args, k, std::string("--") + name)) {
-                o.axes.push_back({name, expand_list(*list, std::string("--") + name, false)});
-                axis_flag = true;
-                break;
-            }
-        }
-        if (axis_flag) continue;
-        if (const std::optional<std::string> set = value_of(args, k, "--set")) {
-            o.axes.push_back(parse_set(*set));
-        } else if (const std::optional<std::string> out = value_of(args, k, "--out")) {
-            if (out->empty()) throw InputError("--out: expected a directory, got ''");
-            o.out_dir = *out;
+    for (const po::option& option : line.own) {
+        const std::string& key = option.string_key;
+        if (is_axis_option(key)) {
+            Axis axis{key, expand_list(option.value.at(0), "--" + key, false)};
+            resolve_axis(axis, "--" + key, run_flags);
+            o.axes.push_back(axis);
+        } else if (key == "set") {
+            Axis axis = parse_set(option.value.at(0));
+            resolve_axis(axis, "--set " + axis.name, run_flags);
+            o.axes.push_back(axis);
+        } else if (key == "out") {
+            o.out_dir = option.value.at(0);
+            if (o.out_dir.empty()) throw InputError("--out: expected a directory, got ''");
             while (o.out_dir.size() > 1 && o.out_dir.back() == '/') o.out_dir.pop_back();
-            out_given = true;
-        } else if (const std::optional<std::string> jobs = value_of(args, k, "--jobs")) {
-            o.jobs = parse_jobs(*jobs);
-        } else if (const std::optional<std::string> shard = value_of(args, k, "--shard")) {
-            o.shard = parse_shard(*shard);
-        } else {
-            for (const char* own : {"--report", "--pairs-out", "--vcd", "--vcd-frames"}) {
-                if (arg == own || arg.rfind(std::string(own) + "=", 0) == 0) {
-                    throw InputError(excerpt(arg) + ": set by cdvp sweep for each point, or not for it; leave it out");
-                }
-            }
-            o.run_options.push_back(arg);
+        } else if (key == "jobs") {
+            o.jobs = parse_jobs(option.value.at(0));
+        } else if (key == "shard") {
+            o.shard = parse_shard(option.value.at(0));
         }
     }
-    if (!out_given) throw InputError("--out DIR is required (see cdvp sweep --help)");
-    bool has_source = false;
-    for (const Axis& axis : o.axes) has_source |= axis.name == "scene" || axis.name == "trace";
-    if (!has_source) o.run_options.insert(o.run_options.begin(), {"--scene", "spheres"});
-    refuse_axis_options(o);
+    for (const ForwardedOption& option : line.forwarded) {
+        if (option.key == "report" || option.key == "pairs-out" || option.key == "vcd" || option.key == "vcd-frames") {
+            throw InputError("--" + option.key + ": set by cdvp sweep for each point, or not for it; leave it out");
+        }
+        for (const Axis& axis : o.axes) {
+            if (axis.key == option.key) {
+                throw InputError(excerpt(option.typed) + ": " + option.key + " is an axis of the sweep (" +
+                                 excerpt(axis.name) + "); give it once");
+            }
+        }
+        o.run_options.insert(o.run_options.end(), option.words.begin(), option.words.end());
+        if (option.key == "config") {
+            if (option.value.empty()) throw InputError("--config: expected a file path, got ''");
+            read_config_file(option.value);  // refused here, naming file and line
+            o.inputs.push_back({"--config", option.value, option.value});
+        }
+    }
+    o.quiet = line.values["quiet"].as<bool>();
+    o.plots = !line.values["no-plots"].as<bool>();
+    o.rerun_invalid = line.values["rerun-invalid"].as<bool>();
+    if (o.out_dir.empty()) throw InputError("--out DIR is required (see cdvp sweep --help)");
+    std::set<std::string> sources;
+    for (const Axis& axis : o.axes) {
+        if (axis.key == "scene" || axis.key == "trace") sources.insert(axis.key);
+        for (const std::string& value : axis.values) {
+            if (axis.key == "trace" || axis.key == "config") o.inputs.push_back({"--" + axis.key, value, value});
+            if (axis.key == "board") o.inputs.push_back({"--board", value, board_preset_path(value)});
+        }
+    }
+    if (sources.size() == 2) throw InputError("--scene and --trace: give one of them (the points' frames come from it)");
+    if (sources.empty()) o.run_options.insert(o.run_options.begin(), "--scene=spheres");
     return o;
 }
 

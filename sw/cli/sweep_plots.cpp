@@ -22,7 +22,7 @@ std::string Line::title() const {
 Series series(const std::vector<Sample>& samples, const std::string& board, const std::string& column, double scale) {
     Series lines;
     for (const Sample& s : samples) {
-        const double y = number(*s.row, column);
+        const double y = number(s.row, column);
         if (s.board != board || std::isnan(y)) continue;
         Line& line = lines[{s.variant_order, s.m}];
         line.m = s.m;
@@ -33,15 +33,12 @@ Series series(const std::vector<Sample>& samples, const std::string& board, cons
     return lines;
 }
 
-double number(const Row& row, const std::string& column) {
-    const auto at = row.find(column);
-    return at == row.end() || at->second.empty() ? std::nan("") : std::strtod(at->second.c_str(), nullptr);
+double number(const RowView& row, const std::string& column) {
+    const std::string value = row.get(column);
+    return value.empty() ? std::nan("") : std::strtod(value.c_str(), nullptr);
 }
 
-std::string text(const Row& row, const std::string& column) {
-    const auto at = row.find(column);
-    return at == row.end() ? std::string() : at->second;
-}
+std::string text(const RowView& row, const std::string& column) { return row.get(column); }
 
 std::string quoted(const std::string& s) {
     std::string q = "'";
@@ -73,13 +70,6 @@ std::string datablock(const std::string& name, const std::vector<std::pair<doubl
 namespace {
 
 using namespace sweep_figures;
-
-const Axis* find_axis(const Grid& grid, const std::string& name) {
-    for (const Axis& axis : grid.axes()) {
-        if (axis.name == name) return &axis;
-    }
-    return nullptr;
-}
 
 std::string line_plot(const std::string& title, const std::string& ylabel, const Series& lines,
                       const std::string& extra_blocks, const std::string& extra_plots) {
@@ -191,7 +181,7 @@ Figure phase_bars(const std::vector<Sample>& samples, const std::string& board, 
     gp << '\n';
     for (const Sample* s : bars) {
         gp << "N=" << num(s->n) << ",m=" << num(s->m);
-        for (const std::string& phase : phases) gp << ' ' << num(number(*s->row, phase) / 1e3);
+        for (const std::string& phase : phases) gp << ' ' << num(number(s->row, phase) / 1e3);
         gp << '\n';
     }
     gp << "EOD\nset title " << quoted("median frame time by phase on " + board)
@@ -206,10 +196,10 @@ Figure phase_bars(const std::vector<Sample>& samples, const std::string& board, 
 
 FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
     FigurePlan plan;
-    // Each by its flag or its setting's name.
-    const Axis* board_axis = find_axis(grid, "board");
-    const Axis* n_axis = find_axis(grid, "objects") ? find_axis(grid, "objects") : find_axis(grid, "scene.objects");
-    const Axis* m_axis = find_axis(grid, "m") ? find_axis(grid, "m") : find_axis(grid, "board.m");
+    // Each by what it sets, whatever its name (a grid named by hand keys its axes by name).
+    const Axis* board_axis = grid.find("board");
+    const Axis* n_axis = grid.find("scene.objects") ? grid.find("scene.objects") : grid.find("objects");
+    const Axis* m_axis = grid.find("board.m") ? grid.find("board.m") : grid.find("m");
     // Every other axis that varies draws lines of its own.
     std::vector<const Axis*> variant_axes;
     std::vector<std::string> variant_names;
@@ -219,27 +209,35 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
             variant_names.push_back(axis.name);
         }
     }
+    // Each variant value's place in its axis, for lines in grid order.
+    std::vector<std::map<std::string, std::size_t>> variant_places;
+    for (const Axis* axis : variant_axes) {
+        variant_places.emplace_back();
+        for (std::size_t k = 0; k < axis->values.size(); ++k) variant_places.back().emplace(axis->values[k], k);
+    }
     std::vector<Sample> samples;
     std::vector<std::string> boards;
-    for (const auto& [index, row] : table.rows()) {
-        if (text(row, "status") != "ok") continue;
+    table.for_each([&](std::size_t, const RowView& row) {
+        if (text(row, "status") != "ok") return;
         Sample s;
-        s.board = text(row, board_axis ? "board" : "config.board");
+        s.board = text(row, board_axis ? board_axis->name : "config.board");
         s.m = number(row, m_axis ? m_axis->name : "config.m");
         s.n = number(row, n_axis ? n_axis->name : "median_objects");
-        s.row = &row;
-        for (const Axis* axis : variant_axes) {
+        s.row = row;
+        for (std::size_t v = 0; v < variant_axes.size(); ++v) {
+            const Axis* axis = variant_axes[v];
             const std::string value = text(row, axis->name);
-            const auto place = std::find(axis->values.begin(), axis->values.end(), value) - axis->values.begin();
+            const auto at = variant_places[v].find(value);
+            const std::size_t place = at == variant_places[v].end() ? axis->values.size() : at->second;
             char order[16];
-            std::snprintf(order, sizeof order, "%08zu|", static_cast<std::size_t>(place));
+            std::snprintf(order, sizeof order, "%08zu|", place);
             s.variant += (s.variant.empty() ? "" : " ") + axis->name + "=" + value;
             s.variant_order += order;
             s.variant_values.push_back(value);
         }
         if (std::find(boards.begin(), boards.end(), s.board) == boards.end()) boards.push_back(s.board);
         samples.push_back(s);
-    }
+    });
     if (samples.empty()) {
         plan.notes.push_back("no plots: no point of the sweep ran");
         return plan;
@@ -248,7 +246,7 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
     for (const std::string& column : table.columns()) {
         const bool phase = column.rfind("median_", 0) == 0 && column.size() > 10 &&
                            column.compare(column.size() - 3, 3, "_ns") == 0 && column != "median_total_ns" &&
-                           !is_timing_column(column);
+                           !is_measured_column(column);
         if (phase) phases.push_back(column);
         if (column.size() > 8 && column.compare(column.size() - 8, 8, "_speedup") == 0) {
             baselines.push_back(column.substr(0, column.size() - 8));
@@ -277,9 +275,14 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
             blocks << datablock("b" + std::to_string(b), software.begin()->second.points);
             plots << ", $b" << b << " using 1:2 with lines lc rgb 'gray30' dt 2 lw 3 title " << quoted(baselines[b] + " (software)");
         }
+        const Series times = series(samples, board, "median_total_ns", 1e-3);
+        if (times.empty()) {
+            plan.notes.push_back("no plots of time or speedup on " + board + ": no point timed a frame (--frames 0)");
+            continue;
+        }
         plan.figures.push_back({"time-" + file_part(board) + ".png",
-                                line_plot("median frame time on " + board, "us per frame",
-                                          series(samples, board, "median_total_ns", 1e-3), blocks.str(), plots.str()),
+                                line_plot("median frame time on " + board, "us per frame", times, blocks.str(),
+                                          plots.str()),
                                 ""});
         for (const std::string& baseline : baselines) {
             plan.figures.push_back({"speedup-" + file_part(board) + "-" + file_part(baseline) + ".png",

@@ -24,7 +24,7 @@ struct Sample {
     std::string variant;                      // empty when no other axis varies
     std::vector<std::string> variant_values;  // the same values, one per varying axis
     std::string variant_order;  // the variant's values' places in their axes, for grid order
-    const Row* row = nullptr;
+    RowView row;
 };
 
 // One line of a figure: the points (x, y) sorted by x, titled by m and variant.
@@ -40,8 +40,8 @@ using Series = std::map<std::pair<std::string, double>, Line>;
 // For the samples of `board`: y = column x scale against N, one line per (variant, m).
 Series series(const std::vector<Sample>& samples, const std::string& board, const std::string& column, double scale);
 
-double number(const Row& row, const std::string& column);  // NaN when absent
-std::string text(const Row& row, const std::string& column);
+double number(const RowView& row, const std::string& column);  // NaN when absent
+std::string text(const RowView& row, const std::string& column);
 std::string quoted(const std::string& s);  // single-quoted for gnuplot
 std::string file_part(std::string s);      // file-name safe, as point ids are
 std::string num(double v);

@@ -4,12 +4,14 @@
 #include <cstdio>
 
 #include "models/common/user_text.h"
+#include "sw/cli/digest.h"
+#include "sw/cli/sweep_csv.h"
 
 namespace cdvp {
 
 namespace {
 
-const std::vector<std::string> kFixedColumns{"point", "index", "status", "reason"};
+const std::vector<std::string> kFixedColumns{"point", "index", "status", "reason", kChecksumColumn};
 
 bool ends_with(const std::string& text, const std::string& end) {
     return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
@@ -53,11 +55,32 @@ Row axis_row(const Grid& grid, const Point& point, PointStatus status, const std
     return row;
 }
 
-std::string csv_field(const std::string& text) {
-    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
+void put_varint(std::string& out, std::size_t value) {
+    while (value >= 0x80) {
+        out += static_cast<char>((value & 0x7f) | 0x80);
+        value >>= 7;
+    }
+    out += static_cast<char>(value);
+}
+
+std::size_t get_varint(const std::string& in, std::size_t& at) {
+    std::size_t value = 0;
+    for (unsigned shift = 0;; shift += 7) {
+        const auto byte = static_cast<unsigned char>(in[at++]);
+        value |= static_cast<std::size_t>(byte & 0x7f) << shift;
+        if ((byte & 0x80) == 0) return value;
+    }
+}
+
+// Visits the (column id, value) pairs of a packed row until 'visit' returns true.
+template <class Visit>
+void walk(const std::string& packed, Visit visit) {
+    for (std::size_t at = 0; at < packed.size();) {
+        const std::size_t id = get_varint(packed, at);
+        const std::size_t size = get_varint(packed, at);
+        if (visit(id, at, size)) return;
+        at += size;
+    }
 }
 
 }  // namespace
@@ -71,7 +94,28 @@ const char* to_string(PointStatus status) {
     return "?";
 }
 
-PointRow report_row(const Grid& grid, const Point& point, const nlohmann::json& report, double wall_seconds) {
+std::optional<PointStatus> parse_point_status(const std::string& text) {
+    for (PointStatus status : {PointStatus::kOk, PointStatus::kRefused, PointStatus::kFault}) {
+        if (text == to_string(status)) return status;
+    }
+    return std::nullopt;
+}
+
+std::string row_checksum(const Row& row, const std::string* report_sha256) {
+    std::string fields;
+    for (const auto& [column, value] : row) {
+        if (column == kChecksumColumn || value.empty()) continue;
+        fields += column;
+        fields += '\0';
+        fields += value;
+        fields += '\0';
+    }
+    if (report_sha256 != nullptr) fields += *report_sha256;
+    return sha256_hex(fields).substr(0, 16);
+}
+
+PointRow report_row(const Grid& grid, const Point& point, const std::string& report_text, double wall_seconds) {
+    const nlohmann::json report = nlohmann::json::parse(report_text);
     Row row = axis_row(grid, point, PointStatus::kOk, "");
     std::vector<std::string> order;  // the report's own order of its columns
     auto put = [&](const std::string& column, const std::string& value) {
@@ -132,6 +176,8 @@ PointRow report_row(const Grid& grid, const Point& point, const nlohmann::json& 
         put(name + "_speedup", number_text(board_ns > 0 ? ns / board_ns : 0));
     }
     put("point_wall_s", number_text(wall_seconds));
+    const std::string report_sha256 = sha256_hex(report_text);
+    row[kChecksumColumn] = row_checksum(row, &report_sha256);
     return {order, row};
 }
 
@@ -139,134 +185,109 @@ PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, co
                     double wall_seconds) {
     Row row = axis_row(grid, point, status, reason);
     row["point_wall_s"] = number_text(wall_seconds);
+    row[kChecksumColumn] = row_checksum(row, nullptr);
     return {{}, row};
 }
 
-bool is_timing_column(const std::string& column) {
-    return column == "median_sim_wall_ns" || column == "point_wall_s" || ends_with(column, "_median_ns") ||
-           ends_with(column, "_p10_ns") || ends_with(column, "_p90_ns") || ends_with(column, "_speedup");
+bool is_measured_column(const std::string& column) {
+    return column == "median_sim_wall_ns" || column == "point_wall_s" || column == kChecksumColumn ||
+           ends_with(column, "_median_ns") || ends_with(column, "_p10_ns") || ends_with(column, "_p90_ns") ||
+           ends_with(column, "_speedup");
 }
 
-SweepTable::SweepTable(const Grid& grid) : columns_(kFixedColumns) {
-    for (const Axis& axis : grid.axes()) columns_.push_back(axis.name);
+std::string RowView::get(const std::string& column) const {
+    if (table_ == nullptr) return {};
+    const auto id = table_->ids_.find(column);
+    if (id == table_->ids_.end()) return {};
+    std::string value;
+    walk(*packed_, [&](std::size_t field, std::size_t at, std::size_t size) {
+        if (field != id->second) return false;
+        value = packed_->substr(at, size);
+        return true;
+    });
+    return value;
+}
+
+SweepTable::SweepTable(const Grid& grid) {
+    for (const std::string& column : kFixedColumns) add_column(column);
+    for (const Axis& axis : grid.axes()) add_column(axis.name);
+}
+
+uint32_t SweepTable::column_id(const std::string& column) {
+    add_column(column);
+    return ids_.at(column);
 }
 
 void SweepTable::add_column(const std::string& column) {
-    if (std::find(columns_.begin(), columns_.end(), column) != columns_.end()) return;
-    // Timing columns go last, so the columns that must agree between runs
-    // come first whatever order they are met in.
-    ++columns_version_;
-    if (is_timing_column(column)) {
+    if (ids_.count(column) != 0) return;
+    ids_.emplace(column, static_cast<uint32_t>(names_.size()));
+    names_.push_back(column);
+    // Measured columns go last, so the columns that must agree between runs
+    // come first whatever order they are met in; the checksum stays with the
+    // fixed columns.
+    if (is_measured_column(column) && column != kChecksumColumn) {
         columns_.push_back(column);
         return;
     }
-    auto at = std::find_if(columns_.begin(), columns_.end(), [](const std::string& c) { return is_timing_column(c); });
+    auto at = std::find_if(columns_.begin(), columns_.end(),
+                           [](const std::string& c) { return is_measured_column(c) && c != kChecksumColumn; });
     columns_.insert(at, column);
 }
 
-void SweepTable::set_row(std::size_t index, Row row) {
-    rows_[index] = std::move(row);
-    lines_.erase(index);
+bool SweepTable::add(std::size_t index, const PointRow& row) {
+    const std::size_t before = names_.size();
+    for (const std::string& column : row.columns) add_column(column);
+    std::string packed;
+    for (const auto& [column, value] : row.values) {
+        const uint32_t id = column_id(column);
+        if (value.empty()) continue;
+        put_varint(packed, id);
+        put_varint(packed, value.size());
+        packed += value;
+    }
+    rows_[index] = std::move(packed);
+    return names_.size() != before;
 }
 
-void SweepTable::add(std::size_t index, const PointRow& row) {
-    for (const std::string& column : row.columns) add_column(column);
-    for (const auto& [column, value] : row.values) add_column(column);
-    set_row(index, row.values);
+std::vector<std::string> SweepTable::unpack(const std::string& packed) const {
+    std::vector<std::string> values(names_.size());
+    walk(packed, [&](std::size_t id, std::size_t at, std::size_t size) {
+        values[id] = packed.substr(at, size);
+        return false;
+    });
+    return values;
+}
+
+PointRow SweepTable::point_row(std::size_t index) const {
+    PointRow row;
+    const std::vector<std::string> values = unpack(rows_.at(index));
+    for (const std::string& column : columns_) {
+        row.columns.push_back(column);
+        const std::string& value = values[ids_.at(column)];
+        if (!value.empty()) row.values[column] = value;
+    }
+    return row;
+}
+
+std::string SweepTable::header_line() const {
+    std::string text;
+    for (std::size_t c = 0; c < columns_.size(); ++c) text += (c == 0 ? "" : ",") + csv_field(columns_[c]);
+    return text + '\n';
+}
+
+std::string SweepTable::line(std::size_t index) const {
+    const std::vector<std::string> values = unpack(rows_.at(index));
+    std::string text;
+    for (std::size_t c = 0; c < columns_.size(); ++c) {
+        text += (c == 0 ? "" : ",") + csv_field(values[ids_.at(columns_[c])]);
+    }
+    return text + '\n';
 }
 
 std::string SweepTable::csv() const {
-    std::string text;
-    for (std::size_t c = 0; c < columns_.size(); ++c) text += (c == 0 ? "" : ",") + csv_field(columns_[c]);
-    text += '\n';
-    for (const auto& [index, row] : rows_) {
-        Line& line = lines_[index];
-        if (line.columns_version != columns_version_) {
-            line.text.clear();
-            for (std::size_t c = 0; c < columns_.size(); ++c) {
-                const auto value = row.find(columns_[c]);
-                line.text += (c == 0 ? "" : ",") + (value == row.end() ? std::string() : csv_field(value->second));
-            }
-            line.text += '\n';
-            line.columns_version = columns_version_;
-        }
-        text += line.text;
-    }
+    std::string text = header_line();
+    for (const auto& [index, packed] : rows_) text += line(index);
     return text;
-}
-
-void SweepTable::read_csv(const std::string& text, const std::string& label) {
-    const std::vector<std::vector<std::string>> lines = parse_csv(text, label);
-    if (lines.empty()) return;
-    const std::vector<std::string>& header = lines[0];
-    for (std::size_t c = 0; c < columns_.size(); ++c) {
-        if (c >= header.size() || header[c] != columns_[c]) {
-            throw InputError(label + ":1: expected the column '" + excerpt(columns_[c]) + "' of this sweep's grid");
-        }
-    }
-    for (const std::string& column : header) add_column(column);
-    for (std::size_t k = 1; k < lines.size(); ++k) {
-        const std::vector<std::string>& fields = lines[k];
-        const std::string where = label + ":" + std::to_string(k + 1);
-        if (fields.size() != header.size()) throw InputError(where + ": expected " + std::to_string(header.size()) + " fields");
-        Row row;
-        for (std::size_t c = 0; c < header.size(); ++c) {
-            if (!fields[c].empty()) row[header[c]] = fields[c];
-        }
-        const std::string& index = fields[1];
-        if (index.empty() || index.size() > 9 || index.find_first_not_of("0123456789") != std::string::npos) {
-            throw InputError(where + ": expected a point index, got '" + excerpt(index) + "'");
-        }
-        set_row(std::stoul(index), row);
-    }
-}
-
-std::vector<std::vector<std::string>> parse_csv(const std::string& text, const std::string& label) {
-    std::vector<std::vector<std::string>> lines;
-    std::vector<std::string> fields;
-    std::string field;
-    bool quoted = false;
-    for (std::size_t k = 0; k < text.size(); ++k) {
-        const char c = text[k];
-        if (quoted) {
-            if (c == '"' && k + 1 < text.size() && text[k + 1] == '"') {
-                field += '"';
-                ++k;
-            } else if (c == '"') {
-                quoted = false;
-            } else {
-                field += c;
-            }
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            fields.push_back(field);
-            field.clear();
-        } else if (c == '\n') {
-            fields.push_back(field);
-            lines.push_back(fields);
-            fields.clear();
-            field.clear();
-        } else if (c != '\r') {
-            field += c;
-        }
-    }
-    if (quoted) throw InputError(label + ": a quoted field is not closed");
-    if (!field.empty() || !fields.empty()) {
-        fields.push_back(field);
-        lines.push_back(fields);
-    }
-    return lines;
-}
-
-nlohmann::json manifest(const Grid& grid, const std::vector<std::string>& run_options, const Shard& shard) {
-    nlohmann::json axes = nlohmann::json::array();
-    for (const Axis& axis : grid.axes()) axes.push_back({{"name", axis.name}, {"values", axis.values}});
-    return {{"format", "cdvp sweep 1"},
-            {"axes", axes},
-            {"run_options", run_options},
-            {"points", grid.size()},
-            {"shard", shard.text()}};
 }
 
 }  // namespace cdvp

@@ -94,6 +94,42 @@ int copy_into(const std::string& from, int to) {
 
 }  // namespace
 
+DescriptorBuffer::DescriptorBuffer(int fd) : fd_(fd) { setp(buffer_, buffer_ + sizeof buffer_); }
+
+DescriptorBuffer::~DescriptorBuffer() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+bool DescriptorBuffer::drain() {
+    for (char* at = pbase(); at < pptr() && error_ == 0;) {
+        const ssize_t put = ::write(fd_, at, static_cast<std::size_t>(pptr() - at));
+        if (put < 0 && errno == EINTR) continue;
+        if (put < 0) error_ = errno;
+        if (put > 0) at += put;
+    }
+    setp(buffer_, buffer_ + sizeof buffer_);
+    return error_ == 0;
+}
+
+DescriptorBuffer::int_type DescriptorBuffer::overflow(int_type c) {
+    if (!drain()) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+        *pptr() = traits_type::to_char_type(c);
+        pbump(1);
+    }
+    return traits_type::not_eof(c);
+}
+
+int DescriptorBuffer::sync() { return drain() ? 0 : -1; }
+
+int DescriptorBuffer::close() {
+    if (fd_ < 0) return error_;
+    drain();
+    if (::close(fd_) != 0 && error_ == 0) error_ = errno;
+    fd_ = -1;
+    return error_;
+}
+
 OutputFile::OutputFile(std::string final_path, std::string suffix, bool open_stream)
     : final_path_(std::move(final_path)), target_(resolve_output_target(final_path_)) {
     const fs::path target(target_.path);
@@ -116,19 +152,15 @@ OutputFile::OutputFile(std::string final_path, std::string suffix, bool open_str
     }
     const mode_t mode = target_.kind == OutputTarget::Kind::kRegular ? target_.status.st_mode & 07777
                                                                      : default_file_mode();
-    int err = fchmod(fd, mode) == 0 ? 0 : errno;
-    close(fd);
+    const int err = fchmod(fd, mode) == 0 ? 0 : errno;
+    if (err != 0 || !open_stream) close(fd);
     if (err != 0) {
         discard();
         fail(err);
     }
     if (open_stream) {
-        stream_ = std::make_unique<std::ofstream>(temp_path_, std::ios::binary | std::ios::trunc);
-        if (!*stream_) {
-            err = errno != 0 ? errno : EIO;
-            discard();
-            fail(err);
-        }
+        buffer_ = std::make_unique<DescriptorBuffer>(fd);
+        stream_ = std::make_unique<std::ostream>(buffer_.get());
     }
 }
 
@@ -139,6 +171,7 @@ OutputFile::OutputFile(OutputFile&& other) noexcept
       target_(std::move(other.target_)),
       temp_path_(std::exchange(other.temp_path_, std::string())),
       cleanup_slot_(std::exchange(other.cleanup_slot_, -1)),
+      buffer_(std::move(other.buffer_)),
       stream_(std::move(other.stream_)) {}
 
 OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
@@ -148,6 +181,7 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
         target_ = std::move(other.target_);
         temp_path_ = std::exchange(other.temp_path_, std::string());
         cleanup_slot_ = std::exchange(other.cleanup_slot_, -1);
+        buffer_ = std::move(other.buffer_);
         stream_ = std::move(other.stream_);
     }
     return *this;
@@ -166,11 +200,10 @@ void OutputFile::finish() {
 int OutputFile::try_finish() noexcept {
     if (temp_path_.empty()) return EINVAL;  // nothing to finish: committed, discarded or moved from
     if (stream_) {
-        errno = 0;
-        stream_->close();  // flushes
-        const bool failed = stream_->fail();
+        const int err = buffer_->close();  // flushes
         stream_.reset();
-        if (failed) return errno != 0 ? errno : EIO;
+        buffer_.reset();
+        if (err != 0) return err;
     }
     return 0;
 }
@@ -227,12 +260,16 @@ void OutputFile::forget_temporary() noexcept {
 
 void OutputFile::discard() noexcept {
     stream_.reset();
+    buffer_.reset();
     if (!temp_path_.empty()) {
         std::remove(temp_path_.c_str());
         forget_temporary();
     }
 }
 
-void OutputFile::fail(int err) const { throw InputError(error_message(err)); }
+void OutputFile::fail(int err) const {
+    if (is_system_failure(err)) throw SystemError(error_message(err));
+    throw InputError(error_message(err));
+}
 
 }  // namespace cdvp

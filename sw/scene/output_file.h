@@ -5,14 +5,39 @@
 // catchable signal (see output_cleanup.h).
 #pragma once
 
-#include <fstream>
 #include <memory>
 #include <ostream>
+#include <streambuf>
 #include <string>
 
 #include "sw/scene/output_target.h"
 
 namespace cdvp {
+
+// A stream buffer over a file descriptor that keeps the first error of any
+// write, so that a failure is reported with the system's own text (No space
+// left on device) however many writes later it is noticed.
+class DescriptorBuffer : public std::streambuf {
+public:
+    explicit DescriptorBuffer(int fd);  // takes the descriptor
+    ~DescriptorBuffer() override;
+    DescriptorBuffer(const DescriptorBuffer&) = delete;
+    DescriptorBuffer& operator=(const DescriptorBuffer&) = delete;
+    // Writes what is buffered and closes the descriptor: 0, or the errno of
+    // the first write, flush or close that failed.
+    int close();
+
+protected:
+    int_type overflow(int_type c) override;
+    int sync() override;
+
+private:
+    bool drain();
+
+    int fd_;
+    int error_ = 0;
+    char buffer_[1 << 16];
+};
 
 class OutputFile {
 public:
@@ -39,8 +64,9 @@ public:
     const std::string& final_path() const { return final_path_; }
     const OutputTarget& target() const { return target_; }
 
-    // Flushes and closes the stream and checks for write errors (InputError
-    // "FINAL_PATH: cannot write: <reason>"). Nothing is published yet.
+    // Flushes and closes the stream and checks for write errors (SystemError
+    // for a full disk or an I/O error, else InputError, "FINAL_PATH: cannot
+    // write: <the system's reason>"). Nothing is published yet.
     void finish();
     // A regular target: renames the finished temporary over it. The old
     // file, if any, stays reachable under the returned backup path (a hard
@@ -68,7 +94,8 @@ private:
     OutputTarget target_;
     std::string temp_path_;  // empty once published, discarded or moved from
     int cleanup_slot_ = -1;
-    std::unique_ptr<std::ofstream> stream_;
+    std::unique_ptr<DescriptorBuffer> buffer_;
+    std::unique_ptr<std::ostream> stream_;
 };
 
 }  // namespace cdvp

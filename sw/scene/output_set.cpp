@@ -107,7 +107,7 @@ void OutputSet::open() {
 }
 
 void OutputSet::commit() {
-    if (std::optional<std::string> error = try_commit()) throw InputError(*error);
+    if (const std::optional<OutputFailure> failure = try_commit()) failure->raise();
 }
 
 namespace {
@@ -124,9 +124,14 @@ int write_all(int fd, const std::string& text) {
 
 }  // namespace
 
-std::optional<std::string> OutputSet::try_commit() noexcept {
+void OutputFailure::raise() const {
+    if (system()) throw SystemError(message);
+    throw InputError(message);
+}
+
+std::optional<OutputFailure> OutputSet::try_commit() noexcept {
     const auto failure = [this](std::size_t k, int err) {
-        return std::optional<std::string>(outputs_[k].label + ": " + files_[k].error_message(err));
+        return std::optional<OutputFailure>(OutputFailure{outputs_[k].label + ": " + files_[k].error_message(err), err});
     };
     for (std::size_t k = 0; k < files_.size(); ++k) {
         if (const int err = files_[k].try_finish()) return failure(k, err);
@@ -143,7 +148,7 @@ std::optional<std::string> OutputSet::try_commit() noexcept {
     }
     if (stdout_label_ && !stdout_text_.empty()) {
         if (const int err = write_all(STDOUT_FILENO, stdout_text_)) {
-            return *stdout_label_ + ": cannot write: " + std::strerror(err);
+            return OutputFailure{*stdout_label_ + ": cannot write: " + std::strerror(err), err};
         }
     }
     // The renames and their rollback are never cut short: a signal arriving

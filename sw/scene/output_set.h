@@ -9,9 +9,21 @@
 #include <string>
 #include <vector>
 
+#include "models/common/user_text.h"
 #include "sw/scene/output_file.h"
 
 namespace cdvp {
+
+// Why a commit failed: one line ("LABEL: PATH: cannot write: REASON") and
+// the system's error number behind it.
+struct OutputFailure {
+    std::string message;
+    int error = 0;
+    // The system failed (a full disk, an I/O error) rather than the path.
+    bool system() const { return is_system_failure(error); }
+    // Throws it: SystemError when system(), else InputError.
+    [[noreturn]] void raise() const;
+};
 
 class OutputSet {
 public:
@@ -47,9 +59,9 @@ public:
     // still be interrupted; one arriving during the renames is delivered
     // after them, with every output in place.
     void commit();
-    // The same without exceptions (see OutputFile::try_finish): the error
-    // message ("LABEL: PATH: cannot write: REASON"), or nothing on success.
-    std::optional<std::string> try_commit() noexcept;
+    // The same without exceptions (see OutputFile::try_finish): what failed,
+    // or nothing on success.
+    std::optional<OutputFailure> try_commit() noexcept;
 
 private:
     struct Declared {

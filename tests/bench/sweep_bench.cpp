@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "sw/cli/sweep_csv.h"
 #include "sw/cli/sweep_table.h"
 
 namespace {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli/cli_support.h"
+#include "tests/platform/nested_text.h"
 
 namespace cdvp::test {
 namespace {
@@ -95,6 +96,36 @@ TEST_F(Cli, FifoDepthCheckNamesWhereMCameFrom) {
     const Result r = run("run --trace " + trace("small.csv") + " --board board.json --quiet");
     expect_refused(r, "board.json: board.fifo_depth: expected 2m-1 = 15 (one cycle's hits) to 1048576 pairs, got 4 "
                       "(with m=8 (the default of --m))\n");
+}
+
+// Files 40 KB and 20,000 levels deep, far under the 1 MiB cap, overflowed
+// the stack (SIGSEGV). Past 64 levels they are refused at the level too many,
+// for --board and --config alike; at 64 they are read on, and refused for
+// what they hold.
+TEST_F(Cli, DeeplyNestedPresetsAndConfigFilesAreRefusedNotACrash) {
+    write("deep.json", repeated("{\"board\":", 20000) + "1" + repeated("}", 20000) + "\n");
+    write("deep_arrays.json", "{\"board\": " + repeated("[", 20000) + repeated("]", 20000) + "}\n");
+    write("headers.toml", "[" + repeated("a.", 19999) + "a]\nx=1\n");
+    write("dotted.toml", repeated("a.", 20000) + "b={c=1}\n");
+    const std::string run_with = "run --scene spheres --objects 10 --quiet ";
+    const std::string refused = " nesting deeper than 64 levels; ";
+    const std::string preset = refused + "a board preset nests objects and arrays at most 64 deep\n";
+    expect_refused(run(run_with + "--board deep.json"), "deep.json:1:577:" + preset);
+    expect_refused(run(run_with + "--board deep_arrays.json"), "deep_arrays.json:1:74:" + preset);
+    const std::string json = refused + "a config file nests objects and arrays at most 64 deep\n";
+    const std::string toml = refused + "a config file nests tables and arrays at most 64 deep\n";
+    expect_refused(run(run_with + "--config deep.json"), "deep.json:1:577:" + json);
+    expect_refused(run(run_with + "--config headers.toml"), "headers.toml:1:128:" + toml);
+    expect_refused(run(run_with + "--config dotted.toml"), "dotted.toml:1:127:" + toml);
+
+    write("limit.json", repeated("{\"board\":", 64) + "1" + repeated("}", 64) + "\n");
+    write("limit.toml", "[" + repeated("board.", 62) + "m]\nx = 1\n");
+    expect_refused(run(run_with + "--board limit.json"), "limit.json: name: expected a non-empty string\n");
+    const Result config_at_limit = run(run_with + "--config limit.toml");
+    expect_refused(config_at_limit, "limit.toml:2: board.board.board.");
+    EXPECT_NE(config_at_limit.err.find(": unknown setting; did you mean '"), std::string::npos) << config_at_limit.err;
+    EXPECT_EQ(files(), (std::vector<std::string>{"deep.json", "deep_arrays.json", "dotted.toml", "headers.toml",
+                                                 "limit.json", "limit.toml"}));
 }
 
 }  // namespace

@@ -23,10 +23,10 @@ protected:
         write("in.csv", slurp(trace("small.csv")));
     }
     // Runs on in.csv; the run must be refused with 'message' and change nothing.
-    void expect_refused(const std::string& flags, const std::string& message) {
+    void expect_refused(const std::string& flags, const std::string& message, int status = 2) {
         const std::vector<std::string> before = files();
         const Result r = run("run --trace in.csv --m 2 -q " + flags);
-        EXPECT_EQ(2, r.status) << flags;
+        EXPECT_EQ(status, r.status) << flags;
         EXPECT_EQ(r.err, "cdvp run: " + message + "\n") << flags;
         EXPECT_EQ(before, files()) << flags << ": nothing written, nothing left";
         EXPECT_EQ(slurp(trace("small.csv")), slurp(dir_ / "in.csv")) << flags;
@@ -106,8 +106,9 @@ TEST_F(CliOutputs, DevicesAreWrittenNotReplaced) {
 }
 
 TEST_F(CliOutputs, AWriteErrorAtCommitLeavesNoOtherOutput) {
-    // /dev/full fails every write (ENOSPC), as a full disk would.
-    expect_refused("--pairs-out p.csv --report /dev/full", "--report: /dev/full: cannot write: No space left on device");
+    // /dev/full fails every write (ENOSPC), as a full disk would: the
+    // system's failure (status 4), with its own words.
+    expect_refused("--pairs-out p.csv --report /dev/full", "--report: /dev/full: cannot write: No space left on device", 4);
 }
 
 TEST_F(CliOutputs, ReplacedOutputKeepsItsMode) {

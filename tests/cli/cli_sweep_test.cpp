@@ -10,6 +10,7 @@
 #include <thread>
 #include <vector>
 
+#include "sw/cli/sweep_csv.h"
 #include "sw/cli/sweep_table.h"
 #include "tests/cli/cli_support.h"
 
@@ -26,7 +27,7 @@ std::vector<std::map<std::string, std::string>> untimed_rows(const std::string& 
     for (std::size_t k = 1; k < lines.size(); ++k) {
         std::map<std::string, std::string> row;
         for (std::size_t c = 0; c < lines[0].size() && c < lines[k].size(); ++c) {
-            if (!is_timing_column(lines[0][c])) row[lines[0][c]] = lines[k][c];
+            if (!is_measured_column(lines[0][c])) row[lines[0][c]] = lines[k][c];
         }
         rows.push_back(row);
     }
@@ -94,9 +95,12 @@ TEST_F(Cli, SweepRecordsAPointWhoseSystemFaultsAsARowAndGoesOn) {
 }
 
 TEST_F(Cli, SweepWhoseEveryPointIsRefusedExitsTwoWithTheFirstReasonAndLeavesNothing) {
-    const Result r = run("sweep --set m=1,2 --frmes 3 --out res");
-    expect_refusal(r, "cdvp sweep: every point was refused; the first, m-1: ");
-    EXPECT_NE(r.err.find("frmes"), std::string::npos) << r.err;
+    const Result r = run("sweep --board adm-xrc-ii --set m=28,32 --set objects=20 --memory block_ram --out res");
+    expect_refusal(r, "cdvp sweep: every point was refused; the first, board-adm-xrc-ii_m-28_objects-20: ");
+    EXPECT_NE(r.err.find("block RAMs are too few for --m 28"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "res"));
+    // A misspelt option is refused before any point runs.
+    expect_refusal(run("sweep --set m=1,2 --frmes 3 --out res"), "cdvp sweep: unrecognised option '--frmes'");
     EXPECT_FALSE(fs::exists(dir_ / "res"));
 }
 
@@ -106,11 +110,26 @@ TEST_F(Cli, SweepRefusesBadAxesAndOptionsBeforeAnyPointRuns) {
         {"sweep --set m=1,,2 --out res", "cdvp sweep: --set m: '1,,2': an empty value"},
         {"sweep --set m --out res", "cdvp sweep: --set: 'm': expected NAME=LIST"},
         {"sweep --set m=1 --set m=2 --out res", "cdvp sweep: --set m: the axis is given twice"},
-        {"sweep --set m=1,2 --m 4 --out res", "cdvp sweep: --m: m is an axis of the sweep"},
+        {"sweep --set m=1,2 --m 4 --out res", "cdvp sweep: --m: board.m is an axis of the sweep (m); give it once"},
+        {"sweep --set board.m=1,2 --m 4 --out res",
+         "cdvp sweep: --m: board.m is an axis of the sweep (board.m); give it once"},
+        {"sweep --set m=1,2 -c board.m=4 --out res", "cdvp sweep: -c: board.m is an axis of the sweep (m)"},
         {"sweep --set bus.interrupt_ns=1,2 -c bus.interrupt_ns=4 --out res",
          "cdvp sweep: -c: bus.interrupt_ns is an axis of the sweep"},
         {"sweep --set bus.interrupt_ns=1,2 -cbus.interrupt_ns=4 --out res",
          "cdvp sweep: -cbus.interrupt_ns=4: bus.interrupt_ns is an axis of the sweep"},
+        {"sweep --set scene.objects=10,20 --set objects=30 --out res",
+         "cdvp sweep: --set objects: the same setting as the axis scene.objects; give it once"},
+        {"sweep --set m=1,01 --out res", "cdvp sweep: --set m: '01' is the same value as '1'; give each value once"},
+        {"sweep --set quantum-ns=1000,1e3 --out res", "cdvp sweep: --set quantum-ns: '1e3' is the same value as '1000'"},
+        {"sweep --set objects=50,--help --out res",
+         "cdvp sweep: --set objects: expected an integer from 0 to 4194304, got '--help'"},
+        {"sweep --set m=0,1 --out res", "cdvp sweep: --set m: expected an integer from 1 to 32, got '0'"},
+        {"sweep --fidelity fast,slow --out res", "cdvp sweep: --fidelity: expected cycle or fast, got 'slow'"},
+        {"sweep --board adm-xrc-ii,nosuch --out res", "cdvp sweep: --board: "},
+        {"sweep --set m=1 --frames 2 --frames 3 --out res", "cdvp sweep: option '--frames' cannot be specified more"},
+        {"sweep --set m=1 --out res -- --frames 2", "cdvp sweep: unexpected argument '--frames'"},
+        {"sweep --set m=1 --scene spheres --trace t.csv --out res", "cdvp sweep: --scene and --trace: give one of them"},
         {"sweep --set m=1,2", "cdvp sweep: --out DIR is required"},
         {"sweep --set m=1 --jobs 0 --out res", "cdvp sweep: --jobs: expected a whole number from 1 to 24"},
         {"sweep --set m=1 --jobs 25 --out res", "cdvp sweep: --jobs: expected a whole number from 1 to 24"},
@@ -119,6 +138,8 @@ TEST_F(Cli, SweepRefusesBadAxesAndOptionsBeforeAnyPointRuns) {
         {"sweep --out res", "cdvp sweep: a sweep needs at least one axis"},
         {"sweep --set objcts=1,2 --out res", "cdvp sweep: --set objcts: no flag of cdvp run or setting has this name; "
                                              "the nearest is 'objects'"},
+        {"sweep --set bus.interupt_ns=1,2 --out res", "cdvp sweep: --set bus.interupt_ns: no flag of cdvp run or "
+                                                      "setting has this name; the nearest is 'bus.interrupt_ns'"},
     };
     for (const auto& [args, start] : cases) {
         expect_refusal(run(args), start, args);
@@ -151,8 +172,10 @@ TEST_F(Cli, SweepResumesWithoutRerunningTheRecordedPointsAndRefusesAnotherGrid) 
     EXPECT_EQ(untimed_rows(slurp(csv)).size(), 4u);
 
     expect_refusal(run("sweep --board adm-xrc-ii --set m=1,4 --set objects=20:40:x2 --frames 2 --baseline soa --out res"),
-                   "cdvp sweep: --out: res holds another sweep (other axes or options)");
-    expect_refusal(run(kGrid + "--shard 1/2 --out res"), "cdvp sweep: --out: res holds another sweep (shard 1/1)");
+                   "cdvp sweep: --out: res holds another sweep (other values of m)");
+    expect_refusal(run("sweep --board adm-xrc-ii --set m=1,2 --set objects=20:40:x2 --frames 3 --baseline soa --out res"),
+                   "cdvp sweep: --out: res holds another sweep (other options given to every point)");
+    expect_refusal(run(kGrid + "--shard 1/2 --out res"), "cdvp sweep: --out: res holds shard 1/1 of this sweep, not 1/2");
 }
 
 TEST_F(Cli, MergedShardsEqualOneWholeSweepButForTheTimings) {
@@ -180,7 +203,7 @@ TEST_F(Cli, MergedShardsEqualOneWholeSweepButForTheTimings) {
     expect_refusal(run("merge m2 s1 other"), "cdvp merge: other: a shard of another sweep than s1");
     expect_refusal(run("merge m3 s1 s1"), "cdvp merge: s1: shard 1/3 is given twice");
     write("junk", "");
-    expect_refusal(run("merge . s1"), "cdvp merge: .: expected a new or empty directory");
+    expect_refusal(run("merge . s1"), "cdvp merge: --out: .: expected a new or empty directory");
     EXPECT_FALSE(fs::exists(dir_ / "m2"));
 }
 
@@ -197,8 +220,9 @@ TEST_F(Cli, InterruptedSweepLeavesOnlyCompletePointsAndNoTemporaries) {
     const pid_t pid = spawn(dir_, {"sweep", "--set", "m=1:12:+1", "--set", "objects=200,300", "--frames", "20",
                                    "--jobs", "2", "--out", "res", "-q"});
     const fs::path csv = dir_ / "res" / "sweep.csv";
-    for (int k = 0; k < 400 && !fs::exists(csv); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    ASSERT_TRUE(fs::exists(csv)) << "no point finished in 4 s";
+    auto rows_written = [&] { return fs::exists(csv) ? parse_csv(slurp(csv), "sweep.csv").size() - 1 : 0; };
+    for (int k = 0; k < 400 && rows_written() == 0; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_GE(rows_written(), 1u) << "no point finished in 4 s";
     ASSERT_EQ(kill(pid, SIGINT), 0);
     int status = 0;
     ASSERT_EQ(waitpid(pid, &status, 0), pid);

@@ -150,9 +150,28 @@ TEST_F(Cli, TopLevelCommandLine) {
         const Result r = run(bad);
         EXPECT_EQ(r.status, 2) << bad;
         EXPECT_EQ(r.err, std::string("cdvp: unknown command '") + bad +
-                             "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record (see cdvp --help)\n");
+                             "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, help (see cdvp --help)\n");
     }
     EXPECT_EQ(run("run").err, "cdvp run: give exactly one of --trace FILE or --scene spheres\n");
+    // cdvp help [COMMAND]: the same text as --help.
+    EXPECT_EQ(run("help").out, run("--help").out);
+    for (const char* command : {"run", "sweep", "merge", "settings", "bullet"}) {
+        const Result help = run(std::string("help ") + command);
+        EXPECT_EQ(help.status, 0) << command;
+        EXPECT_EQ(help.out, run(std::string(command) + " --help").out) << command;
+    }
+    EXPECT_EQ(run("help frobnicate").status, 2);
+    EXPECT_EQ(run("help run extra").err, "cdvp help: unexpected argument 'extra' (see cdvp --help)\n");
+}
+
+TEST_F(Cli, AnEmptyPresetDirectoryIsSaidSoNotListedAsNothing) {
+    fs::create_directories(dir_ / "none");
+    const Result r = run("run --scene spheres --board adm-xrc-ii", "CDVP_BOARDS=none");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "cdvp run: --board: unknown board 'adm-xrc-ii': $CDVP_BOARDS (none) holds no preset (NAME.json); "
+                     "give a .json path, or unset CDVP_BOARDS\n");
+    EXPECT_EQ(run("run --scene spheres --objects 5 --board adm-xrc-ii -q", "CDVP_BOARDS=").status, 0)
+        << "an empty CDVP_BOARDS is unset";
 }
 
 TEST_F(Cli, ControlCharactersInArgumentsKeepErrorsOnOneLine) {

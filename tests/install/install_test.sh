@@ -35,6 +35,10 @@ if [ "$part" = man ]; then
     grep -q "Usage: cdvp $command " <<< "$text" || fail "the man page lacks 'cdvp $command --help'"
   done
   grep -q "^ *CDVP_BOARDS" <<< "$text" || fail "the man page does not document CDVP_BOARDS"
+  for section in EXAMPLES ENVIRONMENT FILES "SEE ALSO"; do
+    grep -q "^$section\$" <<< "$text" || fail "the man page has no $section section"
+  done
+  grep -q "cdvp sweep --board" <<< "$text" || fail "the man page's EXAMPLES lack a sweep"
   echo "man page: $(echo $commands) documented"
   exit 0
 fi

@@ -7,14 +7,18 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "models/common/nesting_limit.h"
 #include "sw/scene/scene.h"
+#include "tests/platform/nested_text.h"
 
 namespace cdvp {
 namespace {
@@ -123,6 +127,12 @@ TEST_F(PresetFile, SyntaxErrorsGiveLineAndColumn) {
     // A number beyond double's range is the library's out_of_range, not a parse_error.
     EXPECT_EQ(error_for("{\"name\": 1e3000}"), path_ + ": invalid JSON: number overflow parsing '1e3000'");
     EXPECT_EQ(path_ + ": expected a JSON object", error_for("[1, 2]"));
+    // nlohmann takes a NUL byte for the end of the input: what follows one is refused, not ignored.
+    const std::string preset_then_nul = read(boards_directory() + "/adm-xrc-ii.json") + '\0' + "{\"name\": \"x\"}";
+    const std::string line = std::to_string(std::count(preset_then_nul.begin(), preset_then_nul.end(), '\n') + 1);
+    EXPECT_EQ(path_ + ":" + line + ":1: invalid JSON: syntax error while parsing value - unexpected NUL byte; expected "
+                                   "end of input",
+              error_for(preset_then_nul));
 }
 
 TEST_F(PresetFile, KeysGivenTwiceAreRefused) {
@@ -184,6 +194,44 @@ TEST_F(PresetFile, ControlCharactersInStringsAreRefusedNamingTheKey) {
     std::string stray = text;
     stray.replace(stray.find(name), name.size(), "\"name\": \x01\"adm\"");
     EXPECT_NE(std::string::npos, error_for(stray).find(": invalid JSON: ")) << "outside a string: a syntax error";
+}
+
+// Objects, arrays or both nested past kMaxNesting are refused from the text,
+// at the bracket of the level too many, before any walk of the tree (the
+// control-character check recursed once a level, and 20,000 levels overflowed
+// the stack). At the limit the preset is read on and refused for what it
+// holds, an unknown key.
+TEST_F(PresetFile, NestingPastTheLimitIsRefusedAtItsBracket) {
+    using test::nested;
+    struct Case {
+        const char* what;
+        std::function<std::string(int levels)> text;
+        const char* position;  // of level 65
+    };
+    const Case cases[] = {
+        {"objects", [](int n) { return nested("{\"a\": ", "}", n, "1"); }, ":1:385"},
+        {"arrays in an object", [](int n) { return "{\"a\": " + nested("[", "]", n - 1) + "}"; }, ":1:70"},
+        {"objects in arrays", [](int n) { return nested("{\"a\": [", "]}", n / 2, n % 2 ? "{}" : ""); }, ":1:225"},
+        {"one a line", [](int n) { return nested("{\n  \"a\": ", "}", n, "1"); }, ":65:8"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.what);
+        const std::string at_limit = error_for(c.text(kMaxNesting));
+        EXPECT_EQ(path_ + ": a: unknown key; did you mean 'name'?", at_limit);
+        EXPECT_EQ(path_ + c.position + ": nesting deeper than 64 levels; a board preset nests objects and arrays at most "
+                                       "64 deep",
+                  error_for(c.text(kMaxNesting + 1)));
+    }
+    EXPECT_EQ(path_ + ":1:577: nesting deeper than 64 levels; a board preset nests objects and arrays at most 64 deep",
+              error_for(nested("{\"board\":", "}", 20000, "1")))
+        << "the file of the crash: 40 KB, 20,000 levels";
+}
+
+// Brackets inside strings are text, whatever quotes are escaped before them.
+TEST_F(PresetFile, BracketsInStringsDoNotNest) {
+    json changed = preset("adm-xrc-ii");
+    changed["description"] = "\"" + test::repeated("[{", kMaxNesting) + "\\\" ]";
+    EXPECT_EQ("accepted", error_for(changed.dump()));
 }
 
 TEST_F(PresetFile, RangesReadInFull) {

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -17,6 +18,8 @@
 #include "models/common/user_text.h"
 #include "platform/board_preset.h"
 #include "platform/config_file.h"
+#include "models/common/nesting_limit.h"
+#include "tests/platform/nested_text.h"
 
 namespace cdvp {
 namespace {
@@ -187,6 +190,107 @@ TEST_F(ConfigFile, RefusalsNameFileLineAndSetting) {
     EXPECT_EQ(": run.wait: expected irq or poll, got 'sleep'", error_for("w.json", R"({"run.wait": "sleep"})"));
     EXPECT_EQ(0u, error_for("s.toml", "[board\n").rfind(":1:", 0));
     EXPECT_EQ(": board.m: given twice", error_for("twice.json", R"({"board.m": 4, "board": {"m": 5}})"));
+}
+
+// toml++ quotes what it saw as it is, a newline included; the refusal stays
+// one line. nlohmann takes a NUL byte for the end of the input: what follows
+// one is refused, not ignored (both found by tests/fuzz/config_fuzzer).
+TEST_F(ConfigFile, RefusalsStayOnOneLineAndReadTheWholeFile) {
+    using namespace std::string_literals;
+    EXPECT_EQ(":1:6: invalid TOML: Error while parsing boolean: expected 'true', saw 't\\n'",
+              error_for("bool.toml", "x = t\n"));
+    EXPECT_EQ(":1:20: invalid JSON: syntax error while parsing value - unexpected NUL byte; expected end of input",
+              error_for("nul.json", "{\"board\": {\"m\": 4}}\0{\"board\": {\"m\": 5}}"s));
+    EXPECT_EQ(": host.name: control character \\x00 in a string; expected printable text",
+              error_for("nul_in_string.json", "{\"host\": {\"name\": \"a\0b\"}}"s));
+}
+
+// A TOML float beyond int64_t's range is shown as %g, as written (found by
+// tests/fuzz/config_fuzzer: the check for a whole number converted it first).
+TEST_F(ConfigFile, HugeNumbersAreShownInRefusals) {
+    EXPECT_EQ(":2: board.clock_mhz: expected 1 to 1000 MHz, got 1.11111e+34",
+              error_for("huge.toml", "[board]\nclock_mhz = 11111111000000000000000000000001111.0\n"));
+    EXPECT_EQ(":2: board.clock_mhz: expected 1 to 1000 MHz, got -1e+300",
+              error_for("low.toml", "[board]\nclock_mhz = -1e300\n"));
+    EXPECT_EQ(":2: board.clock_mhz: expected 1 to 1000 MHz, got 100000000000000",
+              error_for("whole.toml", "[board]\nclock_mhz = 1e14\n"));
+}
+
+// Every way a config file nests, at the limit and one level past it: at the
+// limit the file is read on (and refused for an unknown name or a value that
+// is no number), past it refused from the text, before toml::parse or any
+// walk of the tree, at the key part or bracket of the level too many.
+TEST_F(ConfigFile, NestingPastTheLimitIsRefusedAtTheLevelTooMany) {
+    using test::dotted;
+    using test::nested;
+    using test::repeated;
+    struct Case {
+        const char* name;
+        std::function<std::string(int levels)> text;
+        const char* position;  // of level 65
+    };
+    const Case cases[] = {
+        {"objects.json", [](int n) { return nested("{\"a\": ", "}", n, "1"); }, ":1:385"},
+        {"arrays.json", [](int n) { return "{\"board\": {\"m\": " + nested("[", "]", n - 2) + "}}"; }, ":1:79"},
+        {"mixed.json", [](int n) { return nested("{\"a\": [", "]}", n / 2, n % 2 ? "{}" : ""); }, ":1:225"},
+        {"headers.toml", [](int n) { return "[" + dotted(n - 1) + "]\nx = 1\n"; }, ":1:128"},
+        {"dotted.toml", [](int n) { return dotted(n) + " = 1\n"; }, ":1:127"},
+        {"dotted_in_table.toml", [](int n) { return "[board]\n" + dotted(n - 1) + " = 1\n"; }, ":2:125"},
+        {"quoted_parts.toml", [](int n) { return "[" + dotted(n - 1, "\"a.b\"") + "]\nx = 1\n"; }, ":1:380"},
+        {"inline_tables.toml", [](int n) { return "x = " + nested("{a = ", "}", n - 1, "1") + "\n"; }, ":1:320"},
+        {"inline_dotted.toml", [](int n) { return "x = {" + dotted(n - 1) + " = 1}\n"; }, ":1:130"},
+        {"arrays.toml", [](int n) { return "[board]\nm = " + nested("[", "]", n - 2) + "\n"; }, ":2:67"},
+        {"arrays_of_tables.toml",  // each [[a.a]] level is the array and its element
+         [](int n) {
+             std::string text;
+             for (int k = 1; k <= (n - 1) / 2; ++k) text += "[[" + dotted(k) + "]]\n";
+             return text + (n % 2 ? "x = 1\n" : "b.x = 1\n");
+         },
+         ":32:65"},
+        {"mixed.toml",
+         [](int n) { return "[" + dotted(30) + "]\n" + dotted(10) + " = " + nested("[{a = ", "}]", 12, n > 64 ? "[]" : "1"); },
+         ":2:95"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        const std::string at_limit = error_for(c.name, c.text(kMaxNesting));
+        EXPECT_EQ(std::string::npos, at_limit.find("nesting")) << at_limit;
+        EXPECT_TRUE(at_limit.find(": unknown setting; did you mean") != std::string::npos ||
+                    at_limit.find(": expected a number") != std::string::npos)
+            << at_limit;
+        const std::string containers = std::string(c.name).find(".toml") != std::string::npos ? "tables" : "objects";
+        EXPECT_EQ(std::string(c.position) + ": nesting deeper than 64 levels; a config file nests " + containers +
+                      " and arrays at most 64 deep",
+                  error_for(c.name, c.text(kMaxNesting + 1)));
+    }
+}
+
+// The files of the crash, 40 KB and 20,000 levels deep.
+TEST_F(ConfigFile, TwentyThousandLevelsAreRefusedNotACrash) {
+    using test::nested;
+    using test::repeated;
+    const std::string refused = " nesting deeper than 64 levels; a config file nests ";
+    EXPECT_EQ(":1:577:" + refused + "objects and arrays at most 64 deep",
+              error_for("deep.json", nested("{\"board\":", "}", 20000, "1")));
+    EXPECT_EQ(":1:128:" + refused + "tables and arrays at most 64 deep",
+              error_for("headers.toml", "[" + test::dotted(20000) + "]\nx=1\n"));
+    EXPECT_EQ(":1:127:" + refused + "tables and arrays at most 64 deep",
+              error_for("dotted.toml", repeated("a.", 20000) + "b={c=1}\n"));
+}
+
+// Brackets and dots inside strings and comments are text: here each holds
+// what would nest past the limit if it were read as TOML.
+TEST_F(ConfigFile, BracketsInStringsAndCommentsDoNotNest) {
+    const std::string brackets = test::repeated("[{", kMaxNesting);
+    EXPECT_EQ(": run.wait: expected irq or poll, got '\"" + brackets.substr(0, 59) + "... (130 bytes)'",
+              error_for("s.json", "{\"run\": {\"wait\": \"\\\"" + brackets + "\\\\\"}}"));
+    const std::string header = "[" + test::dotted(kMaxNesting) + "]";
+    const std::string arrays = test::repeated("[", kMaxNesting);
+    const std::string toml = "# " + header + "\n[run] # " + header + "\nwait = \"\\\"" + header + "\"\n" +
+                             "[host]\nname = \"\"\"\n" + header + "\n\"\"\"\nspeed_factor = 2 # '" + header + "\n" +
+                             "[board]\nm = [\"1, " + arrays + "\", # " + arrays + "\n  '" + arrays + "', '''\n" +
+                             header + "''']\n";
+    EXPECT_EQ(":10: board.m: expected a number", error_for("s.toml", toml));
 }
 
 }  // namespace

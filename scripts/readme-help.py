@@ -1,0 +1,24 @@
+#!/usr/bin/env python3
+"""Puts each command's current --help into README.md, replacing the fenced
+block that starts with the same Usage line (cli_tests checks them verbatim).
+
+    scripts/readme-help.py [path/to/cdvp]    (default: build/sw/cli/cdvp)
+"""
+import pathlib
+import subprocess
+import sys
+
+root = pathlib.Path(__file__).resolve().parent.parent
+binary = sys.argv[1] if len(sys.argv) > 1 else str(root / "build/sw/cli/cdvp")
+readme = root / "README.md"
+text = readme.read_text()
+for command in ["", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record"]:
+    args = [binary] + ([command] if command else []) + ["--help"]
+    help_text = subprocess.run(args, check=True, capture_output=True, text=True).stdout
+    usage = help_text.split("\n", 1)[0]
+    start = text.find("```\n" + usage + "\n")
+    if start < 0:
+        sys.exit(f"README.md has no block starting with {usage!r}")
+    end = text.find("```\n", start + 4)
+    text = text[: start + 4] + help_text + text[end:]
+readme.write_text(text)

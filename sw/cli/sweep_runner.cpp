@@ -1,0 +1,193 @@
+#include "sw/cli/sweep_runner.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+
+#include "models/common/user_text.h"
+#include "sw/cli/exit_status.h"
+
+namespace cdvp {
+
+namespace {
+
+// Signals that stop a sweep: forwarded to the running points, which remove
+// their temporaries; the sweep records the points that still finish, then
+// ends by the same signal.
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+volatile std::sig_atomic_t g_stop_signal = 0;
+volatile pid_t g_running[kMaxJobs];
+
+extern "C" void stop_sweep(int signal_number) {
+    g_stop_signal = signal_number;
+    for (const volatile pid_t& pid : g_running) {
+        if (pid > 0) kill(pid, signal_number);  // async-signal-safe
+    }
+}
+
+class StopSignalsHandled {
+public:
+    StopSignalsHandled() {
+        for (std::size_t k = 0; k < std::size(kStopSignals); ++k) {
+            struct sigaction action {};
+            action.sa_handler = stop_sweep;  // no SA_RESTART: waitpid returns EINTR
+            sigemptyset(&action.sa_mask);
+            sigaction(kStopSignals[k], nullptr, &previous_[k]);
+            if (previous_[k].sa_handler != SIG_IGN) sigaction(kStopSignals[k], &action, nullptr);
+        }
+    }
+    ~StopSignalsHandled() {
+        for (std::size_t k = 0; k < std::size(kStopSignals); ++k) sigaction(kStopSignals[k], &previous_[k], nullptr);
+    }
+
+private:
+    struct sigaction previous_[std::size(kStopSignals)] {};
+};
+
+// The child's one-line reason, without "cdvp run: ", with the user's names
+// for spooled traces.
+std::string reason_of(const std::string& stderr_text, const std::map<std::string, std::string>& trace_paths) {
+    std::string line = stderr_text.substr(0, stderr_text.find('\n'));
+    if (line.rfind("cdvp run: ", 0) == 0) line = line.substr(10);
+    for (const auto& [value, path] : trace_paths) {
+        for (std::size_t at; path != value && (at = line.find(path)) != std::string::npos;) line.replace(at, path.size(), value);
+    }
+    return printable(line);
+}
+
+}  // namespace
+
+int sweep_stop_signal() { return g_stop_signal; }
+
+// A point running in a child process.
+struct SweepRunner::Slot {
+    pid_t pid = 0;
+    Point point;
+    CapturedOutput errors{"cdvp-point-stderr"};
+    std::chrono::steady_clock::time_point started;
+    int wait_status = 0;
+};
+
+SweepRunner::SweepRunner(const SweepOptions& options, const Grid& grid, SweepTable& table, TableFile& file,
+                         const std::map<std::string, std::string>& trace_paths, std::function<void()> check_inputs)
+    : o_(options), grid_(grid), table_(table), file_(file), trace_paths_(trace_paths),
+      check_inputs_(std::move(check_inputs)), self_(self_path()) {
+    for (unsigned k = 0; k < o_.jobs; ++k) slots_.push_back(std::make_unique<Slot>());
+}
+
+// A runner left by an exception stops its points and waits for them, so
+// none outlives it.
+SweepRunner::~SweepRunner() {
+    signal_running(SIGTERM);
+    for (const auto& slot : slots_) {
+        if (slot->pid > 0) wait_child(slot->pid);
+    }
+    for (volatile pid_t& pid : g_running) pid = 0;
+}
+
+int SweepRunner::run(const std::vector<std::size_t>& todo, SweepProgress& progress) {
+    const StopSignalsHandled handled;
+    std::size_t next = 0;
+    while (true) {
+        for (std::size_t k = 0; k < slots_.size() && next < todo.size() && g_stop_signal == 0 && failing_ == 0; ++k) {
+            if (slots_[k]->pid == 0) launch(*slots_[k], k, grid_.point(todo[next++]));
+        }
+        if (running() == 0) break;
+        int wait_status = 0;
+        const pid_t pid = waitpid(-1, &wait_status, 0);
+        if (pid < 0) {
+            if (errno != EINTR) throw std::runtime_error(std::string("waitpid: ") + std::strerror(errno));
+            if (g_stop_signal != 0) signal_running(g_stop_signal);
+            continue;
+        }
+        for (std::size_t k = 0; k < slots_.size(); ++k) {
+            Slot& slot = *slots_[k];
+            if (slot.pid != pid) continue;
+            slot.pid = 0;
+            slot.wait_status = wait_status;
+            g_running[k] = 0;
+            const int status = finish(slot);
+            if (status != 0 && failing_ == 0) failing_ = status;  // no new points; the running ones may still end well
+            progress.point_done();
+        }
+    }
+    return failing_;
+}
+
+std::size_t SweepRunner::running() const {
+    std::size_t n = 0;
+    for (const auto& slot : slots_) n += slot->pid != 0;
+    return n;
+}
+
+void SweepRunner::signal_running(int signal_number) {
+    for (const auto& slot : slots_) {
+        if (slot->pid > 0) kill(slot->pid, signal_number);
+    }
+}
+
+void SweepRunner::launch(Slot& slot, std::size_t k, const Point& point) {
+    std::vector<std::string> args{self_, "run"};
+    args.insert(args.end(), o_.run_options.begin(), o_.run_options.end());
+    for (std::string& arg : grid_.run_arguments(point)) {
+        if (arg.rfind("--trace=", 0) == 0) arg = "--trace=" + trace_paths_.at(arg.substr(8));
+        args.push_back(std::move(arg));
+    }
+    args.insert(args.end(), {"--report=" + report_path(o_.out_dir, point), "-q"});
+    slot.point = point;
+    slot.errors.clear();
+    slot.started = std::chrono::steady_clock::now();
+    ChildStreams streams;
+    streams.err = slot.errors.fd();
+    for (const auto& [value, path] : trace_paths_) {
+        if (path.rfind("/proc/self/fd/", 0) == 0) streams.inherited.push_back(std::stoi(path.substr(14)));
+    }
+    slot.pid = start_child(args, streams);
+    g_running[k] = slot.pid;
+}
+
+// Records the point's row; 0, or the status that ends the sweep (its reason printed).
+int SweepRunner::finish(Slot& slot) {
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - slot.started).count();
+    const std::string& id = slot.point.id;
+    if (WIFSIGNALED(slot.wait_status)) {
+        if (g_stop_signal != 0 || failing_ != 0) return 0;  // stopped with the sweep: it runs again on resume
+        std::cerr << "cdvp sweep: point " << id << ": cdvp run was killed by signal " << WTERMSIG(slot.wait_status)
+                  << "; the point is not recorded\n";
+        return kExitInternal;
+    }
+    const int code = WEXITSTATUS(slot.wait_status);
+    const std::string reason = reason_of(slot.errors.text(64 * 1024), trace_paths_);
+    const std::string report = report_path(o_.out_dir, slot.point);
+    check_inputs_();  // a file changed during the point: its row would not belong to this sweep
+    auto fail = [&](int status, const std::string& why) {
+        std::cerr << "cdvp sweep: point " << id << ": " << why << "; the point is not recorded\n";
+        return status;
+    };
+    if (code == kExitDone) {
+        const std::optional<std::string> text = read_whole_file(report);
+        if (!text) return fail(kExitInternal, "cdvp run ended well but its report " + excerpt(report) + " cannot be read: " +
+                                                  std::strerror(errno) + " (internal error: a cdvp bug)");
+        table_.add(slot.point.index, report_row(grid_, slot.point, *text, wall));
+    } else if (code == kExitSystem) {
+        return fail(kExitSystem, reason);
+    } else if ((code == kExitBadInput || code == kExitDeviceFault) && reason.rfind("--report", 0) == 0) {
+        return fail(code, "its report could not be written: " + reason);  // the sweep's own file, not the point's answer
+    } else if (code == kExitBadInput || code == kExitDeviceFault) {
+        const PointStatus status = code == kExitBadInput ? PointStatus::kRefused : PointStatus::kFault;
+        table_.add(slot.point.index, failed_row(grid_, slot.point, status, reason, wall));
+    } else {
+        return fail(kExitInternal, "cdvp run failed (status " + std::to_string(code) + "): " + reason);
+    }
+    file_.append(table_, slot.point.index);
+    return 0;
+}
+
+}  // namespace cdvp

@@ -1,0 +1,62 @@
+// Runs a sweep's points as `cdvp run` child processes, J at a time, and
+// records each as it ends: a row appended to the table file, synced. A point
+// refused (status 2) or faulted (3) is a row; a point whose output the system
+// could not write (4), a child that failed inside cdvp (1) or was killed is
+// none, and no new point starts: the sweep ends with that status and a rerun
+// runs the point again. Children die with the sweep (SIGTERM, even when the
+// sweep is killed), and keep their stderr in memory, so a killed sweep leaves
+// neither running points nor scratch files.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sw/cli/child_runs.h"
+#include "sw/cli/sweep_grid.h"
+#include "sw/cli/sweep_options.h"
+#include "sw/cli/sweep_progress.h"
+#include "sw/cli/sweep_state.h"
+#include "sw/cli/sweep_table.h"
+
+namespace cdvp {
+
+// The signal that stopped the sweep (forwarded to its points), or 0.
+int sweep_stop_signal();
+
+class SweepRunner {
+public:
+    // 'spools' gives the path the points read each trace value at (a pipe's
+    // copy); 'check_inputs' throws InputError when an input file changed.
+    SweepRunner(const SweepOptions& options, const Grid& grid, SweepTable& table, TableFile& file,
+                const std::map<std::string, std::string>& trace_paths, std::function<void()> check_inputs);
+    ~SweepRunner();
+    SweepRunner(const SweepRunner&) = delete;
+    SweepRunner& operator=(const SweepRunner&) = delete;
+
+    // Runs the points 'todo'; 0, or the status the sweep ends with, its
+    // reason printed.
+    int run(const std::vector<std::size_t>& todo, SweepProgress& progress);
+
+private:
+    struct Slot;
+    void launch(Slot& slot, std::size_t k, const Point& point);
+    int finish(Slot& slot);
+    std::size_t running() const;
+    void signal_running(int signal_number);
+
+    const SweepOptions& o_;
+    const Grid& grid_;
+    SweepTable& table_;
+    TableFile& file_;
+    const std::map<std::string, std::string>& trace_paths_;
+    std::function<void()> check_inputs_;
+    std::string self_;
+    std::vector<std::unique_ptr<Slot>> slots_;
+    int failing_ = 0;  // the status a failed point ends the sweep with: no new points start
+};
+
+}  // namespace cdvp

@@ -1,0 +1,256 @@
+// `cdvp sweep` and `cdvp merge` tried as a hostile user would: files edited
+// between runs, a manifest gone or damaged, an input changed, two sweeps into
+// one directory, shards with a damaged row or a missing report, a full disk,
+// a sweep killed by SIGKILL, values that look like options, --frames 0. In
+// every case the command refuses with one line or reruns what it cannot
+// trust: it never exits 0 with a wrong row.
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sw/cli/sweep_csv.h"
+#include "sw/cli/sweep_table.h"
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+const std::string kGrid = "sweep --board adm-xrc-ii --set m=1,2 --set objects=20,40 --frames 2 ";
+
+using Rows = std::vector<std::vector<std::string>>;
+
+// Temporaries and staging directories anywhere under 'dir'.
+std::vector<std::string> leftovers_of(const fs::path& dir) {
+    std::vector<std::string> found;
+    for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        if (name.find(".part-") != std::string::npos || name.find(".merge-") != std::string::npos) {
+            found.push_back(entry.path());
+        }
+    }
+    return found;
+}
+
+class CliSweepState : public Cli {
+protected:
+    // A shell command line run in the test's directory.
+    Result shell(const std::string& script) {
+        const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
+        const std::string command = "cd '" + dir_.string() + "' && (" + script + ") > '" + out.string() + "' 2> '" +
+                                    err.string() + "' < /dev/null";
+        const int raw = std::system(command.c_str());
+        Result r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+        fs::remove(out);
+        fs::remove(err);
+        return r;
+    }
+    Rows rows(const std::string& dir) { return parse_csv(slurp(dir_ / dir / "sweep.csv"), "sweep.csv"); }
+    void write_rows(const std::string& dir, const Rows& table) {
+        std::string text;
+        for (const auto& fields : table) {
+            for (std::size_t c = 0; c < fields.size(); ++c) text += (c ? "," : "") + csv_field(fields[c]);
+            text += "\n";
+        }
+        write(dir + "/sweep.csv", text);
+    }
+    // The table without its measured columns, for comparing two runs.
+    std::vector<std::map<std::string, std::string>> untimed(const std::string& dir) {
+        const Rows table = rows(dir);
+        std::vector<std::map<std::string, std::string>> out;
+        for (std::size_t k = 1; k < table.size(); ++k) {
+            std::map<std::string, std::string> row;
+            for (std::size_t c = 0; c < table[0].size(); ++c) {
+                if (!is_measured_column(table[0][c])) row[table[0][c]] = table[k][c];
+            }
+            out.push_back(row);
+        }
+        return out;
+    }
+    std::string snapshot(const std::string& dir) {
+        std::string all;
+        for (const auto& entry : fs::recursive_directory_iterator(dir_ / dir)) {
+            all += entry.path().string() + "\n" + (entry.is_regular_file() ? slurp(entry.path()) : "") + "\n";
+        }
+        return all;
+    }
+};
+
+TEST_F(CliSweepState, AResumeRefusesRowsItDidNotWriteOrRerunsThemWhenAsked) {
+    ASSERT_EQ(run(kGrid + "--out res -q").status, 0);
+    const auto fresh = untimed("res");
+    Rows table = rows("res");
+    table[2][1] = "0";  // the second row claims the first point's index
+    write_rows("res", table);
+    expect_refusal(run(kGrid + "--out res -q"),
+                   "cdvp sweep: res/sweep.csv:3: field 'point': expected 'board-adm-xrc-ii_m-1_objects-20' (point 0)");
+    table = rows("res");
+    table[3][6] = "4";  // an axis value edited
+    table[3][1] = "2";
+    write_rows("res", table);
+    const Result rerun = run(kGrid + "--out res --rerun-invalid");
+    ASSERT_EQ(rerun.status, 0) << rerun.err;
+    EXPECT_NE(rerun.err.find("cdvp sweep: runs again: res/sweep.csv:3: field 'point'"), std::string::npos) << rerun.err;
+    EXPECT_NE(rerun.out.find("(2 run now; "), std::string::npos) << rerun.out;
+    EXPECT_EQ(untimed("res"), fresh) << "the points run again, the table is whole and right";
+}
+
+TEST_F(CliSweepState, ADamagedRowAManifestGoneOrDamagedAndAChangedInputAreRefusedNamingTheFile) {
+    ASSERT_EQ(run(kGrid + "--out res -q").status, 0);
+    const std::string manifest = slurp(dir_ / "res" / "sweep.json");
+    write("res/sweep.json", "{\"format\": ");
+    expect_refusal(run(kGrid + "--out res -q"), "cdvp sweep: res/sweep.json:1:12: not JSON");
+    fs::remove(dir_ / "res" / "sweep.json");
+    // Another grid would adopt the old rows: refused.
+    expect_refusal(run("sweep --board adm-xrc-ii --set m=4,8 --set objects=20,40 --out res -q"),
+                   "cdvp sweep: --out: res holds fit.csv and 5 more but no sweep.json");
+    write("res/sweep.json", manifest);
+    Rows table = rows("res");
+    table[1].pop_back();
+    write_rows("res", table);
+    expect_refusal(run(kGrid + "--out res -q"), "cdvp sweep: res/sweep.csv:2: expected ");
+
+    write("c.json", "{\"board\": {\"compare_latency_cycles\": 2}}");
+    ASSERT_EQ(run(kGrid + "--config c.json --out cfg -q").status, 0);
+    write("c.json", "{\"board\": {\"compare_latency_cycles\": 3}}");
+    expect_refusal(run(kGrid + "--config c.json --out cfg -q"),
+                   "cdvp sweep: --out: cfg: --config c.json changed since the sweep began");
+    write("c.json", "{\"board\": {\"compare_latency_cycles\": 2}}");
+    const Result restored = run(kGrid + "--config c.json --out cfg");
+    EXPECT_EQ(restored.status, 0) << restored.err;
+    EXPECT_NE(restored.out.find("(0 run now; "), std::string::npos);
+}
+
+TEST_F(CliSweepState, AFailedMergeLeavesOutAsItWas) {
+    ASSERT_EQ(run(kGrid + "--shard 1/2 --out s1 -q").status, 0);
+    ASSERT_EQ(run(kGrid + "--shard 2/2 --out s2 -q").status, 0);
+    fs::rename(dir_ / "s2/points/board-adm-xrc-ii_m-2_objects-40.json", dir_ / "kept.json");
+    expect_refusal(run("merge --out merged s1 s2"), "cdvp merge: s2/sweep.csv:3: the point's report");
+    EXPECT_FALSE(fs::exists(dir_ / "merged")) << "a new OUT is not left behind";
+    fs::rename(dir_ / "kept.json", dir_ / "s2/points/board-adm-xrc-ii_m-2_objects-40.json");
+    ASSERT_EQ(run("merge --out merged s1 -q").status, 0);
+    const std::string before = snapshot("merged");
+    Rows table = rows("s2");
+    table[1][1] = "0";  // a shard row moved to a point of the other shard
+    write_rows("s2", table);
+    expect_refusal(run("merge --out merged s2"), "cdvp merge: s2/sweep.csv:2: field 'index': point 0 is not in shard 2/2");
+    EXPECT_EQ(snapshot("merged"), before) << "an existing OUT is untouched";
+    table[1][1] = "1";
+    write_rows("s2", table);
+    const Result merged = run("merge merged s2");
+    ASSERT_EQ(merged.status, 0) << merged.err;
+    EXPECT_NE(merged.out.find("4 of 4 points"), std::string::npos) << merged.out;
+    EXPECT_EQ(leftovers_of(dir_), std::vector<std::string>{}) << "no staging directory left";
+}
+
+TEST_F(CliSweepState, TracesOfOneNameGetIdsOfTheirOwnAndEachRowItsOwnReport) {
+    fs::create_directories(dir_ / "a");
+    fs::create_directories(dir_ / "b");
+    fs::copy_file(trace("small.csv"), dir_ / "a/t.csv");
+    fs::copy_file(trace("hard_cases.csv"), dir_ / "b/t.csv");
+    fs::copy_file(trace("spellings.csv"), dir_ / "t.1.csv");
+    const Result r = run("sweep --trace a/t.csv,b/t.csv,t.1.csv --set m=1,2 --jobs 3 --out res -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Rows table = rows("res");
+    ASSERT_EQ(table.size(), 7u);
+    std::set<std::string> ids;
+    for (std::size_t k = 1; k < table.size(); ++k) {
+        ids.insert(table[k][0]);
+        const auto report = nlohmann::json::parse(slurp(dir_ / "res/points" / (table[k][0] + ".json")));
+        EXPECT_EQ(report["config"]["source"], "trace " + table[k][5]) << table[k][0];
+    }
+    EXPECT_EQ(ids.size(), 6u);
+}
+
+TEST_F(CliSweepState, ASecondSweepIntoOneDirectoryIsRefusedNamingTheFirst) {
+    const std::string slow = "sweep --set m=1:6:+1 --set objects=3000 --frames 3 --fidelity cycle --out res -q";
+    const pid_t first = spawn(dir_, {"sweep", "--set", "m=1:6:+1", "--set", "objects=3000", "--frames", "3",
+                                     "--fidelity", "cycle", "--out", "res", "-q"});
+    for (int k = 0; k < 400 && !fs::exists(dir_ / "res" / "sweep.lock"); ++k) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    const Result second = run(slow);
+    int status = 0;
+    waitpid(first, &status, 0);
+    expect_refusal(second, "cdvp sweep: --out: res is in use by another cdvp sweep or merge (pid " +
+                               std::to_string(first) + ")");
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    EXPECT_EQ(rows("res").size(), 7u) << "the first sweep's rows, all of them";
+    EXPECT_FALSE(fs::exists(dir_ / "res" / "sweep.lock"));
+}
+
+TEST_F(CliSweepState, APointWhoseReportTheSystemCouldNotWriteIsNoRowAndRunsAgain) {
+    // A file size limit fails the writes past it (EFBIG) as a full disk would.
+    const Result limited = shell("trap '' XFSZ; ulimit -f 16; '" CDVP_BINARY "' " + kGrid + "--out res -q");
+    EXPECT_EQ(limited.status, 4) << limited.err;
+    EXPECT_NE(limited.err.find("File too large"), std::string::npos) << limited.err;
+    EXPECT_EQ(limited.err.find("refused"), std::string::npos) << limited.err;
+    for (const auto& fields : rows("res")) EXPECT_NE(fields[2], "refused") << fields[0];
+    const Result resumed = run(kGrid + "--out res");
+    ASSERT_EQ(resumed.status, 0) << resumed.err;
+    EXPECT_EQ(rows("res").size(), 5u);
+    for (std::size_t k = 1; k < 5; ++k) EXPECT_EQ(rows("res")[k][2], "ok");
+}
+
+TEST_F(CliSweepState, AKilledSweepLeavesNoRunningPointAndNoScratchFile) {
+    fs::create_directories(dir_ / "tmp");
+    // Points of several seconds each, so that they are mid-run at the kill.
+    const std::string command = "cd '" + dir_.string() + "' && TMPDIR='" + (dir_ / "tmp").string() + "' exec '" CDVP_BINARY
+                                "' sweep --set m=1,2 --set objects=20000 --frames 2 --fidelity cycle --jobs 2 "
+                                "--out killed-sweep -q";
+    const pid_t pid = fork();
+    if (pid == 0) {
+        execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // The points' own command lines name the sweep's directory ('[c]' keeps
+    // pgrep from finding its own shell).
+    const std::string count = "pgrep -f '[c]dvp run.*killed-sweep' | wc -l";
+    for (int k = 0; k < 200 && shell(count).out != "2\n"; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_EQ(shell(count).out, "2\n") << "two points running";
+    ASSERT_EQ(kill(pid, SIGKILL), 0);
+    waitpid(pid, nullptr, 0);
+    for (int k = 0; k < 30 && shell(count).out != "0\n"; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_EQ(shell(count).out, "0\n") << "no point outlives its sweep";
+    EXPECT_TRUE(fs::is_empty(dir_ / "tmp"));
+    EXPECT_EQ(leftovers_of(dir_), std::vector<std::string>{}) << "each point removed its temporaries as it ended";
+    EXPECT_EQ(rows("killed-sweep").size(), 1u) << "no point finished: the header only";
+}
+
+TEST_F(CliSweepState, NoFramesGivesWhatFitsAndFidelityRefusesIt) {
+    const Result sweep = run("sweep --board adm-xrc-ii --set m=1,24 --set objects=100,500 --frames 0 --out res");
+    ASSERT_EQ(sweep.status, 0) << sweep.err;
+    EXPECT_NE(slurp(dir_ / "res" / "fit.csv").find("adm-xrc-ii,500,24,47"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir_ / "res" / "largest-m-adm-xrc-ii.png"));
+    EXPECT_FALSE(fs::exists(dir_ / "res" / "time-adm-xrc-ii.png"));
+    const Result fidelity = run("fidelity --scene spheres --objects 20 --frames 0 --out fid");
+    expect_refusal(fidelity, "cdvp fidelity: the scene has no frames to time (--frames 0");
+    EXPECT_FALSE(fs::exists(dir_ / "fid"));
+}
+
+TEST_F(CliSweepState, ASweepNeedsNoTemporaryDirectoryAndOneThatDoesNamesIt) {
+    const Result sweep = run(kGrid + "--out res -q", "TMPDIR=/nonexistent");
+    EXPECT_EQ(sweep.status, 0) << sweep.err;
+    const Result fidelity = run("fidelity --scene spheres --objects 20 --frames 2 --out fid -q", "TMPDIR=/nonexistent");
+    expect_refusal(fidelity, "cdvp fidelity: TMPDIR: /nonexistent: cannot create a temporary file (set TMPDIR to a "
+                             "writable directory): No such file or directory");
+}
+
+TEST_F(CliSweepState, WithoutPlotsTheDataFilesAreWrittenAll) {
+    ASSERT_EQ(run(kGrid + "--baseline soa --no-plots --out res -q").status, 0);
+    EXPECT_TRUE(fs::exists(dir_ / "res" / "fit.csv"));
+    EXPECT_TRUE(fs::exists(dir_ / "res" / "crossover.csv"));
+    for (const auto& entry : fs::directory_iterator(dir_ / "res")) EXPECT_NE(entry.path().extension(), ".png");
+}
+
+}  // namespace
+}  // namespace cdvp::test
