@@ -1,7 +1,6 @@
 #include "sw/cli/run_budgets.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "models/common/user_text.h"
 #include "models/control_registers/control_registers.h"
@@ -122,10 +121,9 @@ void RunBudgets::check_memory(uint64_t max_objects, uint64_t frames) {
     if (f.with_pairs(asked) > memory_bytes_) {
         throw InputError(values_.where(setting("run.max_pairs")) + ": " + std::to_string(asked) +
                          " pairs a frame at " + std::to_string(f.per_pair) + " bytes a pair need an estimated " +
-                         size_text(f.with_pairs(asked) - f.before_pairs()) + ", with the " +
-                         size_text(f.before_pairs()) + " the rest of the run needs for " + objects_text(max_objects) +
-                         " more than " + budget + ": give a smaller --max-pairs (0: what the budget leaves) or a "
-                         "larger --max-memory");
+                         size_text(f.with_pairs(asked) - f.before_pairs()) + ", and the rest of the run " +
+                         size_text(f.before_pairs()) + " for " + objects_text(max_objects) + ": more than " + budget +
+                         "; give a smaller --max-pairs (0: what the budget leaves) or a larger --max-memory");
     }
 }
 
@@ -147,7 +145,9 @@ void RunBudgets::check_time(uint64_t max_objects, uint64_t frames) const {
     const double frame_ns = time.frame_bound_ns(n, pairs);
     const double timeout_ns = time.longest_timeout_ns(n);
     double faults = 0;
-    for (const FaultSpec& spec : platform_.faults) faults += static_cast<double>(std::min<uint64_t>(spec.count, time.waits(pairs)));
+    for (const FaultSpec& spec : platform_.faults) {
+        faults += static_cast<double>(std::min<uint64_t>(spec.count, time.waits(pairs)));
+    }
     const double total_ns = static_cast<double>(frames) * frame_ns + (faults + 1) * timeout_ns;
     const double limit_ns = ns_from_fs(kSimulatedTimeLimit);
     if (total_ns <= limit_ns) return;

@@ -134,7 +134,7 @@ TEST_F(CliBudget, ABudgetBeyondThisMachineAndPairsBeyondTheBudgetAreRefused) {
     const Measured m =
         measure(with_outputs({"run", "--scene", "spheres", "--max-memory", "100", "--max-pairs", "1000000000"}));
     expect_cheap_refusal(m, "cdvp run: --max-pairs: 1000000000 pairs a frame at ", {});
-    EXPECT_NE(m.result.err.find("more than the memory budget of 100 MiB (--max-memory 100): give a smaller --max-pairs"),
+    EXPECT_NE(m.result.err.find("more than the memory budget of 100 MiB (--max-memory 100); give a smaller --max-pairs"),
               std::string::npos)
         << m.result.err;
 }
