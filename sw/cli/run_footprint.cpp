@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "models/address_generator/sweep_schedule.h"
 #include "models/common/aabb.h"
 #include "models/fast_engine/pair_finder.h"
 #include "models/fast_engine/sweep_timeline.h"
@@ -116,11 +117,24 @@ uint64_t program_bytes(const RunShape& shape) {
     return kProgram + depth * (kPair + (shape.clocked ? kPair + 2 * kGrowth * sizeof(uint64_t) : 0));
 }
 
+namespace {
+
+// A tiled board's schedule: its blocks, kept by the timeline or the clocked
+// engine, built again by the fast engine and the driver, and a count of
+// pairs each.
+uint64_t schedule_bytes(const BoardConfig& board, uint64_t objects) {
+    if (!board.tiles.tiled() || objects == 0) return 0;
+    const uint64_t tiles = (objects + board.tiles.boxes - 1) / board.tiles.boxes;
+    return tiles * (tiles + 1) / 2 * (3 * sizeof(SweepSchedule::Block) + sizeof(uint64_t));
+}
+
+}  // namespace
+
 Footprint estimate_footprint(const RunShape& shape, uint64_t objects, uint64_t frames) {
     Footprint f;
     f.program = program_bytes(shape);
     f.boxes = objects * bytes_per_box(shape);
-    f.model = shape.clocked ? shape.board.block_ram_bytes(objects) : 0;
+    f.model = (shape.clocked ? shape.board.block_ram_bytes(objects) : 0) + schedule_bytes(shape.board, objects);
     f.frames = frames * bytes_per_frame(shape);
     f.per_pair = bytes_per_pair(shape);
     return f;

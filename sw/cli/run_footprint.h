@@ -28,7 +28,7 @@ struct RunShape {
 struct Footprint {
     uint64_t program = 0;   // the program, SystemC and libraries, and what a pair buffer sizes
     uint64_t boxes = 0;     // what the largest frame's boxes size: scene, board, engine, baselines
-    uint64_t model = 0;     // the clocked board's block RAM words and SSRAM
+    uint64_t model = 0;     // the clocked board's block RAM words and SSRAM, a tiled board's schedule
     uint64_t frames = 0;    // what each frame leaves: timing samples, a trace's digests
     uint64_t per_pair = 0;  // what one pair of a frame costs, everywhere it is held
 
