@@ -19,6 +19,14 @@ namespace {
 
 const char* const kHeader = "frame,id,min_x,min_y,min_z,max_x,max_y,max_z\n";
 
+// AddressSanitizer's shadow memory, redzones and quarantine multiply what a
+// process holds: peak RSS is held to figures in ordinary builds only.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kRssIsTheProgramsOwn = false;
+#else
+constexpr bool kRssIsTheProgramsOwn = true;
+#endif
+
 struct Measured {
     Result result;
     double seconds = 0;
@@ -86,7 +94,9 @@ protected:
         expect_refusal(m.result, start);
         EXPECT_EQ(files(), left);
         EXPECT_LT(m.seconds, 0.5) << m.result.err;
-        EXPECT_LT(m.peak_kb, 64 * 1024) << m.result.err;
+        if (kRssIsTheProgramsOwn) {
+            EXPECT_LT(m.peak_kb, 64 * 1024) << m.result.err;
+        }
     }
 };
 
@@ -165,7 +175,9 @@ TEST_F(CliBudget, AFrameWhosePairsOutgrowTheBudgetIsRefusedWhereverItRuns) {
     EXPECT_NE(m.result.err.find("(the default of --max-pairs: what the memory budget of 1024 MiB leaves, at "),
               std::string::npos)
         << m.result.err;
-    EXPECT_LT(m.peak_kb, 1024 * 1024) << "within the memory budget";
+    if (kRssIsTheProgramsOwn) {
+        EXPECT_LT(m.peak_kb, 1024 * 1024) << "within the memory budget";
+    }
 }
 
 TEST_F(CliBudget, AFrameOrAFrameCountBeyondTheMemoryBudgetIsRefusedAsTheTraceIsRead) {
@@ -231,7 +243,9 @@ TEST_F(CliBudget, TheReportRecordsTheBudgetsAndTheEstimateCoversThePeak) {
     const uint64_t pairs = 1500 * 1499 / 2;
     const uint64_t estimate = budgets["estimate_before_pairs_bytes"].get<uint64_t>() +
                               pairs * budgets["estimate_bytes_per_pair"].get<uint64_t>();
-    EXPECT_GT(estimate, static_cast<uint64_t>(m.peak_kb) * 1024);
+    if (kRssIsTheProgramsOwn) {
+        EXPECT_GT(estimate, static_cast<uint64_t>(m.peak_kb) * 1024);
+    }
     EXPECT_GE(budgets["pairs_per_frame"].get<uint64_t>(), pairs);
     EXPECT_DOUBLE_EQ(budgets["simulated_time_limit_s"].get<double>(), 9223.372036854775808);
 }
