@@ -99,13 +99,8 @@ std::string self_path() {
     return path;
 }
 
-namespace {
-
-// args[0] as a path to exec: itself when it names a directory, else the
-// first executable of that name on PATH (looked up before fork, as exec in
-// the child may not allocate).
-std::string executable(const std::string& name) {
-    if (name.find('/') != std::string::npos) return name;
+std::optional<std::string> find_program(const std::string& name) {
+    if (name.find('/') != std::string::npos) return access(name.c_str(), X_OK) == 0 ? std::optional(name) : std::nullopt;
     const char* path = std::getenv("PATH");
     std::string dirs = path != nullptr ? path : "/usr/bin:/bin";
     for (std::size_t start = 0; start <= dirs.size();) {
@@ -115,7 +110,17 @@ std::string executable(const std::string& name) {
         if (access(candidate.c_str(), X_OK) == 0) return candidate;
         start = colon + 1;
     }
-    return name;
+    return std::nullopt;
+}
+
+namespace {
+
+// args[0] as a path to exec: itself when it names a directory, else the
+// first executable of that name on PATH (looked up before fork, as exec in
+// the child may not allocate); a name not found fails in exec (status 127).
+std::string executable(const std::string& name) {
+    if (name.find('/') != std::string::npos) return name;
+    return find_program(name).value_or(name);
 }
 
 }  // namespace
