@@ -19,6 +19,7 @@
 #include <stdexcept>
 
 #include "models/common/user_text.h"
+#include "sw/cli/digest.h"
 #include "sw/scene/output_cleanup.h"
 
 namespace cdvp {
@@ -69,23 +70,10 @@ ScratchFile::~ScratchFile() {
 }
 
 std::optional<std::string> read_whole_file(const std::string& path) {
-    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return std::nullopt;
     std::string text;
-    char block[1 << 16];
-    for (;;) {
-        const ssize_t got = read(fd, block, sizeof block);
-        if (got < 0 && errno == EINTR) continue;
-        if (got < 0) {
-            const int error = errno;
-            close(fd);
-            errno = error;
-            return std::nullopt;
-        }
-        if (got == 0) break;
-        text.append(block, static_cast<std::size_t>(got));
+    if (!read_file_blocks(path, [&](const char* data, std::size_t size) { text.append(data, size); })) {
+        return std::nullopt;
     }
-    close(fd);
     return text;
 }
 
