@@ -1,7 +1,9 @@
 #include "platform/virtual_board.h"
 
+#include <cmath>
 #include <stdexcept>
 
+#include "platform/gtkw_save_file.h"
 #include "platform/kernel.h"
 
 namespace cdvp {
@@ -53,9 +55,12 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
         trace_ = sc_create_vcd_trace_file(vcd_base.c_str());
         if (trace_ == nullptr) throw std::runtime_error(vcd_base + ".vcd: cannot create waveform file");
         trace_->set_time_unit(1, SC_FS);  // the kernel's resolution: every edge lands exactly
+        SC_METHOD(show_interrupts);
+        sensitive << fpga_irq_ << inta_;
+        dont_initialize();
         WaveList waves(trace_, "interrupts");
-        waves.add(fpga_irq_, std::string(this->name()) + ".irq");
-        waves.add(inta_, std::string(this->name()) + ".inta");
+        waves.add(interrupts_.shown().irq, std::string(this->name()) + ".irq");
+        waves.add(interrupts_.shown().inta, std::string(this->name()) + ".inta");
         bus_.trace(waves);
         bridge_.trace(waves);
         board_.trace(waves);
@@ -96,12 +101,16 @@ const FrameResult* VirtualBoard::try_run_frame(const std::vector<FloatBox>& boxe
                                     " boxes exceeds the board's capacity of " +
                                     std::to_string(board_.core().capacity()));
     }
-    if (trace_ != nullptr) board_.set_tracing(number >= trace_first_ && number <= trace_last_);
+    const bool traced = trace_ != nullptr && number >= trace_first_ && number <= trace_last_;
+    if (trace_ != nullptr) set_tracing(traced);
+    const bool first_traced = traced && !first_traced_begin_;
+    if (first_traced) first_traced_begin_ = sc_time_stamp();
     faults_.begin_frame(number);
     ++frames_;
     cpu_.submit(boxes);
     sc_start();  // returns when no activity is left: the frame is complete
     after_kernel_returns();
+    if (first_traced) first_traced_end_ = sc_time_stamp();
     if (!cpu_.finished()) throw std::runtime_error("the simulation stopped before the frame completed");
     if (cpu_.internal_error()) std::rethrow_exception(cpu_.internal_error());
     fault = cpu_.fault();
@@ -113,25 +122,39 @@ void VirtualBoard::set_trace_window(uint64_t first, uint64_t last) {
     trace_last_ = last;
 }
 
-// GTKWave's save-file format: a group opens with flags 0x800200 and its
-// title, closes with 0x1000200; @28 shows a bit, @22 a vector in hex. A
-// vector is named with its bit range, as the VCD declares it.
-void VirtualBoard::write_gtkw(std::ostream& out, const std::string& vcd_path) const {
-    out << "[dumpfile] \"" << vcd_path << "\"\n[timestart] 0\n";
-    std::string open_group;
-    auto close = [&] {
-        if (!open_group.empty()) out << "@1000200\n-" << open_group << '\n';
-    };
-    for (const TracedSignal& signal : traced_) {
-        if (signal.group != open_group) {
-            close();
-            open_group = signal.group;
-            out << "@800200\n-" << open_group << '\n';
-        }
-        if (signal.width == 1) out << "@28\n" << signal.name << '\n';
-        else out << "@22\n" << signal.name << '[' << signal.width - 1 << ":0]\n";
+void VirtualBoard::set_tracing(bool on) {
+    board_.set_tracing(on);
+    bridge_.set_tracing(on);
+    bus_.set_tracing(on);
+    interrupts_.set_open(on);
+}
+
+void VirtualBoard::show_interrupts() {
+    interrupts_.live = Interrupts{fpga_irq_.read(), inta_.read()};
+    interrupts_.show();
+}
+
+std::vector<const StateNames*> VirtualBoard::state_tables() {
+    return {&CollisionBoard::kControllerStates, &PciBridge::kDmaStates};
+}
+
+namespace {
+// Femtoseconds, the VCD's unit, whatever the kernel's resolution.
+uint64_t in_fs(const sc_time& t) {
+    return t.value() * static_cast<uint64_t>(std::llround(sc_get_time_resolution().to_seconds() * 1e15));
+}
+}  // namespace
+
+void VirtualBoard::write_gtkw(std::ostream& out, const std::string& dump_path,
+                              const std::map<std::string, std::string>& filter_paths) const {
+    SaveFile save{dump_path, traced_, {}, filter_paths};
+    if (first_traced_begin_ && first_traced_end_) {
+        save.view.begin_fs = in_fs(*first_traced_begin_);
+        save.view.end_fs = in_fs(*first_traced_end_);
+        if (const auto& start = board_.first_traced_start()) save.view.markers.push_back({"START", in_fs(*start)});
+        if (const auto& done = board_.first_traced_done()) save.view.markers.push_back({"DONE", in_fs(*done)});
     }
-    close();
+    write_save_file(out, save);
 }
 
 }  // namespace cdvp

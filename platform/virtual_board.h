@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -43,6 +45,8 @@ struct PlatformConfig {
 // clock does not tick between frames, so the kernel simply starves).
 class VirtualBoard : public sc_core::sc_module {
 public:
+    SC_HAS_PROCESS(VirtualBoard);
+
     // capacity: the most boxes any frame will hold (sizes the coordinate memories).
     // vcd_base: when not empty, waveforms go to vcd_base + ".vcd".
     VirtualBoard(const sc_core::sc_module_name& name, const PlatformConfig& config, uint32_t capacity,
@@ -67,10 +71,17 @@ public:
     // Flushes and closes the waveform file (also done by the destructor).
     void close_trace();
     // Traces only frames numbered first..last (a window): the others run as
-    // untraced ones do, and their signals keep their values.
+    // untraced ones do, and every signal keeps its value through them.
     void set_trace_window(uint64_t first, uint64_t last);
-    // A GTKWave save file for the waveforms: every traced signal, grouped by block.
-    void write_gtkw(std::ostream& out, const std::string& vcd_path) const;
+    // A GTKWave save file for the waveforms in dump_path (the VCD, or an FST
+    // made from it): every traced signal by its full name, grouped by block,
+    // in a fitting format, state vectors translated by the filter files
+    // (filter_paths, by table: see state_tables()), opening on the first
+    // traced frame with markers at its START and DONE.
+    void write_gtkw(std::ostream& out, const std::string& dump_path,
+                    const std::map<std::string, std::string>& filter_paths) const;
+    // The named-state tables the waveforms use, each a translate filter file.
+    static std::vector<const StateNames*> state_tables();
 
     const CollisionBoard& board() const { return board_; }
     const PciBridge& bridge() const { return bridge_; }
@@ -87,10 +98,20 @@ private:
     HostCpu cpu_;
     sc_core::sc_signal<bool> fpga_irq_;
     sc_core::sc_signal<bool> inta_;
+    void show_interrupts();
+    void set_tracing(bool on);
+
     sc_core::sc_trace_file* trace_ = nullptr;
     std::vector<TracedSignal> traced_;
     uint64_t trace_first_ = 0;
     uint64_t trace_last_ = UINT64_MAX;
+    // The interrupt lines as traced: gated like the blocks' waveforms.
+    struct Interrupts {
+        bool irq = false, inta = false;
+    };
+    GatedWaves<Interrupts> interrupts_;
+    // When the first traced frame began and ended: the save file's first view.
+    std::optional<sc_core::sc_time> first_traced_begin_, first_traced_end_;
 };
 
 }  // namespace cdvp

@@ -13,7 +13,8 @@ packages=(
   libgtest-dev libgmock-dev      # tests
   libbenchmark-dev               # benchmarks
   libbullet-dev                  # software broad-phase baselines (Bullet 3.24, float)
-  gtkwave                        # vcd2fst, used to check waveforms
+  gtkwave                        # vcd2fst (--vcd-format fst), and the viewer the waveform tests open
+  xvfb xauth                     # an X server for GTKWave in the tests (xvfb-run)
   clang-14 libclang-rt-14-dev    # fuzz build: libFuzzer and the clang sanitizer runtimes live in libclang-rt-14-dev
   libcgal-dev                    # independent oracle for the pair tests (box_self_intersection_d)
   gnuplot-nox                    # plots of measured results

@@ -26,16 +26,20 @@ CollisionBoard::CollisionBoard(const sc_module_name& name, const BoardConfig& co
     SC_METHOD(clock_fall);
     sensitive << fall_;
     dont_initialize();
+    SC_METHOD(on_state_change);
+    sensitive << state_changed_;
+    dont_initialize();
     SC_METHOD(drive_irq);
     sensitive << irq_changed_;
-    waves_.address.assign(2 * config.m, 0);
+    // Sized once, before trace() takes the addresses of the traced copy.
+    waves_.live.address.assign(2 * config.m, 0);
+    waves_.show();
 }
+
+const StateNames CollisionBoard::kControllerStates{"controller", {"idle", "running", "paused", "done"}};
 
 namespace {
 // Bits needed to show values 0..max in a waveform.
-// The controller's states as the waveforms name them, in Phase order.
-constexpr const char* kStateNames[] = {"idle", "running", "paused", "done"};
-
 int bits_for(uint64_t max) {
     int bits = 1;
     while (bits < 64 && (max >> bits) != 0) ++bits;
@@ -46,41 +50,47 @@ int bits_for(uint64_t max) {
 void CollisionBoard::trace(WaveList& waves) {
     traced_engine_ = dynamic_cast<ClockedEngine*>(&core_.engine());
     if (traced_engine_ == nullptr) throw std::logic_error("waveforms need the clocked engine");
+    // The waveforms start from the board as it is (idle), not from zeros.
+    sample_trace();
     const std::string p = std::string(name()) + ".";
     const BoardConfig& config = core_.config();
+    const Waves& shown = waves_.shown();
     waves.group("board: control");
-    waves.add(waves_.clk, p + "clk");
-    waves.add(waves_.state, p + "control.state", 2);
-    for (std::size_t k = 0; k < waves_.in_state.size(); ++k) {
-        waves.add(waves_.in_state[k], p + "control." + kStateNames[k]);
+    waves.add(shown.clk, p + "clk");
+    waves.add(shown.state, p + "control.state", 2, kControllerStates);
+    for (std::size_t k = 0; k < shown.in_state.size(); ++k) {
+        waves.add(shown.in_state[k], p + "control." + kControllerStates.names[k]);
     }
-    waves.add(waves_.stall, p + "control.stall");
+    waves.add(shown.stall, p + "control.stall");
     waves.group("board: address generator");
     // Address ports may point one window past the last box (invalid lanes).
     const int address_bits = bits_for(uint64_t{core_.capacity()} + config.lanes());
-    for (size_t port = 0; port < waves_.address.size(); ++port) {
-        waves.add(waves_.address[port], p + "address_generator.address_" + std::to_string(port), address_bits);
+    for (size_t port = 0; port < shown.address.size(); ++port) {
+        waves.add(shown.address[port], p + "address_generator.address_" + std::to_string(port), address_bits,
+                  WaveFormat::kDecimal);
     }
     waves.group("board: comparison unit");
     const int lanes = static_cast<int>(config.lanes());
-    waves.add(waves_.lane_valid, p + "comparison.lane_valid", lanes);
-    waves.add(waves_.lane_hit, p + "comparison.lane_hit", lanes);
+    waves.add(shown.lane_valid, p + "comparison.lane_valid", lanes, WaveFormat::kBinary);
+    waves.add(shown.lane_hit, p + "comparison.lane_hit", lanes, WaveFormat::kBinary);
     waves.group("board: pair collector");
-    waves.add(waves_.fifo_level, p + "collector.fifo_level", bits_for(config.collector.fifo_depth));
-    waves.add(waves_.pair_count, p + "collector.pair_count", bits_for(config.collector.buffer_depth));
+    waves.add(shown.fifo_level, p + "collector.fifo_level", bits_for(config.collector.fifo_depth), WaveFormat::kDecimal);
+    waves.add(shown.pair_count, p + "collector.pair_count", bits_for(config.collector.buffer_depth),
+              WaveFormat::kDecimal);
     if (!config.tiles.tiled()) return;
     waves.group("board: tile loader");
     const int tile_bits = bits_for(uint64_t{core_.capacity()} / config.tiles.boxes + 1);
-    waves.add(waves_.row_tile, p + "tiles.row_tile", tile_bits);
-    waves.add(waves_.column_tile, p + "tiles.column_tile", tile_bits);
-    waves.add(waves_.loading, p + "tiles.loading");
-    waves.add(waves_.wait, p + "tiles.wait");
+    waves.add(shown.row_tile, p + "tiles.row_tile", tile_bits, WaveFormat::kDecimal);
+    waves.add(shown.column_tile, p + "tiles.column_tile", tile_bits, WaveFormat::kDecimal);
+    waves.add(shown.loading, p + "tiles.loading");
+    waves.add(shown.wait, p + "tiles.wait");
 }
 
 void CollisionBoard::set_tracing(bool on) {
     if (traced_engine_ == nullptr || on == tracing_on_) return;
     tracing_on_ = on;
     if (core_.running()) throw std::logic_error("tracing switched during a sweep");
+    waves_.set_open(on);
 }
 
 void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
@@ -93,9 +103,13 @@ void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& del
     const sc_time at = sc_time_stamp() + delay;
     sync(at);
     const uint64_t segments_before = core_.segments_started();
+    const BoardCore::Phase phase_before = core_.phase();
     payload.set_response_status(
         access(payload.get_command(), payload.get_address(), payload.get_data_ptr(), payload.get_data_length()));
     if (payload.get_command() == tlm::TLM_WRITE_COMMAND) schedule_clock(segments_before, at);
+    // The waveforms see a command's new state when it takes effect, not at
+    // the next clock edge (which an abort or a finished sweep never has).
+    if (clocked_edge_by_edge() && core_.phase() != phase_before) state_changed_.notify(delay);
     // A command or the synchronisation may have moved the line.
     if (core_.interrupt() != irq.read()) irq_changed_.notify(delay);
 }
@@ -203,7 +217,10 @@ void CollisionBoard::schedule_clock(uint64_t segments_before, const sc_time& at)
 void CollisionBoard::on_clock_event() {
     sync(sc_time_stamp());
     if (clocked_edge_by_edge()) {
+        waves_.live.clk = true;
+        fall_.notify(period_ / 2);
         sample_trace();
+        if (core_.phase() == BoardCore::Phase::Done && !first_traced_done_) first_traced_done_ = sc_time_stamp();
         if (core_.running()) {
             const uint64_t next = core_.edges() + 1;
             clock_event_.notify(segment_start_ + sc_time::from_value(next * period_.value()) - sc_time_stamp());
@@ -217,29 +234,39 @@ void CollisionBoard::on_clock_event() {
 // clocked process can change it.
 void CollisionBoard::drive_irq() { irq.write(core_.interrupt()); }
 
-void CollisionBoard::clock_fall() { waves_.clk = false; }
+void CollisionBoard::clock_fall() {
+    waves_.live.clk = false;
+    waves_.show();
+}
+
+void CollisionBoard::on_state_change() {
+    sync(sc_time_stamp());
+    sample_trace();
+    if (core_.running() && !first_traced_start_) first_traced_start_ = sc_time_stamp();
+}
 
 void CollisionBoard::sample_trace() {
-    waves_.clk = true;
-    fall_.notify(period_ / 2);
-    waves_.state = static_cast<uint32_t>(core_.phase());
-    for (std::size_t k = 0; k < waves_.in_state.size(); ++k) waves_.in_state[k] = waves_.state == k;
+    Waves& w = waves_.live;
+    w.state = static_cast<uint32_t>(core_.phase());
+    for (std::size_t k = 0; k < w.in_state.size(); ++k) w.in_state[k] = w.state == k;
     const ClockedEngine& engine = *traced_engine_;
     const AddressGenerator::Issue& issue = engine.last_issue();
-    waves_.address[0] = issue.row;
-    for (size_t port = 1; port < waves_.address.size(); ++port) {
-        waves_.address[port] = issue.first_column + static_cast<uint32_t>(port) - 1;
+    w.address[0] = issue.row;
+    for (size_t port = 1; port < w.address.size(); ++port) {
+        w.address[port] = issue.first_column + static_cast<uint32_t>(port) - 1;
     }
     const ClockedEngine::Slot& out = engine.compare_output();
-    waves_.lane_valid = out.kind == ClockedEngine::Slot::kSweep ? (~0ull >> (64 - out.valid_lanes)) : 0;
-    waves_.lane_hit = out.kind == ClockedEngine::Slot::kSweep ? out.hits : 0;
-    waves_.fifo_level = engine.fifo_level();
-    waves_.stall = engine.stalled();
-    waves_.pair_count = core_.buffered_pairs();
-    waves_.row_tile = engine.row_tile();
-    waves_.column_tile = engine.column_tile();
-    waves_.loading = engine.loading();
-    waves_.wait = engine.waiting();
+    const bool sweeping = out.kind == ClockedEngine::Slot::kSweep && out.valid_lanes > 0;
+    w.lane_valid = sweeping ? (~0ull >> (64 - out.valid_lanes)) : 0;
+    w.lane_hit = sweeping ? out.hits : 0;
+    w.fifo_level = engine.fifo_level();
+    w.stall = engine.stalled();
+    w.pair_count = core_.buffered_pairs();
+    w.row_tile = engine.row_tile();
+    w.column_tile = engine.column_tile();
+    w.loading = engine.loading();
+    w.wait = engine.waiting();
+    waves_.show();
 }
 
 }  // namespace cdvp

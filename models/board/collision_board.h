@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <systemc>
@@ -44,9 +45,14 @@ public:
     // otherwise). Without this call the board does no per-edge work at all.
     void trace(WaveList& waves);
     // Traced boards only: whether the following sweeps are clocked edge by
-    // edge and sampled (a window of frames), or run as untraced ones do.
-    // Switch between sweeps only.
+    // edge and sampled (a window of frames), or run as untraced ones do and
+    // leave the waveforms holding. Switch between sweeps only.
     void set_tracing(bool on);
+    // When the first traced sweep's START and DONE were taken, once seen.
+    const std::optional<sc_core::sc_time>& first_traced_start() const { return first_traced_start_; }
+    const std::optional<sc_core::sc_time>& first_traced_done() const { return first_traced_done_; }
+    // The controller's states as the waveforms name them, in Phase order.
+    static const StateNames kControllerStates;
 
 private:
     void b_transport(tlm::tlm_generic_payload& payload, sc_core::sc_time& delay);
@@ -61,7 +67,9 @@ private:
     void schedule_clock(uint64_t segments_before, const sc_core::sc_time& at);
     void on_clock_event();  // the segment's end (or, traced, one rising edge)
     void clock_fall();      // traced clock only: the falling edge
+    void on_state_change();  // traced only: a host command moved the controller
     void drive_irq();
+    // Reads the controller and datapath into the waveforms.
     void sample_trace();
     bool clocked_edge_by_edge() const { return traced_engine_ != nullptr && tracing_on_; }
 
@@ -71,11 +79,13 @@ private:
     sc_core::sc_event clock_event_;
     sc_core::sc_event fall_;
     sc_core::sc_event irq_changed_;
+    sc_core::sc_event state_changed_;
     FaultPlan* faults_ = nullptr;
     ClockedEngine* traced_engine_ = nullptr;  // set by trace()
     bool tracing_on_ = true;
+    std::optional<sc_core::sc_time> first_traced_start_, first_traced_done_;
 
-    // Waveform mirrors, updated each cycle only when traced.
+    // Waveform mirrors, updated at each traced edge and state change.
     struct Waves {
         bool clk = false;
         uint32_t state = 0;  // 0 idle, 1 running, 2 paused (overflow), 3 done
@@ -92,7 +102,7 @@ private:
         bool loading = false;
         bool wait = false;
     };
-    Waves waves_;
+    GatedWaves<Waves> waves_;
 };
 
 }  // namespace cdvp

@@ -233,7 +233,8 @@ PciBridge::Fault PciBridge::transfer_segment(uint64_t host_address, uint32_t loc
     }
     ns += transaction_ns(bytes, direction);
     ++segments_;
-    waves_.bytes += bytes;
+    waves_.live.bytes += bytes;
+    show_waves();
     return {};
 }
 
@@ -258,7 +259,8 @@ PciBridge::Fault PciBridge::run_transfer(double& ns) {
         if (!visited.insert(next).second) return {DmaFault::kChainLoop, next};
         DmaDescriptor d{};
         if (Fault f = fetch_descriptor(next, d)) return f;
-        ++waves_.descriptors;
+        ++waves_.live.descriptors;
+        show_waves();
         ns += transaction_ns(sizeof d, Direction::kToBoard);
         if (Fault f = transfer_segment(d.host_address, d.local_address, d.bytes, dma_.to_host, ns)) return f;
         next = d.next;
@@ -268,8 +270,9 @@ PciBridge::Fault PciBridge::run_transfer(double& ns) {
 
 void PciBridge::finish(const Fault& fault) {
     ++transfers_;
-    waves_.busy = false;
-    waves_.error = static_cast<bool>(fault);
+    waves_.live.busy = false;
+    waves_.live.error = static_cast<bool>(fault);
+    show_waves();
     dma_.busy = false;
     dma_.done = !fault;
     if (fault) {  // otherwise a refused START's error stays visible
@@ -286,7 +289,8 @@ void PciBridge::finish(const Fault& fault) {
 void PciBridge::dma_engine() {
     for (;;) {
         wait(dma_start_);
-        waves_ = Waves{true, dma_.to_host, false, 0, 0};
+        waves_.live = Waves{true, dma_.to_host, false, 0, 0};
+        show_waves();
         if (!abort_requested_) {
             if (fault_due(faults_, FaultKind::kDmaHang)) {
                 wait(abort_);  // never completes: only the host's ABORT ends it
@@ -302,21 +306,32 @@ void PciBridge::dma_engine() {
         }
         // Aborted: idle, with the status the host cleared by aborting.
         ++transfers_;
-        waves_.busy = false;
+        waves_.live.busy = false;
+        show_waves();
         dma_.busy = false;
         abort_requested_ = false;
         inta_changed_.notify(SC_ZERO_TIME);
     }
 }
 
+const StateNames PciBridge::kDmaStates{"dma", {"idle", "to_board", "to_host", "failed"}};
+
+void PciBridge::show_waves() {
+    Waves& live = waves_.live;
+    live.state = live.busy ? (live.to_host ? 2 : 1) : (live.error ? 3 : 0);
+    waves_.show();
+}
+
 void PciBridge::trace(WaveList& waves) const {
     const std::string p = std::string(name()) + ".dma.";
+    const Waves& shown = waves_.shown();
     waves.group("bridge: DMA engine");
-    waves.add(waves_.busy, p + "busy");
-    waves.add(waves_.to_host, p + "to_host");
-    waves.add(waves_.bytes, p + "bytes", 32);
-    waves.add(waves_.descriptors, p + "descriptors", 11);
-    waves.add(waves_.error, p + "error");
+    waves.add(shown.state, p + "state", 2, kDmaStates);
+    waves.add(shown.busy, p + "busy");
+    waves.add(shown.to_host, p + "to_host");
+    waves.add(shown.bytes, p + "bytes", 32, WaveFormat::kDecimal);
+    waves.add(shown.descriptors, p + "descriptors", 11, WaveFormat::kDecimal);
+    waves.add(shown.error, p + "error");
 }
 
 void PciBridge::drive_inta() {

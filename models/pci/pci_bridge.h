@@ -43,9 +43,15 @@ public:
     uint64_t repeated_transactions() const { return repeated_; }
     const DmaRegisters& dma_registers() const { return dma_; }
 
-    // Adds the DMA engine's waveforms (busy, direction, bytes, descriptors,
-    // error) to a trace file, before the first sc_start.
+    // Adds the DMA engine's waveforms (state, busy, direction, bytes,
+    // descriptors, error) to a trace file, before the first sc_start.
     void trace(WaveList& waves) const;
+    // Whether the frames that follow are traced (a --vcd-frames window):
+    // outside it the DMA engine's waveforms hold.
+    void set_tracing(bool on) { waves_.set_open(on); }
+    // The DMA engine's states as the waveforms name them: idle, moving to
+    // the board, moving to the host, or idle after a failed transfer.
+    static const StateNames kDmaStates;
 
     // Bytes moved per local-bus or host transaction: the engine's only buffer.
     static constexpr uint32_t kBurstBytes = 4096;
@@ -75,6 +81,7 @@ private:
     Fault move_burst(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host);
     Fault fetch_descriptor(uint64_t address, DmaDescriptor& descriptor);
     void finish(const Fault& fault);
+    void show_waves();
 
     std::shared_ptr<const BusTiming> timing_;
     FaultPlan* faults_ = nullptr;
@@ -93,7 +100,9 @@ private:
         bool busy = false, to_host = false, error = false;
         uint32_t bytes = 0;        // bytes of the transfer (every segment of a chain)
         uint32_t descriptors = 0;  // descriptors fetched (0 in register mode)
-    } waves_;
+        uint32_t state = 0;        // kDmaStates, from the three bits above
+    };
+    GatedWaves<Waves> waves_;
 };
 
 }  // namespace cdvp

@@ -28,26 +28,30 @@ void PciBus::cpu_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
     // bus, at the initiator's time plus the annotated delay; the targets act
     // at that time, and the initiator decides when to synchronise.
     delay += sc_time(words * per_word, SC_NS);
-    ++waves_.pio_accesses;
-    waves_.pio_address = static_cast<uint32_t>(payload.get_address());
-    waves_.pio_write = payload.get_command() == tlm::TLM_WRITE_COMMAND;
-    waves_.pio_bytes = payload.get_data_length();
+    Waves& live = waves_.live;
+    ++live.pio_accesses;
+    live.pio_address = static_cast<uint32_t>(payload.get_address());
+    live.pio_write = payload.get_command() == tlm::TLM_WRITE_COMMAND;
+    live.pio_bytes = payload.get_data_length();
+    waves_.show();
     board_socket->b_transport(payload, delay);
 }
 
 void PciBus::master_transport(tlm::tlm_generic_payload& payload, sc_time& delay) {
-    waves_.master_bytes += payload.get_data_length();
+    waves_.live.master_bytes += payload.get_data_length();
+    waves_.show();
     memory_socket->b_transport(payload, delay);
 }
 
 void PciBus::trace(WaveList& waves) const {
     const std::string p = std::string(name()) + ".";
     waves.group("PCI bus");
-    waves.add(waves_.pio_accesses, p + "pio_accesses", 32);
-    waves.add(waves_.pio_address, p + "pio_address", 32);
-    waves.add(waves_.pio_write, p + "pio_write");
-    waves.add(waves_.pio_bytes, p + "pio_bytes", 32);
-    waves.add(waves_.master_bytes, p + "master_bytes", 32);
+    const Waves& shown = waves_.shown();
+    waves.add(shown.pio_accesses, p + "pio_accesses", 32, WaveFormat::kDecimal);
+    waves.add(shown.pio_address, p + "pio_address", 32, WaveFormat::kHex);
+    waves.add(shown.pio_write, p + "pio_write");
+    waves.add(shown.pio_bytes, p + "pio_bytes", 32, WaveFormat::kDecimal);
+    waves.add(shown.master_bytes, p + "master_bytes", 32, WaveFormat::kDecimal);
 }
 
 unsigned int PciBus::cpu_debug(tlm::tlm_generic_payload& payload) { return board_socket->transport_dbg(payload); }

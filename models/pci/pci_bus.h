@@ -44,6 +44,9 @@ public:
     // direction and bytes) and the bytes the bridge moved as bus master, so
     // that PIO transfers and DMA show beside the board's compute.
     void trace(WaveList& waves) const;
+    // Whether the frames that follow are traced (a --vcd-frames window):
+    // outside it the bus's waveforms hold.
+    void set_tracing(bool on) { waves_.set_open(on); }
 
 private:
     void cpu_transport(tlm::tlm_generic_payload& payload, sc_core::sc_time& delay);
@@ -61,7 +64,8 @@ private:
         bool pio_write = false;
         uint32_t pio_bytes = 0;
         uint32_t master_bytes = 0;
-    } waves_;
+    };
+    GatedWaves<Waves> waves_;
 };
 
 }  // namespace cdvp

@@ -19,6 +19,7 @@
 #include <stdexcept>
 
 #include "models/common/user_text.h"
+#include "sw/cli/digest.h"
 #include "sw/scene/output_cleanup.h"
 
 namespace cdvp {
@@ -69,23 +70,10 @@ ScratchFile::~ScratchFile() {
 }
 
 std::optional<std::string> read_whole_file(const std::string& path) {
-    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return std::nullopt;
     std::string text;
-    char block[1 << 16];
-    for (;;) {
-        const ssize_t got = read(fd, block, sizeof block);
-        if (got < 0 && errno == EINTR) continue;
-        if (got < 0) {
-            const int error = errno;
-            close(fd);
-            errno = error;
-            return std::nullopt;
-        }
-        if (got == 0) break;
-        text.append(block, static_cast<std::size_t>(got));
+    if (!read_file_blocks(path, [&](const char* data, std::size_t size) { text.append(data, size); })) {
+        return std::nullopt;
     }
-    close(fd);
     return text;
 }
 
@@ -99,13 +87,8 @@ std::string self_path() {
     return path;
 }
 
-namespace {
-
-// args[0] as a path to exec: itself when it names a directory, else the
-// first executable of that name on PATH (looked up before fork, as exec in
-// the child may not allocate).
-std::string executable(const std::string& name) {
-    if (name.find('/') != std::string::npos) return name;
+std::optional<std::string> find_program(const std::string& name) {
+    if (name.find('/') != std::string::npos) return access(name.c_str(), X_OK) == 0 ? std::optional(name) : std::nullopt;
     const char* path = std::getenv("PATH");
     std::string dirs = path != nullptr ? path : "/usr/bin:/bin";
     for (std::size_t start = 0; start <= dirs.size();) {
@@ -115,7 +98,17 @@ std::string executable(const std::string& name) {
         if (access(candidate.c_str(), X_OK) == 0) return candidate;
         start = colon + 1;
     }
-    return name;
+    return std::nullopt;
+}
+
+namespace {
+
+// args[0] as a path to exec: itself when it names a directory, else the
+// first executable of that name on PATH (looked up before fork, as exec in
+// the child may not allocate); a name not found fails in exec (status 127).
+std::string executable(const std::string& name) {
+    if (name.find('/') != std::string::npos) return name;
+    return find_program(name).value_or(name);
 }
 
 }  // namespace

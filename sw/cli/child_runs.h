@@ -66,6 +66,10 @@ struct ChildStreams {
     std::vector<int> inherited;  // descriptors the child keeps open (its /proc/self/fd/N paths)
 };
 
+// The first executable named 'name' on PATH (a name with a '/' is taken as
+// a path), or nothing when there is none.
+std::optional<std::string> find_program(const std::string& name);
+
 // Starts args[0] (an absolute path, or looked up in PATH) with 'streams'; the
 // child gets SIGTERM should this process die first (even by SIGKILL), so no
 // point outlives its sweep. Returns its pid; throws when it cannot start.

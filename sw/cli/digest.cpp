@@ -50,11 +50,9 @@ std::string sha256_hex(const std::string& bytes) {
     return digest.hex();
 }
 
-std::optional<FileDigest> digest_file(const std::string& path) {
+bool read_file_blocks(const std::string& path, const std::function<void(const char*, std::size_t)>& take) {
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return std::nullopt;
-    Sha256 digest;
-    FileDigest result;
+    if (fd < 0) return false;
     char block[1 << 16];
     for (;;) {
         const ssize_t got = read(fd, block, sizeof block);
@@ -63,13 +61,23 @@ std::optional<FileDigest> digest_file(const std::string& path) {
             const int error = errno;
             close(fd);
             errno = error;
-            return std::nullopt;
+            return false;
         }
         if (got == 0) break;
-        digest.add(block, static_cast<std::size_t>(got));
-        result.bytes += static_cast<uint64_t>(got);
+        take(block, static_cast<std::size_t>(got));
     }
     close(fd);
+    return true;
+}
+
+std::optional<FileDigest> digest_file(const std::string& path) {
+    Sha256 digest;
+    FileDigest result;
+    const bool read = read_file_blocks(path, [&](const char* data, std::size_t size) {
+        digest.add(data, size);
+        result.bytes += size;
+    });
+    if (!read) return std::nullopt;
     result.sha256 = digest.hex();
     return result;
 }

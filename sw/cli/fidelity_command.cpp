@@ -149,8 +149,8 @@ std::string plot_script(const std::string& csv_path, const std::string& png_path
 
 // What fidelity sets for each level itself, or what does not apply to it.
 bool reserved(const std::string& key) {
-    for (const char* option : {"run.fidelity", "run.quantum_ns", "report", "pairs-out", "vcd", "vcd-frames", "inject",
-                               "baseline"}) {
+    for (const char* option : {"run.fidelity", "run.quantum_ns", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format",
+                               "inject", "baseline"}) {
         if (key == option) return true;
     }
     return false;

@@ -26,6 +26,7 @@
 #include "sw/cli/run_checks.h"
 #include "sw/cli/run_options.h"
 #include "sw/cli/run_report.h"
+#include "sw/cli/wave_outputs.h"
 #include "sw/scene/conversion.h"
 #include "sw/scene/output_set.h"
 #include "sw/scene/output_target.h"
@@ -44,44 +45,25 @@ struct Outputs {
     OutputSet files;
     OutputFile* pairs = nullptr;
     OutputFile* report = nullptr;
-    OutputFile* vcd = nullptr;
-    OutputFile* gtkw = nullptr;  // GTKWave save file beside a VCD written to a file
-    std::string vcd_base() const {
-        if (vcd == nullptr) return {};
-        const std::string& t = vcd->temp_path();
-        return t.substr(0, t.size() - 4);  // SystemC appends ".vcd"
-    }
+    WaveOutputs waves;  // --vcd: the dump, its GTKWave save file and state names
 };
-
-// The save file beside a VCD written to a file ("w.vcd" -> "w.gtkw"); none
-// for a device or descriptor.
-std::string gtkw_path(const std::string& vcd) {
-    if (vcd == "-" || vcd.rfind("/dev/", 0) == 0) return {};
-    const std::size_t dot = vcd.size() >= 4 ? vcd.size() - 4 : std::string::npos;
-    return (dot != std::string::npos && vcd.compare(dot, 4, ".vcd") == 0 ? vcd.substr(0, dot) : vcd) + ".gtkw";
-}
 
 // Declares the inputs and outputs and checks them together before any work.
 void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out) {
     if (vm.count("trace")) out.files.add_input("--trace", o.trace);
     if (vm.count("board") && !o.board_name.empty()) out.files.add_input("--board", board_preset_path(o.board_name));
     if (vm.count("config") && !o.config.empty()) out.files.add_input("--config", o.config);
-    std::optional<std::size_t> pairs, report, vcd, gtkw;
+    std::optional<std::size_t> pairs, report;
     if (vm.count("pairs-out")) pairs = out.files.add_output("--pairs-out", o.pairs_out);
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
-    if (vm.count("vcd")) {
-        vcd = out.files.add_output("--vcd", o.vcd, ".vcd", false);
-        if (const std::string save = gtkw_path(o.vcd); !save.empty()) {
-            gtkw = out.files.add_output("--vcd (its GTKWave save file)", save);
-        }
-    }
+    if (vm.count("vcd-format") && !vm.count("vcd")) throw InputError("--vcd-format: the format of --vcd; give --vcd too");
+    if (vm.count("vcd")) out.waves.declare(out.files, o.vcd, parse_dump_format(o.vcd_format));
     // The summary is an output too: committed with the files or not at all.
     if (!o.quiet) out.files.add_standard_output("standard output");
     out.files.open();
     if (pairs) out.pairs = &out.files.file(*pairs);
     if (report) out.report = &out.files.file(*report);
-    if (vcd) out.vcd = &out.files.file(*vcd);
-    if (gtkw) out.gtkw = &out.files.file(*gtkw);
+    out.waves.bind(out.files);
 }
 
 std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm, const Settings& settings,
@@ -222,7 +204,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     run.budgets = {budgets.memory_bytes(), budgets.pair_budget().max_pairs(), budgets.footprint().before_pairs(),
                    budgets.footprint().per_pair};
-    VirtualBoard platform("platform", setup.platform, run.capacity, out.vcd_base());
+    VirtualBoard platform("platform", setup.platform, run.capacity, out.waves.trace_base());
     run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
     if (has_device_family(setup.values.settings())) run.device_fit = fit_on_device(setup.values.settings(), run.capacity);
     run.bus = platform.bus_timing().describe();
@@ -289,7 +271,10 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         setup.baselines.repeat(source, setup.values.settings().run.repeat, totals, [&] { progress.update(++frames_done); });
     }
     platform.close_trace();
-    if (out.gtkw) platform.write_gtkw(out.gtkw->stream(), std::filesystem::absolute(o.vcd).string());
+    if (const std::optional<std::string> failed = out.waves.finish(platform)) {
+        std::cerr << "cdvp run: " << *failed << '\n';
+        return kExitSystem;
+    }
 
     if (report) report->end(totals, setup.values.settings().host.speed_factor);
     if (!o.quiet) {

@@ -63,10 +63,15 @@ po::options_description run_options_description(RunOptions& o) {
         ("report", po::value(&o.report)->value_name("FILE"),
          "JSON report: every setting with where it came from, and per-frame cycles")
         ("vcd", po::value(&o.vcd)->value_name("FILE"),
-         "waveforms of the board, bridge DMA and interrupts (VCD), with a GTKWave save file beside it "
-         "(FILE minus .vcd, plus .gtkw) that groups the signals by block")
+         "waveforms of the board, bridge DMA, PCI bus and interrupts, with a GTKWave save file beside it "
+         "(FILE minus .vcd or .fst, plus .gtkw: gtkwave -a FILE.gtkw) that groups the signals by block, names "
+         "the controller's and DMA engine's states (FILE.controller-states.txt, FILE.dma-states.txt) and opens "
+         "on the first traced frame")
         ("vcd-frames", po::value(&o.vcd_frames)->value_name("A:B"),
-         "trace only frames A to B (as the run numbers them); the others run untraced")
+         "trace only frames A to B (as the run numbers them); the others run untraced, every signal holding")
+        ("vcd-format", po::value(&o.vcd_format)->value_name("vcd|fst"),
+         "the waveforms' format: vcd (the default), or fst, GTKWave's compressed format, made from the VCD by "
+         "vcd2fst (Debian package gtkwave): smaller and faster to open for long windows")
         ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors")
         ("help,h", po::bool_switch(&o.help), "show this help");
     po::options_description all(

@@ -24,6 +24,7 @@ struct RunOptions {
     std::vector<std::string> inject;  // fault specs, docs/faults.md
     std::string pairs_out, report, vcd;
     std::string vcd_frames;  // A:B
+    std::string vcd_format = "vcd";
     bool quiet = false;
     bool help = false;
 };

@@ -143,7 +143,7 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
     std::vector<std::string> sets;
     const ParsedCommandLine line = parse_with_run_options(argc, argv, own_options(sets), "cdvp sweep");
     std::set<std::string> run_flags = run_option_names();
-    for (const char* own : {"help", "quiet", "report", "pairs-out", "vcd", "vcd-frames"}) run_flags.erase(own);
+    for (const char* own : {"help", "quiet", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format"}) run_flags.erase(own);
 
     SweepOptions o;
     for (const po::option& option : line.own) {
@@ -167,7 +167,8 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
         }
     }
     for (const ForwardedOption& option : line.forwarded) {
-        if (option.key == "report" || option.key == "pairs-out" || option.key == "vcd" || option.key == "vcd-frames") {
+        if (option.key == "report" || option.key == "pairs-out" || option.key == "vcd" || option.key == "vcd-frames" ||
+            option.key == "vcd-format") {
             throw InputError("--" + option.key + ": set by cdvp sweep for each point, or not for it; leave it out");
         }
         for (const Axis& axis : o.axes) {

@@ -31,7 +31,8 @@ std::string without_wall_times(const std::string& report) {
     return kept;
 }
 
-const std::vector<std::string> kOutputs = {"pairs.csv", "r.json", "w.gtkw", "w.vcd"};
+const std::vector<std::string> kOutputs = {"pairs.csv", "r.json", "w.controller-states.txt", "w.dma-states.txt",
+                                           "w.gtkw", "w.vcd"};
 
 pid_t start_run(const fs::path& dir) {
     return spawn(dir, {"run", "--scene", "spheres", "--objects", "60", "--frames", "150", "--m", "2", "-q",

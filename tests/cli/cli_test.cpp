@@ -60,54 +60,6 @@ TEST_F(Cli, SpheresAreDeterministicBySeed) {
     EXPECT_GT(cdvp::read_pairs_csv((dir_ / "a.csv").string()).size(), 100u) << "a scene with something to find";
 }
 
-TEST_F(Cli, WaveformsOpenInVcd2fst) {
-    const Result r = run("run --trace " + trace("small.csv") + " --m 2 --vcd waves.vcd --quiet");
-    ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(files(), (std::vector<std::string>{"waves.gtkw", "waves.vcd"})) << "no temporary left behind";
-    const std::string command = "vcd2fst '" + (dir_ / "waves.vcd").string() + "' '" + (dir_ / "waves.fst").string() +
-                                "' > /dev/null 2>&1";
-    EXPECT_EQ(std::system(command.c_str()), 0);
-    EXPECT_GT(fs::file_size(dir_ / "waves.fst"), 100u);
-    // The save file names the VCD and, by group, signals the VCD declares.
-    const std::string save = slurp(dir_ / "waves.gtkw"), vcd = slurp(dir_ / "waves.vcd");
-    EXPECT_NE(save.find("[dumpfile] \"" + (fs::canonical(dir_) / "waves.vcd").string() + "\""), std::string::npos)
-        << save;
-    for (const char* group : {"-board: control", "-board: address generator", "-board: comparison unit",
-                              "-board: pair collector", "-bridge: DMA engine", "-PCI bus", "-interrupts"}) {
-        EXPECT_NE(save.find(group), std::string::npos) << group;
-    }
-    std::istringstream lines(save);
-    std::string line;
-    int signals = 0;
-    while (std::getline(lines, line)) {
-        if (line.rfind("platform.", 0) != 0) continue;
-        ++signals;
-        const std::string leaf = line.substr(line.rfind('.') + 1);
-        EXPECT_NE(vcd.find(" " + leaf.substr(0, leaf.find('[')) + " "), std::string::npos) << line;
-    }
-    EXPECT_GT(signals, 15);
-    for (const char* state : {" idle ", " running ", " paused ", " done "}) {
-        EXPECT_NE(vcd.find(state), std::string::npos) << "the controller's state by name:" << state;
-    }
-}
-
-// A window of frames: only those are clocked edge by edge into the VCD.
-TEST_F(Cli, WaveformsOfAWindowOfFrames) {
-    const std::string scene = "run --scene spheres --objects 60 --frames 4 --m 2 -q";
-    ASSERT_EQ(run(scene + " --vcd all.vcd --pairs-out all.csv").status, 0);
-    ASSERT_EQ(run(scene + " --vcd one.vcd --vcd-frames 2:2 --pairs-out one.csv").status, 0);
-    EXPECT_EQ(slurp(dir_ / "one.csv"), slurp(dir_ / "all.csv"));
-    const auto all = fs::file_size(dir_ / "all.vcd"), one = fs::file_size(dir_ / "one.vcd");
-    EXPECT_LT(one * 2, all) << "one frame of four traced";
-    EXPECT_GT(one, 10000u) << "the window's frame is traced";
-    for (const char* bad : {"--vcd-frames 1:1", "--vcd one.vcd --vcd-frames 3:1", "--vcd one.vcd --vcd-frames 2",
-                            "--vcd one.vcd --vcd-frames -1:2", "--vcd one.vcd --vcd-frames 4:9"}) {
-        const Result r = run(scene + " " + bad);
-        EXPECT_EQ(r.status, 2) << bad;
-        EXPECT_EQ(r.err.rfind("cdvp run: --vcd-frames: ", 0), 0u) << bad << ": " << r.err;
-    }
-}
-
 TEST_F(Cli, HelpListsEveryOption) {
     const Result top = run("--help");
     EXPECT_EQ(top.status, 0);

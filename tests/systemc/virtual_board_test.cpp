@@ -10,8 +10,10 @@
 #include <sstream>
 #include <string>
 
+#include "platform/board_preset.h"
 #include "sw/baselines/brute_force.h"
 #include "tests/support/core_driver.h"
+#include "tests/support/vcd_reader.h"
 
 namespace cdvp {
 namespace {
@@ -80,6 +82,44 @@ TEST(VirtualBoard, WaveformsOpenInGtkwaveTools) {
     EXPECT_GT(static_cast<long>(fst.tellg()), 100L);
     std::remove((base + ".vcd").c_str());
     std::remove((base + ".fst").c_str());
+    rmdir(dir);
+}
+
+// --vcd-frames: outside the window no signal moves, the bus's, the bridge's
+// and the interrupts' no more than the board's; inside it every block does.
+TEST(VirtualBoard, AWindowOfFramesHoldsEverySignalOutsideIt) {
+    char dir[] = "/tmp/cdvp-window-XXXXXX";
+    ASSERT_NE(mkdtemp(dir), nullptr);
+    const std::string base = std::string(dir) + "/waves";
+    const BoardPreset preset = load_board_preset("adm-xrc-ii");
+    std::vector<sc_time> frame_ends;
+    {
+        VirtualBoard platform("platform", PlatformConfig{preset.board, preset.bus, preset.driver, {}}, 60, base);
+        platform.set_trace_window(1, 1);
+        std::mt19937 rng(5);
+        for (int frame = 0; frame < 3; ++frame) {
+            platform.run_frame(testing::random_boxes(60, 8.0f, 2.0f, rng));
+            frame_ends.push_back(sc_time_stamp());
+        }
+        platform.close_trace();
+    }
+    // The kernel's resolution and the VCD's unit are both 1 fs.
+    const uint64_t window_begin = frame_ends[0].value(), window_end = frame_ends[1].value();
+    const test::Vcd vcd = test::read_vcd_text(slurp(base + ".vcd"));
+    std::map<std::string, int> moves_inside;  // by the signal's block
+    for (const test::VcdChange& change : vcd.changes) {
+        if (change.time == 0) continue;  // the initial values
+        EXPECT_GE(change.time, window_begin) << change.id << " moved before the window";
+        EXPECT_LE(change.time, window_end) << change.id << " moved after the window";
+        for (const auto& [name, id] : vcd.id_of) {
+            if (id == change.id) ++moves_inside[name.substr(0, name.rfind('.'))];
+        }
+    }
+    for (const char* block : {"SystemC.platform", "SystemC.platform.pci", "SystemC.platform.bridge.dma",
+                              "SystemC.platform.board.control"}) {
+        EXPECT_GT(moves_inside[block], 0) << block << " is traced in the window";
+    }
+    std::remove((base + ".vcd").c_str());
     rmdir(dir);
 }
 

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# gtkwave_test.sh CDVP FORMAT
+# Opens the waveforms of a two-frame run (`cdvp run --vcd`, FORMAT vcd or
+# fst) with their save file in real GTKWave under Xvfb, as a user would with
+# `gtkwave -a waves.gtkw waves.vcd`, and lets check_view.tcl judge what shows.
+# Skipped (77) where gtkwave or xvfb-run is missing, unless
+# CDVP_REQUIRE_GTKWAVE is set (CI: scripts/setup.sh installs both).
+set -euo pipefail
+format=$2
+here=$(cd "$(dirname "$0")" && pwd)
+fail() { echo "gtkwave test: $*" >&2; exit 1; }
+
+for tool in gtkwave xvfb-run; do
+  if ! command -v "$tool" > /dev/null; then
+    [ -z "${CDVP_REQUIRE_GTKWAVE:-}" ] || fail "$tool not found (scripts/setup.sh installs it)"
+    echo "$tool not found: the waveforms are not opened in GTKWave"
+    exit 77
+  fi
+done
+
+cdvp=$(realpath "$1")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+"$cdvp" run --board adm-xrc-ii --scene spheres --objects 40 --frames 2 --m 4 -q \
+  --vcd "waves.$format" --vcd-format "$format" || fail "cdvp run --vcd failed"
+# A screen larger than the window the save file asks for, so none of it is cut.
+status=0
+timeout 120 xvfb-run -a -s "-screen 0 1600x1000x24" \
+  gtkwave -S "$here/check_view.tcl" -a waves.gtkw "waves.$format" > gtkwave.log 2>&1 || status=$?
+grep '^check:' gtkwave.log || true
+[ "$status" -eq 0 ] || fail "gtkwave exited with $status: $(tail -5 gtkwave.log)"
+grep -qx 'check: PASS' gtkwave.log || fail "GTKWave does not show the waveforms as the save file asks"
