@@ -8,6 +8,7 @@
 
 #include "platform/kernel.h"
 #include "sw/cli/bullet_command.h"
+#include "sw/cli/calibrate_command.h"
 #include "sw/cli/fidelity_command.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/settings_command.h"
@@ -33,6 +34,8 @@ constexpr const char* kUsage =
     "  merge     merge the shard directories of one sweep into one\n"
     "  bullet    step a Bullet scene with the board as its broad phase, against Bullet's own\n"
     "  record    write a Bullet scene's AABBs as a trace for 'cdvp run --trace'\n"
+    "  calibrate time the reference workload on this machine and write a host profile, from\n"
+    "            which runs take their host factors (docs/timing.md)\n"
     "\n"
     "Run 'cdvp <command> --help' for a command's options; 'cdvp --version' prints the version.\n"
     "\n"
@@ -63,8 +66,9 @@ int sc_main(int argc, char** argv) {
     if (command == "merge") return cdvp::merge_command(argc - 1, argv + 1);
     if (command == "bullet") return cdvp::bullet_command(argc - 1, argv + 1);
     if (command == "record") return cdvp::record_command(argc - 1, argv + 1);
+    if (command == "calibrate") return cdvp::calibrate_command(argc - 1, argv + 1);
     std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
-              << "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record (see cdvp --help)\n";
+              << "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, calibrate (see cdvp --help)\n";
     return 2;
 }
 

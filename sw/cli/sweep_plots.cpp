@@ -270,18 +270,24 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
     for (const std::string& board : boards) {
         std::ostringstream blocks, plots;
         for (std::size_t b = 0; b < baselines.size(); ++b) {
-            Series software = series(samples, board, baselines[b] + "_median_ns", 1e-3);
+            Series software = series(samples, board, baselines[b] + "_mean_host_ns", 1e-3);
             if (software.empty()) continue;
             blocks << datablock("b" + std::to_string(b), software.begin()->second.points);
-            plots << ", $b" << b << " using 1:2 with lines lc rgb 'gray30' dt 2 lw 3 title " << quoted(baselines[b] + " (software)");
+            // The software line is native time x the host factor: the legend says by how much.
+            const auto on_board = std::find_if(samples.begin(), samples.end(), [&](const Sample& s) { return s.board == board; });
+            const std::string factor = text(on_board->row, baselines[b] + "_host_factor");
+            plots << ", $b" << b << " using 1:2 with lines lc rgb 'gray30' dt 2 lw 3 title "
+                  << quoted(baselines[b] + " (software on the modelled host: native x " +
+                            (factor.empty() ? "the host factor" : factor) + ")");
         }
-        const Series times = series(samples, board, "median_total_ns", 1e-3);
+        const Series times = series(samples, board, "mean_total_ns", 1e-3);
         if (times.empty()) {
             plan.notes.push_back("no plots of time or speedup on " + board + ": no point timed a frame (--frames 0)");
             continue;
         }
         plan.figures.push_back({"time-" + file_part(board) + ".png",
-                                line_plot("median frame time on " + board, "us per frame", times, blocks.str(),
+                                line_plot("mean frame time on " + board + " (board: simulated)", "us per frame",
+                                          times, blocks.str(),
                                           plots.str()),
                                 ""});
         for (const std::string& baseline : baselines) {
