@@ -306,9 +306,9 @@ std::vector<Setting> host_and_run_settings() {
                          "1 without a preset; adm-xrc-ii.json derives 4 for a Pentium 4 1.8 GHz")),
              "host-factor", "F"),
         flag(text("host.profile", member(&S::host, &HostConfig::profile),
-                  "host profile from cdvp calibrate: turns the preset's reference timings into this machine's host "
-                  "factors (default: $XDG_CONFIG_HOME/cdvp/host-profile.json, else ~/.config/cdvp/host-profile.json, "
-                  "when there)",
+                  "host profile from cdvp calibrate: with the preset's reference timings it gives this machine's "
+                  "host factors (default: host-profile.json in $XDG_CONFIG_HOME/cdvp, else in ~/.config/cdvp, when "
+                  "there)",
                   "none: the default location; without a profile, the preset's speed_factor (docs/timing.md)"),
              "host-profile", "FILE"),
         reference_time("host.reference_sap_host_ns", &HostConfig::reference_sap_host_ns),
@@ -361,8 +361,8 @@ std::vector<Setting> host_and_run_settings() {
                    "Bullet's incremental broad phases build their structures in the first frames (docs/timing.md)"),
              "warmup", "W"),
         flag(count("run.repeat", "runs", 1, 1000, member(&S::run, &RunSettings::repeat),
-                   "time the baselines over the frames R times, fresh instances each run; figures are medians over "
-                   "runs (the board's simulated times are deterministic and simulated once)",
+                   "time the baselines over the frames R times, fresh instances each run; each figure is the median "
+                   "of the runs' means (the board's simulated times are deterministic and simulated once)",
                    "one run"),
              "repeat", "R"),
         switch_flag(choice("run.ignore_capacity", {"no", "yes"}, member(&S::run, &RunSettings::ignore_capacity),

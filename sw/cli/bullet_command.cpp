@@ -68,8 +68,8 @@ po::options_description bullet_options(BulletOptions& o) {
          "native software time x F = time on the modelled host (default: from the host profile, else the "
          "preset's, else 1)")
         ("host-profile", po::value(&o.host_profile)->value_name("FILE"),
-         "host profile from cdvp calibrate (default: $XDG_CONFIG_HOME/cdvp/host-profile.json, else "
-         "~/.config/cdvp/host-profile.json, when there)");
+         "host profile from cdvp calibrate (default: host-profile.json in $XDG_CONFIG_HOME/cdvp, else in "
+         "~/.config/cdvp, when there)");
     po::options_description output("Output (written only if the whole run succeeds)");
     output.add_options()
         ("report", po::value(&o.report)->value_name("FILE"), "JSON report: configuration and every frame")

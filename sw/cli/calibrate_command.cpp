@@ -120,9 +120,10 @@ HostProfile measure(uint32_t repeat, bool quiet) {
 std::string summary(const HostProfile& p, const std::string& out) {
     std::ostringstream text;
     char line[256];
+    std::snprintf(line, sizeof line, ", load average %.2f to %.2f:\n", p.load_average_start[0], p.load_average_end[0]);
     text << "host profile of " << printable(p.machine.cpu_model) << " (" << p.machine.cores_allowed << " of "
          << p.machine.cores_online << " cores), " << printable(p.build.compiler) << " " << printable(p.build.flags)
-         << ", load average " << p.load_average_start[0] << " to " << p.load_average_end[0] << ":\n";
+         << line;
     text << "  baseline  objects  mean_native_us  spread over " << p.repeat << " runs\n";
     for (const auto& [name, baseline] : p.reference) {
         for (const ReferenceTiming& t : baseline.sizes) {
@@ -170,8 +171,8 @@ int calibrate_command(int argc, char** argv) {
     po::options_description options("Options");
     options.add_options()
         ("out", po::value(&o.out)->value_name("PROFILE.json"),
-         "the profile to write (default: $XDG_CONFIG_HOME/cdvp/host-profile.json, else "
-         "~/.config/cdvp/host-profile.json, where runs look for it)")
+         "the profile to write (default: host-profile.json in $XDG_CONFIG_HOME/cdvp, else in ~/.config/cdvp, "
+         "where runs look for it)")
         ("repeat", number<uint32_t>(&o.repeat, 1, 1000, "R"), "runs of the workload; each time is the median of their means")
         ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors");
     return run_command_line("cdvp calibrate", argc, argv, kUsage, options,
