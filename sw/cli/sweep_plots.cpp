@@ -268,17 +268,21 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
     }
     if (baselines.empty()) plan.notes.push_back("no speedup or crossover plots: the sweep has no --baseline");
     for (const std::string& board : boards) {
+        // Software lines are native time x the host factor: the labels say by how much.
+        const auto on_board = std::find_if(samples.begin(), samples.end(), [&](const Sample& s) { return s.board == board; });
+        auto on_host = [&](const std::string& baseline) {
+            const double factor = number(on_board->row, baseline + "_host_factor");
+            char label[128];
+            std::snprintf(label, sizeof label, std::isnan(factor) ? "%s on the modelled host" : "%s on the modelled host (native x %.3g)",
+                          baseline.c_str(), factor);
+            return std::string(label);
+        };
         std::ostringstream blocks, plots;
         for (std::size_t b = 0; b < baselines.size(); ++b) {
             Series software = series(samples, board, baselines[b] + "_mean_host_ns", 1e-3);
             if (software.empty()) continue;
             blocks << datablock("b" + std::to_string(b), software.begin()->second.points);
-            // The software line is native time x the host factor: the legend says by how much.
-            const auto on_board = std::find_if(samples.begin(), samples.end(), [&](const Sample& s) { return s.board == board; });
-            const std::string factor = text(on_board->row, baselines[b] + "_host_factor");
-            plots << ", $b" << b << " using 1:2 with lines lc rgb 'gray30' dt 2 lw 3 title "
-                  << quoted(baselines[b] + " (software on the modelled host: native x " +
-                            (factor.empty() ? "the host factor" : factor) + ")");
+            plots << ", $b" << b << " using 1:2 with lines lc rgb 'gray30' dt 2 lw 3 title " << quoted(on_host(baselines[b]));
         }
         const Series times = series(samples, board, "mean_total_ns", 1e-3);
         if (times.empty()) {
@@ -292,7 +296,8 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
                                 ""});
         for (const std::string& baseline : baselines) {
             plan.figures.push_back({"speedup-" + file_part(board) + "-" + file_part(baseline) + ".png",
-                                    line_plot("speedup over " + baseline + " on " + board, "speedup (x)",
+                                    line_plot("speedup over " + on_host(baseline) + " on " + board + ": ratio of mean frame times",
+                                              "speedup (x)",
                                               series(samples, board, baseline + "_speedup", 1), "",
                                               ", 1 with lines lc 'black' dt 3 title 'break-even'"),
                                     ""});
