@@ -95,12 +95,15 @@ HostTiming resolve_host_timing(const HostConfig& host, bool factor_given) {
         throw InputError("--host-profile: " + excerpt(host.profile) + ": no such file (cdvp calibrate --out " +
                          excerpt(host.profile) + " writes one)");
     }
-    if (!stated) return timing;
-    if (!file_exists(timing.profile_path)) {
+    // A profile named is read whatever the host states, so a damaged one is never passed over in silence.
+    const bool named = !host.profile.empty();
+    if (!stated && !named) return timing;
+    if (!named && !file_exists(timing.profile_path)) {
         timing.basis = HostTiming::Basis::kUncalibrated;
         return timing;
     }
     const HostProfile profile = read_host_profile(timing.profile_path);
+    if (!stated) return timing;
     timing.basis = HostTiming::Basis::kCalibrated;
     timing.factors = derive_factors(host, profile);
     timing.overall = timing.factors.at("overall");

@@ -198,11 +198,16 @@ TEST_F(HostProfileFile, ARunIsCalibratedByTheProfileItFindsAndOverriddenByAGiven
     ::unsetenv("XDG_CONFIG_HOME");
 }
 
-TEST(HostFactor, AHostWithoutReferenceTimesKeepsItsSpeedFactor) {
+TEST_F(HostProfileFile, AHostWithoutReferenceTimesKeepsItsSpeedFactorButANamedProfileIsStillChecked) {
     HostConfig host;  // no preset: this machine, x 1
     const HostTiming timing = resolve_host_timing(host, false);
     EXPECT_EQ(timing.basis, HostTiming::Basis::kUnstated);
     EXPECT_DOUBLE_EQ(timing.factor("sap"), 1);
+    write("{}");
+    host.profile = path_;
+    EXPECT_THROW(resolve_host_timing(host, false), InputError);
+    write(host_profile_json(profile_of(500)));
+    EXPECT_EQ(resolve_host_timing(host, false).basis, HostTiming::Basis::kUnstated);
 }
 
 }  // namespace
