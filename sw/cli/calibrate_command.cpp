@@ -1,6 +1,5 @@
 #include "sw/cli/calibrate_command.h"
 
-#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -106,9 +105,9 @@ HostProfile measure(uint32_t repeat, bool quiet) {
     }
     profile.load_average_end = load_average();
     for (auto& [name, baseline] : profile.reference) {
-        double log_sum = 0;
-        for (const ReferenceTiming& t : baseline.sizes) log_sum += std::log(t.mean_native_ns);
-        baseline.reference_native_ns = std::exp(log_sum / static_cast<double>(baseline.sizes.size()));
+        std::vector<double> means;
+        for (const ReferenceTiming& t : baseline.sizes) means.push_back(t.mean_native_ns);
+        baseline.reference_native_ns = geometric_mean(means);
     }
     for (const std::string& name : board_preset_names()) {
         const BoardPreset preset = load_board_preset(name);

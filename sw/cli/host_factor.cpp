@@ -2,11 +2,11 @@
 
 #include <sys/stat.h>
 
-#include <cmath>
 #include <cstdio>
 
 #include "models/common/user_text.h"
 #include "sw/cli/reference_workload.h"
+#include "sw/timing/spread.h"
 
 namespace cdvp {
 
@@ -66,15 +66,15 @@ double host_reference_ns(const HostConfig& host, const std::string& baseline) {
 
 std::map<std::string, double> derive_factors(const HostConfig& host, const HostProfile& profile) {
     std::map<std::string, double> factors;
-    double log_sum = 0;
+    std::vector<double> each;
     for (const std::string& name : reference_workload::baselines()) {
         const double modelled = host_reference_ns(host, name);
         const auto measured = profile.reference.find(name);
         if (modelled <= 0 || measured == profile.reference.end() || measured->second.reference_native_ns <= 0) continue;
         factors[name] = modelled / measured->second.reference_native_ns;
-        log_sum += std::log(factors[name]);
+        each.push_back(factors[name]);
     }
-    if (!factors.empty()) factors["overall"] = std::exp(log_sum / static_cast<double>(factors.size()));
+    if (!factors.empty()) factors["overall"] = geometric_mean(each);
     return factors;
 }
 

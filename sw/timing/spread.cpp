@@ -20,6 +20,13 @@ double mean_of(const std::vector<double>& samples) {
     return sum / static_cast<double>(samples.size());
 }
 
+double geometric_mean(const std::vector<double>& values) {
+    if (values.empty()) return 0.0;
+    double log_sum = 0;
+    for (const double value : values) log_sum += std::log(value);
+    return std::exp(log_sum / static_cast<double>(values.size()));
+}
+
 Spread spread_of(std::vector<double> samples) {
     const double mean = mean_of(samples);
     std::sort(samples.begin(), samples.end());

@@ -19,6 +19,11 @@ double quantile(const std::vector<double>& sorted, double p);
 // The arithmetic mean, summed in the samples' order; 0 for none.
 double mean_of(const std::vector<double>& samples);
 
+// The geometric mean of positive values (0 for none): how times of different
+// sizes, or factors of different baselines, combine so that each weighs the
+// same whatever its magnitude.
+double geometric_mean(const std::vector<double>& values);
+
 struct Spread {
     double mean = 0;
     double p50 = 0;

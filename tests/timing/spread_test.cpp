@@ -61,6 +61,12 @@ TEST(Spread, ScalesEveryFigureButTheCount) {
     EXPECT_EQ(s.count, 3u);
 }
 
+TEST(GeometricMean, WeighsEachValueTheSameWhateverItsMagnitude) {
+    EXPECT_DOUBLE_EQ(geometric_mean({2, 8}), 4);
+    EXPECT_NEAR(geometric_mean({10, 100, 1000}), 100, 1e-9);
+    EXPECT_DOUBLE_EQ(geometric_mean({}), 0);
+}
+
 TEST(Spread, NoSamplesGiveZeros) {
     const Spread s = spread_of({});
     EXPECT_DOUBLE_EQ(s.mean, 0);
