@@ -21,8 +21,18 @@ namespace cdvp {
 
 struct HostConfig {
     std::string name = "this machine";
-    // Native software time x speed_factor = time on the modelled host.
+    // Native software time x speed_factor = time on the modelled host, when
+    // no host profile calibrates this machine (sw/cli/host_factor.h).
     double speed_factor = 1.0;
+    // The modelled host's mean frame time on cdvp calibrate's reference
+    // workload, per baseline (the geometric mean over its scenes; 0: not
+    // stated, the factor is speed_factor). A host profile's times of the same
+    // workload on this machine turn them into factors.
+    double reference_sap_host_ns = 0;
+    double reference_dbvt_host_ns = 0;
+    double reference_brute_host_ns = 0;
+    double reference_soa_host_ns = 0;
+    std::string profile;  // the host profile to read; empty: the default location
 };
 
 struct SceneSettings {

@@ -286,14 +286,35 @@ std::vector<Setting> bus_settings() {
     };
 }
 
+// The modelled host's time on the reference workload for one baseline (a
+// preset gives it; docs/timing.md derives the shipped presets' values).
+Setting reference_time(const char* name, double HostConfig::*time) {
+    return preset(real(name, "ns", 0, 1e12, member(&S::host, time),
+                       "the modelled host's mean frame time on cdvp calibrate's reference workload (the geometric "
+                       "mean over its scenes) for the baseline in the name; 0: not stated",
+                       "0 without a preset; the presets: their host's factor x the project's reference machine "
+                       "(docs/timing.md)"));
+}
+
 std::vector<Setting> host_and_run_settings() {
     return {
         preset(text("host.name", member(&S::host, &HostConfig::name), "the modelled host, as the summary names it",
                     "this machine without a preset")),
         flag(preset(real("host.speed_factor", "x", 0.001, 1000, member(&S::host, &HostConfig::speed_factor),
-                         "host-speed factor: native software time x F = time on the modelled host",
+                         "host-speed factor: native software time x F = time on the modelled host; given, it "
+                         "overrides a host profile",
                          "1 without a preset; adm-xrc-ii.json derives 4 for a Pentium 4 1.8 GHz")),
              "host-factor", "F"),
+        flag(text("host.profile", member(&S::host, &HostConfig::profile),
+                  "host profile from cdvp calibrate: with the preset's reference timings it gives this machine's "
+                  "host factors (default: host-profile.json in $XDG_CONFIG_HOME/cdvp, else in ~/.config/cdvp, when "
+                  "there)",
+                  "none: the default location; without a profile, the preset's speed_factor (docs/timing.md)"),
+             "host-profile", "FILE"),
+        reference_time("host.reference_sap_host_ns", &HostConfig::reference_sap_host_ns),
+        reference_time("host.reference_dbvt_host_ns", &HostConfig::reference_dbvt_host_ns),
+        reference_time("host.reference_brute_host_ns", &HostConfig::reference_brute_host_ns),
+        reference_time("host.reference_soa_host_ns", &HostConfig::reference_soa_host_ns),
         preset(real("host.ns_per_box", "ns", 0, 1e6, member(&S::driver, &D::ns_per_box),
                     "driver CPU work packing a box", "0 without a preset; assumption: about 45 P4 cycles")),
         preset(real("host.ns_per_pair", "ns", 0, 1e6, member(&S::driver, &D::ns_per_pair),
@@ -340,8 +361,8 @@ std::vector<Setting> host_and_run_settings() {
                    "Bullet's incremental broad phases build their structures in the first frames (docs/timing.md)"),
              "warmup", "W"),
         flag(count("run.repeat", "runs", 1, 1000, member(&S::run, &RunSettings::repeat),
-                   "time the baselines over the frames R times, fresh instances each run; figures are medians over "
-                   "runs (the board's simulated times are deterministic and simulated once)",
+                   "time the baselines over the frames R times, fresh instances each run; each figure is the median "
+                   "of the runs' means (the board's simulated times are deterministic and simulated once)",
                    "one run"),
              "repeat", "R"),
         switch_flag(choice("run.ignore_capacity", {"no", "yes"}, member(&S::run, &RunSettings::ignore_capacity),

@@ -22,7 +22,7 @@ boards=adm-xrc-ii,pcie-gen3-x8
 "$cdvp" sweep --board "$boards" --set format=float32,fixed32,fixed24,fixed18,fixed16,fixed12,fixed9,fixed8 \
     --set objects=256:65536:x2 --m 8 --frames 6 --warmup 1 --jobs "$jobs" --out "$out/formats"
 
-# Board time and speedup against N, one line per m and format; 12 frames, medians after 2.
+# Board time and speedup against N, one line per m and format; 12 frames, means after 2.
 "$cdvp" sweep --board "$boards" --set format=float32,fixed16 --set m=4,8,11,16,24,32 \
     --set objects=100,300,1000,3000,10000,30000,65536 --frames 12 --warmup 2 --baseline sap \
     --jobs "$jobs" --out "$out/speedup"

@@ -33,7 +33,7 @@ std::runtime_error mismatch(const std::string& name, std::size_t found, uint64_t
 
 }  // namespace
 
-BaselineTimer::BaselineTimer(const std::string& names, double host_factor) : host_factor_(host_factor) {
+BaselineTimer::BaselineTimer(const std::string& names, HostTiming host) : host_(std::move(host)) {
     std::stringstream list(names);
     for (std::string name; std::getline(list, name, ',');) {
         // Each is timed once a frame; a repeat would be run twice and reported once.
@@ -54,7 +54,7 @@ void BaselineTimer::set_pair_budget(PairBudget budget) {
     for (auto& baseline : first_run_) baseline->set_pair_budget(budget);
 }
 
-double BaselineTimer::time_one(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found) const {
+double time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found) {
     const auto start = std::chrono::steady_clock::now();
     baseline.find_pairs(boxes, found);
     const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
@@ -67,8 +67,8 @@ std::map<std::string, BaselineTime> BaselineTimer::time_frame(const std::vector<
     std::map<std::string, BaselineTime> times;
     PairList found;
     for (auto& baseline : first_run_) {
-        const double ns = time_one(*baseline, boxes, found);
-        times[baseline->name()] = {ns, ns * host_factor_};
+        const double ns = time_find_pairs(*baseline, boxes, found);
+        times[baseline->name()] = {ns, ns * host_.factor(baseline->name())};
         if (found != board_pairs) {
             throw mismatch(baseline->name(), found.size(), frame, "the board " + std::to_string(board_pairs.size()));
         }
@@ -93,7 +93,7 @@ void BaselineTimer::repeat(FrameSource& source, uint32_t runs, RunTotals& totals
         while (std::optional<Frame> frame = source.next()) {
             const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
             for (auto& baseline : fresh) {
-                totals.baseline_samples(baseline->name()).add(time_one(*baseline, boxes, found));
+                totals.baseline_samples(baseline->name()).add(time_find_pairs(*baseline, boxes, found));
                 if (index >= board_digests_.size() || pairs_digest(found) != board_digests_[index]) {
                     throw mismatch(baseline->name(), found.size(), frame->number,
                                    "run " + std::to_string(run) + ": not the pairs the board found");

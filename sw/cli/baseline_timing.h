@@ -14,15 +14,22 @@
 #include "models/common/aabb.h"
 #include "sw/baselines/broad_phase.h"
 #include "sw/cli/frame_source.h"
+#include "sw/cli/host_factor.h"
 #include "sw/cli/run_report.h"
 
 namespace cdvp {
 
+// The native wall time of one call of a baseline on a frame, in ns; the
+// pairs it found, sorted, in 'found'. Every baseline time cdvp reports, and
+// every reference time cdvp calibrate measures, is taken this way.
+double time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found);
+
 class BaselineTimer {
 public:
-    // names: --baseline's comma-separated list (empty: none). Throws
-    // InputError for an unknown name or one given twice.
-    BaselineTimer(const std::string& names, double host_factor);
+    // names: --baseline's comma-separated list (empty: none); host: each
+    // baseline's factor to the modelled host. Throws InputError for an
+    // unknown name or one given twice.
+    BaselineTimer(const std::string& names, HostTiming host);
     BaselineTimer() = default;  // none
 
     bool empty() const { return names_.empty(); }
@@ -42,12 +49,9 @@ public:
     void repeat(FrameSource& source, uint32_t runs, RunTotals& totals, const std::function<void()>& frame_done);
 
 private:
-    // Times one baseline on one frame; the pairs it found, sorted, in 'found'.
-    double time_one(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found) const;
-
     std::vector<std::string> names_;
     std::vector<std::unique_ptr<BroadPhase>> first_run_;
-    double host_factor_ = 1.0;
+    HostTiming host_;
     PairBudget budget_;
     std::vector<uint64_t> board_digests_;  // one a frame of the first run
 };

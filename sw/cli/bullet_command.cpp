@@ -1,7 +1,9 @@
 #include "sw/cli/bullet_command.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
+#include <map>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -13,9 +15,12 @@
 #include "models/common/user_text.h"
 #include "platform/board_preset.h"
 #include "sw/bullet/board_broadphase.h"
+#include "sw/cli/host_factor.h"
 #include "sw/cli/number_option.h"
+#include "sw/cli/report_provenance.h"
 #include "sw/cli/run_command.h"
 #include "sw/scene/output_set.h"
+#include "sw/timing/frame_samples.h"
 
 namespace po = boost::program_options;
 
@@ -31,7 +36,9 @@ constexpr const char* kUsage =
     "lockstep, the same scene on one of Bullet's broad phases. Per frame: the board's modelled time,\n"
     "Bullet's broad-phase time (AABB update and pair search) and whole step time, the broad phase's\n"
     "share of the step and its Amdahl bound (the most any broad-phase accelerator can speed the step\n"
-    "up), and the speed-ups the board gives. Software times are native wall times x the host factor.";
+    "up), and the speed-ups the board gives. Software times are native wall times x the host factor\n"
+    "(from the host profile, as for cdvp run: docs/timing.md). The summary gives each time's mean over\n"
+    "the frames after the first, which the speed-ups compare, with p50, p99 and the maximum.";
 
 struct BulletOptions {
     SceneOptions scene;
@@ -40,6 +47,7 @@ struct BulletOptions {
     std::string fidelity = "fast";
     std::string software = "dbvt";
     double host_factor = 1.0;
+    std::string host_profile;
     std::string report;
     bool quiet = false;
 };
@@ -57,7 +65,11 @@ po::options_description bullet_options(BulletOptions& o) {
         ("software", po::value(&o.software)->value_name("simple|sap|dbvt")->default_value(o.software),
          "Bullet's broad phase to compare with: btSimpleBroadphase, btAxisSweep3, btDbvtBroadphase")
         ("host-factor", number<double>(&o.host_factor, 0.001, 1000, "F", false),
-         "native software time x F = time on the modelled host (default: the preset's, else 1)");
+         "native software time x F = time on the modelled host (default: from the host profile, else the "
+         "preset's, else 1)")
+        ("host-profile", po::value(&o.host_profile)->value_name("FILE"),
+         "host profile from cdvp calibrate (default: host-profile.json in $XDG_CONFIG_HOME/cdvp, else in "
+         "~/.config/cdvp, when there)");
     po::options_description output("Output (written only if the whole run succeeds)");
     output.add_options()
         ("report", po::value(&o.report)->value_name("FILE"), "JSON report: configuration and every frame")
@@ -69,8 +81,9 @@ po::options_description bullet_options(BulletOptions& o) {
 struct Setup {
     PlatformConfig platform;
     std::string board = "ideal";
-    std::string host = "this machine";
-    double host_factor = 1.0;
+    // Bullet's times are whole worlds, not the reference workload's
+    // baselines: they all take the overall factor.
+    HostTiming host;
     BroadphaseKind software = BroadphaseKind::kDbvt;
 };
 
@@ -85,6 +98,7 @@ Setup make_setup(const BulletOptions& o, const po::variables_map& vm, uint32_t p
         throw InputError("--software: expected simple, sap or dbvt, got '" + excerpt(o.software) + "'");
     }
     setup.software = broadphase_kind(o.software);
+    HostConfig host;
     if (vm.count("board")) {
         const BoardPreset preset = load_board_preset(o.board_name);
         const uint32_t m = setup.platform.board.m;
@@ -93,8 +107,7 @@ Setup make_setup(const BulletOptions& o, const po::variables_map& vm, uint32_t p
         setup.platform.bus = preset.bus;
         setup.platform.driver = preset.driver;
         setup.board = preset.name;
-        setup.host = preset.host.name;
-        setup.host_factor = preset.host.speed_factor;
+        host = preset.host;
         const uint64_t needed = setup.platform.board.block_rams(proxies);
         if (needed > preset.block_rams) {
             throw InputError(preset.path + ": device.block_rams: " + std::to_string(preset.block_rams) +
@@ -103,7 +116,9 @@ Setup make_setup(const BulletOptions& o, const po::variables_map& vm, uint32_t p
                              std::to_string(needed));
         }
     }
-    if (vm.count("host-factor")) setup.host_factor = o.host_factor;
+    if (vm.count("host-factor")) host.speed_factor = o.host_factor;
+    host.profile = o.host_profile;
+    setup.host = resolve_host_timing(host, vm.count("host-factor") != 0);
     try {
         setup.platform.board.validate();
     } catch (const std::invalid_argument& e) {
@@ -112,24 +127,40 @@ Setup make_setup(const BulletOptions& o, const po::variables_map& vm, uint32_t p
     return setup;
 }
 
-// One frame, all times in ns on the modelled host.
+// One frame's times: board_ns simulated, _host_ns native x the host factor
+// (the modelled host), _native_ns as measured here.
 struct FrameRow {
     uint64_t frame = 0;
     uint32_t proxies = 0;
     std::size_t pairs = 0;     // overlapping pairs the board found
     std::size_t contacts = 0;  // contact points in the board world
-    double board_ns = 0;       // the board's frame (modelled: upload, compute, interrupt, read-back, driver)
-    double board_host_ns = 0;  // the host's side around it: AABB update and pair-cache upkeep
-    double software_ns = 0;    // Bullet's broad phase: AABB update and pair search
-    double step_ns = 0;        // Bullet's whole step with that broad phase
-    double simulate_wall_ns = 0;  // simulating the board, native
+    double board_ns = 0;       // the board's frame (simulated: upload, compute, interrupt, read-back, driver)
+    double bookkeeping_host_ns = 0;  // the host's side around it: AABB update and pair-cache upkeep
+    double software_host_ns = 0;     // Bullet's broad phase: AABB update and pair search
+    double step_host_ns = 0;         // Bullet's whole step with that broad phase
+    double simulate_wall_native_ns = 0;  // simulating the board
 
-    double share() const { return step_ns > 0 ? software_ns / step_ns : 0; }
+    double share() const { return step_host_ns > 0 ? software_host_ns / step_host_ns : 0; }
     // Amdahl: a broad phase that cost nothing would speed the step up at most this much.
-    double amdahl_bound() const { return software_ns < step_ns ? step_ns / (step_ns - software_ns) : 0; }
-    double broadphase_speedup() const { return software_ns / (board_ns + board_host_ns); }
-    double step_speedup() const { return step_ns / (step_ns - software_ns + board_ns + board_host_ns); }
+    double amdahl_bound() const {
+        return software_host_ns < step_host_ns ? step_host_ns / (step_host_ns - software_host_ns) : 0;
+    }
+    double broadphase_speedup() const { return software_host_ns / (board_ns + bookkeeping_host_ns); }
+    double step_speedup() const {
+        return step_host_ns / (step_host_ns - software_host_ns + board_ns + bookkeeping_host_ns);
+    }
 };
+
+// The time fields of a frame, by their report names.
+const std::vector<std::pair<const char*, double FrameRow::*>>& time_fields() {
+    static const std::vector<std::pair<const char*, double FrameRow::*>> fields{
+        {"board_ns", &FrameRow::board_ns},
+        {"bookkeeping_host_ns", &FrameRow::bookkeeping_host_ns},
+        {"software_broadphase_host_ns", &FrameRow::software_host_ns},
+        {"software_step_host_ns", &FrameRow::step_host_ns},
+        {"simulate_wall_native_ns", &FrameRow::simulate_wall_native_ns}};
+    return fields;
+}
 
 FrameRow step_both(BulletWorld& board_world, BulletWorld& software_world, double factor, uint64_t frame) {
     const StepTimes board_times = board_world.step();
@@ -141,69 +172,107 @@ FrameRow step_both(BulletWorld& board_world, BulletWorld& software_world, double
     row.pairs = board.board_pairs;
     row.contacts = board_world.contact_points();
     row.board_ns = board.phases.total_ns;
-    row.board_host_ns = (board_times.aabbs_ns + board.bookkeeping_ns) * factor;
-    row.software_ns = software_times.broadphase_share_ns() * factor;
-    row.step_ns = software_times.step_ns * factor;
-    row.simulate_wall_ns = board.simulate_ns;
+    row.bookkeeping_host_ns = (board_times.aabbs_ns + board.bookkeeping_ns) * factor;
+    row.software_host_ns = software_times.broadphase_share_ns() * factor;
+    row.step_host_ns = software_times.step_ns * factor;
+    row.simulate_wall_native_ns = board.simulate_ns;
     return row;
 }
 
+// The ratios of a row: per frame, or of the means.
+void add_ratios(nlohmann::json& json, const FrameRow& r) {
+    json["broadphase_share"] = r.share();
+    json["amdahl_bound"] = r.amdahl_bound();
+    json["broadphase_speedup"] = r.broadphase_speedup();
+    json["step_speedup"] = r.step_speedup();
+}
+
 nlohmann::json to_json(const FrameRow& r) {
-    return {{"frame", r.frame},           {"proxies", r.proxies},
-            {"pairs", r.pairs},           {"contact_points", r.contacts},
-            {"board_ns", r.board_ns},     {"board_host_ns", r.board_host_ns},
-            {"software_broadphase_ns", r.software_ns}, {"software_step_ns", r.step_ns},
-            {"broadphase_share", r.share()}, {"amdahl_bound", r.amdahl_bound()},
-            {"broadphase_speedup", r.broadphase_speedup()}, {"step_speedup", r.step_speedup()},
-            {"simulate_wall_ns", r.simulate_wall_ns}};
+    nlohmann::json json = {{"frame", r.frame}, {"proxies", r.proxies}, {"pairs", r.pairs}, {"contact_points", r.contacts}};
+    for (const auto& [name, field] : time_fields()) json[name] = r.*field;
+    add_ratios(json, r);
+    return json;
 }
 
-// Medians after the first frame (in which the incremental broad phases build
-// their structures): the software times are wall times on a shared machine,
-// and a median is not moved by a step the scheduler interrupted.
-FrameRow median_after_first(const std::vector<FrameRow>& rows) {
-    const std::size_t first = rows.size() > 1 ? 1 : 0;
-    auto median = [&](auto field) {
-        std::vector<double> values;
-        for (std::size_t k = first; k < rows.size(); ++k) values.push_back(static_cast<double>(rows[k].*field));
-        std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-        return values[values.size() / 2];
-    };
-    FrameRow m;
-    m.proxies = rows.back().proxies;
-    m.pairs = static_cast<std::size_t>(median(&FrameRow::pairs));
-    m.contacts = static_cast<std::size_t>(median(&FrameRow::contacts));
-    m.board_ns = median(&FrameRow::board_ns);
-    m.board_host_ns = median(&FrameRow::board_host_ns);
-    m.software_ns = median(&FrameRow::software_ns);
-    m.step_ns = median(&FrameRow::step_ns);
-    m.simulate_wall_ns = median(&FrameRow::simulate_wall_ns);
-    return m;
+// Frame 0 is left out: the incremental broad phases build their structures
+// in it. Each time's mean over the rest is what a simulation pays (dbvt's
+// rebuilds, a few frames in many, included), so the gains divide means;
+// p50, p99 and the maximum are beside them for real-time budgets.
+constexpr uint64_t kBulletWarmupFrames = 1;
+
+struct Summary {
+    std::map<std::string, Spread> times;  // by report name
+    FrameRow means;                       // each time its mean: the ratios of the means
+    uint64_t frames_in_means = 0;
+};
+
+Summary summarise(const std::vector<FrameRow>& rows) {
+    Summary summary;
+    for (const auto& [name, field] : time_fields()) {
+        FrameSamples samples(kBulletWarmupFrames);
+        for (const FrameRow& row : rows) samples.add(row.*field);
+        const TimingFigures figures = samples.figures();
+        summary.times[name] = figures.spread;
+        summary.means.*field = figures.spread.mean;
+        summary.frames_in_means = figures.frames_per_run;
+    }
+    summary.means.proxies = rows.back().proxies;
+    return summary;
 }
 
-void print_row(std::ostream& out, const char* label, const FrameRow& r) {
+nlohmann::json to_json(const Summary& summary) {
+    nlohmann::json json = {{"frames_in_means", summary.frames_in_means},
+                           {"warmup_frames", kBulletWarmupFrames},
+                           {"load_average_end", load_json(load_average())}};
+    for (const auto& [name, spread] : summary.times) {
+        json["mean_" + name] = spread.mean;
+        json["p50_" + name] = spread.p50;
+        json["p99_" + name] = spread.p99;
+        json["max_" + name] = spread.max;
+    }
+    add_ratios(json, summary.means);
+    return json;
+}
+
+void print_times(std::ostream& out, const char* label, uint32_t proxies, std::size_t pairs, const FrameRow& r,
+                 bool ratios) {
     char line[200];
-    std::snprintf(line, sizeof line, "%7s %7u %7zu %9.1f %9.1f %9.1f %9.1f %6.1f%% %7.2fx %7.2fx %7.3fx\n", label,
-                  r.proxies, r.pairs, r.board_ns * 1e-3, r.board_host_ns * 1e-3, r.software_ns * 1e-3,
-                  r.step_ns * 1e-3, 100 * r.share(), r.amdahl_bound(), r.broadphase_speedup(), r.step_speedup());
+    std::snprintf(line, sizeof line, "%7s %7u %7zu %9.1f %9.1f %9.1f %9.1f", label, proxies, pairs, r.board_ns * 1e-3,
+                  r.bookkeeping_host_ns * 1e-3, r.software_host_ns * 1e-3, r.step_host_ns * 1e-3);
     out << line;
+    if (ratios) {
+        std::snprintf(line, sizeof line, " %6.1f%% %7.2fx %7.2fx %7.3fx", 100 * r.share(), r.amdahl_bound(),
+                      r.broadphase_speedup(), r.step_speedup());
+        out << line;
+    }
+    out << '\n';
 }
 
-std::string summary(const SceneSpec& spec, const Setup& setup, const std::vector<FrameRow>& rows) {
+std::string summary_text(const SceneSpec& spec, const Setup& setup, const std::vector<FrameRow>& rows) {
     std::ostringstream out;
     const char* software = to_string(setup.software);
     out << "bullet " << spec.name << " objects=" << (spec.objects ? spec.objects : default_objects(spec.name))
         << " seed=" << spec.seed << " on " << setup.board << ": m=" << setup.platform.board.m << ", "
-        << to_string(setup.platform.fidelity) << " engine; against " << software << " on " << setup.host
-        << " (software time x " << setup.host_factor << ")\n";
-    out << "  frame proxies   pairs  board_us   host_us  " << software << "_us   step_us  share  amdahl  bp_gain"
-        << " step_gain\n";
-    for (std::size_t k = 0; k < rows.size() && k < 10; ++k) print_row(out, std::to_string(rows[k].frame).c_str(), rows[k]);
+        << to_string(setup.platform.fidelity) << " engine; against " << software << " on " << printable(setup.host.host)
+        << " (software: " << setup.host.describe() << ")\n";
+    out << "  frame proxies   pairs  board_us   bookkeeping_host_us  " << software
+        << "_host_us   step_host_us  share  amdahl  bp_gain step_gain\n";
+    for (std::size_t k = 0; k < rows.size() && k < 10; ++k) {
+        print_times(out, std::to_string(rows[k].frame).c_str(), rows[k].proxies, rows[k].pairs, rows[k], true);
+    }
     if (rows.size() > 10) out << "    ... (" << rows.size() - 10 << " more frames in --report)\n";
-    print_row(out, "median", median_after_first(rows));
-    out << "board_us: the board's modelled frame; host_us: AABB update and pair-cache upkeep around it;\n"
-        << "share: " << software << "'s broad phase in its step; amdahl: the most a free broad phase would gain;\n"
-        << "bp_gain, step_gain: what the board gains on the broad phase and on the step. Medians leave out frame 0.\n";
+    const Summary summary = summarise(rows);
+    print_times(out, "mean", summary.means.proxies, rows.back().pairs, summary.means, true);
+    for (const auto& [label, pick] : {std::pair<const char*, double Spread::*>{"p50", &Spread::p50},
+                                      {"p99", &Spread::p99}, {"max", &Spread::max}}) {
+        FrameRow row;
+        for (const auto& [name, field] : time_fields()) row.*field = summary.times.at(name).*pick;
+        print_times(out, label, summary.means.proxies, rows.back().pairs, row, false);
+    }
+    out << "board_us: the board's simulated frame; bookkeeping: AABB update and pair-cache upkeep around it;\n"
+        << "_host_us: native time x the host factor; share: " << software << "'s broad phase in its step;\n"
+        << "amdahl: the most a free broad phase would gain; bp_gain, step_gain: what the board gains on the\n"
+        << "broad phase and on the step, from the means (frame 0 left out).\n";
     return out.str();
 }
 
@@ -221,10 +290,11 @@ int simulate(const BulletOptions& o, const po::variables_map& vm) {
     LazyVirtualBoard link(setup.platform, layout.proxies);
     auto board_world = make_scene_world(spec, BroadphaseKind::kBoard, &link);
     auto software_world = make_scene_world(spec, setup.software);
+    const std::array<double, 3> load_start = load_average();
     std::vector<FrameRow> rows;
     nlohmann::json frames = nlohmann::json::array();
     for (uint64_t frame = 0; frame < o.scene.frames; ++frame) {
-        rows.push_back(step_both(*board_world, *software_world, setup.host_factor, frame));
+        rows.push_back(step_both(*board_world, *software_world, setup.host.overall, frame));
         frames.push_back(to_json(rows.back()));
     }
     if (report) {
@@ -232,16 +302,18 @@ int simulate(const BulletOptions& o, const po::variables_map& vm) {
                                  {"seed", spec.seed},  {"frames", o.scene.frames},
                                  {"proxies", layout.proxies}, {"board", setup.board},
                                  {"m", setup.platform.board.m}, {"fidelity", to_string(setup.platform.fidelity)},
-                                 {"software", to_string(setup.software)}, {"host", setup.host},
-                                 {"host_factor", setup.host_factor}};
-        nlohmann::json median = to_json(median_after_first(rows));
-        median.erase("frame");
-        files.file(*report).stream() << nlohmann::json{{"config", config}, {"frames", frames}, {"median_after_first", median}}
-                                            .dump(1)
-                                     << '\n';
+                                 {"software", to_string(setup.software)}, {"host", setup.host.host},
+                                 {"host_factor", setup.host.overall},
+                                 {"host_calibration", host_calibration_json(setup.host)},
+                                 {"provenance", provenance_json(read_machine_info(), load_start, setup.host)}};
+        files.file(*report).stream()
+            << nlohmann::json{{"config", config}, {"frames", frames}, {"summary", to_json(summarise(rows))}}.dump(1)
+            << '\n';
     }
-    if (!o.quiet) files.set_standard_output(summary(spec, setup, rows));
+    if (!o.quiet) files.set_standard_output(summary_text(spec, setup, rows));
     if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp bullet", *failure);
+    const std::string note = uncalibrated_note(setup.host);
+    if (!o.quiet && !note.empty()) std::cerr << "cdvp bullet: " << note << '\n';
     return kExitDone;
 }
 

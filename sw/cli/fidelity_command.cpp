@@ -73,7 +73,7 @@ LevelResult read_level(const std::string& report_path, const std::string& pairs_
     LevelResult result;
     std::vector<double> walls;
     for (const auto& frame : report.at("frames")) {
-        walls.push_back(frame.at("sim_wall_ns").get<double>());
+        walls.push_back(frame.at("sim_wall_native_ns").get<double>());
         for (std::size_t k = 0; k < kPhases.size(); ++k) result.phase_ns[k] += frame.at(kPhases[k]).get<double>();
     }
     result.frames = walls.size();

@@ -99,6 +99,7 @@ struct Setup {
     SettingValues values;
     PlatformConfig platform;
     std::string board = "ideal";
+    HostTiming host;
     BaselineTimer baselines;
     std::pair<uint64_t, uint64_t> trace_window{0, UINT64_MAX};  // --vcd-frames
 };
@@ -149,7 +150,8 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     setup.platform.quantum_ns = settings.run.quantum_ns;
     setup.platform.fidelity = fidelity(setup.values, vm);
     setup.trace_window = vcd_window(o, vm);
-    setup.baselines = BaselineTimer(o.baselines, settings.host.speed_factor);
+    setup.host = resolve_host_timing(setup.values);
+    setup.baselines = BaselineTimer(o.baselines, setup.host);
     const Setting& repeat = *find_setting("run.repeat");
     if (!setup.values.is_default(repeat) && setup.baselines.empty()) {
         throw InputError(setup.values.where(repeat) +
@@ -192,7 +194,8 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.source = source.describe();
     run.board = setup.board;
     run.host = setup.values.settings().host.name;
-    run.host_factor = setup.values.settings().host.speed_factor;
+    run.host_timing = setup.host;
+    run.load_average_start = load_average();
     run.settings = &setup.values;
     run.command_line = command_line;
     run.dma = setup.platform.driver.use_dma;
@@ -232,7 +235,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         FrameFault fault;
         const auto sim_start = std::chrono::steady_clock::now();
         const FrameResult* frame_result = platform.try_run_frame(boxes, frame->number, fault);
-        const double sim_wall_ns =
+        const double sim_wall_native_ns =
             std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - sim_start).count();
         if (frame_result == nullptr) {
             std::cerr << "cdvp run: "
@@ -252,7 +255,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         }
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
         FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
-                         run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_ns, check.extra};
+                         run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_native_ns, check.extra};
         stats.load_wait_slots = load_wait_slots(run, boxes.size());
         if (!setup.baselines.empty()) {
             stats.baselines = within_budget(budgets, frame->number, [&] {
@@ -276,7 +279,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         return kExitSystem;
     }
 
-    if (report) report->end(totals, setup.values.settings().host.speed_factor);
+    if (report) report->end(totals, setup.host);
     if (!o.quiet) {
         std::ostringstream summary;
         print_summary(summary, run, totals, wall_seconds);
@@ -284,6 +287,8 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     }
     // Reported by value, not thrown: see OutputFile::try_finish.
     if (const std::optional<OutputFailure> failure = out.files.try_commit()) return commit_failed("cdvp run", *failure);
+    const std::string note = setup.baselines.empty() ? "" : uncalibrated_note(setup.host);
+    if (!o.quiet && !note.empty()) std::cerr << "cdvp run: " << note << '\n';
     return 0;
 }
 

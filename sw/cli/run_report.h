@@ -4,6 +4,7 @@
 // many frames a run has.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <ostream>
@@ -15,14 +16,18 @@
 #include "platform/device_fit.h"
 #include "platform/setting_values.h"
 #include "sw/cli/format_reference.h"
+#include "sw/cli/host_factor.h"
 #include "sw/driver/board_driver.h"
 #include "sw/timing/frame_samples.h"
 
 namespace cdvp {
 
+// Time names say which clock they are on (docs/timing.md): _native_ns is
+// measured on this machine, _host_ns is that times the host factor (the
+// modelled host), and a plain _ns is the platform's simulated time.
 struct BaselineTime {
-    double ns = 0;         // measured natively on this machine
-    double scaled_ns = 0;  // ns x the host-speed factor: on the modelled host
+    double native_ns = 0;  // measured natively on this machine
+    double host_ns = 0;    // native_ns x the baseline's host factor: on the modelled host
 };
 
 struct FrameStats {
@@ -33,7 +38,7 @@ struct FrameStats {
     uint64_t load_wait_slots = 0;  // of those, slots waiting for SSRAM tiles
     FramePhases phases;         // simulated; compute_cycles, stall_cycles, overflow_pauses inside
     std::map<std::string, BaselineTime> baselines;
-    double sim_wall_ns = 0;     // the simulator's own wall time for the frame (no file I/O, no baselines)
+    double sim_wall_native_ns = 0;  // the simulator's own wall time for the frame (no file I/O, no baselines)
     ExtraPairs extra;           // against the float32 reference (none under float32)
 };
 
@@ -49,7 +54,8 @@ struct RunConfig {
     std::string board = "ideal";  // preset name
     std::string bus;
     std::string host;
-    double host_factor = 1.0;
+    HostTiming host_timing;  // the factors from native to modelled-host time, and what they rest on
+    std::array<double, 3> load_average_start{};
     bool dma = true;
     bool interrupts = true;
     double quantum_ns = 0.0;
@@ -101,10 +107,9 @@ public:
     uint64_t last_objects() const { return last_objects_; }
     // Mean of phase k (kPhaseNames order) over the frames in the means.
     double mean_phase(int k) const;
-    std::map<std::string, BaselineTime> mean_baselines() const;
-    // Medians, p10 and p90 over the frames after the warm-up: the board's
-    // simulated frame time, the simulator's wall time, each baseline's
-    // native time (scale by the host factor for the modelled host).
+    // Means, p50, p99 and maxima over the frames after the warm-up: the
+    // board's simulated frame time, the simulator's wall time, each
+    // baseline's native time (scale by its host factor for the modelled host).
     TimingFigures board_figures() const { return board_total_.figures(); }
     TimingFigures sim_wall_figures() const { return sim_wall_.figures(); }
     std::map<std::string, TimingFigures> baseline_figures() const;
@@ -114,7 +119,6 @@ private:
     // apart so the means add the same frames in the same order whatever the count.
     struct Sums {
         double phases[kPhases] = {};
-        std::map<std::string, BaselineTime> baselines;
     };
     uint64_t warmup_frames_;
     uint64_t frames_ = 0, pairs_ = 0, cycles_ = 0, stalls_ = 0, last_objects_ = 0;
@@ -125,29 +129,26 @@ private:
     std::vector<FrameStats> shown_;
 };
 
-// The board's speedup over a baseline on the modelled host: the ratio of
-// their medians (scaled_median_ns: the baseline's median x the host factor).
-double speedup(double scaled_median_ns, const TimingFigures& board);
-
 // The phase keys of a frame in the report, in RunTotals' order.
 extern const char* const kPhaseNames[RunTotals::kPhases];
 
-// Writes the report as the run goes: begin() the configuration, frame() each
-// frame, end() the summary. The text is what nlohmann's dump(2) gives for the
+// Writes the report as the run goes: begin() the configuration (with the
+// provenance at the start), frame() each frame, end() the summary (with the
+// load average at the end). The text is what nlohmann's dump(2) gives for the
 // whole document, followed by a line end.
 class ReportWriter {
 public:
     explicit ReportWriter(std::ostream& out) : out_(out) {}
     void begin(const RunConfig& run);
     void frame(const FrameStats& frame);
-    void end(const RunTotals& totals, double host_factor);
+    void end(const RunTotals& totals, const HostTiming& host);
 
 private:
     std::ostream& out_;
     bool any_frame_ = false;
 };
 
-// The short table printed after a run.
+// The short table printed after a run (run_summary.cpp).
 void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, double wall_seconds);
 
 }  // namespace cdvp

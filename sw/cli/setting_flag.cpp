@@ -10,6 +10,8 @@ std::string SettingFlag::name() const {
     if (setting_.value_name.empty()) return "";
     const std::string value = to_text(setting_.default_value());
     if (setting_.type == SettingType::kChoice) return setting_.value_name + " (=" + value + ")";
+    // A free text with no default (a path): nothing to show but its name.
+    if (setting_.range_text().empty() && value.empty()) return setting_.value_name;
     return setting_.value_name + " (" + setting_.range_text() + "; " + value + ")";
 }
 

@@ -268,25 +268,36 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
     }
     if (baselines.empty()) plan.notes.push_back("no speedup or crossover plots: the sweep has no --baseline");
     for (const std::string& board : boards) {
+        // Software lines are native time x the host factor: the labels say by how much.
+        const auto on_board = std::find_if(samples.begin(), samples.end(), [&](const Sample& s) { return s.board == board; });
+        auto on_host = [&](const std::string& baseline) {
+            const double factor = number(on_board->row, baseline + "_host_factor");
+            char label[128];
+            std::snprintf(label, sizeof label, std::isnan(factor) ? "%s on the modelled host" : "%s on the modelled host (native x %.3g)",
+                          baseline.c_str(), factor);
+            return std::string(label);
+        };
         std::ostringstream blocks, plots;
         for (std::size_t b = 0; b < baselines.size(); ++b) {
-            Series software = series(samples, board, baselines[b] + "_median_ns", 1e-3);
+            Series software = series(samples, board, baselines[b] + "_mean_host_ns", 1e-3);
             if (software.empty()) continue;
             blocks << datablock("b" + std::to_string(b), software.begin()->second.points);
-            plots << ", $b" << b << " using 1:2 with lines lc rgb 'gray30' dt 2 lw 3 title " << quoted(baselines[b] + " (software)");
+            plots << ", $b" << b << " using 1:2 with lines lc rgb 'gray30' dt 2 lw 3 title " << quoted(on_host(baselines[b]));
         }
-        const Series times = series(samples, board, "median_total_ns", 1e-3);
+        const Series times = series(samples, board, "mean_total_ns", 1e-3);
         if (times.empty()) {
             plan.notes.push_back("no plots of time or speedup on " + board + ": no point timed a frame (--frames 0)");
             continue;
         }
         plan.figures.push_back({"time-" + file_part(board) + ".png",
-                                line_plot("median frame time on " + board, "us per frame", times, blocks.str(),
+                                line_plot("mean frame time on " + board + " (board: simulated)", "us per frame",
+                                          times, blocks.str(),
                                           plots.str()),
                                 ""});
         for (const std::string& baseline : baselines) {
             plan.figures.push_back({"speedup-" + file_part(board) + "-" + file_part(baseline) + ".png",
-                                    line_plot("speedup over " + baseline + " on " + board, "speedup (x)",
+                                    line_plot("speedup over " + on_host(baseline) + " on " + board + ": ratio of mean frame times",
+                                              "speedup (x)",
                                               series(samples, board, baseline + "_speedup", 1), "",
                                               ", 1 with lines lc 'black' dt 3 title 'break-even'"),
                                     ""});

@@ -157,22 +157,35 @@ PointRow report_row(const Grid& grid, const Point& point, const std::string& rep
     for (const std::string& key : numbers) {
         put("median_" + key, number_text(frame_median([&](const auto& f) { return f.at(key).template get<double>(); })));
     }
-    const double board_ns = frames.empty() ? 0 : frame_median([](const auto& f) { return f.at("total_ns").template get<double>(); });
+    // The report's figures over the frames after the warm-up: the board's
+    // and the simulator's means, p50, p99 and maxima (simulated time plain,
+    // the simulator's _native_ns), and the load average at the end; none
+    // for a report of no frames, as no frame medians either.
+    for (const auto& [key, item] : summary.items()) {
+        const bool figure = !frames.empty() && (key.rfind("mean_", 0) == 0 || key.rfind("p50_", 0) == 0 || key.rfind("p99_", 0) == 0 ||
+                            key.rfind("max_", 0) == 0);
+        if (figure && item.is_number()) put(key, number_text(item.get<double>()));
+    }
+    if (summary.contains("load_average_end")) put("load_average_end", value_text(summary["load_average_end"]));
     for (const std::string& name : baselines) {
-        // The report's own medians and spread when it has them (they span
-        // every --repeat run), else medians of the frames.
+        // The report's own means and spread on the modelled host when it has
+        // them (they span every --repeat run), else the mean of the frames.
         const nlohmann::json timed = summary.value("baselines", nlohmann::json::object()).value(name, nlohmann::json::object());
-        if (timed.contains("median_scaled_ns") && timed.contains("speedup")) {
-            put(name + "_median_ns", number_text(timed["median_scaled_ns"].get<double>()));
-            for (const char* quantile : {"p10", "p90"}) {
-                const std::string key = std::string(quantile) + "_scaled_ns";
-                if (timed.contains(key)) put(name + "_" + quantile + "_ns", number_text(timed[key].get<double>()));
+        if (timed.contains("mean_host_ns") && timed.contains("speedup")) {
+            for (const char* figure : {"mean", "p50", "p99", "max"}) {
+                const std::string key = std::string(figure) + "_host_ns";
+                if (timed.contains(key)) put(name + "_" + key, number_text(timed[key].get<double>()));
             }
+            if (timed.contains("host_factor")) put(name + "_host_factor", number_text(timed["host_factor"].get<double>()));
             put(name + "_speedup", number_text(timed["speedup"].get<double>()));
             continue;
         }
-        const double ns = frame_median([&](const auto& f) { return f.at("baselines").at(name).at("scaled_ns").template get<double>(); });
-        put(name + "_median_ns", number_text(ns));
+        double ns = 0, board_ns = 0;
+        for (std::size_t k = first; k < frames.size(); ++k) {
+            ns += frames[k].at("baselines").at(name).at("host_ns").get<double>();
+            board_ns += frames[k].at("total_ns").get<double>();
+        }
+        put(name + "_mean_host_ns", number_text(frames.size() > first ? ns / static_cast<double>(frames.size() - first) : 0));
         put(name + "_speedup", number_text(board_ns > 0 ? ns / board_ns : 0));
     }
     put("point_wall_s", number_text(wall_seconds));
@@ -189,10 +202,12 @@ PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, co
     return {{}, row};
 }
 
+// Measured: native times, modelled-host times (native x the host factor),
+// speedups, and where and under what load they were taken.
 bool is_measured_column(const std::string& column) {
-    return column == "median_sim_wall_ns" || column == "point_wall_s" || column == kChecksumColumn ||
-           ends_with(column, "_median_ns") || ends_with(column, "_p10_ns") || ends_with(column, "_p90_ns") ||
-           ends_with(column, "_speedup");
+    return column == "point_wall_s" || column == kChecksumColumn || column == "load_average_end" ||
+           column.rfind("config.provenance.", 0) == 0 || ends_with(column, "_native_ns") ||
+           ends_with(column, "_host_ns") || ends_with(column, "_speedup");
 }
 
 std::string RowView::get(const std::string& column) const {

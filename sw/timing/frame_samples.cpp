@@ -1,5 +1,7 @@
 #include "sw/timing/frame_samples.h"
 
+#include <algorithm>
+
 namespace cdvp {
 
 void FrameSamples::start_run() { runs_.emplace_back(); }
@@ -17,15 +19,16 @@ TimingFigures FrameSamples::figures() const {
     figures.includes_warmup = !any_measured && !runs_.empty();
     std::vector<double> pooled;
     for (const Run& run : runs_) {
-        std::vector<double> samples = run.measured;
-        if (figures.includes_warmup) samples = run.warmup;
+        const std::vector<double>& samples = figures.includes_warmup ? run.warmup : run.measured;
         if (samples.empty()) continue;
-        figures.run_medians.push_back(spread_of(samples).median);
+        figures.run_means.push_back(mean_of(samples));
         figures.frames_per_run = samples.size();
         pooled.insert(pooled.end(), samples.begin(), samples.end());
     }
     figures.spread = spread_of(pooled);
-    figures.spread.median = spread_of(figures.run_medians).median;
+    std::vector<double> means = figures.run_means;
+    std::sort(means.begin(), means.end());
+    figures.spread.mean = quantile(means, 0.5);
     return figures;
 }
 

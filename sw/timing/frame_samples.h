@@ -18,16 +18,22 @@ namespace cdvp {
 constexpr uint64_t kDefaultWarmupFrames = 2;
 
 // A figure that rests on fewer measured frames than this (per run) is
-// flagged: below it, p10 and p90 are interpolated between the two most
-// extreme frames, and one disturbed frame moves the median.
+// flagged: below it, p99 is interpolated between the two most extreme
+// frames, and one disturbed frame moves the mean by a tenth of its excess.
 constexpr uint64_t kMinMeasuredFrames = 10;
 
+// The estimator behind every speedup: each run's mean frame time (a
+// simulation pays every frame, the slow ones included: Bullet's dbvt
+// rebuilds its tree every few frames at many times its usual cost, and a
+// median would land on one side of that or the other), combined over the
+// --repeat runs by their median (what varies between runs is the machine,
+// and a median is not moved by one disturbed run).
 struct TimingFigures {
-    // median: the median over runs of each run's median (one run: its
-    // median); p10, p90: over every measured frame of every run.
+    // mean: the median over runs of each run's mean (one run: its mean);
+    // p50, p99, max: over every measured frame of every run.
     Spread spread;
-    std::vector<double> run_medians;
-    uint64_t frames_per_run = 0;  // measured frames each run's median rests on
+    std::vector<double> run_means;
+    uint64_t frames_per_run = 0;  // measured frames each run's mean rests on
     // True when no frame came after the warm-up: the figures then rest on
     // the warm-up frames themselves rather than on nothing.
     bool includes_warmup = false;

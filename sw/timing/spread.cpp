@@ -13,9 +13,29 @@ double quantile(const std::vector<double>& sorted, double p) {
     return sorted[below] + (h - static_cast<double>(below)) * (sorted[below + 1] - sorted[below]);
 }
 
+double mean_of(const std::vector<double>& samples) {
+    if (samples.empty()) return 0.0;
+    double sum = 0;
+    for (const double value : samples) sum += value;
+    return sum / static_cast<double>(samples.size());
+}
+
+double geometric_mean(const std::vector<double>& values) {
+    if (values.empty()) return 0.0;
+    double log_sum = 0;
+    for (const double value : values) log_sum += std::log(value);
+    return std::exp(log_sum / static_cast<double>(values.size()));
+}
+
 Spread spread_of(std::vector<double> samples) {
+    const double mean = mean_of(samples);
     std::sort(samples.begin(), samples.end());
-    return {quantile(samples, 0.5), quantile(samples, 0.1), quantile(samples, 0.9), samples.size()};
+    return {mean, quantile(samples, 0.5), quantile(samples, 0.99), samples.empty() ? 0.0 : samples.back(),
+            samples.size()};
+}
+
+double speedup(const Spread& software, const Spread& board) {
+    return board.mean > 0 ? software.mean / board.mean : 0.0;
 }
 
 }  // namespace cdvp

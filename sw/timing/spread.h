@@ -1,5 +1,7 @@
-// Order statistics of measured samples: the median and the 10th and 90th
-// percentiles that the run reports for every timed quantity.
+// What the run reports for every timed quantity over its frames: the mean,
+// which a speedup compares because a simulation pays every frame's cost, and
+// the 50th and 99th percentiles and the maximum, which real-time budgets ask
+// about.
 #pragma once
 
 #include <cstddef>
@@ -14,16 +16,29 @@ namespace cdvp {
 // usual median (the mean of the middle two for an even count). 0 for no samples.
 double quantile(const std::vector<double>& sorted, double p);
 
+// The arithmetic mean, summed in the samples' order; 0 for none.
+double mean_of(const std::vector<double>& samples);
+
+// The geometric mean of positive values (0 for none): how times of different
+// sizes, or factors of different baselines, combine so that each weighs the
+// same whatever its magnitude.
+double geometric_mean(const std::vector<double>& values);
+
 struct Spread {
-    double median = 0;
-    double p10 = 0;
-    double p90 = 0;
+    double mean = 0;
+    double p50 = 0;
+    double p99 = 0;
+    double max = 0;
     std::size_t count = 0;  // samples it rests on
 
-    Spread scaled(double factor) const { return {median * factor, p10 * factor, p90 * factor, count}; }
+    Spread scaled(double factor) const { return {mean * factor, p50 * factor, p99 * factor, max * factor, count}; }
 };
 
-// The median, p10 and p90 of samples in any order.
+// The mean, p50, p99 and maximum of samples in any order.
 Spread spread_of(std::vector<double> samples);
+
+// The board's speedup over software whose frames cost 'software' (on the
+// modelled host): the ratio of their mean frame times; 0 when the board's is 0.
+double speedup(const Spread& software, const Spread& board);
 
 }  // namespace cdvp

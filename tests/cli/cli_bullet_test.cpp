@@ -1,4 +1,5 @@
 // cdvp bullet and cdvp record, end to end.
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.h"
@@ -31,7 +32,8 @@ nlohmann::json report(const fs::path& path) { return nlohmann::json::parse(slurp
 TEST_F(Bullet, ReportsEveryFrameWithTheAmdahlBound) {
     const Result r = run("bullet --scene stack --objects 20 --frames 6 --board adm-xrc-ii --report r.json");
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.out.find("median"), std::string::npos);
+    EXPECT_NE(r.out.find("\n   mean "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\n    p99 "), std::string::npos) << r.out;
     const nlohmann::json j = report(dir_ / "r.json");
     EXPECT_EQ(j["config"]["board"], "adm-xrc-ii");
     EXPECT_EQ(j["config"]["proxies"], 21);
@@ -41,6 +43,21 @@ TEST_F(Bullet, ReportsEveryFrameWithTheAmdahlBound) {
         EXPECT_GE(frame["amdahl_bound"].get<double>(), 1.0);
         EXPECT_GT(frame["pairs"].get<int>(), 0);
     }
+    // The summary's means leave frame 0 out, and the gains divide means.
+    const nlohmann::json& summary = j["summary"];
+    EXPECT_EQ(summary["frames_in_means"], 5);
+    double software = 0, board = 0, bookkeeping = 0, largest = 0;
+    for (std::size_t k = 1; k < 6; ++k) {
+        software += j["frames"][k]["software_broadphase_host_ns"].get<double>() / 5;
+        board += j["frames"][k]["board_ns"].get<double>() / 5;
+        bookkeeping += j["frames"][k]["bookkeeping_host_ns"].get<double>() / 5;
+        largest = std::max(largest, j["frames"][k]["software_broadphase_host_ns"].get<double>());
+    }
+    EXPECT_NEAR(summary["mean_software_broadphase_host_ns"].get<double>(), software, 1e-6 * software);
+    EXPECT_DOUBLE_EQ(summary["max_software_broadphase_host_ns"].get<double>(), largest);
+    EXPECT_NEAR(summary["broadphase_speedup"].get<double>(), software / (board + bookkeeping), 1e-6);
+    EXPECT_EQ(j["config"]["host_calibration"]["basis"], "uncalibrated");
+    EXPECT_EQ(j["config"]["provenance"]["host_profile"], "uncalibrated");
 }
 
 TEST_F(Bullet, BothEnginesGiveTheSamePairsAndBoardTimes) {

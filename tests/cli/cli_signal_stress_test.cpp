@@ -15,20 +15,39 @@
 #include <string>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/cli/cli_support.h"
 
 namespace cdvp::test {
 namespace {
 
-// The report's sim_wall_ns lines (each frame's, and the summary's median,
-// p10 and p90) are measured, so two runs differ there only.
-std::string without_wall_times(const std::string& report) {
-    std::istringstream lines(report);
-    std::string line, kept;
-    while (std::getline(lines, line)) {
-        if (line.find("sim_wall_ns\"") == std::string::npos) kept += line + '\n';
+// The report without what is measured (every _native_ns time, the
+// provenance with its load average, the load average at the end): two runs
+// differ there only.
+void drop_measured(nlohmann::json& value) {
+    if (!value.is_object()) return;
+    for (auto it = value.begin(); it != value.end();) {
+        const std::string& key = it.key();
+        const bool measured = key == "provenance" || key == "load_average_end" ||
+                              (key.size() > 10 && key.compare(key.size() - 10, 10, "_native_ns") == 0);
+        if (measured) {
+            it = value.erase(it);
+        } else {
+            if (it->is_array()) {
+                for (auto& item : *it) drop_measured(item);
+            }
+            drop_measured(*it);
+            ++it;
+        }
     }
-    return kept;
+}
+
+std::string without_wall_times(const std::string& report) {
+    nlohmann::json parsed = nlohmann::json::parse(report, nullptr, false);
+    if (parsed.is_discarded()) return report;
+    drop_measured(parsed);
+    return parsed.dump(2);
 }
 
 const std::vector<std::string> kOutputs = {"pairs.csv", "r.json", "w.controller-states.txt", "w.dma-states.txt",

@@ -39,6 +39,9 @@ protected:
                                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir_);
         fs::create_directories(dir_);
+        // Runs look for a host profile in the user's config directory: each
+        // test gets an empty one of its own, so none finds the developer's.
+        ::setenv("XDG_CONFIG_HOME", (dir_ / ".config").c_str(), 1);
     }
     void TearDown() override { fs::remove_all(dir_); }
 

@@ -164,8 +164,8 @@ nlohmann::json report(double board_ns, double sap_ns) {
     nlohmann::json frames = nlohmann::json::array();
     for (int k = 0; k < 4; ++k) {
         const double total = k == 0 ? 10 * board_ns : board_ns + k;  // the first frame is left out
-        frames.push_back({{"frame", k}, {"pairs", 10 + k}, {"total_ns", total}, {"sim_wall_ns", 5.0},
-                          {"baselines", {{"sap", {{"ns", sap_ns / 4}, {"scaled_ns", sap_ns + k}}}}}});
+        frames.push_back({{"frame", k}, {"pairs", 10 + k}, {"total_ns", total}, {"sim_wall_native_ns", 5.0},
+                          {"baselines", {{"sap", {{"native_ns", sap_ns / 4}, {"host_ns", sap_ns + k}}}}}});
     }
     return {{"config", {{"command_line", "cdvp run --report out/points/p.json"}, {"m", 8}, {"board", "b"}, {"baselines", {"sap"}}, {"bus", {{"width", 32}}}}}, {"frames", frames}};
 }
@@ -185,7 +185,10 @@ TEST(SweepTable, RowsHoldSettingsMediansAfterTheFirstFrameAndSpeedups) {
     EXPECT_EQ(row.get("frames_in_medians"), "3");
     EXPECT_EQ(row.get("median_total_ns"), "102");  // frames 1..3: 101, 102, 103
     EXPECT_EQ(row.get("median_pairs"), "12");
-    EXPECT_EQ(row.get("sap_median_ns"), "302");
+    EXPECT_EQ(row.get("median_sim_wall_native_ns"), "5");
+    // Without a summary: the means of the frames after the first (301..303
+    // against the board's 101..103).
+    EXPECT_EQ(row.get("sap_mean_host_ns"), "302");
     EXPECT_NEAR(std::stod(row.get("sap_speedup")), 302.0 / 102.0, 1e-9);
     EXPECT_EQ(row.get(kChecksumColumn).size(), 16u);
     EXPECT_EQ(table.columns()[4], kChecksumColumn);
@@ -201,18 +204,32 @@ TEST(SweepTable, RowsHoldSettingsMediansAfterTheFirstFrameAndSpeedups) {
 TEST(SweepTable, BaselinesComeFromTheReportsSummaryAndItsWarmUpIsLeftOut) {
     const Grid grid(std::vector<Axis>{{"objects", {"50"}}});
     nlohmann::json with_summary = report(100, 300);
-    with_summary["summary"] = {{"warmup_frames", 2}, {"too_few_frames", true},
-                               {"baselines", {{"sap", {{"median_scaled_ns", 290.0}, {"p10_scaled_ns", 280.0},
-                                                        {"p90_scaled_ns", 310.0}, {"speedup", 2.5}}}}}};
+    with_summary["summary"] = {{"warmup_frames", 2}, {"too_few_frames", true}, {"mean_total_ns", 102.5},
+                               {"p99_total_ns", 102.99}, {"max_total_ns", 103}, {"load_average_end", {0.5, 0.25, 0.125}},
+                               {"baselines", {{"sap", {{"mean_host_ns", 290.0}, {"p50_host_ns", 280.0},
+                                                        {"p99_host_ns", 310.0}, {"max_host_ns", 320.0},
+                                                        {"mean_native_ns", 72.5}, {"host_factor", 4.0},
+                                                        {"speedup", 2.5}}}}}};
     const Row row = report_row(grid, grid.point(0), with_summary.dump(), 0.5).values;
     EXPECT_EQ(row.at("frames_in_medians"), "2");
     EXPECT_EQ(row.at("median_total_ns"), "102.5");  // frames 2 and 3: 102, 103
     EXPECT_EQ(row.at("too_few_frames"), "true");
-    EXPECT_EQ(row.at("sap_median_ns"), "290");
-    EXPECT_EQ(row.at("sap_p10_ns"), "280");
-    EXPECT_EQ(row.at("sap_p90_ns"), "310");
+    EXPECT_EQ(row.at("sap_mean_host_ns"), "290");
+    EXPECT_EQ(row.at("sap_p50_host_ns"), "280");
+    EXPECT_EQ(row.at("sap_p99_host_ns"), "310");
+    EXPECT_EQ(row.at("sap_max_host_ns"), "320");
+    EXPECT_EQ(row.at("sap_host_factor"), "4");
     EXPECT_EQ(row.at("sap_speedup"), "2.5");
-    EXPECT_TRUE(is_measured_column("sap_p90_ns"));
+    EXPECT_EQ(row.at("mean_total_ns"), "102.5");
+    EXPECT_EQ(row.at("max_total_ns"), "103");
+    EXPECT_EQ(row.at("load_average_end"), "0.5+0.25+0.125");
+    EXPECT_EQ(row.count("sap_mean_native_ns"), 0u) << "the native figures stay in the report";
+    EXPECT_TRUE(is_measured_column("sap_p99_host_ns"));
+    EXPECT_TRUE(is_measured_column("median_sim_wall_native_ns"));
+    EXPECT_TRUE(is_measured_column("config.provenance.load_average_start"));
+    EXPECT_TRUE(is_measured_column("load_average_end"));
+    EXPECT_FALSE(is_measured_column("mean_total_ns")) << "simulated: the same on every run";
+    EXPECT_FALSE(is_measured_column("sap_host_factor")) << "the profile's, the same on every run";
 }
 
 TEST(SweepFigures, CrossoverIsInterpolatedInLogNOrMeasuredAtTheSmallestN) {
@@ -224,8 +241,8 @@ TEST(SweepFigures, CrossoverIsInterpolatedInLogNOrMeasuredAtTheSmallestN) {
         PointRow row = failed_row(grid, grid.point(k), PointStatus::kOk, "", 0.5);
         row.values["status"] = "ok";
         row.values["config.board"] = "b";
-        row.values["median_total_ns"] = "1000";
-        row.values["sap_median_ns"] = std::to_string(1000 * speedups[k]);
+        row.values["mean_total_ns"] = "1000";
+        row.values["sap_mean_host_ns"] = std::to_string(1000 * speedups[k]);
         row.values["sap_speedup"] = std::to_string(speedups[k]);
         table.add(k, row);
     }
@@ -264,6 +281,7 @@ TEST(SweepFigures, AnotherVaryingAxisDrawsLinesOfItsOwnAndFitCsvGivesTheLargestM
         const bool large = axes.at("objects") == "800";
         row.values["status"] = "ok";
         row.values["config.board"] = "b";
+        row.values["mean_total_ns"] = std::to_string(1000 + k);
         row.values["median_total_ns"] = std::to_string(1000 + k);
         // Narrower words fit more lanes; they add extra pairs.
         row.values["config.resources.largest_m"] = large ? (fixed ? "24" : "12") : "24";

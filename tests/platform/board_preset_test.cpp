@@ -80,7 +80,7 @@ TEST_F(PresetFile, EveryNumberOfEveryPresetIsRangeChecked) {
             }
         }
     }
-    EXPECT_EQ(32 + 32 + 26, fields) << "board 5, device 6, host 4, PCI bus 17, PCIe bus 11 fields";
+    EXPECT_EQ(36 + 36 + 30, fields) << "board 5, device 6, host 8, PCI bus 17, PCIe bus 11 fields";
 }
 
 TEST_F(PresetFile, CountsMustBeWholeNumbers) {

@@ -50,7 +50,7 @@ TEST(SettingsTable, EveryPresetKeyMapsToExactlyOneSettingOfItsBus) {
             }
         }
     }
-    EXPECT_EQ(3 * (5 + 8 + 5) + 18 + 18 + 12, keys) << "board, device, host and bus keys of the three presets";
+    EXPECT_EQ(3 * (5 + 8 + 9) + 18 + 18 + 12, keys) << "board, device, host and bus keys of the three presets";
 }
 
 TEST(SettingsTable, EveryDedicatedFlagBindsExactlyOneSetting) {

@@ -37,24 +37,41 @@ TEST(Quantile, OneSampleIsEveryQuantileAndNoneIsZero) {
 
 TEST(Spread, SortsItsSamplesAndCountsThem) {
     const Spread s = spread_of({50, 10, 40, 20, 30});
-    EXPECT_DOUBLE_EQ(s.median, 30);
-    EXPECT_DOUBLE_EQ(s.p10, 14);
-    EXPECT_DOUBLE_EQ(s.p90, 46);
+    EXPECT_DOUBLE_EQ(s.mean, 30);
+    EXPECT_DOUBLE_EQ(s.p50, 30);
+    // h = 4 * 0.99 = 3.96: 40 + 0.96 * (50 - 40)
+    EXPECT_DOUBLE_EQ(s.p99, 49.6);
+    EXPECT_DOUBLE_EQ(s.max, 50);
     EXPECT_EQ(s.count, 5u);
 }
 
-TEST(Spread, AnOutlierMovesTheMedianLittle) {
+TEST(Spread, AnOutlierMovesTheMeanButNotTheMedian) {
     const Spread s = spread_of({100, 101, 99, 100, 5000});
-    EXPECT_DOUBLE_EQ(s.median, 100);
-    EXPECT_GT(s.p90, 101);
+    EXPECT_DOUBLE_EQ(s.p50, 100);
+    EXPECT_DOUBLE_EQ(s.mean, 1080);
+    EXPECT_DOUBLE_EQ(s.max, 5000);
 }
 
 TEST(Spread, ScalesEveryFigureButTheCount) {
     const Spread s = spread_of({1, 2, 3}).scaled(4);
-    EXPECT_DOUBLE_EQ(s.median, 8);
-    EXPECT_DOUBLE_EQ(s.p10, 4.8);
-    EXPECT_DOUBLE_EQ(s.p90, 11.2);
+    EXPECT_DOUBLE_EQ(s.mean, 8);
+    EXPECT_DOUBLE_EQ(s.p50, 8);
+    EXPECT_DOUBLE_EQ(s.p99, 11.92);
+    EXPECT_DOUBLE_EQ(s.max, 12);
     EXPECT_EQ(s.count, 3u);
+}
+
+TEST(GeometricMean, WeighsEachValueTheSameWhateverItsMagnitude) {
+    EXPECT_DOUBLE_EQ(geometric_mean({2, 8}), 4);
+    EXPECT_NEAR(geometric_mean({10, 100, 1000}), 100, 1e-9);
+    EXPECT_DOUBLE_EQ(geometric_mean({}), 0);
+}
+
+TEST(Spread, NoSamplesGiveZeros) {
+    const Spread s = spread_of({});
+    EXPECT_DOUBLE_EQ(s.mean, 0);
+    EXPECT_DOUBLE_EQ(s.max, 0);
+    EXPECT_EQ(s.count, 0u);
 }
 
 }  // namespace

@@ -1,0 +1,135 @@
+// The summary `cdvp run` prints: the board and its resources, the first
+// frames, the totals, and the timing figures the speedups rest on.
+#include <cmath>
+#include <cstdio>
+
+#include "models/common/user_text.h"
+#include "sw/cli/run_report.h"
+
+namespace cdvp {
+
+namespace {
+
+void print_resources(std::ostream& out, const DeviceFit& fit) {
+    const Resources total = fit.resources.total();
+    std::string text = "  on " + printable(fit.device.name) + " (synthesis for " + fit.device.family + "):";
+    const auto usage = [&](const char* name, double used, double available) {
+        char part[128];
+        if (std::isinf(available)) {
+            std::snprintf(part, sizeof part, " %.0f %s,", used, name);
+        } else {
+            std::snprintf(part, sizeof part, " %.0f of %.0f %s (%.0f%%),", used, available, name,
+                          100 * used / available);
+        }
+        text += part;
+    };
+    usage("LUTs", total.luts, fit.device.luts);
+    usage("flip-flops", total.flip_flops, fit.device.flip_flops);
+    usage("block RAMs", total.block_rams, fit.device.block_rams);
+    text += " pair FIFO in " + std::string(fit.resources.pair_fifo_memory == "block_ram" ? "block RAM" : "LUTs");
+    text += fit.use.fits() ? "; largest m that fits: " + std::to_string(fit.largest_m) + "\n"
+                           : "; does not fit (" + fit.use.overflow + ")\n";
+    out << text;
+}
+
+// Which frames the figures rest on, and a note when they are too few.
+std::string frames_described(const RunTotals& totals, const TimingFigures& figures) {
+    std::string text = std::to_string(figures.frames_per_run) + " frames";
+    if (figures.includes_warmup) return text + ", all warm-up frames (no frame came after the --warmup " +
+                                        std::to_string(totals.warmup_frames()) + ")";
+    if (totals.warmup_frames() > 0) text += " after " + std::to_string(totals.warmup_frames()) + " warm-up";
+    return text;
+}
+
+// The means the speedups are taken from, with p50, p99 and the maximum.
+void print_timing(std::ostream& out, const RunConfig& run, const RunTotals& totals) {
+    if (totals.frames() == 0) return;
+    const TimingFigures board = totals.board_figures();
+    const std::map<std::string, TimingFigures> baselines = totals.baseline_figures();
+    char line[512];
+    out << "\nper frame, mean of " << frames_described(totals, board);
+    if (!baselines.empty()) {
+        out << "; software on host " << printable(run.host) << ": " << run.host_timing.describe();
+        if (run.baseline_runs > 1) out << ", timed in " << run.baseline_runs << " runs (median of their means)";
+    }
+    const Spread& b = board.spread;
+    std::snprintf(line, sizeof line,
+                  ":\n  board: %.1f us (p50 %.1f, p99 %.1f, max %.1f), simulated: the same on every run\n",
+                  b.mean / 1e3, b.p50 / 1e3, b.p99 / 1e3, b.max / 1e3);
+    out << line;
+    const Spread wall = totals.sim_wall_figures().spread;
+    std::snprintf(line, sizeof line, "  simulator: %.3f ms native wall time (p50 %.3f, p99 %.3f, max %.3f)\n",
+                  wall.mean / 1e6, wall.p50 / 1e6, wall.p99 / 1e6, wall.max / 1e6);
+    out << line;
+    if (!baselines.empty()) {
+        out << "      N    m   board_us  software  factor  mean_host_us   p50_host_us   p99_host_us   max_host_us  speedup\n";
+        for (const auto& [name, figures] : baselines) {
+            const double factor = run.host_timing.factor(name);
+            const Spread sw = figures.spread.scaled(factor);
+            std::snprintf(line, sizeof line, "%7llu %4u %10.1f  %-8s %7.3g %13.1f %13.1f %13.1f %13.1f %7.2fx\n",
+                          static_cast<unsigned long long>(totals.last_objects()), run.config.m, b.mean / 1e3,
+                          name.c_str(), factor, sw.mean / 1e3, sw.p50 / 1e3, sw.p99 / 1e3, sw.max / 1e3,
+                          speedup(sw, b));
+            out << line;
+        }
+    }
+    if (board.too_few_frames()) {
+        out << "note: these figures rest on " << board.frames_per_run << " frames, fewer than " << kMinMeasuredFrames
+            << ": one disturbed frame moves a mean by a tenth of its excess, and p99 is the maximum; give --frames "
+            << totals.warmup_frames() + kMinMeasuredFrames << " or more\n";
+    }
+}
+
+}  // namespace
+
+void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, double wall_seconds) {
+    const BoardConfig& c = run.config;
+    char line[512];
+    // Names may be long and come from files: printed whole and escaped.
+    std::snprintf(line, sizeof line, ": m=%u (%u %s lanes), %.6g MHz, L=%u cycles, %u block RAMs, %s engine\n", c.m,
+                  c.lanes(), c.format.name().c_str(), c.clock_mhz, c.pipeline_latency(), run.block_rams,
+                  run.fidelity.c_str());
+    out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
+    if (run.device_fit) print_resources(out, *run.device_fit);
+    if (run.ssram) {
+        std::snprintf(line, sizeof line,
+                      "  boxes in SSRAM: %u tiles of %u boxes at %u objects, %llu slots waiting for tile loads\n",
+                      run.tiles, c.tiles.boxes, run.capacity, static_cast<unsigned long long>(run.load_wait_slots));
+        out << line;
+    }
+    out << "  frame  objects     pairs  S(N,m)+L  compute_cycles  stall_cycles  compute_us  total_us\n";
+    for (const FrameStats& f : totals.shown()) {
+        std::snprintf(line, sizeof line, "%7llu %8llu %9llu %9llu %15llu %13llu %11.2f %9.2f\n",
+                      static_cast<unsigned long long>(f.frame), static_cast<unsigned long long>(f.objects),
+                      static_cast<unsigned long long>(f.pairs),
+                      static_cast<unsigned long long>(f.sweep_cycles + c.pipeline_latency()),
+                      static_cast<unsigned long long>(f.phases.compute_cycles),
+                      static_cast<unsigned long long>(f.phases.stall_cycles), f.phases.compute_ns / 1e3,
+                      f.phases.total_ns / 1e3);
+        out << line;
+    }
+    if (totals.frames() > totals.shown().size()) {
+        out << "    ... (" << totals.frames() - totals.shown().size() << " more frames in the report)\n";
+    }
+    std::snprintf(line, sizeof line, "total: %llu frames, %llu pairs, %llu board cycles (%llu stalled)\n",
+                  static_cast<unsigned long long>(totals.frames()), static_cast<unsigned long long>(totals.pairs()),
+                  static_cast<unsigned long long>(totals.cycles()), static_cast<unsigned long long>(totals.stalls()));
+    out << line;
+    if (!c.format.is_float()) {
+        const ExtraPairs& e = totals.extra();
+        std::snprintf(line, sizeof line,
+                      "%s: %llu pairs of the float32 reference, %llu extra (%.2f%% of the board's), costing %.1f us "
+                      "of readback and %.1f us of driver time\n",
+                      c.format.name().c_str(), static_cast<unsigned long long>(e.reference_pairs),
+                      static_cast<unsigned long long>(e.extra_pairs), 100 * e.share(), e.extra_readback_ns / 1e3,
+                      e.extra_driver_ns / 1e3);
+        out << line;
+    }
+    print_timing(out, run, totals);
+    const double rate = wall_seconds > 0 ? static_cast<double>(totals.cycles()) / wall_seconds : 0.0;
+    std::snprintf(line, sizeof line, "simulated in %.3f s wall time (%.2f M board cycles/s)\n", wall_seconds,
+                  rate / 1e6);
+    out << line;
+}
+
+}  // namespace cdvp
