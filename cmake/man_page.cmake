@@ -63,6 +63,10 @@ The directory of the board presets that \fB\-\-board\fR \fINAME\fR reads
 installed in (found from the running binary, so a moved prefix still works), and
 a binary run from its build tree reads the source tree's \fIplatform/boards\fR.
 A \fB\-\-board\fR value that contains a slash or ends in .json is a file path.
+.TP
+.B CDVP_MEMORY_SHARE
+Set by \fBcdvp sweep \-\-jobs\fR \fIJ\fR for its points: J runs share the machine, so each run's
+default memory budget (\fB\-\-max\-memory\fR 0) is 1/J of half the memory.
 [FILES]
 .TP
 .I PREFIX/share/cdvp/boards/*.json

@@ -20,6 +20,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/cli/digest.h"
+#include "sw/scene/input_spool.h"
 #include "sw/scene/output_cleanup.h"
 
 namespace cdvp {
@@ -193,22 +194,21 @@ std::string option_value(const std::vector<std::string>& args, const std::string
     return at ? args[at->index].substr(at->offset) : std::string();
 }
 
-TraceSpool::TraceSpool(const std::string& path) : original_(path) {
+TraceSpool::TraceSpool(const std::string& path, const InputLimits& limits) : original_(path), path_(path) {
     struct stat status {};
     if (path.empty() || stat(path.c_str(), &status) != 0 || S_ISREG(status.st_mode)) return;
-    copy_.emplace(".csv");
-    std::ifstream in(path, std::ios::binary);
-    std::ofstream out(copy_->path(), std::ios::binary);
-    if (!in) throw InputError("--trace: " + excerpt(path) + ": cannot open");
-    if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();  // an empty one stays empty
-    if (!out.flush()) throw std::runtime_error("cannot copy the trace to $TMPDIR");
+    copy_ = std::make_unique<InputSpool>(path, limits);
+    copy_->finish();
+    path_ = copy_->path();
 }
+
+TraceSpool::~TraceSpool() = default;
+
+int TraceSpool::descriptor() const { return copy_ ? copy_->descriptor() : -1; }
 
 std::string TraceSpool::restore_names(std::string message) const {
     if (!copy_) return message;
-    for (std::size_t at; (at = message.find(copy_->path())) != std::string::npos;) {
-        message.replace(at, copy_->path().size(), original_);
-    }
+    for (std::size_t at; (at = message.find(path_)) != std::string::npos;) message.replace(at, path_.size(), original_);
     return message;
 }
 

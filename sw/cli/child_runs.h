@@ -9,6 +9,7 @@
 #include <sys/types.h>
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -98,20 +99,31 @@ std::optional<OptionValue> find_option(const std::vector<std::string>& args, con
 std::string option_value(const std::vector<std::string>& args, const std::string& option);
 
 // Child runs each read a trace from its start: one that is not a regular file
-// (a pipe, a device) is copied once and the children read the copy. Messages
-// that name the copy are given back the user's name for it.
+// (a pipe, a device) is copied once, under the limits every trace is read
+// with (InputSpool: /dev/zero stops at its first line), to an unlinked file,
+// and the children read the copy through the descriptor they inherit
+// ("/proc/self/fd/N"). Messages that name the copy are given back the user's
+// name for it.
+class InputSpool;
+struct InputLimits;
 class TraceSpool {
 public:
-    // Spools 'path' when it is not a regular file; throws InputError when it
-    // cannot be read.
-    explicit TraceSpool(const std::string& path);
+    // Spools 'path' when it is not a regular file, under 'limits'; throws
+    // InputError when it cannot be read or passes a limit, SystemError when
+    // the copy cannot be written.
+    TraceSpool(const std::string& path, const InputLimits& limits);
+    ~TraceSpool();
+    TraceSpool(const TraceSpool&) = delete;
+    TraceSpool& operator=(const TraceSpool&) = delete;
     // The path the children read.
-    const std::string& path() const { return copy_ ? copy_->path() : original_; }
+    const std::string& path() const { return path_; }
+    // The descriptor a child must inherit to read path(), or -1 (a regular file).
+    int descriptor() const;
     std::string restore_names(std::string message) const;
 
 private:
-    std::string original_;
-    std::optional<ScratchFile> copy_;
+    std::string original_, path_;
+    std::unique_ptr<InputSpool> copy_;
 };
 
 // The directories made for --out (as mkdir -p), removed again unless kept

@@ -19,6 +19,7 @@
 
 #include "sw/cli/child_runs.h"
 #include "sw/cli/forwarded_options.h"
+#include "sw/cli/run_budgets.h"
 #include "sw/cli/run_command.h"
 #include "sw/scene/output_set.h"
 #include "models/common/user_text.h"
@@ -194,7 +195,7 @@ int fidelity_levels(int argc, char** argv) {
     // Every level reads the trace from the start (a pipe is copied once).
     std::optional<TraceSpool> spool;
     if (const std::optional<OptionValue> at = find_option(forwarded, "--trace")) {
-        spool.emplace(forwarded[at->index].substr(at->offset));
+        spool.emplace(forwarded[at->index].substr(at->offset), spooled_trace_limits());
         forwarded[at->index].replace(at->offset, std::string::npos, spool->path());
     }
 
@@ -216,6 +217,7 @@ int fidelity_levels(int argc, char** argv) {
                                  report.path(), "--pairs-out", pairs.path(), "-q"});
         ChildStreams streams;
         streams.err = errors.fd();
+        if (spool && spool->descriptor() >= 0) streams.inherited = {spool->descriptor()};
         const int wait_status = run_child(args, streams);
         if (show_progress) std::cerr << '\r' << std::string(60, ' ') << '\r';
         if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);

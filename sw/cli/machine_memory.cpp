@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -75,6 +76,12 @@ MachineMemory machine_memory() {
     memory.cgroup = cgroup_memory_limit(text.str(), "/sys/fs/cgroup");
     rlimit limit{};
     if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) memory.address_space = limit.rlim_cur;
+    if (const char* share = std::getenv(kMemoryShareVariable); share != nullptr) {
+        const std::string text = share;
+        if (!text.empty() && text.size() <= 4 && text.find_first_not_of("0123456789") == std::string::npos) {
+            memory.sharing = std::clamp<uint64_t>(std::stoull(text), 1, 1024);
+        }
+    }
     return memory;
 }
 

@@ -12,6 +12,9 @@ struct MachineMemory {
     uint64_t physical = 0;       // bytes of RAM
     uint64_t cgroup = 0;         // the cgroup's memory limit (v2 memory.max, v1 memory.limit_in_bytes); 0: none
     uint64_t address_space = 0;  // RLIMIT_AS (soft); 0: unlimited
+    // Runs at once that share it: a sweep's --jobs J, told to its points by
+    // CDVP_MEMORY_SHARE=J, so that J points' default budgets fit together.
+    uint64_t sharing = 1;
 
     // The least of the limits that are set, and what it is ("this machine's
     // 23.5 GiB of memory", "the cgroup's memory limit of 2.0 GiB", "RLIMIT_AS
@@ -22,8 +25,10 @@ struct MachineMemory {
 
 // This process's: physical memory from sysconf, the cgroup's limit from
 // /proc/self/cgroup and the cgroup file systems under /sys/fs/cgroup (a
-// limit of an enclosing cgroup counts too), RLIMIT_AS from getrlimit.
+// limit of an enclosing cgroup counts too), RLIMIT_AS from getrlimit, and
+// the runs sharing it from CDVP_MEMORY_SHARE (1 to 1024; else 1).
 MachineMemory machine_memory();
+constexpr const char* kMemoryShareVariable = "CDVP_MEMORY_SHARE";
 
 // The least memory limit of the cgroup at `cgroup_path` and its ancestors,
 // from the cgroup file system mounted at `root` (v2: ROOT/PATH/memory.max, v1:

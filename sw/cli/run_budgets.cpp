@@ -30,10 +30,12 @@ RunBudgets::RunBudgets(const SettingValues& values, const PlatformConfig& platfo
     const uint64_t mib = values_.settings().run.max_memory_mib;
     const uint64_t least = machine_.least();
     if (mib == 0) {
-        memory_bytes_ = least / 2;
+        memory_bytes_ = least / 2 / machine_.sharing;
         memory_origin_ = (values_.is_default(max_memory) ? values_.origin_text(max_memory)
                                                          : values_.value_and_origin(max_memory)) +
-                         ": half of " + machine_.describe_least();
+                         ": half of " + machine_.describe_least() +
+                         (machine_.sharing > 1 ? ", shared by " + std::to_string(machine_.sharing) + " runs at once"
+                                               : std::string());
     } else {
         memory_bytes_ = mib << 20;
         memory_origin_ = values_.value_and_origin(max_memory);
@@ -64,6 +66,14 @@ TraceLimits RunBudgets::trace_limits() const {
     }
     limits.max_frames = room / bytes_per_frame(shape_);
     limits.frames_reason = held(bytes_per_frame(shape_), "a frame");
+    return limits;
+}
+
+InputLimits spooled_trace_limits() {
+    const Setting& size = setting("run.max_trace_size");
+    InputLimits limits;
+    limits.max_bytes = std::get<uint64_t>(size.default_value()) << 20;
+    limits.max_bytes_origin = to_text(size.default_value()) + " MiB (the default of --" + size.flag + ")";
     return limits;
 }
 

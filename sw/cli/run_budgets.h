@@ -19,6 +19,11 @@
 
 namespace cdvp {
 
+// The limits a command that hands a piped trace on to its child runs copies
+// it under: run.max_trace_size's default (each child holds the trace to the
+// size it is given as it reads the copy).
+InputLimits spooled_trace_limits();
+
 class RunBudgets {
 public:
     // trace: --trace's path (empty for a generated scene). shape: what the

@@ -17,6 +17,8 @@
 #include "sw/cli/child_runs.h"
 #include "sw/cli/directory_lock.h"
 #include "sw/cli/exit_status.h"
+#include "sw/cli/machine_memory.h"
+#include "sw/cli/run_budgets.h"
 #include "sw/cli/sweep_files.h"
 #include "sw/cli/sweep_manifest.h"
 #include "sw/cli/sweep_options.h"
@@ -49,7 +51,10 @@ public:
         for (const NamedInput& input : named) {
             std::string path = input.path;
             if (input.option == "--trace") {
-                if (spools_.count(input.value) == 0) spools_.emplace(input.value, input.value);
+                if (spools_.count(input.value) == 0) {
+                    spools_.emplace(std::piecewise_construct, std::forward_as_tuple(input.value),
+                                    std::forward_as_tuple(input.value, spooled_trace_limits()));
+                }
                 path = spools_.at(input.value).path();
                 trace_paths_[input.value] = path;
             }
@@ -181,6 +186,8 @@ int run_sweep(const SweepOptions& o) {
     if (!existing) commit_text_file(manifest_path(o.out_dir), wanted.to_json().dump(2) + "\n", "--out");
     TableFile file(table_path(o.out_dir), table, read.rewrite);
     SweepProgress progress(in_shard, in_shard - todo.size(), !o.quiet && isatty(STDERR_FILENO));
+    // J points at once share the memory: each one's default budget is its share.
+    setenv(kMemoryShareVariable, std::to_string(o.jobs).c_str(), 1);
     int status = 0;
     {
         SweepRunner runner(o, grid, table, file, inputs.trace_paths(), [&inputs] { inputs.check_unchanged(); });

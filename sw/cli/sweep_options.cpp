@@ -1,5 +1,8 @@
 #include "sw/cli/sweep_options.h"
 
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <set>
 
 #include <boost/program_options.hpp>
@@ -9,6 +12,7 @@
 #include "platform/config_file.h"
 #include "platform/settings.h"
 #include "sw/cli/forwarded_options.h"
+#include "sw/cli/host_profile.h"
 #include "sw/cli/run_options.h"
 
 namespace po = boost::program_options;
@@ -68,6 +72,11 @@ po::options_description own_options(std::vector<std::string>& sets) {
 
 bool is_axis_option(const std::string& key) {
     return key == "board" || key == "fidelity" || key == "scene" || key == "trace";
+}
+
+bool fs_exists(const std::string& path) {
+    struct stat status {};
+    return stat(path.c_str(), &status) == 0;
 }
 
 unsigned parse_jobs(const std::string& text) {
@@ -183,6 +192,9 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
             read_config_file(option.value);  // refused here, naming file and line
             o.inputs.push_back({"--config", option.value, option.value});
         }
+        if (option.key == "run.host_profile" && !option.value.empty()) {
+            o.inputs.push_back({"--host-profile", option.value, option.value});
+        }
     }
     o.quiet = line.values["quiet"].as<bool>();
     o.plots = !line.values["no-plots"].as<bool>();
@@ -194,9 +206,17 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
         for (const std::string& value : axis.values) {
             if (axis.key == "trace" || axis.key == "config") o.inputs.push_back({"--" + axis.key, value, value});
             if (axis.key == "board") o.inputs.push_back({"--board", value, board_preset_path(value)});
+            if (axis.key == "run.host_profile") o.inputs.push_back({"--host-profile", value, value});
         }
     }
     if (sources.size() == 2) throw InputError("--scene and --trace: give one of them (the points' frames come from it)");
+    // The host profile the points read when none is named: a calibration
+    // between two runs of the sweep changes its factors.
+    const bool profile_named = std::any_of(o.inputs.begin(), o.inputs.end(),
+                                           [](const NamedInput& input) { return input.option == "--host-profile"; });
+    if (const std::string path = default_host_profile_path(); !profile_named && !path.empty() && fs_exists(path)) {
+        o.inputs.push_back({"--host-profile", "(its default place)", path});
+    }
     if (sources.empty()) o.run_options.insert(o.run_options.begin(), "--scene=spheres");
     return o;
 }

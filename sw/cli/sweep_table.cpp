@@ -206,7 +206,8 @@ PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, co
 // speedups, and where and under what load they were taken.
 bool is_measured_column(const std::string& column) {
     return column == "point_wall_s" || column == kChecksumColumn || column == "load_average_end" ||
-           column.rfind("config.provenance.", 0) == 0 || ends_with(column, "_native_ns") ||
+           column.rfind("config.provenance.", 0) == 0 || column.rfind("config.budgets.", 0) == 0 ||
+           ends_with(column, "_native_ns") ||
            ends_with(column, "_host_ns") || ends_with(column, "_speedup");
 }
 

@@ -252,5 +252,43 @@ TEST_F(CliSweepState, WithoutPlotsTheDataFilesAreWrittenAll) {
     for (const auto& entry : fs::directory_iterator(dir_ / "res")) EXPECT_NE(entry.path().extension(), ".png");
 }
 
+TEST_F(CliSweepState, APipedTraceIsCopiedOnceUnderTheTraceLimitsForEveryPoint) {
+    const Result piped = shell("cat '" + trace("small.csv") + "' | '" CDVP_BINARY "' sweep --trace /dev/stdin --set m=1,2 "
+                               "--out res -q");
+    ASSERT_EQ(piped.status, 0) << piped.err;
+    const Rows table = rows("res");
+    ASSERT_EQ(table.size(), 3u);
+    for (std::size_t k = 1; k < 3; ++k) EXPECT_EQ(table[k][2], "ok") << table[k][0];
+    for (const char* command : {"sweep --trace /dev/zero --set m=1,2 --out z", "fidelity --trace /dev/zero --out z"}) {
+        const Result zero = run(command);
+        EXPECT_EQ(zero.status, 2) << command;
+        EXPECT_NE(zero.err.find("/dev/zero:1: line longer than 4096 bytes"), std::string::npos) << zero.err;
+        EXPECT_FALSE(fs::exists(dir_ / "z")) << command;
+    }
+}
+
+TEST_F(CliSweepState, ARecalibratedHostProfileMakesAnotherSweep) {
+    fs::create_directories(dir_ / "config" / "cdvp");
+    const std::string env = "XDG_CONFIG_HOME='" + (dir_ / "config").string() + "'";
+    ASSERT_EQ(run("calibrate --repeat 1 -q", env).status, 0);
+    ASSERT_TRUE(fs::exists(dir_ / "config" / "cdvp" / "host-profile.json"));
+    ASSERT_EQ(run(kGrid + "--out res -q", env).status, 0);
+    EXPECT_NE(slurp(dir_ / "res" / "sweep.json").find("\"--host-profile\""), std::string::npos);
+    ASSERT_EQ(run("calibrate --repeat 1 -q", env).status, 0);
+    expect_refusal(run(kGrid + "--out res -q", env),
+                   "cdvp sweep: --out: res: --host-profile (its default place) changed since the sweep began");
+}
+
+TEST_F(CliSweepState, PointsRunAtOnceShareTheDefaultMemoryBudget) {
+    ASSERT_EQ(run("sweep --set m=1,2 --objects 20 --jobs 2 --out two -q").status, 0);
+    ASSERT_EQ(run("sweep --set m=1,2 --objects 20 --out one -q").status, 0);
+    auto budget = [&](const std::string& dir) {
+        return nlohmann::json::parse(slurp(dir_ / dir / "points" / "m-1.json"))["config"]["budgets"]["memory_bytes"]
+            .get<uint64_t>();
+    };
+    EXPECT_NEAR(static_cast<double>(budget("two")), static_cast<double>(budget("one")) / 2, 1.0)
+        << "two points at once: half the budget each";
+}
+
 }  // namespace
 }  // namespace cdvp::test
