@@ -150,26 +150,26 @@ void RunBudgets::check_time(uint64_t max_objects, uint64_t frames) const {
     const FrameTime time(driver, bus, fs_from_ns(1000.0 / board.clock_mhz), board.m, board.collector.buffer_depth,
                          platform_.quantum_ns);
     const auto n = static_cast<uint32_t>(max_objects);
-    const uint64_t most_pairs = max_objects < 2 ? 0 : max_objects * (max_objects - 1) / 2;
-    const uint64_t pairs = std::min(pairs_, most_pairs);
-    const double frame_ns = time.frame_bound_ns(n, pairs);
+    // Refused up front: a run that passes the limit even if no frame had a
+    // pair. How many pairs the frames will have is not known before they run;
+    // assuming the pair budget's worth in every frame would refuse runs that
+    // take a small part of the limit. A run whose pairs take it past the limit
+    // is stopped by the driver at the wait that would pass it, with this limit
+    // in its message, before the kernel's clock could overflow.
+    const double frame_ns = time.frame_bound_ns(n, 0);
     const double timeout_ns = time.longest_timeout_ns(n);
     double faults = 0;
-    for (const FaultSpec& spec : platform_.faults) {
-        faults += static_cast<double>(std::min<uint64_t>(spec.count, time.waits(pairs)));
-    }
+    for (const FaultSpec& spec : platform_.faults) faults += static_cast<double>(std::min<uint64_t>(spec.count, time.waits(0)));
     const double total_ns = static_cast<double>(frames) * frame_ns + (faults + 1) * timeout_ns;
     const double limit_ns = ns_from_fs(kSimulatedTimeLimit);
     if (total_ns <= limit_ns) return;
-    const bool pairs_dominate = frame_ns > 2 * time.frame_bound_ns(n, 0);
     throw InputError("a run of " + frames_text(frames) + " of up to " + objects_text(max_objects) + " at " +
                      values_.value_and_origin(setting("board.m")) + " and " +
-                     values_.value_and_origin(setting("board.clock_mhz")) + " could take up to " +
+                     values_.value_and_origin(setting("board.clock_mhz")) + " would reach " +
                      simulated_seconds(total_ns) + " of simulated time (up to " + simulated_seconds(frame_ns) +
-                     " a frame of up to " + std::to_string(pairs) + " pairs, and " + simulated_seconds(timeout_ns) +
-                     " for a wait's timeout), past the limit of " + simulated_seconds(limit_ns) +
-                     " (2^63 fs, half SystemC's 64-bit femtosecond clock): use fewer objects or frames, or a larger m" +
-                     (pairs_dominate ? ", or a smaller --max-pairs (" + pairs_origin() + ")" : ""));
+                     " a frame before any pair, and the deadline of its longest wait " +
+                     simulated_seconds(timeout_ns) + " later), past the limit of " + simulated_seconds(limit_ns) +
+                     " (2^63 fs, half SystemC's 64-bit femtosecond clock): use fewer objects or frames, or a larger m");
 }
 
 std::string RunBudgets::pair_budget_refusal(uint64_t frame, uint64_t found) const {
