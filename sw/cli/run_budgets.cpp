@@ -24,8 +24,8 @@ std::string count_text(uint64_t n, const char* one, const char* many) {
 }  // namespace
 
 RunBudgets::RunBudgets(const SettingValues& values, const PlatformConfig& platform, RunShape shape,
-                       std::string trace, MachineMemory machine)
-    : values_(values), platform_(platform), shape_(std::move(shape)), trace_(std::move(trace)), machine_(machine) {
+                       FrameOrigin origin, MachineMemory machine)
+    : values_(values), platform_(platform), shape_(std::move(shape)), origin_(std::move(origin)), machine_(machine) {
     const Setting& max_memory = setting("run.max_memory");
     const uint64_t mib = values_.settings().run.max_memory_mib;
     const uint64_t least = machine_.least();
@@ -85,11 +85,11 @@ InputLimits RunBudgets::input_limits() const {
 }
 
 std::string RunBudgets::objects_text(uint64_t max_objects) const {
-    return objects_origin(trace_, values_, max_objects);
+    return objects_origin(origin_, values_, max_objects);
 }
 
 std::string RunBudgets::frames_text(uint64_t frames) const {
-    return count_text(frames, "frame", "frames") + " (" + frames_origin(trace_, values_) + ")";
+    return count_text(frames, "frame", "frames") + " (" + frames_origin(origin_, values_) + ")";
 }
 
 std::string RunBudgets::pairs_origin() const {

@@ -24,12 +24,19 @@ namespace cdvp {
 // size it is given as it reads the copy).
 InputLimits spooled_trace_limits();
 
+// What a run's frames come from, as its refusals name it: a trace, or a
+// generated scene.
+struct FrameOrigin {
+    std::string trace;  // --trace's path; empty for a generated scene
+    std::string scene;  // --scene's name; empty for a trace
+};
+
 class RunBudgets {
 public:
-    // trace: --trace's path (empty for a generated scene). shape: what the
-    // run is (its board is planned again for each scene checked). Throws
-    // InputError for a memory budget past what this process may have.
-    RunBudgets(const SettingValues& values, const PlatformConfig& platform, RunShape shape, std::string trace,
+    // origin: the run's trace or scene. shape: what the run is (its board is
+    // planned again for each scene checked). Throws InputError for a memory
+    // budget past what this process may have.
+    RunBudgets(const SettingValues& values, const PlatformConfig& platform, RunShape shape, FrameOrigin origin,
                MachineMemory machine = machine_memory());
 
     uint64_t memory_bytes() const { return memory_bytes_; }
@@ -68,7 +75,7 @@ private:
     const SettingValues& values_;
     PlatformConfig platform_;
     RunShape shape_;
-    std::string trace_;
+    FrameOrigin origin_;
     MachineMemory machine_;
     uint64_t memory_bytes_ = 0;
     std::string memory_origin_;

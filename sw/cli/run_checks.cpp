@@ -26,20 +26,19 @@ const Setting& setting(const char* name) { return *find_setting(name); }
 
 }  // namespace
 
-std::string objects_origin(const std::string& trace, const SettingValues& values, uint64_t max_objects) {
+std::string objects_origin(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects) {
     const std::string count = std::to_string(max_objects);
-    if (!trace.empty()) return count + " objects (the largest frame of --trace " + excerpt(trace) + ")";
+    if (!origin.trace.empty()) return count + " objects (the largest frame of --trace " + excerpt(origin.trace) + ")";
     return count + " objects (" + values.origin_text(setting("scene.objects")) + ")";
 }
 
-std::string frames_origin(const std::string& trace, const SettingValues& values) {
-    return !trace.empty() ? "the frames of --trace " + excerpt(trace) : values.origin_text(setting("scene.frames"));
+std::string frames_origin(const FrameOrigin& origin, const SettingValues& values) {
+    return !origin.trace.empty() ? "the frames of --trace " + excerpt(origin.trace)
+                                 : values.origin_text(setting("scene.frames"));
 }
 
-void check_path_lengths(const RunOptions& o, const po::variables_map& vm) {
-    const std::pair<const char*, const std::string*> paths[] = {
-        {"trace", &o.trace}, {"board", &o.board_name}, {"config", &o.config}, {"pairs-out", &o.pairs_out},
-        {"report", &o.report}, {"vcd", &o.vcd}};
+void check_path_lengths(const std::vector<std::pair<const char*, const std::string*>>& paths,
+                        const po::variables_map& vm) {
     for (const auto& [flag, path] : paths) {
         if (vm.count(flag) == 0 || path->size() < PATH_MAX) continue;
         throw InputError(std::string("--") + flag + ": expected a path of at most " + std::to_string(PATH_MAX - 1) +
@@ -61,10 +60,9 @@ void check_trace_window(const std::pair<uint64_t, uint64_t>& window, std::option
 }
 
 // --vcd-frames A:B, frame numbers as the run numbers them.
-std::pair<uint64_t, uint64_t> vcd_window(const RunOptions& o, const po::variables_map& vm) {
+std::pair<uint64_t, uint64_t> vcd_window(const std::string& text, const po::variables_map& vm) {
     if (vm.count("vcd-frames") == 0) return {0, UINT64_MAX};
     if (vm.count("vcd") == 0) throw InputError("--vcd-frames: traces a window of frames into --vcd; give --vcd too");
-    const std::string& text = o.vcd_frames;
     const std::size_t colon = text.find(':');
     auto number = [&](const std::string& digits, uint64_t& value) {
         if (digits.empty() || digits.size() > 19 || digits.find_first_not_of("0123456789") != std::string::npos) {
@@ -154,7 +152,7 @@ std::string whole(double value) { return std::to_string(static_cast<uint64_t>(st
 
 // A board in SSRAM: the SSRAM holds the boxes, and the tiles are few enough
 // to schedule (the model's bound, so --ignore-capacity does not lift it).
-void check_ssram(const RunOptions& o, const SettingValues& values, uint64_t max_objects, const MemoryPlan& plan) {
+void check_ssram(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects, const MemoryPlan& plan) {
     const Settings& settings = values.settings();
     const std::string memory = values.value_and_origin(setting("board.memory"));
     if (plan.ssram_capacity == 0) {
@@ -165,19 +163,19 @@ void check_ssram(const RunOptions& o, const SettingValues& values, uint64_t max_
         throw InputError(values.where(setting("device.ssram_words")) + ": " + std::to_string(settings.device.ssram_words) +
                          " words a bank in " + std::to_string(settings.device.ssram_banks) + " SSRAM banks hold " +
                          std::to_string(plan.ssram_capacity) + " boxes, too few for " +
-                         objects_origin(o.trace, values, max_objects) + " (" + memory +
+                         objects_origin(origin, values, max_objects) + " (" + memory +
                          "): use fewer objects; --ignore-capacity runs it anyway");
     }
     const uint64_t tiles = (max_objects + plan.tiles.boxes - 1) / plan.tiles.boxes;
     if (tiles > SweepSchedule::kMaxTiles) {
         throw InputError(values.where(setting("board.tile_boxes")) + ": tiles of " + std::to_string(plan.tiles.boxes) +
-                         " boxes make " + std::to_string(tiles) + " tiles of " + objects_origin(o.trace, values, max_objects) +
+                         " boxes make " + std::to_string(tiles) + " tiles of " + objects_origin(origin, values, max_objects) +
                          "; expected at most " + std::to_string(SweepSchedule::kMaxTiles) + " tiles: give larger tiles");
     }
 }
 
 // The tile buffers of a board in SSRAM do not fit the block RAMs.
-[[noreturn]] void refuse_tile(const RunOptions& o, const SettingValues& values, uint64_t max_objects,
+[[noreturn]] void refuse_tile(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects,
                               const MemoryPlan& plan) {
     const Settings& settings = values.settings();
     BoardConfig board = planned_board(settings, max_objects);
@@ -189,7 +187,7 @@ void check_ssram(const RunOptions& o, const SettingValues& values, uint64_t max_
     board.m = settings.board.m;
     throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(settings.device.block_rams) +
                      " block RAMs are too few for the SSRAM tile buffers of " +
-                     values.value_and_origin(setting("board.m")) + " at " + objects_origin(o.trace, values, max_objects) +
+                     values.value_and_origin(setting("board.m")) + " at " + objects_origin(origin, values, max_objects) +
                      " in tiles of " + std::to_string(plan.tiles.boxes) + " boxes: they need 6 x (2m+2) x ceil(T/512) = " +
                      std::to_string(board.block_rams(max_objects)) +
                      (largest > 0 ? " (largest m that fits: " + std::to_string(largest)
@@ -197,18 +195,18 @@ void check_ssram(const RunOptions& o, const SettingValues& values, uint64_t max_
                      "; --ignore-capacity runs it anyway)");
 }
 
-void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects) {
+void check_device_fits(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects) {
     const Settings& settings = values.settings();
     if (settings.run.ignore_capacity == "yes") return;
     const MemoryPlan plan = plan_memory(settings, max_objects);
     const BoardConfig board = planned_board(settings, max_objects);
     const std::string m = values.value_and_origin(setting("board.m"));
-    const std::string at = m + " at " + objects_origin(o.trace, values, max_objects);
+    const std::string at = m + " at " + objects_origin(origin, values, max_objects);
     const std::string explore = "; --ignore-capacity runs it anyway";
     // The coordinate memories alone: a check that needs no synthesis family.
     const uint32_t block_rams = settings.device.block_rams;
     const uint64_t needed = board.block_rams(max_objects);
-    if (plan.ssram && !plan.tile_fits) refuse_tile(o, values, max_objects, plan);
+    if (plan.ssram && !plan.tile_fits) refuse_tile(origin, values, max_objects, plan);
     if (block_rams != 0 && needed > block_rams) {
         // At a smaller m the boxes may fit, or move to SSRAM tiles (--memory auto).
         const uint64_t largest = largest_m_in_block_rams(settings, max_objects);
@@ -235,12 +233,12 @@ void check_device_fits(const RunOptions& o, const SettingValues& values, uint64_
 
 }  // namespace
 
-void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count,
-                      RunBudgets& budgets) {
+void check_scene_fits(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects,
+                      uint64_t frame_count, RunBudgets& budgets) {
     const MemoryPlan plan = plan_memory(values.settings(), max_objects);
-    if (plan.ssram) check_ssram(o, values, max_objects, plan);
+    if (plan.ssram) check_ssram(origin, values, max_objects, plan);
     budgets.check_scene(max_objects, frame_count);
-    check_device_fits(o, values, max_objects);
+    check_device_fits(origin, values, max_objects);
 }
 
 }  // namespace cdvp

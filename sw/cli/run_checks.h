@@ -23,18 +23,21 @@
 namespace cdvp {
 
 // A path longer than the system's PATH_MAX can name no file; refused quoting
-// its start, so that no later message repeats it whole. Throws InputError.
-void check_path_lengths(const RunOptions& o, const boost::program_options::variables_map& vm);
+// its start, so that no later message repeats it whole. paths: each option
+// (without its dashes) and its value, checked when given. Throws InputError.
+void check_path_lengths(const std::vector<std::pair<const char*, const std::string*>>& paths,
+                        const boost::program_options::variables_map& vm);
 
-// Exactly one of --trace FILE (a path) and --scene spheres. Throws InputError.
+// Exactly one of --trace FILE (a path) and --scene NAME: spheres, or one of
+// Bullet's scenes as cdvp record records it. Throws InputError.
 void check_source_options(const RunOptions& o, const boost::program_options::variables_map& vm);
 // A trace brings its own objects and frames: scene.* settings go with --scene
 // only. Throws InputError.
 void check_scene_settings(const boost::program_options::variables_map& vm, const SettingValues& values);
 
-// --vcd-frames A:B, frame numbers as the run numbers them (0 to 2^64-1
-// without it); it needs --vcd. Throws InputError.
-std::pair<uint64_t, uint64_t> vcd_window(const RunOptions& o, const boost::program_options::variables_map& vm);
+// --vcd-frames A:B (its text), frame numbers as the run numbers them (0 to
+// 2^64-1 without it); it needs --vcd. Throws InputError.
+std::pair<uint64_t, uint64_t> vcd_window(const std::string& text, const boost::program_options::variables_map& vm);
 // A window that starts after the run's last frame (nothing: no frames) would
 // trace nothing: refused, as an --inject for such a frame is. Throws InputError.
 void check_trace_window(const std::pair<uint64_t, uint64_t>& window, std::optional<uint64_t> last,
@@ -58,13 +61,14 @@ void check_inject_frames(const std::vector<FaultSpec>& specs, std::optional<uint
 // 0: unbounded) and, with a device family, the LUTs and flip-flops the
 // synthesis-backed resource model gives the board. Throws InputError naming
 // the resource and the largest m that fits.
-void check_scene_fits(const RunOptions& o, const SettingValues& values, uint64_t max_objects, uint64_t frame_count,
-                      RunBudgets& budgets);
+void check_scene_fits(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects,
+                      uint64_t frame_count, RunBudgets& budgets);
 
 // Where a run's counts came from, inside a sentence: "500 objects (the
-// default of --objects)", "20 objects (the largest frame of --trace t.csv)";
-// "the frames of --trace t.csv", "--frames". trace: empty for a generated scene.
-std::string objects_origin(const std::string& trace, const SettingValues& values, uint64_t max_objects);
-std::string frames_origin(const std::string& trace, const SettingValues& values);
+// default of --objects)", "20 objects (the largest frame of --trace t.csv)",
+// "3001 boxes (the collision objects of --scene boxes at 3000 objects (the
+// default of --objects))"; "the frames of --trace t.csv", "--frames".
+std::string objects_origin(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects);
+std::string frames_origin(const FrameOrigin& origin, const SettingValues& values);
 
 }  // namespace cdvp

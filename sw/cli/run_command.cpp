@@ -16,16 +16,14 @@
 
 #include <boost/program_options.hpp>
 
-#include "platform/board_preset.h"
-#include "platform/config_file.h"
 #include "platform/fault_injection.h"
-#include "platform/memory_plan.h"
 #include "platform/virtual_board.h"
 #include "sw/cli/baseline_timing.h"
 #include "sw/cli/frame_source.h"
 #include "sw/cli/run_checks.h"
 #include "sw/cli/run_options.h"
 #include "sw/cli/run_report.h"
+#include "sw/cli/run_setup.h"
 #include "sw/cli/wave_outputs.h"
 #include "sw/scene/conversion.h"
 #include "sw/scene/output_set.h"
@@ -51,8 +49,7 @@ struct Outputs {
 // Declares the inputs and outputs and checks them together before any work.
 void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out) {
     if (vm.count("trace")) out.files.add_input("--trace", o.trace);
-    if (vm.count("board") && !o.board_name.empty()) out.files.add_input("--board", board_preset_path(o.board_name));
-    if (vm.count("config") && !o.config.empty()) out.files.add_input("--config", o.config);
+    add_setting_inputs(out.files, o.layers, vm);
     std::optional<std::size_t> pairs, report;
     if (vm.count("pairs-out")) pairs = out.files.add_output("--pairs-out", o.pairs_out);
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
@@ -95,61 +92,17 @@ private:
 
 // What the run simulates on: the board, its bus and host from the settings,
 // and the software baselines to time beside it.
-struct Setup {
-    SettingValues values;
-    PlatformConfig platform;
-    std::string board = "ideal";
-    HostTiming host;
+struct Setup : BoardSetup {
     BaselineTimer baselines;
     std::pair<uint64_t, uint64_t> trace_window{0, UINT64_MAX};  // --vcd-frames
 };
 
-// run.fidelity: fast unless waveforms are asked for, which need the clocked engine.
-Fidelity fidelity(const SettingValues& values, const po::variables_map& vm) {
-    const Setting& setting = *find_setting("run.fidelity");
-    const bool cycle = values.settings().run.fidelity == "cycle";
-    if (vm.count("vcd") != 0) {
-        if (!values.is_default(setting) && !cycle) {
-            throw InputError("--vcd: waveforms need the clocked engine; " + values.where(setting) +
-                             " asks for fast: use --fidelity cycle (or leave the fidelity out)");
-        }
-        return Fidelity::kCycle;
-    }
-    return cycle ? Fidelity::kCycle : Fidelity::kFast;
-}
-
-// The layers, each over the last: defaults < preset < config file < -c < flags.
-SettingValues layered_settings(const RunOptions& o, const po::variables_map& vm, std::string& board_name) {
-    SettingValues values;
-    if (vm.count("board")) {
-        if (o.board_name.empty()) throw InputError("--board: expected a preset name or a .json path, got ''");
-        const BoardPreset preset = load_board_preset(o.board_name);
-        values.apply(preset.values);
-        board_name = preset.name;
-    }
-    if (vm.count("config")) {
-        if (o.config.empty()) throw InputError("--config: expected a file path, got ''");
-        values.apply(read_config_file(o.config));
-    }
-    for (const std::string& text : o.overrides) values.apply({parse_override(text)});
-    values.apply(o.flags);
-    return values;
-}
-
 Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     Setup setup;
-    setup.values = layered_settings(o, vm, setup.board);
-    const Settings& settings = setup.values.settings();
-    setup.values.check_board();
-    setup.platform.board = settings.board;
-    setup.platform.bus = setup.values.bus();
-    setup.platform.driver = settings.driver;
-    setup.platform.driver.use_dma = settings.run.transfer == "dma";
-    setup.platform.driver.use_interrupts = settings.run.wait == "irq";
+    static_cast<BoardSetup&>(setup) = board_setup(o.layers, vm);
     setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
-    setup.platform.quantum_ns = settings.run.quantum_ns;
-    setup.platform.fidelity = fidelity(setup.values, vm);
-    setup.trace_window = vcd_window(o, vm);
+    setup.platform.fidelity = engine_fidelity(setup.values, vm);
+    setup.trace_window = vcd_window(o.vcd_frames, vm);
     setup.host = resolve_host_timing(setup.values);
     setup.baselines = BaselineTimer(o.baselines, setup.host);
     const Setting& repeat = *find_setting("run.repeat");
@@ -185,31 +138,12 @@ auto within_budget(const RunBudgets& budgets, uint64_t frame, Stage&& stage) {
 
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
              const std::vector<std::string>& command_line, const RunBudgets& budgets) {
-    RunConfig run;
-    run.capacity = static_cast<uint32_t>(source.max_objects());
-    const MemoryPlan memory = plan_memory(setup.values.settings(), run.capacity);
-    setup.platform.board.tiles = memory.tiles;
-    run.config = setup.platform.board;
-    describe_memory(run, memory.ssram);
+    RunConfig run = describe_run(setup, static_cast<uint32_t>(source.max_objects()), budgets);
     run.source = source.describe();
-    run.board = setup.board;
-    run.host = setup.values.settings().host.name;
-    run.host_timing = setup.host;
-    run.load_average_start = load_average();
-    run.settings = &setup.values;
     run.command_line = command_line;
-    run.dma = setup.platform.driver.use_dma;
-    run.interrupts = setup.platform.driver.use_interrupts;
-    run.quantum_ns = setup.platform.quantum_ns;
-    run.fidelity = to_string(setup.platform.fidelity);
     run.baseline_names = setup.baselines.names();
-    run.baseline_runs = setup.values.settings().run.repeat;
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
-    run.budgets = {budgets.memory_bytes(), budgets.pair_budget().max_pairs(), budgets.footprint().before_pairs(),
-                   budgets.footprint().per_pair};
     VirtualBoard platform("platform", setup.platform, run.capacity, out.waves.trace_base());
-    run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
-    if (has_device_family(setup.values.settings())) run.device_fit = fit_on_device(setup.values.settings(), run.capacity);
     run.bus = platform.bus_timing().describe();
     platform.set_trace_window(setup.trace_window.first, setup.trace_window.second);
     if (out.pairs) write_pairs_header(out.pairs->stream());
@@ -308,7 +242,9 @@ int run_checked(int argc, char** argv) {
     try {
         RunOptions o;
         const po::variables_map vm = parse_run_options(argc, argv, o);
-        check_path_lengths(o, vm);
+        check_path_lengths({{"trace", &o.trace}, {"board", &o.layers.board_name}, {"config", &o.layers.config},
+                            {"pairs-out", &o.pairs_out}, {"report", &o.report}, {"vcd", &o.vcd}},
+                           vm);
         // Outputs first: a path that cannot be written, or that names an
         // input or another output, is refused before any work.
         Outputs out;
@@ -316,19 +252,20 @@ int run_checked(int argc, char** argv) {
         check_source_options(o, vm);
         Setup setup = make_setup(o, vm);
         check_scene_settings(vm, setup.values);
-        RunBudgets budgets(setup.values, setup.platform, run_shape(vm, setup), vm.count("trace") ? o.trace : "");
+        const FrameOrigin origin = vm.count("trace") ? FrameOrigin{o.trace, ""} : FrameOrigin{"", o.scene};
+        RunBudgets budgets(setup.values, setup.platform, run_shape(vm, setup), origin);
         // A generated scene is checked before it is generated (millions of
         // spheres take a while to place), a trace once it is read.
         const SceneSettings& scene = setup.values.settings().scene;
         if (vm.count("scene")) {
-            check_scene_fits(o, setup.values, scene.objects, scene.frames, budgets);
+            check_scene_fits(origin, setup.values, scene.objects, scene.frames, budgets);
             const std::optional<uint64_t> last =
                 scene.frames > 0 ? std::optional<uint64_t>(scene.frames - 1) : std::nullopt;
             check_inject_frames(setup.platform.faults, last, [](uint64_t) { return true; },
                                 "--frames " + std::to_string(scene.frames));
         }
         std::unique_ptr<FrameSource> source = open_source(o, vm, setup.values.settings(), budgets);
-        check_scene_fits(o, setup.values, source->max_objects(), source->frame_count(), budgets);
+        check_scene_fits(origin, setup.values, source->max_objects(), source->frame_count(), budgets);
         check_inject_frames(setup.platform.faults, source->last_frame(),
                             [&source](uint64_t n) { return source->has_frame(n); }, source->describe());
         check_trace_window(setup.trace_window, source->last_frame(), source->describe());

@@ -14,41 +14,61 @@ namespace {
 // The run's budgets (run.max_*) have a group of their own.
 bool is_budget(const Setting& s) { return s.name.rfind("run.max_", 0) == 0; }
 
-// The dedicated flags of the settings of 'sections' (budgets: only those, or
-// none of them), in table order.
-void add_setting_flags(po::options_description& group, const std::vector<std::string>& sections, RunOptions& o,
-                       bool budgets = false) {
+}  // namespace
+
+void add_setting_flags(po::options_description& group, const std::vector<std::string>& sections,
+                       std::vector<Assignment>& given, bool budgets, const std::function<bool(const Setting&)>& applies) {
     for (const Setting& s : settings_table()) {
         if (s.flag.empty() || std::find(sections.begin(), sections.end(), s.section()) == sections.end()) continue;
-        if (is_budget(s) != budgets) continue;
-        group.add_options()(s.flag.c_str(), new SettingFlag(s, &o.flags), s.help.c_str());
+        if (is_budget(s) != budgets || (applies && !applies(s))) continue;
+        group.add_options()(s.flag.c_str(), new SettingFlag(s, &given), s.help.c_str());
     }
 }
 
-}  // namespace
+void add_board_option(po::options_description& group, std::string& board_name) {
+    group.add_options()
+        ("board", po::value(&board_name)->value_name("NAME"),
+         "board preset (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) from $CDVP_BOARDS, else share/cdvp/boards of the "
+         "installed prefix, else the source tree's platform/boards; or a .json path; "
+         "without it: the board alone on an ideal, untimed bus");
+}
+
+po::options_description settings_options(SettingLayers& layers) {
+    po::options_description settings("Settings (every one: cdvp settings; docs/settings.md)");
+    settings.add_options()
+        ("config", po::value(&layers.config)->value_name("FILE"),
+         "settings file, JSON or (.toml) TOML, over the preset's: {\"board\": {\"m\": 4}} or [board] m = 4")
+        (",c", po::value(&layers.overrides)->value_name("NAME=VALUE"),
+         "one setting over the config file's (repeatable), e.g. -c bus.interrupt_ns=5000; dedicated flags go over "
+         "it");
+    return settings;
+}
+
+void add_wave_options(po::options_description& group, std::string& vcd, std::string& frames, std::string& format) {
+    group.add_options()
+        ("vcd", po::value(&vcd)->value_name("FILE"),
+         "waveforms of the board, bridge DMA, PCI bus and interrupts, with a GTKWave save file beside it "
+         "(FILE minus .vcd or .fst, plus .gtkw: gtkwave -a FILE.gtkw) that groups the signals by block, names "
+         "the controller's and DMA engine's states (FILE.controller-states.txt, FILE.dma-states.txt) and opens "
+         "on the first traced frame")
+        ("vcd-frames", po::value(&frames)->value_name("A:B"),
+         "trace only frames A to B (as the run numbers them); the others run untraced, every signal holding")
+        ("vcd-format", po::value(&format)->value_name("vcd|fst"),
+         "the waveforms' format: vcd (the default), or fst, GTKWave's compressed format, made from the VCD by "
+         "vcd2fst (Debian package gtkwave): smaller and faster to open for long windows");
+}
 
 po::options_description run_options_description(RunOptions& o) {
     po::options_description input("Input (one of)");
     input.add_options()
         ("trace", po::value(&o.trace)->value_name("FILE"), "scene trace CSV (see README: file formats)")
         ("scene", po::value(&o.scene)->value_name("NAME"), "generated scene: spheres");
-    add_setting_flags(input, {"scene"}, o);
+    add_setting_flags(input, {"scene"}, o.layers.flags);
     po::options_description board("Board");
-    board.add_options()
-        ("board", po::value(&o.board_name)->value_name("NAME"),
-         "board preset (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) from $CDVP_BOARDS, else share/cdvp/boards of the "
-         "installed prefix, else the source tree's platform/boards; or a .json path; "
-         "without it: the board alone on an ideal, untimed bus");
-    add_setting_flags(board, {"board"}, o);
-    po::options_description settings("Settings (every one: cdvp settings; docs/settings.md)");
-    settings.add_options()
-        ("config", po::value(&o.config)->value_name("FILE"),
-         "settings file, JSON or (.toml) TOML, over the preset's: {\"board\": {\"m\": 4}} or [board] m = 4")
-        (",c", po::value(&o.overrides)->value_name("NAME=VALUE"),
-         "one setting over the config file's (repeatable), e.g. -c bus.interrupt_ns=5000; dedicated flags go over "
-         "it");
+    add_board_option(board, o.layers.board_name);
+    add_setting_flags(board, {"board"}, o.layers.flags);
     po::options_description host("Host, baselines and faults");
-    add_setting_flags(host, {"host", "driver", "run"}, o);
+    add_setting_flags(host, {"host", "driver", "run"}, o.layers.flags);
     host.add_options()
         ("baseline", po::value(&o.baselines)->value_name("LIST"),
          "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa")
@@ -56,22 +76,14 @@ po::options_description run_options_description(RunOptions& o) {
          "inject a bus or board fault into frame N (repeatable): target-abort, master-abort, retry, disconnect, "
          "lost-irq, dma-hang, board-error (docs/faults.md)");
     po::options_description budgets("Budgets (checked before the work, and the pairs as they are found; docs/numerics.md)");
-    add_setting_flags(budgets, {"run"}, o, true);
+    add_setting_flags(budgets, {"run"}, o.layers.flags, true);
     po::options_description output("Output (written only if the whole run succeeds)");
     output.add_options()
         ("pairs-out", po::value(&o.pairs_out)->value_name("FILE"), "overlapping pairs CSV (frame,a,b)")
         ("report", po::value(&o.report)->value_name("FILE"),
-         "JSON report: every setting with where it came from, and per-frame cycles")
-        ("vcd", po::value(&o.vcd)->value_name("FILE"),
-         "waveforms of the board, bridge DMA, PCI bus and interrupts, with a GTKWave save file beside it "
-         "(FILE minus .vcd or .fst, plus .gtkw: gtkwave -a FILE.gtkw) that groups the signals by block, names "
-         "the controller's and DMA engine's states (FILE.controller-states.txt, FILE.dma-states.txt) and opens "
-         "on the first traced frame")
-        ("vcd-frames", po::value(&o.vcd_frames)->value_name("A:B"),
-         "trace only frames A to B (as the run numbers them); the others run untraced, every signal holding")
-        ("vcd-format", po::value(&o.vcd_format)->value_name("vcd|fst"),
-         "the waveforms' format: vcd (the default), or fst, GTKWave's compressed format, made from the VCD by "
-         "vcd2fst (Debian package gtkwave): smaller and faster to open for long windows")
+         "JSON report: every setting with where it came from, and per-frame cycles");
+    add_wave_options(output, o.vcd, o.vcd_frames, o.vcd_format);
+    output.add_options()
         ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors")
         ("help,h", po::bool_switch(&o.help), "show this help");
     po::options_description all(
@@ -80,7 +92,7 @@ po::options_description run_options_description(RunOptions& o) {
         "Settings come in layers, each over the last: defaults < --board preset < --config FILE\n"
         "< -c NAME=VALUE < the dedicated flags below.\n"
         "Options are spelt in full (no abbreviations); numbers show their range and default");
-    all.add(input).add(board).add(settings).add(host).add(budgets).add(output);
+    all.add(input).add(board).add(settings_options(o.layers)).add(host).add(budgets).add(output);
     return all;
 }
 

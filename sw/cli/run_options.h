@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -13,13 +14,19 @@
 
 namespace cdvp {
 
-struct RunOptions {
-    std::string trace;
-    std::string scene;
-    std::string board_name;
+// Where a command's settings come from besides the defaults, each layer over
+// the last (sw/cli/run_setup.h layers them).
+struct SettingLayers {
+    std::string board_name;              // --board NAME or PATH
     std::string config;                  // --config FILE
     std::vector<std::string> overrides;  // -c NAME=VALUE, in order
     std::vector<Assignment> flags;       // the dedicated flags given
+};
+
+struct RunOptions {
+    std::string trace;
+    std::string scene;
+    SettingLayers layers;
     std::string baselines;
     std::vector<std::string> inject;  // fault specs, docs/faults.md
     std::string pairs_out, report, vcd;
@@ -40,6 +47,22 @@ boost::program_options::variables_map parse_strictly(int argc, char** argv,
 // A command-line error's one line, an unknown option of any length quoted
 // by its first bytes only, and pointing at PROGRAM --help.
 std::string option_error_text(boost::program_options::error& error, const std::string& program);
+
+// The pieces of a command line that `cdvp run` and `cdvp bullet` share, so
+// that both spell and explain them alike.
+// The dedicated flags of the settings of 'sections' (budgets: only the run's
+// budgets, run.max_*, or none of them) that 'applies' accepts (all when
+// empty), in table order; each flag given becomes one of 'given'.
+void add_setting_flags(boost::program_options::options_description& group, const std::vector<std::string>& sections,
+                       std::vector<Assignment>& given, bool budgets = false,
+                       const std::function<bool(const Setting&)>& applies = {});
+// --board NAME.
+void add_board_option(boost::program_options::options_description& group, std::string& board_name);
+// The group of --config FILE and -c NAME=VALUE.
+boost::program_options::options_description settings_options(SettingLayers& layers);
+// --vcd FILE, --vcd-frames A:B and --vcd-format vcd|fst.
+void add_wave_options(boost::program_options::options_description& group, std::string& vcd, std::string& frames,
+                      std::string& format);
 
 // The --help text.
 std::string run_options_help();

@@ -1,0 +1,86 @@
+#include "sw/cli/run_setup.h"
+
+#include "platform/board_preset.h"
+#include "platform/config_file.h"
+#include "platform/device_fit.h"
+#include "platform/memory_plan.h"
+
+namespace po = boost::program_options;
+
+namespace cdvp {
+
+SettingValues layered_settings(const SettingLayers& layers, const po::variables_map& vm, std::string& board_name) {
+    SettingValues values;
+    if (vm.count("board")) {
+        if (layers.board_name.empty()) throw InputError("--board: expected a preset name or a .json path, got ''");
+        const BoardPreset preset = load_board_preset(layers.board_name);
+        values.apply(preset.values);
+        board_name = preset.name;
+    }
+    if (vm.count("config")) {
+        if (layers.config.empty()) throw InputError("--config: expected a file path, got ''");
+        values.apply(read_config_file(layers.config));
+    }
+    for (const std::string& text : layers.overrides) values.apply({parse_override(text)});
+    values.apply(layers.flags);
+    return values;
+}
+
+BoardSetup board_setup(const SettingLayers& layers, const po::variables_map& vm) {
+    BoardSetup setup;
+    setup.values = layered_settings(layers, vm, setup.board);
+    const Settings& settings = setup.values.settings();
+    setup.values.check_board();
+    setup.platform.board = settings.board;
+    setup.platform.bus = setup.values.bus();
+    setup.platform.driver = settings.driver;
+    setup.platform.driver.use_dma = settings.run.transfer == "dma";
+    setup.platform.driver.use_interrupts = settings.run.wait == "irq";
+    setup.platform.quantum_ns = settings.run.quantum_ns;
+    return setup;
+}
+
+Fidelity engine_fidelity(const SettingValues& values, const po::variables_map& vm) {
+    const Setting& setting = *find_setting("run.fidelity");
+    const bool cycle = values.settings().run.fidelity == "cycle";
+    if (vm.count("vcd") != 0) {
+        if (!values.is_default(setting) && !cycle) {
+            throw InputError("--vcd: waveforms need the clocked engine; " + values.where(setting) +
+                             " asks for fast: use --fidelity cycle (or leave the fidelity out)");
+        }
+        return Fidelity::kCycle;
+    }
+    return cycle ? Fidelity::kCycle : Fidelity::kFast;
+}
+
+void add_setting_inputs(OutputSet& files, const SettingLayers& layers, const po::variables_map& vm) {
+    if (vm.count("board") && !layers.board_name.empty()) files.add_input("--board", board_preset_path(layers.board_name));
+    if (vm.count("config") && !layers.config.empty()) files.add_input("--config", layers.config);
+}
+
+RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& budgets) {
+    const Settings& settings = setup.values.settings();
+    RunConfig run;
+    run.capacity = capacity;
+    const MemoryPlan memory = plan_memory(settings, capacity);
+    setup.platform.board.tiles = memory.tiles;
+    run.config = setup.platform.board;
+    describe_memory(run, memory.ssram);
+    run.board = setup.board;
+    run.host = settings.host.name;
+    run.host_timing = setup.host;
+    run.load_average_start = load_average();
+    run.settings = &setup.values;
+    run.dma = setup.platform.driver.use_dma;
+    run.interrupts = setup.platform.driver.use_interrupts;
+    run.quantum_ns = setup.platform.quantum_ns;
+    run.fidelity = to_string(setup.platform.fidelity);
+    run.baseline_runs = settings.run.repeat;
+    run.budgets = {budgets.memory_bytes(), budgets.pair_budget().max_pairs(), budgets.footprint().before_pairs(),
+                   budgets.footprint().per_pair};
+    run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
+    if (has_device_family(settings)) run.device_fit = fit_on_device(settings, run.capacity);
+    return run;
+}
+
+}  // namespace cdvp

@@ -1,0 +1,59 @@
+// How `cdvp run` and `cdvp bullet` turn their options into what they
+// simulate on: the settings in layers (defaults < --board preset < --config
+// FILE < -c NAME=VALUE < dedicated flags), the board's checks, the platform,
+// the engine, and the run's description for the report and the summary. Both
+// commands call these, so a setting means the same in each and is refused
+// with the same words.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <boost/program_options.hpp>
+
+#include "platform/setting_values.h"
+#include "platform/virtual_board.h"
+#include "sw/cli/host_factor.h"
+#include "sw/cli/run_budgets.h"
+#include "sw/cli/run_options.h"
+#include "sw/cli/run_report.h"
+#include "sw/scene/output_set.h"
+
+namespace cdvp {
+
+// What a command simulates on, from its layered settings.
+struct BoardSetup {
+    SettingValues values;         // every setting in effect and where it came from
+    PlatformConfig platform;      // the board, its bus and driver, the engine
+    std::string board = "ideal";  // the preset's name
+    HostTiming host;              // from native to modelled-host time
+};
+
+// The settings, each layer over the last. Sets board_name to the preset's
+// name when --board gives one. Throws InputError naming the layer and key.
+SettingValues layered_settings(const SettingLayers& layers, const boost::program_options::variables_map& vm,
+                               std::string& board_name);
+
+// The layers, the board's settings checked against each other, and the
+// platform they give: board, bus, driver, transfer and wait, host quantum.
+// The engine (engine_fidelity) and the host timing (resolve_host_timing) are
+// the caller's to set, after whatever checks it makes first.
+BoardSetup board_setup(const SettingLayers& layers, const boost::program_options::variables_map& vm);
+
+// run.fidelity: fast unless waveforms are asked for (--vcd), which need the
+// clocked engine; an explicit fast with --vcd is refused naming where it came from.
+Fidelity engine_fidelity(const SettingValues& values, const boost::program_options::variables_map& vm);
+
+// The files the settings are read from (--board's preset, --config's file):
+// inputs that no output may name.
+void add_setting_inputs(OutputSet& files, const SettingLayers& layers, const boost::program_options::variables_map& vm);
+
+// What the report and the summary say of a run on a board of `capacity`
+// boxes: the memory that serves them (whose tiles it sets on
+// setup.platform.board, so call it before the platform is built), the
+// board, host, engine, settings, budgets and the device's resources. The
+// caller adds what only it knows: the source, the command line, the bus as
+// the platform describes it, the software it times.
+RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& budgets);
+
+}  // namespace cdvp
