@@ -27,6 +27,18 @@ void for_each_hit(uint32_t hits, std::size_t q0, Visit&& visit) {
 
 }  // namespace
 
+CoordinateWords float32_words(const std::vector<FloatBox>& boxes, std::vector<uint32_t> (&words)[kCoordinates]) {
+    CoordinateWords view{};
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        words[c].resize(boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            words[c][i] = ComparisonUnit::as_bits(c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3]);
+        }
+        view[c] = words[c].data();
+    }
+    return view;
+}
+
 // The y-z grid: cell of v on an axis = floor((v - origin) / size), clamped,
 // v a stored word's value (the float for float32, the code for fixedK: the
 // approximate value of its key, read from the word so no key is undone).

@@ -16,6 +16,10 @@ namespace cdvp {
 // bound c (Coordinate order) of box i (float32 bits, or a fixed-point code).
 using CoordinateWords = std::array<const uint32_t*, kCoordinates>;
 
+// The words a float32 board stores for `boxes` (each bound's float bits),
+// kept in `words`; the view reads them.
+CoordinateWords float32_words(const std::vector<FloatBox>& boxes, std::vector<uint32_t> (&words)[kCoordinates]);
+
 // Finds exactly the pairs (i, j), i < j < objects, for which the comparison
 // unit's lane test in the given number format holds, in BoardCore's order (i
 // ascending, then j ascending). Every bound becomes the format's ordered key

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "models/fast_engine/pair_finder.h"
 #include "platform/virtual_board.h"
 
 namespace cdvp {
@@ -30,6 +31,29 @@ public:
     virtual const FrameResult& run(const std::vector<FloatBox>& boxes) = 0;
 };
 
+// A virtual board the caller elaborated (with waveforms, say, as `cdvp
+// bullet --vcd` does), frames numbered from 0 in the order they run. A frame
+// beyond the capacity the board was built for is refused (std::length_error).
+class PlatformLink : public BoardLink {
+public:
+    PlatformLink(VirtualBoard& board, uint32_t capacity) : board_(board), capacity_(capacity) {}
+
+    uint32_t capacity() const override { return capacity_; }
+    const FrameResult& run(const std::vector<FloatBox>& boxes) override;
+    // Why the frame that threw BoardFrameFault failed: a device fault, the
+    // simulated-time limit or the pair budget, each its own exit.
+    const FrameFault& last_fault() const { return fault_; }
+    // The last frame's pairs and phases (null before the first).
+    const FrameResult* last_result() const { return result_; }
+
+private:
+    VirtualBoard& board_;
+    uint32_t capacity_;
+    uint64_t frames_ = 0;
+    FrameFault fault_;
+    const FrameResult* result_ = nullptr;
+};
+
 // The virtual board, elaborated on the first frame. SystemC elaborates a
 // design once per process, so a process holds at most one: constructing a
 // second LazyVirtualBoard is allowed, running it is refused (std::logic_error).
@@ -49,8 +73,26 @@ public:
 private:
     PlatformConfig config_;
     uint32_t capacity_;
-    uint64_t frames_ = 0;
     std::unique_ptr<VirtualBoard> board_;
+    std::unique_ptr<PlatformLink> link_;
+};
+
+// The board's float32 comparisons, done on the host by the fast engine's
+// search, untimed: a float32 board's pairs of every frame (closed intervals,
+// the lanes' semantics) and none of its time or SystemC. A world on it moves
+// as a world on the board does, at the cost of a sort and sweep a frame.
+class HostPairsLink : public BoardLink {
+public:
+    explicit HostPairsLink(uint32_t capacity) : capacity_(capacity) {}
+
+    uint32_t capacity() const override { return capacity_; }
+    const FrameResult& run(const std::vector<FloatBox>& boxes) override;
+
+private:
+    uint32_t capacity_;
+    PairFinder finder_;
+    std::vector<uint32_t> words_[kCoordinates];
+    FrameResult result_;
 };
 
 }  // namespace cdvp

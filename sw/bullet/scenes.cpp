@@ -13,7 +13,6 @@ namespace cdvp {
 
 namespace {
 
-constexpr uint32_t kMaxObjects = 1000000;
 const btVector3 kGravity(0, btScalar(-9.81), 0);
 
 // Rows of the largest pyramid of at most n boxes (rows (rows + 1) / 2 <= n).
@@ -148,9 +147,9 @@ void build_spheres(BulletWorld& world, uint32_t objects, uint64_t seed) {
 
 uint32_t objects_of(const SceneSpec& spec) {
     const uint32_t objects = spec.objects == 0 ? default_objects(spec.name) : spec.objects;
-    if (objects > kMaxObjects) {
+    if (objects > kMaxSceneObjects) {
         throw std::invalid_argument("a scene of " + std::to_string(objects) + " objects; at most " +
-                                    std::to_string(kMaxObjects));
+                                    std::to_string(kMaxSceneObjects));
     }
     return objects;
 }
@@ -158,8 +157,27 @@ uint32_t objects_of(const SceneSpec& spec) {
 }  // namespace
 
 const std::vector<std::string>& bullet_scene_names() {
-    static const std::vector<std::string> names = {"pyramid", "boxes", "mixed", "stack", "spheres"};
+    static const std::vector<std::string> names = {"pyramid", "boxes", "mixed", "stack", "bullet-spheres"};
     return names;
+}
+
+bool is_bullet_scene(const std::string& name) {
+    const auto& names = bullet_scene_names();
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string bullet_scene_defaults() {
+    std::string list;
+    for (const std::string& name : bullet_scene_names()) {
+        list += (list.empty() ? "" : ", ") + name + " " + std::to_string(default_objects(name));
+    }
+    return list;
+}
+
+std::string bullet_scene_list() {
+    std::string list;
+    for (const std::string& name : bullet_scene_names()) list += (list.empty() ? "" : ", ") + name;
+    return list;
 }
 
 uint32_t default_objects(const std::string& name) {
@@ -167,8 +185,8 @@ uint32_t default_objects(const std::string& name) {
     if (name == "boxes") return 3000;
     if (name == "mixed") return 500;
     if (name == "stack") return 50;
-    if (name == "spheres") return 500;
-    throw std::invalid_argument("unknown scene '" + name + "'; expected pyramid, boxes, mixed, stack or spheres");
+    if (name == "bullet-spheres") return 500;
+    throw std::invalid_argument("unknown scene '" + name + "'; expected one of " + bullet_scene_list());
 }
 
 SceneLayout scene_layout(const SceneSpec& spec) {
@@ -185,7 +203,7 @@ SceneLayout scene_layout(const SceneSpec& spec) {
     } else if (spec.name == "stack") {
         const btScalar length = 3.0f * btScalar((n + kStackHeight - 1) / kStackHeight);
         layout = {n + 1, btVector3(-15, -5, -15), btVector3(length + 15, btScalar(kStackHeight) + 15, 15)};
-    } else if (spec.name == "spheres") {
+    } else if (spec.name == "bullet-spheres") {
         SpheresConfig config;
         config.objects = n;
         const auto edge = btScalar(place_spheres(config).edge);
@@ -207,7 +225,7 @@ std::unique_ptr<BulletWorld> make_scene_world(const SceneSpec& spec, BroadphaseK
     if (spec.name == "boxes") build_boxes(*world, n, rng);
     if (spec.name == "mixed") build_mixed(*world, n, rng);
     if (spec.name == "stack") build_stacks(*world, n);
-    if (spec.name == "spheres") build_spheres(*world, n, spec.seed);
+    if (spec.name == "bullet-spheres") build_spheres(*world, n, spec.seed);
     return world;
 }
 

@@ -4,7 +4,10 @@
 //   boxes    boxes falling in a column onto a ground plane (3,000 by default)
 //   mixed    spheres, boxes, capsules and convex hulls falling into a pile
 //   stack    towers of boxes that settle and go to sleep
-//   spheres  the paper's bouncing spheres: no gravity, elastic, in a closed box
+//   bullet-spheres  the paper's bouncing spheres: no gravity, elastic, in a
+//            closed box of six walls. Named apart from `cdvp run`'s own
+//            spheres scene, whose 500 boxes the paper's application steps:
+//            Bullet steps these, and their walls make 506 boxes.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +26,13 @@ struct SceneSpec {
 };
 
 const std::vector<std::string>& bullet_scene_names();
+bool is_bullet_scene(const std::string& name);
+// "pyramid, boxes, mixed, stack, bullet-spheres": for messages and help.
+std::string bullet_scene_list();
+// "pyramid 120, boxes 3000, ...": each scene's default object count.
+std::string bullet_scene_defaults();
+// The most bodies a scene is built around.
+constexpr uint32_t kMaxSceneObjects = 1000000;
 // The default object count; std::invalid_argument for an unknown name.
 uint32_t default_objects(const std::string& name);
 

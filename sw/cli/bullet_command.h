@@ -28,6 +28,11 @@ struct SceneOptions {
 boost::program_options::options_description scene_options(SceneOptions& o);
 // The checked scene; InputError naming the flag otherwise.
 SceneSpec scene_spec(const SceneOptions& o, const boost::program_options::variables_map& vm);
+// A name of one of Bullet's scenes; InputError naming --scene otherwise.
+void check_bullet_scene_name(const std::string& name);
+// --scene's and --objects' help: the scenes, and each one's default count.
+std::string bullet_scene_help();
+std::string bullet_objects_help();
 
 // Parses argv with cdvp's rules: options spelt in full, no stray words, each
 // given once; --help or -h (before any "--") prints 'usage' and the options.

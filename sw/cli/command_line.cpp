@@ -17,27 +17,37 @@ namespace cdvp {
 
 namespace {
 constexpr uint64_t kMaxFrames = 1'000'000;
-constexpr uint32_t kMaxSceneObjects = 1'000'000;
 }  // namespace
+
+std::string bullet_scene_help() { return bullet_scene_list() + " (docs/bullet.md)"; }
+
+std::string bullet_objects_help() { return "(default: the scene's own: " + bullet_scene_defaults() + ")"; }
+
+void check_bullet_scene_name(const std::string& name) {
+    // The old name of Bullet's spheres, now cdvp run's alone.
+    if (name == "spheres") {
+        throw InputError("--scene: 'spheres' is cdvp run's scene, stepped by the paper's application; Bullet's "
+                         "spheres, with the six walls of their cube, are 'bullet-spheres'");
+    }
+    if (!is_bullet_scene(name)) {
+        throw InputError("--scene: expected one of " + bullet_scene_list() + ", got '" + excerpt(name) + "'");
+    }
+}
 
 po::options_description scene_options(SceneOptions& o) {
     po::options_description scene("Scene");
+    const std::string objects = "bodies in the scene " + bullet_objects_help();
     scene.add_options()
-        ("scene", po::value(&o.scene)->value_name("NAME"), "pyramid, boxes, mixed, stack or spheres (docs/bullet.md)")
-        ("objects", number<uint32_t>(&o.objects, 1, kMaxSceneObjects, "N", false),
-         "bodies in the scene (default: the scene's own: pyramid 120, boxes 3000, mixed 500, stack 50, spheres 500)")
+        ("scene", po::value(&o.scene)->value_name("NAME"), bullet_scene_help().c_str())
+        ("objects", number<uint32_t>(&o.objects, 1, kMaxSceneObjects, "N", false), objects.c_str())
         ("frames", number<uint64_t>(&o.frames, 1, kMaxFrames, "F"), "steps of 1/60 s")
         ("seed", number<uint64_t>(&o.seed, 0, UINT64_MAX, "S"), "random seed (same seed, same scene)");
     return scene;
 }
 
 SceneSpec scene_spec(const SceneOptions& o, const po::variables_map& vm) {
-    if (vm.count("scene") == 0) throw InputError("--scene: expected one of pyramid, boxes, mixed, stack, spheres");
-    const auto& names = bullet_scene_names();
-    if (std::find(names.begin(), names.end(), o.scene) == names.end()) {
-        throw InputError("--scene: expected one of pyramid, boxes, mixed, stack, spheres, got '" + excerpt(o.scene) +
-                         "'");
-    }
+    if (vm.count("scene") == 0) throw InputError("--scene: expected one of " + bullet_scene_list());
+    check_bullet_scene_name(o.scene);
     SceneSpec spec{o.scene, o.objects, o.seed};
     try {
         scene_layout(spec);

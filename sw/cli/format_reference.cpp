@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "models/comparison_unit/comparison_unit.h"
 
 namespace cdvp {
 
@@ -26,16 +25,7 @@ FormatReference::Check FormatReference::check(const std::vector<FloatBox>& boxes
         result.extra.reference_pairs = board_pairs.size();
         return result;
     }
-    const auto n = static_cast<uint32_t>(boxes.size());
-    CoordinateWords view{};
-    for (uint32_t c = 0; c < kCoordinates; ++c) {
-        words_[c].resize(n);
-        for (uint32_t i = 0; i < n; ++i) {
-            words_[c][i] = ComparisonUnit::as_bits(c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3]);
-        }
-        view[c] = words_[c].data();
-    }
-    float32_.find(n, view, result.reference);
+    float32_.find(static_cast<uint32_t>(boxes.size()), float32_words(boxes, words_), result.reference);
     // The reference comes first index ascending, then second; a tiled board
     // reports its pairs tile block by tile block, so the board's are sorted first.
     const PairList board = sorted(board_pairs);

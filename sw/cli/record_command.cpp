@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "sw/bullet/scene_recording.h"
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/run_command.h"
 #include "sw/scene/output_set.h"
@@ -18,9 +19,12 @@ namespace {
 constexpr const char* kUsage =
     "Usage: cdvp record --scene NAME [--objects N] [--frames F] [--seed S] --out TRACE.csv [-q]\n"
     "\n"
-    "Steps a Bullet scene (on btDbvtBroadphase) and writes, for each frame, the AABBs Bullet's broad\n"
-    "phase was given in that step: one box per collision object, ids in the world's order, frames\n"
-    "numbered from 0. The trace replays with 'cdvp run --trace TRACE.csv'.";
+    "Steps a Bullet scene on the board's broad phase, a float32 board's pairs found on the host (so the\n"
+    "world moves bit for bit as the world of 'cdvp bullet' on the board, and as on btSimpleBroadphase),\n"
+    "and writes, for each frame, the AABBs Bullet's broad phase was given in that step: one box per\n"
+    "collision object, ids in the world's order, frames numbered from 0.\n"
+    "The trace replays with 'cdvp run --trace TRACE.csv'; 'cdvp run --scene NAME' simulates the same\n"
+    "frames without the file.";
 
 struct RecordOptions {
     SceneOptions scene;
@@ -34,13 +38,10 @@ int record(const RecordOptions& o, const po::variables_map& vm) {
     OutputSet files;
     const std::size_t trace = files.add_output("--out", o.out);
     files.open();
-    auto world = make_scene_world(spec, BroadphaseKind::kDbvt);
+    SceneRecording recording(spec);
     // Whole frames are kept until the end: a trace is written in one go.
     std::vector<Frame> frames;
-    for (uint64_t frame = 0; frame < o.scene.frames; ++frame) {
-        world->step();
-        frames.push_back(world->aabbs(frame));  // the AABBs this step's broad phase saw
-    }
+    for (uint64_t frame = 0; frame < o.scene.frames; ++frame) frames.push_back(recording.next());
     write_trace_csv(files.file(trace).stream(), frames);
     if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp record", *failure);
     if (!o.quiet) {

@@ -14,6 +14,7 @@
 #include "platform/memory_plan.h"
 #include "platform/fault_injection.h"
 #include "models/common/user_text.h"
+#include "sw/bullet/scenes.h"
 #include "sw/scene/scene.h"
 
 namespace po = boost::program_options;
@@ -29,6 +30,12 @@ const Setting& setting(const char* name) { return *find_setting(name); }
 std::string objects_origin(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects) {
     const std::string count = std::to_string(max_objects);
     if (!origin.trace.empty()) return count + " objects (the largest frame of --trace " + excerpt(origin.trace) + ")";
+    // A Bullet scene has more collision objects than the bodies it is built
+    // around (a ground, walls, a ball): the boxes are what the board holds.
+    if (is_bullet_scene(origin.scene)) {
+        return count + " boxes (the collision objects of --scene " + origin.scene + " at " +
+               values.value_and_origin(setting("scene.objects")) + ")";
+    }
     return count + " objects (" + values.origin_text(setting("scene.objects")) + ")";
 }
 
@@ -83,9 +90,19 @@ void check_source_options(const RunOptions& o, const po::variables_map& vm) {
     if (vm.count("trace") == vm.count("scene")) throw InputError("give exactly one of --trace FILE or --scene spheres");
     if (vm.count("trace")) {
         if (o.trace.empty()) throw InputError("--trace: expected a file path, got ''");
-    } else if (o.scene != "spheres") {
-        throw InputError("--scene: expected 'spheres', got '" + excerpt(o.scene) + "'");
+    } else if (o.scene != "spheres" && !is_bullet_scene(o.scene)) {
+        throw InputError("--scene: expected spheres or one of Bullet's scenes (" + bullet_scene_list() + "), got '" +
+                         excerpt(o.scene) + "'");
     }
+}
+
+SceneSpec bullet_scene_spec(const std::string& scene, const SettingValues& values) {
+    const SceneSettings& settings = values.settings().scene;
+    if (settings.objects < 1 || settings.objects > kMaxSceneObjects) {
+        throw InputError(values.where(setting("scene.objects")) + ": expected 1 to " + std::to_string(kMaxSceneObjects) +
+                         " objects in Bullet's scene " + scene + ", got " + std::to_string(settings.objects));
+    }
+    return SceneSpec{scene, static_cast<uint32_t>(settings.objects), settings.seed};
 }
 
 // A trace brings its own objects and frames: scene.* settings go with --scene only.

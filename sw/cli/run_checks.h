@@ -22,6 +22,8 @@
 
 namespace cdvp {
 
+struct SceneSpec;
+
 // A path longer than the system's PATH_MAX can name no file; refused quoting
 // its start, so that no later message repeats it whole. paths: each option
 // (without its dashes) and its value, checked when given. Throws InputError.
@@ -31,6 +33,10 @@ void check_path_lengths(const std::vector<std::pair<const char*, const std::stri
 // Exactly one of --trace FILE (a path) and --scene NAME: spheres, or one of
 // Bullet's scenes as cdvp record records it. Throws InputError.
 void check_source_options(const RunOptions& o, const boost::program_options::variables_map& vm);
+// One of Bullet's scenes (--scene NAME) as the settings give it: refused,
+// naming where the count came from, outside 1 to kMaxSceneObjects objects.
+// Throws InputError.
+SceneSpec bullet_scene_spec(const std::string& scene, const SettingValues& values);
 // A trace brings its own objects and frames: scene.* settings go with --scene
 // only. Throws InputError.
 void check_scene_settings(const boost::program_options::variables_map& vm, const SettingValues& values);

@@ -18,7 +18,9 @@
 
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
+#include "sw/bullet/scenes.h"
 #include "sw/cli/baseline_timing.h"
+#include "sw/cli/bullet_scene_source.h"
 #include "sw/cli/frame_source.h"
 #include "sw/cli/run_checks.h"
 #include "sw/cli/run_options.h"
@@ -63,9 +65,13 @@ void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out
     out.waves.bind(out.files);
 }
 
-std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm, const Settings& settings,
+std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm, const SettingValues& values,
                                          const RunBudgets& budgets) {
     if (vm.count("trace")) return trace_source(o.trace, budgets.trace_limits(), budgets.input_limits());
+    const Settings& settings = values.settings();
+    if (is_bullet_scene(o.scene)) {
+        return bullet_scene_source(bullet_scene_spec(o.scene, values), static_cast<std::size_t>(settings.scene.frames));
+    }
     BouncingSpheresConfig spheres;
     spheres.objects = static_cast<std::size_t>(settings.scene.objects);
     spheres.seed = settings.scene.seed;
@@ -99,7 +105,7 @@ struct Setup : BoardSetup {
 
 Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     Setup setup;
-    static_cast<BoardSetup&>(setup) = board_setup(o.layers, vm);
+    static_cast<BoardSetup&>(setup) = board_setup(o.layers, vm, vm.count("scene") ? o.scene : "");
     setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
     setup.platform.fidelity = engine_fidelity(setup.values, vm);
     setup.trace_window = vcd_window(o.vcd_frames, vm);
@@ -117,6 +123,7 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
 RunShape run_shape(const po::variables_map& vm, const Setup& setup) {
     RunShape shape;
     shape.trace = vm.count("trace") != 0;
+    shape.bullet_worlds = !shape.trace && is_bullet_scene(vm["scene"].as<std::string>()) ? 1 : 0;
     shape.clocked = setup.platform.fidelity == Fidelity::kCycle;
     shape.pairs_out = vm.count("pairs-out") != 0;
     shape.baselines = setup.baselines.names();
@@ -258,13 +265,16 @@ int run_checked(int argc, char** argv) {
         // spheres take a while to place), a trace once it is read.
         const SceneSettings& scene = setup.values.settings().scene;
         if (vm.count("scene")) {
-            check_scene_fits(origin, setup.values, scene.objects, scene.frames, budgets);
+            // A Bullet scene's board holds its every collision object.
+            const uint64_t boxes = is_bullet_scene(o.scene) ? scene_layout(bullet_scene_spec(o.scene, setup.values)).proxies
+                                                            : scene.objects;
+            check_scene_fits(origin, setup.values, boxes, scene.frames, budgets);
             const std::optional<uint64_t> last =
                 scene.frames > 0 ? std::optional<uint64_t>(scene.frames - 1) : std::nullopt;
             check_inject_frames(setup.platform.faults, last, [](uint64_t) { return true; },
                                 "--frames " + std::to_string(scene.frames));
         }
-        std::unique_ptr<FrameSource> source = open_source(o, vm, setup.values.settings(), budgets);
+        std::unique_ptr<FrameSource> source = open_source(o, vm, setup.values, budgets);
         check_scene_fits(origin, setup.values, source->max_objects(), source->frame_count(), budgets);
         check_inject_frames(setup.platform.faults, source->last_frame(),
                             [&source](uint64_t n) { return source->has_frame(n); }, source->describe());

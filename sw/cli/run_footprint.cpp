@@ -38,6 +38,17 @@ constexpr uint64_t kProgram = uint64_t{32} << 20;
 constexpr uint64_t kSapBox = 240, kDbvtBox = 400;
 constexpr uint64_t kBulletPair = 96;
 
+// A Bullet world of a scene (cdvp bullet's, or the one a run's Bullet scene
+// is recorded from), measured as the peak RSS its scenes add and rounded up
+// to cover the heaviest: a body (its rigid body, shape, proxy and solver
+// body) under 3.7 KiB at 30,000 elastic spheres, each with a shape of its
+// own; a pair of touching bodies (its cache entry, collision algorithm,
+// contact manifold and solver constraints) under 1.8 KiB in piles of 3,000
+// to 20,000 boxes; and the pools a world allocates up front (Bullet's
+// default collision configuration keeps 4,096 manifolds and algorithms).
+constexpr uint64_t kBulletBody = 4096, kBulletContact = 2048;
+constexpr uint64_t kBulletWorld = uint64_t{8} << 20;
+
 // A frame of boxes as a trace reader builds it (by push_back) and checks its
 // ids (an index a box), or as the application holds its spheres and frame.
 uint64_t scene_bytes_per_box(bool trace) {
@@ -72,7 +83,7 @@ uint64_t bytes_per_pair(const RunShape& shape) {
     for (const std::string& name : shape.baselines) {
         if (name == "sap" || name == "dbvt") bytes += kBulletPair;
     }
-    return bytes;
+    return bytes + shape.bullet_worlds * kBulletContact;
 }
 
 uint64_t saturating_add(uint64_t a, uint64_t b) {
@@ -99,7 +110,7 @@ uint64_t bytes_per_box(const RunShape& shape) {
     if (shape.clocked && shape.board.tiles.tiled()) bytes += kFloatBox;
     if (!shape.board.format.is_float()) bytes += kFloatBox + search;
     for (const std::string& name : shape.baselines) bytes += baseline_bytes_per_box(name);
-    return bytes;
+    return bytes + shape.bullet_worlds * kBulletBody;
 }
 
 // The board's and each baseline's timing samples (grown by push_back), and a
@@ -109,12 +120,13 @@ uint64_t bytes_per_frame(const RunShape& shape) {
     return kGrowth * sizeof(double) * samples + (shape.trace ? kGrowth * 2 * sizeof(uint64_t) : 0);
 }
 
-// The program, and what the pair buffer sizes: the host memory's pair area,
+// The program and its Bullet worlds, and what the pair buffer sizes: the host memory's pair area,
 // the pair collector's buffer and the clocked engine's per-pair records of a
 // segment, the fast engine's checkpoints of one.
 uint64_t program_bytes(const RunShape& shape) {
     const uint64_t depth = shape.board.collector.buffer_depth + shape.board.collector.fifo_depth;
-    return kProgram + depth * (kPair + (shape.clocked ? kPair + 2 * kGrowth * sizeof(uint64_t) : 0));
+    return kProgram + shape.bullet_worlds * kBulletWorld +
+           depth * (kPair + (shape.clocked ? kPair + 2 * kGrowth * sizeof(uint64_t) : 0));
 }
 
 namespace {

@@ -16,7 +16,8 @@ namespace cdvp {
 
 // What decides a run's memory besides its boxes, frames and pairs.
 struct RunShape {
-    bool trace = false;         // frames from a trace (else the spheres application)
+    bool trace = false;         // frames from a trace (else the spheres application or a Bullet scene)
+    uint32_t bullet_worlds = 0; // Bullet worlds stepped beside the board (a Bullet scene's)
     bool clocked = false;       // the clocked engine (its block RAM words are kept)
     bool pairs_out = false;     // --pairs-out: the pairs by id, sorted
     std::vector<std::string> baselines;

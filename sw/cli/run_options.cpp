@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "models/common/user_text.h"
+#include "sw/bullet/scenes.h"
 #include "sw/cli/setting_flag.h"
 
 namespace po = boost::program_options;
@@ -60,9 +61,11 @@ void add_wave_options(po::options_description& group, std::string& vcd, std::str
 
 po::options_description run_options_description(RunOptions& o) {
     po::options_description input("Input (one of)");
+    const std::string scenes = "generated scene: spheres (the paper's application), or one of Bullet's scenes as "
+                               "cdvp record records them: " + bullet_scene_list() + " (docs/bullet.md)";
     input.add_options()
         ("trace", po::value(&o.trace)->value_name("FILE"), "scene trace CSV (see README: file formats)")
-        ("scene", po::value(&o.scene)->value_name("NAME"), "generated scene: spheres");
+        ("scene", po::value(&o.scene)->value_name("NAME"), scenes.c_str());
     add_setting_flags(input, {"scene"}, o.layers.flags);
     po::options_description board("Board");
     add_board_option(board, o.layers.board_name);
@@ -87,7 +90,7 @@ po::options_description run_options_description(RunOptions& o) {
         ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors")
         ("help,h", po::bool_switch(&o.help), "show this help");
     po::options_description all(
-        "Usage: cdvp run (--trace FILE | --scene spheres [--objects N] [--frames F] [--seed S]) [options]\n\n"
+        "Usage: cdvp run (--trace FILE | --scene NAME [--objects N] [--frames F] [--seed S]) [options]\n\n"
         "Simulates each frame on the virtual platform and reports its pairs, cycles and time.\n"
         "Settings come in layers, each over the last: defaults < --board preset < --config FILE\n"
         "< -c NAME=VALUE < the dedicated flags below.\n"

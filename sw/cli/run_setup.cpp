@@ -4,13 +4,19 @@
 #include "platform/config_file.h"
 #include "platform/device_fit.h"
 #include "platform/memory_plan.h"
+#include "sw/bullet/scenes.h"
 
 namespace po = boost::program_options;
 
 namespace cdvp {
 
-SettingValues layered_settings(const SettingLayers& layers, const po::variables_map& vm, std::string& board_name) {
+SettingValues layered_settings(const SettingLayers& layers, const po::variables_map& vm, const std::string& scene,
+                               std::string& board_name) {
     SettingValues values;
+    if (is_bullet_scene(scene)) {
+        // Still the default: every layer above says otherwise.
+        values.apply({{find_setting("scene.objects"), uint64_t{default_objects(scene)}, {}}});
+    }
     if (vm.count("board")) {
         if (layers.board_name.empty()) throw InputError("--board: expected a preset name or a .json path, got ''");
         const BoardPreset preset = load_board_preset(layers.board_name);
@@ -26,9 +32,9 @@ SettingValues layered_settings(const SettingLayers& layers, const po::variables_
     return values;
 }
 
-BoardSetup board_setup(const SettingLayers& layers, const po::variables_map& vm) {
+BoardSetup board_setup(const SettingLayers& layers, const po::variables_map& vm, const std::string& scene) {
     BoardSetup setup;
-    setup.values = layered_settings(layers, vm, setup.board);
+    setup.values = layered_settings(layers, vm, scene, setup.board);
     const Settings& settings = setup.values.settings();
     setup.values.check_board();
     setup.platform.board = settings.board;

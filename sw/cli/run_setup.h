@@ -29,16 +29,20 @@ struct BoardSetup {
     HostTiming host;              // from native to modelled-host time
 };
 
-// The settings, each layer over the last. Sets board_name to the preset's
-// name when --board gives one. Throws InputError naming the layer and key.
+// The settings, each layer over the last. scene: the generated --scene
+// (empty for a trace); one of Bullet's scenes is built around its own number
+// of bodies, the default of scene.objects for it. Sets board_name to the
+// preset's name when --board gives one. Throws InputError naming the layer
+// and key.
 SettingValues layered_settings(const SettingLayers& layers, const boost::program_options::variables_map& vm,
-                               std::string& board_name);
+                               const std::string& scene, std::string& board_name);
 
 // The layers, the board's settings checked against each other, and the
 // platform they give: board, bus, driver, transfer and wait, host quantum.
 // The engine (engine_fidelity) and the host timing (resolve_host_timing) are
 // the caller's to set, after whatever checks it makes first.
-BoardSetup board_setup(const SettingLayers& layers, const boost::program_options::variables_map& vm);
+BoardSetup board_setup(const SettingLayers& layers, const boost::program_options::variables_map& vm,
+                       const std::string& scene);
 
 // run.fidelity: fast unless waveforms are asked for (--vcd), which need the
 // clocked engine; an explicit fast with --vcd is refused naming where it came from.

@@ -60,7 +60,7 @@ void expect_agreement(const SceneSpec& spec, int frames, Tolerance tolerance) {
 TEST(BroadphaseAgreement, Pyramid) { expect_agreement({"pyramid", 55, 1}, 120, {0.20, 0.25, 1.0}); }
 TEST(BroadphaseAgreement, Boxes) { expect_agreement({"boxes", 400, 2}, 90, {0.05, 0.25, 1.0}); }
 TEST(BroadphaseAgreement, Mixed) { expect_agreement({"mixed", 200, 3}, 90, {0.20, 0.25, 1.0}); }
-TEST(BroadphaseAgreement, Spheres) { expect_agreement({"spheres", 150, 5}, 120, {0.10, 0.05, 0.0}); }
+TEST(BroadphaseAgreement, Spheres) { expect_agreement({"bullet-spheres", 150, 5}, 120, {0.10, 0.05, 0.0}); }
 
 // A stack settles into the same rest whatever the order: the same contacts,
 // no motion, every body asleep.

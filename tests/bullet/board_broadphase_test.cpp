@@ -50,7 +50,7 @@ TEST(BoardBroadphase, PyramidPairsAreExactEveryFrame) { run_exact({"pyramid", 55
 TEST(BoardBroadphase, BoxesPairsAreExactEveryFrame) { run_exact({"boxes", 400, 2}, 40, Fidelity::kFast); }
 TEST(BoardBroadphase, MixedPairsAreExactEveryFrame) { run_exact({"mixed", 200, 3}, 60, Fidelity::kFast); }
 TEST(BoardBroadphase, StackPairsAreExactEveryFrame) { run_exact({"stack", 30, 4}, 40, Fidelity::kFast); }
-TEST(BoardBroadphase, SpheresPairsAreExactEveryFrame) { run_exact({"spheres", 150, 5}, 60, Fidelity::kFast); }
+TEST(BoardBroadphase, SpheresPairsAreExactEveryFrame) { run_exact({"bullet-spheres", 150, 5}, 60, Fidelity::kFast); }
 TEST(BoardBroadphase, ClockedEnginePairsAreExactEveryFrame) { run_exact({"mixed", 60, 6}, 20, Fidelity::kCycle); }
 
 // The board's cache sees btSimpleBroadphase's add and remove calls in the same
@@ -73,7 +73,7 @@ TEST(BoardBroadphase, PyramidIsBitIdenticalToSimpleBroadphase) { run_bit_identic
 TEST(BoardBroadphase, BoxesAreBitIdenticalToSimpleBroadphase) { run_bit_identical({"boxes", 300, 2}, 60); }
 TEST(BoardBroadphase, MixedIsBitIdenticalToSimpleBroadphase) { run_bit_identical({"mixed", 150, 3}, 60); }
 TEST(BoardBroadphase, StackIsBitIdenticalToSimpleBroadphase) { run_bit_identical({"stack", 30, 4}, 60); }
-TEST(BoardBroadphase, SpheresAreBitIdenticalToSimpleBroadphase) { run_bit_identical({"spheres", 150, 5}, 60); }
+TEST(BoardBroadphase, SpheresAreBitIdenticalToSimpleBroadphase) { run_bit_identical({"bullet-spheres", 150, 5}, 60); }
 
 // What makes the identity above worth testing: Bullet's other broad phases
 // find the same overlaps but add them in another order, and the worlds part.

@@ -129,7 +129,8 @@ TEST_F(Cli, AnEmptyPresetDirectoryIsSaidSoNotListedAsNothing) {
 TEST_F(Cli, ControlCharactersInArgumentsKeepErrorsOnOneLine) {
     const Result r = run("run --scene \"$(printf 'two\\nlines\\033[31m')\"");
     EXPECT_EQ(r.status, 2);
-    EXPECT_EQ(r.err, "cdvp run: --scene: expected 'spheres', got 'two\\nlines\\x1b[31m'\n");
+    EXPECT_EQ(r.err, "cdvp run: --scene: expected spheres or one of Bullet's scenes (pyramid, boxes, mixed, stack, "
+                     "bullet-spheres), got 'two\\nlines\\x1b[31m'\n");
 }
 
 TEST_F(Cli, BoardRunTimesBaselinesAndReportsConsistentPhases) {
@@ -258,7 +259,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"EmptyTracePath", nullptr, "--trace ''", "--trace: expected a file path, got ''"},
         BadInput{"EmptyBoard", nullptr, "--board ''", "--board: expected a preset name or a .json path, got ''"},
         BadInput{"EmptyReportPath", nullptr, "--report ''", "--report: expected a file path, got ''"},
-        BadInput{"EmptyScene", nullptr, "--scene ''", "--scene: expected 'spheres', got ''"},
+        BadInput{"EmptyScene", nullptr, "--scene ''", "--scene: expected spheres or one of Bullet's scenes"},
         BadInput{"BoardIsADirectory", nullptr, "--board ./", "./: cannot open: not a regular file"},
         BadInput{"OutputIsADirectory", nullptr, "--report .", "--report: .: cannot write: is a directory"},
         BadInput{"OutputInAFile", nullptr, "--report " CDVP_SOURCE_DIR "/README.md/r.json", "is not a directory"}),
