@@ -166,6 +166,10 @@ bool is_bullet_scene(const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+std::string describe(const SceneSpec& spec) {
+    return spec.name + " objects=" + std::to_string(objects_of(spec)) + " seed=" + std::to_string(spec.seed);
+}
+
 std::string bullet_scene_defaults() {
     std::string list;
     for (const std::string& name : bullet_scene_names()) {

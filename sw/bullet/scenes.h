@@ -25,6 +25,9 @@ struct SceneSpec {
     uint64_t seed = 1;
 };
 
+// "boxes objects=3000 seed=1": how reports and summaries name the scene.
+std::string describe(const SceneSpec& spec);
+
 const std::vector<std::string>& bullet_scene_names();
 bool is_bullet_scene(const std::string& name);
 // "pyramid, boxes, mixed, stack, bullet-spheres": for messages and help.

@@ -1,26 +1,20 @@
 #include "sw/cli/bullet_command.h"
 
-#include <algorithm>
-#include <array>
-#include <cstdio>
-#include <map>
+#include <chrono>
 #include <iostream>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <sstream>
-#include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
-#include "platform/board_preset.h"
 #include "sw/bullet/board_broadphase.h"
-#include "sw/cli/host_factor.h"
-#include "sw/cli/number_option.h"
-#include "sw/cli/report_provenance.h"
-#include "sw/cli/run_command.h"
-#include "sw/scene/output_set.h"
-#include "sw/timing/frame_samples.h"
+#include "sw/cli/bullet_report.h"
+#include "sw/cli/exit_status.h"
+#include "sw/cli/format_reference.h"
+#include "sw/cli/run_checks.h"
+#include "sw/cli/run_setup.h"
+#include "sw/cli/wave_outputs.h"
 
 namespace po = boost::program_options;
 
@@ -29,8 +23,7 @@ namespace cdvp {
 namespace {
 
 constexpr const char* kUsage =
-    "Usage: cdvp bullet --scene NAME [--objects N] [--frames F] [--seed S] [--board B] [--m M]\n"
-    "                   [--fidelity fast|cycle] [--software simple|sap|dbvt] [--report R.json] [-q]\n"
+    "Usage: cdvp bullet --scene NAME [--objects N] [--frames F] [--seed S] [--board B] [options]\n"
     "\n"
     "Steps a Bullet scene (btDiscreteDynamicsWorld) with the virtual board as its broad phase and, in\n"
     "lockstep, the same scene on one of Bullet's broad phases. Per frame: the board's modelled time,\n"
@@ -38,283 +31,230 @@ constexpr const char* kUsage =
     "share of the step and its Amdahl bound (the most any broad-phase accelerator can speed the step\n"
     "up), and the speed-ups the board gives. Software times are native wall times x the host factor\n"
     "(from the host profile, as for cdvp run: docs/timing.md). The summary gives each time's mean over\n"
-    "the frames after the first, which the speed-ups compare, with p50, p99 and the maximum.";
+    "the frames after the warm-up, which the speed-ups compare, with p50, p99 and the maximum.\n"
+    "Settings come in layers, each over the last, as for cdvp run: defaults < --board preset\n"
+    "< --config FILE < -c NAME=VALUE < the dedicated flags below; the board is checked against its\n"
+    "device as cdvp run checks it (--memory auto moves the boxes to SSRAM tiles past the block RAMs).\n"
+    "The report is cdvp run's, with a 'bullet' section for the Bullet worlds' times (docs/bullet.md).\n"
+    "Options are spelt in full (no abbreviations); numbers show their range and default";
 
 struct BulletOptions {
-    SceneOptions scene;
-    std::string board_name;
-    uint32_t m = 8;
-    std::string fidelity = "fast";
+    std::string scene;
+    SettingLayers layers;
     std::string software = "dbvt";
-    double host_factor = 1.0;
-    std::string host_profile;
-    std::string report;
+    std::string report, vcd, vcd_frames, vcd_format = "vcd";
     bool quiet = false;
 };
 
+// Every setting means to a Bullet world on the board what it means to a run,
+// but the trace's size limit: no trace is read.
+bool applies_to_bullet(const Setting& s) { return s.name != "run.max_trace_size"; }
+
 po::options_description bullet_options(BulletOptions& o) {
-    po::options_description all = scene_options(o.scene);
-    po::options_description board("Board and host");
-    board.add_options()
-        ("board", po::value(&o.board_name)->value_name("NAME"),
-         "board preset (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) or a .json path; without it: the board alone on "
-         "an ideal, untimed bus")
-        ("m", number<uint32_t>(&o.m, 1, BoardConfig::kMaxM, "M"), "parallelism: 2m-1 comparison lanes")
-        ("fidelity", po::value(&o.fidelity)->value_name("fast|cycle")->default_value(o.fidelity),
-         "the board's engine (the same pairs and times; fast is quicker to simulate)")
+    po::options_description scene("Scene");
+    const std::string scenes = bullet_scene_help() + "; each is built around its own number of bodies (" +
+                               bullet_scene_defaults() + ") unless --objects says otherwise";
+    scene.add_options()("scene", po::value(&o.scene)->value_name("NAME"), scenes.c_str());
+    add_setting_flags(scene, {"scene"}, o.layers.flags);
+    po::options_description board("Board");
+    add_board_option(board, o.layers.board_name);
+    add_setting_flags(board, {"board"}, o.layers.flags);
+    po::options_description host("Host and software");
+    host.add_options()
         ("software", po::value(&o.software)->value_name("simple|sap|dbvt")->default_value(o.software),
-         "Bullet's broad phase to compare with: btSimpleBroadphase, btAxisSweep3, btDbvtBroadphase")
-        ("host-factor", number<double>(&o.host_factor, 0.001, 1000, "F", false),
-         "native software time x F = time on the modelled host (default: from the host profile, else the "
-         "preset's, else 1)")
-        ("host-profile", po::value(&o.host_profile)->value_name("FILE"),
-         "host profile from cdvp calibrate (default: host-profile.json in $XDG_CONFIG_HOME/cdvp, else in "
-         "~/.config/cdvp, when there)");
+         "Bullet's broad phase to compare with: btSimpleBroadphase, btAxisSweep3, btDbvtBroadphase");
+    add_setting_flags(host, {"host", "driver", "run"}, o.layers.flags, false, applies_to_bullet);
+    po::options_description budgets("Budgets (checked before the work, and the pairs as they are found; docs/numerics.md)");
+    add_setting_flags(budgets, {"run"}, o.layers.flags, true, applies_to_bullet);
     po::options_description output("Output (written only if the whole run succeeds)");
     output.add_options()
-        ("report", po::value(&o.report)->value_name("FILE"), "JSON report: configuration and every frame")
-        ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors");
-    all.add(board).add(output);
+        ("report", po::value(&o.report)->value_name("FILE"),
+         "JSON report: cdvp run's (every setting with where it came from, the board's phases and cycles a "
+         "frame, the summary) and a 'bullet' section (the worlds' times, share, Amdahl bound, gains)");
+    add_wave_options(output, o.vcd, o.vcd_frames, o.vcd_format);
+    output.add_options()("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors");
+    po::options_description all = scene;
+    all.add(board).add(settings_options(o.layers)).add(host).add(budgets).add(output);
     return all;
 }
 
-struct Setup {
-    PlatformConfig platform;
-    std::string board = "ideal";
-    // Bullet's times are whole worlds, not the reference workload's
-    // baselines: they all take the overall factor.
-    HostTiming host;
-    BroadphaseKind software = BroadphaseKind::kDbvt;
+// The run's output files: one transaction (see OutputSet).
+struct Outputs {
+    OutputSet files;
+    OutputFile* report = nullptr;
+    WaveOutputs waves;
 };
 
-Setup make_setup(const BulletOptions& o, const po::variables_map& vm, uint32_t proxies) {
+void open_outputs(const BulletOptions& o, const po::variables_map& vm, Outputs& out) {
+    add_setting_inputs(out.files, o.layers, vm);
+    std::optional<std::size_t> report;
+    if (vm.count("report")) report = out.files.add_output("--report", o.report);
+    if (vm.count("vcd-format") && !vm.count("vcd")) throw InputError("--vcd-format: the format of --vcd; give --vcd too");
+    if (vm.count("vcd")) out.waves.declare(out.files, o.vcd, parse_dump_format(o.vcd_format));
+    if (!o.quiet) out.files.add_standard_output("standard output");
+    out.files.open();
+    if (report) out.report = &out.files.file(*report);
+    out.waves.bind(out.files);
+}
+
+struct Setup : BoardSetup {
+    BroadphaseKind software = BroadphaseKind::kDbvt;
+    std::pair<uint64_t, uint64_t> trace_window{0, UINT64_MAX};  // --vcd-frames
+};
+
+Setup make_setup(const BulletOptions& o, const po::variables_map& vm) {
     Setup setup;
-    setup.platform.board.m = o.m;
-    if (o.fidelity != "fast" && o.fidelity != "cycle") {
-        throw InputError("--fidelity: expected fast or cycle, got '" + excerpt(o.fidelity) + "'");
-    }
-    setup.platform.fidelity = o.fidelity == "fast" ? Fidelity::kFast : Fidelity::kCycle;
-    if (o.software == "board" || (o.software != "simple" && o.software != "sap" && o.software != "dbvt")) {
+    static_cast<BoardSetup&>(setup) = board_setup(o.layers, vm, o.scene);
+    setup.platform.fidelity = engine_fidelity(setup.values, vm);
+    setup.trace_window = vcd_window(o.vcd_frames, vm);
+    // Bullet's times are whole worlds, not the reference workload's
+    // baselines: they all take the overall factor.
+    setup.host = resolve_host_timing(setup.values);
+    if (o.software != "simple" && o.software != "sap" && o.software != "dbvt") {
         throw InputError("--software: expected simple, sap or dbvt, got '" + excerpt(o.software) + "'");
     }
     setup.software = broadphase_kind(o.software);
-    HostConfig host;
-    if (vm.count("board")) {
-        const BoardPreset preset = load_board_preset(o.board_name);
-        const uint32_t m = setup.platform.board.m;
-        setup.platform.board = preset.board;
-        setup.platform.board.m = m;
-        setup.platform.bus = preset.bus;
-        setup.platform.driver = preset.driver;
-        setup.board = preset.name;
-        host = preset.host;
-        const uint64_t needed = setup.platform.board.block_rams(proxies);
-        if (needed > preset.block_rams) {
-            throw InputError(preset.path + ": device.block_rams: " + std::to_string(preset.block_rams) +
-                             " block RAMs are too few for --m " + std::to_string(m) + " at " +
-                             std::to_string(proxies) + " proxies (the scene's): they need 6 x m x ceil(N/512) = " +
-                             std::to_string(needed));
-        }
-    }
-    if (vm.count("host-factor")) host.speed_factor = o.host_factor;
-    host.profile = o.host_profile;
-    setup.host = resolve_host_timing(host, vm.count("host-factor") != 0);
-    try {
-        setup.platform.board.validate();
-    } catch (const std::invalid_argument& e) {
-        throw InputError(e.what());
-    }
     return setup;
 }
 
-// One frame's times: board_ns simulated, _host_ns native x the host factor
-// (the modelled host), _native_ns as measured here.
-struct FrameRow {
-    uint64_t frame = 0;
-    uint32_t proxies = 0;
-    std::size_t pairs = 0;     // overlapping pairs the board found
-    std::size_t contacts = 0;  // contact points in the board world
-    double board_ns = 0;       // the board's frame (simulated: upload, compute, interrupt, read-back, driver)
-    double bookkeeping_host_ns = 0;  // the host's side around it: AABB update and pair-cache upkeep
-    double software_host_ns = 0;     // Bullet's broad phase: AABB update and pair search
-    double step_host_ns = 0;         // Bullet's whole step with that broad phase
-    double simulate_wall_native_ns = 0;  // simulating the board
+// What the budgets see: the board's world and the software's beside it.
+RunShape bullet_shape(const Setup& setup) {
+    RunShape shape;
+    shape.clocked = setup.platform.fidelity == Fidelity::kCycle;
+    shape.board = setup.platform.board;
+    shape.bullet_worlds = 2;
+    return shape;
+}
 
-    double share() const { return step_host_ns > 0 ? software_host_ns / step_host_ns : 0; }
-    // Amdahl: a broad phase that cost nothing would speed the step up at most this much.
-    double amdahl_bound() const {
-        return software_host_ns < step_host_ns ? step_host_ns / (step_host_ns - software_host_ns) : 0;
+// A frame the board could not finish: past the pair budget or the simulated
+// time limit (bad input), or a fault of the simulated system.
+int frame_failed(const FrameFault& fault, uint64_t frame, const RunBudgets& budgets) {
+    if (fault.kind == FrameFault::Kind::kPairBudget) {
+        throw InputError(budgets.pair_budget_refusal(frame, fault.pairs_found));
     }
-    double broadphase_speedup() const { return software_host_ns / (board_ns + bookkeeping_host_ns); }
-    double step_speedup() const {
-        return step_host_ns / (step_host_ns - software_host_ns + board_ns + bookkeeping_host_ns);
-    }
-};
-
-// The time fields of a frame, by their report names.
-const std::vector<std::pair<const char*, double FrameRow::*>>& time_fields() {
-    static const std::vector<std::pair<const char*, double FrameRow::*>> fields{
-        {"board_ns", &FrameRow::board_ns},
-        {"bookkeeping_host_ns", &FrameRow::bookkeeping_host_ns},
-        {"software_broadphase_host_ns", &FrameRow::software_host_ns},
-        {"software_step_host_ns", &FrameRow::step_host_ns},
-        {"simulate_wall_native_ns", &FrameRow::simulate_wall_native_ns}};
-    return fields;
+    std::cerr << "cdvp bullet: frame " << frame << ": " << printable(fault.message) << '\n';
+    return fault.kind == FrameFault::Kind::kDevice ? kExitDeviceFault : kExitBadInput;
 }
 
-FrameRow step_both(BulletWorld& board_world, BulletWorld& software_world, double factor, uint64_t frame) {
-    const StepTimes board_times = board_world.step();
-    const StepTimes software_times = software_world.step();
-    const auto& board = dynamic_cast<const BoardBroadphase&>(board_world.broadphase()).last_frame();
-    FrameRow row;
-    row.frame = frame;
-    row.proxies = board.proxies;
-    row.pairs = board.board_pairs;
-    row.contacts = board_world.contact_points();
-    row.board_ns = board.phases.total_ns;
-    row.bookkeeping_host_ns = (board_times.aabbs_ns + board.bookkeeping_ns) * factor;
-    row.software_host_ns = software_times.broadphase_share_ns() * factor;
-    row.step_host_ns = software_times.step_ns * factor;
-    row.simulate_wall_native_ns = board.simulate_ns;
-    return row;
+// A fixed-point board's pairs hold every pair of the float32 reference (the
+// run checks it, as cdvp run does); the extra ones reach Bullet's cache,
+// whose narrow phase finds them apart.
+std::optional<std::string> lost_pair(const FormatReference::Check& check, NumberFormat format, uint32_t boxes) {
+    if (!check.missing) return std::nullopt;
+    Frame frame;  // the board's order is the world's: ids are board indices
+    frame.ids.resize(boxes);
+    std::iota(frame.ids.begin(), frame.ids.end(), uint64_t{0});
+    return lost_pair_message(format, frame, *check.missing);
 }
 
-// The ratios of a row: per frame, or of the means.
-void add_ratios(nlohmann::json& json, const FrameRow& r) {
-    json["broadphase_share"] = r.share();
-    json["amdahl_bound"] = r.amdahl_bound();
-    json["broadphase_speedup"] = r.broadphase_speedup();
-    json["step_speedup"] = r.step_speedup();
-}
-
-nlohmann::json to_json(const FrameRow& r) {
-    nlohmann::json json = {{"frame", r.frame}, {"proxies", r.proxies}, {"pairs", r.pairs}, {"contact_points", r.contacts}};
-    for (const auto& [name, field] : time_fields()) json[name] = r.*field;
-    add_ratios(json, r);
-    return json;
-}
-
-// Frame 0 is left out: the incremental broad phases build their structures
-// in it. Each time's mean over the rest is what a simulation pays (dbvt's
-// rebuilds, a few frames in many, included), so the gains divide means;
-// p50, p99 and the maximum are beside them for real-time budgets.
-constexpr uint64_t kBulletWarmupFrames = 1;
-
-struct Summary {
-    std::map<std::string, Spread> times;  // by report name
-    FrameRow means;                       // each time its mean: the ratios of the means
-    uint64_t frames_in_means = 0;
-};
-
-Summary summarise(const std::vector<FrameRow>& rows) {
-    Summary summary;
-    for (const auto& [name, field] : time_fields()) {
-        FrameSamples samples(kBulletWarmupFrames);
-        for (const FrameRow& row : rows) samples.add(row.*field);
-        const TimingFigures figures = samples.figures();
-        summary.times[name] = figures.spread;
-        summary.means.*field = figures.spread.mean;
-        summary.frames_in_means = figures.frames_per_run;
-    }
-    summary.means.proxies = rows.back().proxies;
-    return summary;
-}
-
-nlohmann::json to_json(const Summary& summary) {
-    nlohmann::json json = {{"frames_in_means", summary.frames_in_means},
-                           {"warmup_frames", kBulletWarmupFrames},
-                           {"load_average_end", load_json(load_average())}};
-    for (const auto& [name, spread] : summary.times) {
-        json["mean_" + name] = spread.mean;
-        json["p50_" + name] = spread.p50;
-        json["p99_" + name] = spread.p99;
-        json["max_" + name] = spread.max;
-    }
-    add_ratios(json, summary.means);
-    return json;
-}
-
-void print_times(std::ostream& out, const char* label, uint32_t proxies, std::size_t pairs, const FrameRow& r,
-                 bool ratios) {
-    char line[200];
-    std::snprintf(line, sizeof line, "%7s %7u %7zu %9.1f %9.1f %9.1f %9.1f", label, proxies, pairs, r.board_ns * 1e-3,
-                  r.bookkeeping_host_ns * 1e-3, r.software_host_ns * 1e-3, r.step_host_ns * 1e-3);
-    out << line;
-    if (ratios) {
-        std::snprintf(line, sizeof line, " %6.1f%% %7.2fx %7.2fx %7.3fx", 100 * r.share(), r.amdahl_bound(),
-                      r.broadphase_speedup(), r.step_speedup());
-        out << line;
-    }
-    out << '\n';
-}
-
-std::string summary_text(const SceneSpec& spec, const Setup& setup, const std::vector<FrameRow>& rows) {
-    std::ostringstream out;
-    const char* software = to_string(setup.software);
-    out << "bullet " << spec.name << " objects=" << (spec.objects ? spec.objects : default_objects(spec.name))
-        << " seed=" << spec.seed << " on " << setup.board << ": m=" << setup.platform.board.m << ", "
-        << to_string(setup.platform.fidelity) << " engine; against " << software << " on " << printable(setup.host.host)
-        << " (software: " << setup.host.describe() << ")\n";
-    out << "  frame proxies   pairs  board_us   bookkeeping_host_us  " << software
-        << "_host_us   step_host_us  share  amdahl  bp_gain step_gain\n";
-    for (std::size_t k = 0; k < rows.size() && k < 10; ++k) {
-        print_times(out, std::to_string(rows[k].frame).c_str(), rows[k].proxies, rows[k].pairs, rows[k], true);
-    }
-    if (rows.size() > 10) out << "    ... (" << rows.size() - 10 << " more frames in --report)\n";
-    const Summary summary = summarise(rows);
-    print_times(out, "mean", summary.means.proxies, rows.back().pairs, summary.means, true);
-    for (const auto& [label, pick] : {std::pair<const char*, double Spread::*>{"p50", &Spread::p50},
-                                      {"p99", &Spread::p99}, {"max", &Spread::max}}) {
-        FrameRow row;
-        for (const auto& [name, field] : time_fields()) row.*field = summary.times.at(name).*pick;
-        print_times(out, label, summary.means.proxies, rows.back().pairs, row, false);
-    }
-    out << "board_us: the board's simulated frame; bookkeeping: AABB update and pair-cache upkeep around it;\n"
-        << "_host_us: native time x the host factor; share: " << software << "'s broad phase in its step;\n"
-        << "amdahl: the most a free broad phase would gain; bp_gain, step_gain: what the board gains on the\n"
-        << "broad phase and on the step, from the means (frame 0 left out).\n";
-    return out.str();
-}
-
-int simulate(const BulletOptions& o, const po::variables_map& vm) {
-    const SceneSpec spec = scene_spec(o.scene, vm);
-    const SceneLayout layout = scene_layout(spec);
-    OutputSet files;
-    if (vm.count("board") && !o.board_name.empty()) files.add_input("--board", board_preset_path(o.board_name));
-    std::optional<std::size_t> report;
-    if (vm.count("report")) report = files.add_output("--report", o.report);
-    if (!o.quiet) files.add_standard_output("standard output");
-    files.open();
-    const Setup setup = make_setup(o, vm, layout.proxies);
-
-    LazyVirtualBoard link(setup.platform, layout.proxies);
+int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Outputs& out, const RunBudgets& budgets,
+                const std::vector<std::string>& command_line) {
+    const uint32_t boxes = scene_layout(spec).proxies;
+    RunConfig run = describe_run(setup, boxes, budgets);
+    run.source = describe(spec);
+    run.command_line = command_line;
+    const Settings& settings = setup.values.settings();
+    const double factor = setup.host.overall;
+    VirtualBoard platform("platform", setup.platform, boxes, out.waves.trace_base());
+    run.bus = platform.bus_timing().describe();
+    platform.set_trace_window(setup.trace_window.first, setup.trace_window.second);
+    PlatformLink link(platform, boxes);
     auto board_world = make_scene_world(spec, BroadphaseKind::kBoard, &link);
     auto software_world = make_scene_world(spec, setup.software);
-    const std::array<double, 3> load_start = load_average();
-    std::vector<FrameRow> rows;
-    nlohmann::json frames = nlohmann::json::array();
-    for (uint64_t frame = 0; frame < o.scene.frames; ++frame) {
-        rows.push_back(step_both(*board_world, *software_world, setup.host.overall, frame));
-        frames.push_back(to_json(rows.back()));
+    const auto& broadphase = dynamic_cast<const BoardBroadphase&>(board_world->broadphase());
+    std::optional<ReportWriter> report;
+    if (out.report) {
+        report.emplace(out.report->stream());
+        report->begin(run);
+    }
+    RunTotals totals(settings.run.warmup);
+    BulletTimes times(settings.run.warmup);
+    FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair, budgets.pair_budget());
+    const auto wall_start = std::chrono::steady_clock::now();
+    for (uint64_t frame = 0; frame < settings.scene.frames; ++frame) {
+        StepTimes board_step;
+        try {
+            board_step = board_world->step();
+        } catch (const BoardFrameFault&) {
+            return frame_failed(link.last_fault(), frame, budgets);
+        }
+        const StepTimes software_step = software_world->step();
+        const BoardFrameStats& board = broadphase.last_frame();
+        const FrameResult& result = *link.last_result();
+        FormatReference::Check check;
+        try {
+            check = reference.check(broadphase.last_boxes(), result.pairs, result.phases);
+        } catch (const PairBudgetExceeded& e) {
+            throw InputError(budgets.pair_budget_refusal(frame, e.found()));
+        }
+        if (const std::optional<std::string> lost = lost_pair(check, run.config.format, board.proxies)) {
+            std::cerr << "cdvp bullet: frame " << frame << ": " << *lost << '\n';
+            return kExitDeviceFault;
+        }
+        const FrameStats stats{frame, board.proxies, board.board_pairs, run.config.sweep_cycles(board.proxies),
+                               load_wait_slots(run, board.proxies), board.phases, {}, board.simulate_ns, check.extra};
+        if (report) report->frame(stats);
+        totals.add(stats);
+        times.add({frame, board.proxies, board.board_pairs, board_world->contact_points(), board.phases.total_ns,
+                   (board_step.aabbs_ns + board.bookkeeping_ns) * factor, software_step.broadphase_share_ns() * factor,
+                   software_step.step_ns * factor});
+    }
+    const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    // The later runs step a fresh software world from the same start: the
+    // board's times are simulated, the same every run.
+    for (uint32_t repeat = 2; repeat <= settings.run.repeat; ++repeat) {
+        software_world.reset();  // its memory is not the fresh world's to reuse
+        software_world = make_scene_world(spec, setup.software);
+        times.start_software_run();
+        for (uint64_t frame = 0; frame < settings.scene.frames; ++frame) {
+            const StepTimes step = software_world->step();
+            times.add_software(step.broadphase_share_ns() * factor, step.step_ns * factor);
+        }
+    }
+    platform.close_trace();
+    if (const std::optional<std::string> failed = out.waves.finish(platform)) {
+        std::cerr << "cdvp bullet: " << *failed << '\n';
+        return kExitSystem;
     }
     if (report) {
-        nlohmann::json config = {{"scene", spec.name}, {"objects", spec.objects ? spec.objects : default_objects(spec.name)},
-                                 {"seed", spec.seed},  {"frames", o.scene.frames},
-                                 {"proxies", layout.proxies}, {"board", setup.board},
-                                 {"m", setup.platform.board.m}, {"fidelity", to_string(setup.platform.fidelity)},
-                                 {"software", to_string(setup.software)}, {"host", setup.host.host},
-                                 {"host_factor", setup.host.overall},
-                                 {"host_calibration", host_calibration_json(setup.host)},
-                                 {"provenance", provenance_json(read_machine_info(), load_start, setup.host)}};
-        files.file(*report).stream()
-            << nlohmann::json{{"config", config}, {"frames", frames}, {"summary", to_json(summarise(rows))}}.dump(1)
-            << '\n';
+        const nlohmann::json bullet = {{"bullet", times.section(spec, setup.software)}};
+        report->end(totals, setup.host, &bullet);
     }
-    if (!o.quiet) files.set_standard_output(summary_text(spec, setup, rows));
-    if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp bullet", *failure);
+    if (!o.quiet) {
+        std::ostringstream summary;
+        print_summary(summary, run, totals, wall_seconds);
+        summary << times.table(setup.software, run.host, setup.host.describe());
+        out.files.set_standard_output(summary.str());
+    }
+    if (const std::optional<OutputFailure> failure = out.files.try_commit()) return commit_failed("cdvp bullet", *failure);
     const std::string note = uncalibrated_note(setup.host);
     if (!o.quiet && !note.empty()) std::cerr << "cdvp bullet: " << note << '\n';
     return kExitDone;
+}
+
+int simulate(const BulletOptions& o, const po::variables_map& vm, const std::vector<std::string>& command_line) {
+    check_path_lengths({{"board", &o.layers.board_name}, {"config", &o.layers.config}, {"report", &o.report},
+                        {"vcd", &o.vcd}},
+                       vm);
+    // Outputs first: a path that cannot be written, or that names an input
+    // or another output, is refused before any work.
+    Outputs out;
+    open_outputs(o, vm, out);
+    if (vm.count("scene") == 0) throw InputError("--scene: expected one of " + bullet_scene_list());
+    check_bullet_scene_name(o.scene);
+    Setup setup = make_setup(o, vm);
+    const SettingValues& values = setup.values;
+    const SceneSpec spec = bullet_scene_spec(o.scene, values);
+    const uint64_t frames = values.settings().scene.frames;
+    if (frames == 0) {
+        throw InputError(values.where(*find_setting("scene.frames")) + ": expected at least 1 frame to step, got 0");
+    }
+    const FrameOrigin origin{"", o.scene};
+    RunBudgets budgets(values, setup.platform, bullet_shape(setup), origin);
+    check_scene_fits(origin, values, scene_layout(spec).proxies, frames, budgets);
+    check_trace_window(setup.trace_window, frames - 1, describe(spec));
+    setup.platform.pair_budget = budgets.pair_budget();
+    return step_worlds(o, spec, setup, out, budgets, command_line);
 }
 
 }  // namespace
@@ -322,8 +262,9 @@ int simulate(const BulletOptions& o, const po::variables_map& vm) {
 int bullet_command(int argc, char** argv) {
     BulletOptions o;
     const po::options_description options = bullet_options(o);
-    return run_command_line("cdvp bullet", argc, argv, kUsage, options,
-                            [&o](const po::variables_map& vm) { return simulate(o, vm); });
+    return run_command_line("cdvp bullet", argc, argv, kUsage, options, [&](const po::variables_map& vm) {
+        return simulate(o, vm, report_command_line(argc, argv));
+    });
 }
 
 }  // namespace cdvp

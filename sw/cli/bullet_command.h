@@ -1,6 +1,7 @@
 // `cdvp bullet`: a Bullet scene stepped on the virtual board as its broad
 // phase beside the same scene on one of Bullet's own, with the modelled board
-// time against Bullet's broad-phase time and the whole step's time.
+// time against Bullet's broad-phase time and the whole step's time; its
+// settings, checks and report are `cdvp run`'s (sw/cli/run_setup.h).
 // `cdvp record`: a Bullet scene's AABBs written as a trace for `cdvp run`.
 #pragma once
 
@@ -18,7 +19,7 @@ namespace cdvp {
 int bullet_command(int argc, char** argv);
 int record_command(int argc, char** argv);
 
-// The scene options both commands share: --scene, --objects, --seed, --frames.
+// The scene options of `cdvp record`: --scene, --objects, --seed, --frames.
 struct SceneOptions {
     std::string scene;
     uint32_t objects = 0;

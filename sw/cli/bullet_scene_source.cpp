@@ -24,9 +24,7 @@ public:
     }
     bool has_frame(uint64_t number) const override { return number < frames_; }
     std::size_t max_objects() const override { return recording_.boxes(); }
-    std::string describe() const override {
-        return spec_.name + " objects=" + std::to_string(spec_.objects) + " seed=" + std::to_string(spec_.seed);
-    }
+    std::string describe() const override { return cdvp::describe(spec_); }
 
 private:
     SceneSpec spec_;

@@ -1,4 +1,5 @@
-// What `cdvp bullet` and `cdvp record` share: scene options, parsing, exit statuses.
+// What `cdvp bullet` and `cdvp record` share: Bullet's scene names and help,
+// record's scene options, parsing, exit statuses.
 #include <algorithm>
 #include <cstring>
 #include <sstream>

@@ -233,13 +233,6 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     return 0;
 }
 
-// The command line as the report records it.
-std::vector<std::string> command_line(int argc, char** argv) {
-    std::vector<std::string> words{"cdvp"};
-    words.insert(words.end(), argv, argv + argc);
-    return words;
-}
-
 }  // namespace
 
 namespace {
@@ -282,7 +275,7 @@ int run_checked(int argc, char** argv) {
         // Every stage that collects a frame's pairs holds the same budget.
         setup.platform.pair_budget = budgets.pair_budget();
         setup.baselines.set_pair_budget(budgets.pair_budget());
-        return simulate(o, *source, setup, out, command_line(argc, argv), budgets);
+        return simulate(o, *source, setup, out, report_command_line(argc, argv), budgets);
     } catch (po::error_with_option_name& e) {
         // boost quotes an unknown option as typed: keep a huge one short.
         const std::string name = e.get_option_name();

@@ -209,7 +209,7 @@ void ReportWriter::frame(const FrameStats& frame) {
     any_frame_ = true;
 }
 
-void ReportWriter::end(const RunTotals& totals, const HostTiming& host) {
+void ReportWriter::end(const RunTotals& totals, const HostTiming& host, const nlohmann::json* more) {
     const TimingFigures board = totals.board_figures();
     nlohmann::json baselines = nlohmann::json::object();
     for (const auto& [name, figures] : totals.baseline_figures()) {
@@ -233,7 +233,13 @@ void ReportWriter::end(const RunTotals& totals, const HostTiming& host) {
     add_spread(summary, "total_ns", board.spread);
     add_spread(summary, "sim_wall_native_ns", totals.sim_wall_figures().spread);
     for (int k = 0; k < RunTotals::kPhases; ++k) summary[std::string("mean_") + kPhaseNames[k]] = totals.mean_phase(k);
-    out_ << (any_frame_ ? "\n  ]" : "]") << ",\n  \"summary\": " << nested(summary, 1) << "\n}\n";
+    out_ << (any_frame_ ? "\n  ]" : "]") << ",\n  \"summary\": " << nested(summary, 1);
+    if (more != nullptr) {
+        for (const auto& [name, section] : more->items()) {
+            out_ << ",\n  " << nlohmann::json(name).dump() << ": " << nested(section, 1);
+        }
+    }
+    out_ << "\n}\n";
 }
 
 void describe_memory(RunConfig& run, bool ssram) {

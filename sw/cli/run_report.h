@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "models/board/board_config.h"
 #include "platform/device_fit.h"
 #include "platform/setting_values.h"
@@ -134,14 +136,16 @@ extern const char* const kPhaseNames[RunTotals::kPhases];
 
 // Writes the report as the run goes: begin() the configuration (with the
 // provenance at the start), frame() each frame, end() the summary (with the
-// load average at the end). The text is what nlohmann's dump(2) gives for the
-// whole document, followed by a line end.
+// load average at the end) and then, in their order, the keys of `more`: the
+// sections of what only the command has (`cdvp bullet`'s "bullet"). The text
+// is what nlohmann's dump(2) gives for the whole document, followed by a line
+// end, but for the order of those sections.
 class ReportWriter {
 public:
     explicit ReportWriter(std::ostream& out) : out_(out) {}
     void begin(const RunConfig& run);
     void frame(const FrameStats& frame);
-    void end(const RunTotals& totals, const HostTiming& host);
+    void end(const RunTotals& totals, const HostTiming& host, const nlohmann::json* more = nullptr);
 
 private:
     std::ostream& out_;

@@ -89,4 +89,10 @@ RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& b
     return run;
 }
 
+std::vector<std::string> report_command_line(int argc, char** argv) {
+    std::vector<std::string> words{"cdvp"};
+    words.insert(words.end(), argv, argv + argc);
+    return words;
+}
+
 }  // namespace cdvp

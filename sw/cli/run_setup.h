@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <boost/program_options.hpp>
 
@@ -59,5 +60,7 @@ void add_setting_inputs(OutputSet& files, const SettingLayers& layers, const boo
 // caller adds what only it knows: the source, the command line, the bus as
 // the platform describes it, the software it times.
 RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& budgets);
+// The command line as the report records it: "cdvp", then the command's argv.
+std::vector<std::string> report_command_line(int argc, char** argv);
 
 }  // namespace cdvp

@@ -137,4 +137,36 @@ TEST_F(Cli, WaveformsOfAWindowOfFrames) {
     }
 }
 
+// cdvp bullet --vcd: the board under a Bullet world, traced as cdvp run
+// traces it, with the same save file and state names.
+TEST_F(Cli, BulletTracesItsBoardAsRunDoes) {
+    const std::string bullet = "bullet --scene stack --objects 10 --frames 2 --m 2 --board adm-xrc-ii -q ";
+    const Result r = run(bullet + "--vcd w.vcd --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(files(), (std::vector<std::string>{"r.json", "w.controller-states.txt", "w.dma-states.txt", "w.gtkw",
+                                                 "w.vcd"}))
+        << "no temporary left behind";
+    const std::string text = slurp(dir_ / "w.vcd");
+    EXPECT_NE(text.find("$timescale\n     1 fs\n$end"), std::string::npos) << text.substr(0, 200);
+    const cdvp::test::Vcd vcd = cdvp::test::read_vcd_text(text);
+    const std::string save = slurp(dir_ / "w.gtkw");
+    EXPECT_NE(save.find("[dumpfile] \"" + fs::canonical(dir_).string() + "/w.vcd\""), std::string::npos) << save;
+    const std::vector<std::string> signals = saved_signals(save);
+    EXPECT_EQ(signals.size(), vcd.id_of.size()) << "every traced signal, once";
+    for (const std::string& name : signals) EXPECT_EQ(vcd.id_of.count(name), 1u) << name << " is not in the VCD";
+    EXPECT_GT(signals.size(), 20u);
+    EXPECT_EQ(vcd.value_at(kControl + "idle", 0), "1");
+    const uint64_t start = first_time(vcd, kControl + "running", "1");
+    ASSERT_NE(start, UINT64_MAX) << "the board ran";
+    EXPECT_NE(save.find("[markername] ASTART\n[markername] BDONE\n"), std::string::npos);
+    EXPECT_EQ(slurp(dir_ / "w.controller-states.txt"), "0 idle\n1 running\n2 paused\n3 done\n");
+    EXPECT_NE(slurp(dir_ / "r.json").find("\"fidelity\": \"cycle\""), std::string::npos) << "--vcd clocks the board";
+    cdvp::test::expect_refusal(run(bullet + "--vcd x.vcd --fidelity fast"),
+                               "cdvp bullet: --vcd: waveforms need the clocked engine; --fidelity asks for fast");
+    cdvp::test::expect_refusal(run(bullet + "--vcd x.vcd --vcd-frames 5:6"),
+                               "cdvp bullet: --vcd-frames: 5:6 starts after the run's last frame 1");
+    cdvp::test::expect_refusal(run(bullet + "--vcd-format fst"), "cdvp bullet: --vcd-format: the format of --vcd");
+    EXPECT_FALSE(fs::exists(dir_ / "x.vcd"));
+}
+
 }  // namespace
