@@ -251,5 +251,23 @@ TEST_F(CliBudget, TheReportRecordsTheBudgetsAndTheEstimateCoversThePeak) {
     EXPECT_DOUBLE_EQ(budgets["simulated_time_limit_s"].get<double>(), 9223.372036854775808);
 }
 
+// A Bullet run's estimate counts its two worlds' bodies and contacts: a pile
+// of mixed shapes at rest, thousands of touching pairs a frame.
+TEST_F(CliBudget, ABulletRunsEstimateCoversItsWorlds) {
+    const Measured m = measure({"bullet", "--scene", "mixed", "--objects", "1500", "--frames", "80", "--report",
+                                "r.json", "-q"});
+    ASSERT_EQ(m.result.status, 0) << m.result.err;
+    const nlohmann::json report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+    uint64_t pairs = 0;
+    for (const auto& frame : report["frames"]) pairs = std::max(pairs, frame["pairs"].get<uint64_t>());
+    EXPECT_GT(pairs, 5000u) << "the pile has landed";
+    const nlohmann::json& budgets = report["config"]["budgets"];
+    const uint64_t estimate = budgets["estimate_before_pairs_bytes"].get<uint64_t>() +
+                              pairs * budgets["estimate_bytes_per_pair"].get<uint64_t>();
+    if (kRssIsTheProgramsOwn) {
+        EXPECT_GT(estimate, static_cast<uint64_t>(m.peak_kb) * 1024);
+    }
+}
+
 }  // namespace
 }  // namespace cdvp::test
