@@ -248,6 +248,12 @@ TEST_F(CliSweepState, ASweepNeedsNoTemporaryDirectoryAndOneThatDoesNamesIt) {
     const Result fidelity = run("fidelity --scene spheres --objects 20 --frames 2 --out fid -q", "TMPDIR=/nonexistent");
     expect_refusal(fidelity, "cdvp fidelity: TMPDIR: /nonexistent: cannot create a temporary file (set TMPDIR to a "
                              "writable directory): No such file or directory");
+    const Result piped = shell("cat '" + trace("small.csv") + "' | TMPDIR=/nonexistent '" CDVP_BINARY
+                               "' sweep --trace /dev/stdin --set m=1 --out piped -q");
+    expect_refusal(piped, "cdvp sweep: /dev/stdin: cannot copy it to a temporary file in TMPDIR /nonexistent (set "
+                          "TMPDIR to a writable directory)");
+    const Result device = run("run --scene spheres --objects 20 --vcd /dev/null -q", "TMPDIR=/nonexistent");
+    expect_refusal(device, "cdvp run: --vcd: /dev/null: cannot make its temporary file in /nonexistent (set TMPDIR");
 }
 
 TEST_F(CliSweepState, WithoutPlotsTheDataFilesAreWrittenAll) {
