@@ -1,6 +1,5 @@
 #include "sw/cli/bullet_command.h"
 
-#include <chrono>
 #include <iostream>
 #include <memory>
 #include <numeric>
@@ -153,6 +152,7 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
     RunConfig run = describe_run(setup, boxes, budgets);
     run.source = describe(spec);
     run.command_line = command_line;
+    run.has_report = out.report != nullptr;
     const Settings& settings = setup.values.settings();
     const double factor = setup.host.overall;
     VirtualBoard platform("platform", setup.platform, boxes, out.waves.trace_base());
@@ -170,7 +170,7 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
     RunTotals totals(settings.run.warmup);
     BulletTimes times(settings.run.warmup);
     FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair, budgets.pair_budget());
-    const auto wall_start = std::chrono::steady_clock::now();
+    RunWallTimes wall;  // the board's simulation, and the software worlds' steps beside it
     for (uint64_t frame = 0; frame < settings.scene.frames; ++frame) {
         StepTimes board_step;
         try {
@@ -180,6 +180,8 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
         }
         const StepTimes software_step = software_world->step();
         const BoardFrameStats& board = broadphase.last_frame();
+        wall.simulator_s += board.simulate_ns * 1e-9;
+        wall.baselines_s += software_step.step_ns * 1e-9;
         const FrameResult& result = *link.last_result();
         FormatReference::Check check;
         try {
@@ -199,7 +201,6 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
                    (board_step.aabbs_ns + board.bookkeeping_ns) * factor, software_step.broadphase_share_ns() * factor,
                    software_step.step_ns * factor});
     }
-    const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     // The later runs step a fresh software world from the same start: the
     // board's times are simulated, the same every run.
     for (uint32_t repeat = 2; repeat <= settings.run.repeat; ++repeat) {
@@ -208,6 +209,7 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
         times.start_software_run();
         for (uint64_t frame = 0; frame < settings.scene.frames; ++frame) {
             const StepTimes step = software_world->step();
+            wall.baselines_s += step.step_ns * 1e-9;
             times.add_software(step.broadphase_share_ns() * factor, step.step_ns * factor);
         }
     }
@@ -222,7 +224,7 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
     }
     if (!o.quiet) {
         std::ostringstream summary;
-        print_summary(summary, run, totals, wall_seconds);
+        print_summary(summary, run, totals, wall);
         summary << times.table(setup.software, run.host, setup.host.describe());
         out.files.set_standard_output(summary.str());
     }

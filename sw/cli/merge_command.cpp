@@ -199,7 +199,11 @@ int merge_shards(const MergeOptions& o) {
     std::vector<std::string> from(grid.size());  // the directory each point's row came from
     auto take = [&](const std::string& dir, const Shard& shard) {
         SweepTable rows(grid);
-        read_table(dir, grid, shard, rows, false);  // every row checked, or refused naming file, line and field
+        // Every row checked, or refused naming file, line and field.
+        if (read_table(dir, grid, shard, rows, false).torn) {
+            throw InputError(excerpt(table_path(dir)) + ": its last row is cut short (its sweep was stopped while "
+                             "writing it): run that sweep again to complete it, then merge");
+        }
         rows.for_each([&](std::size_t index, const RowView& row) {
             if (table.has(index)) {
                 if (row.get(kChecksumColumn) == table.row(index).get(kChecksumColumn)) return;  // merged before

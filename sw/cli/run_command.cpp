@@ -148,6 +148,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     RunConfig run = describe_run(setup, static_cast<uint32_t>(source.max_objects()), budgets);
     run.source = source.describe();
     run.command_line = command_line;
+    run.has_report = out.report != nullptr;
     run.baseline_names = setup.baselines.names();
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
     VirtualBoard platform("platform", setup.platform, run.capacity, out.waves.trace_base());
@@ -167,7 +168,10 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     // The later runs of the baselines (--repeat) count as frames too.
     const std::size_t baseline_runs = setup.baselines.empty() ? 1 : setup.values.settings().run.repeat;
     Progress progress(source.frame_count() * baseline_runs, !o.quiet);
-    const auto wall_start = std::chrono::steady_clock::now();
+    RunWallTimes wall;  // the simulator's own, and the baselines' beside it
+    const auto seconds_since = [](std::chrono::steady_clock::time_point start) {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     while (std::optional<Frame> frame = source.next()) {
         const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
         // A simulated fault comes back by value, so the platform is torn down
@@ -176,8 +180,8 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         FrameFault fault;
         const auto sim_start = std::chrono::steady_clock::now();
         const FrameResult* frame_result = platform.try_run_frame(boxes, frame->number, fault);
-        const double sim_wall_native_ns =
-            std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - sim_start).count();
+        const double sim_wall_native_ns = seconds_since(sim_start) * 1e9;
+        wall.simulator_s += sim_wall_native_ns * 1e-9;
         if (frame_result == nullptr) {
             std::cerr << "cdvp run: "
                       << (fault.kind == FrameFault::Kind::kPairBudget
@@ -199,9 +203,11 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
                          run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_native_ns, check.extra};
         stats.load_wait_slots = load_wait_slots(run, boxes.size());
         if (!setup.baselines.empty()) {
+            const auto baselines_start = std::chrono::steady_clock::now();
             stats.baselines = within_budget(budgets, frame->number, [&] {
                 return setup.baselines.time_frame(boxes, sorted(reference.kept(check, result.pairs)), frame->number);
             });
+            wall.baselines_s += seconds_since(baselines_start);
         }
         if (report) report->frame(stats);
         totals.add(stats);
@@ -209,10 +215,11 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         source.feed(reference.kept(check, result.pairs));
         progress.update(totals.frames());
     }
-    const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     std::size_t frames_done = totals.frames();
     if (!setup.baselines.empty()) {
+        const auto repeats_start = std::chrono::steady_clock::now();
         setup.baselines.repeat(source, setup.values.settings().run.repeat, totals, [&] { progress.update(++frames_done); });
+        wall.baselines_s += seconds_since(repeats_start);
     }
     platform.close_trace();
     if (const std::optional<std::string> failed = out.waves.finish(platform)) {
@@ -223,7 +230,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     if (report) report->end(totals, setup.host);
     if (!o.quiet) {
         std::ostringstream summary;
-        print_summary(summary, run, totals, wall_seconds);
+        print_summary(summary, run, totals, wall);
         out.files.set_standard_output(summary.str());
     }
     // Reported by value, not thrown: see OutputFile::try_finish.

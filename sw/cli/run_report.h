@@ -68,6 +68,7 @@ struct RunConfig {
     const SettingValues* settings = nullptr;  // every setting in effect and where it came from
     std::optional<DeviceFit> device_fit;      // with a device family: the board's resources on it
     std::vector<std::string> command_line;
+    bool has_report = false;  // --report: every frame is there
     // The budgets the run is held to, and its memory estimate before any
     // pair and for each pair of a frame (sw/cli/run_budgets.h).
     struct Budgets {
@@ -152,7 +153,14 @@ private:
     bool any_frame_ = false;
 };
 
+// Where a run's native wall time went: the simulator's own (each frame on
+// the platform) and the software baselines timed beside it.
+struct RunWallTimes {
+    double simulator_s = 0;
+    double baselines_s = 0;
+};
+
 // The short table printed after a run (run_summary.cpp).
-void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, double wall_seconds);
+void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, const RunWallTimes& wall);
 
 }  // namespace cdvp

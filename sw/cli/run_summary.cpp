@@ -13,19 +13,23 @@ namespace {
 void print_resources(std::ostream& out, const DeviceFit& fit) {
     const Resources total = fit.resources.total();
     std::string text = "  on " + printable(fit.device.name) + " (synthesis for " + fit.device.family + "):";
-    const auto usage = [&](const char* name, double used, double available) {
-        char part[128];
+    const auto usage = [&](const char* name, double used, double available, const std::string& detail = "") {
+        char part[160];
         if (std::isinf(available)) {
-            std::snprintf(part, sizeof part, " %.0f %s,", used, name);
+            std::snprintf(part, sizeof part, " %.0f %s%s,", used, name, detail.empty() ? "" : (" (" + detail + ")").c_str());
         } else {
-            std::snprintf(part, sizeof part, " %.0f of %.0f %s (%.0f%%),", used, available, name,
-                          100 * used / available);
+            std::snprintf(part, sizeof part, " %.0f of %.0f %s (%.0f%%%s),", used, available, name,
+                          100 * used / available, detail.empty() ? "" : ("; " + detail).c_str());
         }
         text += part;
     };
     usage("LUTs", total.luts, fit.device.luts);
     usage("flip-flops", total.flip_flops, fit.device.flip_flops);
-    usage("block RAMs", total.block_rams, fit.device.block_rams);
+    // The block RAMs the boxes take (the first line's count) and the rest.
+    const double boxes = fit.resources.coordinate_memories.block_rams;
+    char split[96];
+    std::snprintf(split, sizeof split, "%.0f for the boxes, %.0f besides", boxes, total.block_rams - boxes);
+    usage("block RAMs", total.block_rams, fit.device.block_rams, split);
     text += " pair FIFO in " + std::string(fit.resources.pair_fifo_memory == "block_ram" ? "block RAM" : "LUTs");
     text += fit.use.fits() ? "; largest m that fits: " + std::to_string(fit.largest_m) + "\n"
                            : "; does not fit (" + fit.use.overflow + ")\n";
@@ -82,11 +86,11 @@ void print_timing(std::ostream& out, const RunConfig& run, const RunTotals& tota
 
 }  // namespace
 
-void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, double wall_seconds) {
+void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, const RunWallTimes& wall) {
     const BoardConfig& c = run.config;
     char line[512];
     // Names may be long and come from files: printed whole and escaped.
-    std::snprintf(line, sizeof line, ": m=%u (%u %s lanes), %.6g MHz, L=%u cycles, %u block RAMs, %s engine\n", c.m,
+    std::snprintf(line, sizeof line, ": m=%u (%u %s lanes), %.6g MHz, L=%u cycles, %u block RAMs for the boxes, %s engine\n", c.m,
                   c.lanes(), c.format.name().c_str(), c.clock_mhz, c.pipeline_latency(), run.block_rams,
                   run.fidelity.c_str());
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
@@ -109,7 +113,8 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
         out << line;
     }
     if (totals.frames() > totals.shown().size()) {
-        out << "    ... (" << totals.frames() - totals.shown().size() << " more frames in the report)\n";
+        out << "    ... (" << totals.frames() - totals.shown().size() << " more frames"
+            << (run.has_report ? " in the report)\n" : "; --report FILE lists every frame)\n");
     }
     std::snprintf(line, sizeof line, "total: %llu frames, %llu pairs, %llu board cycles (%llu stalled)\n",
                   static_cast<unsigned long long>(totals.frames()), static_cast<unsigned long long>(totals.pairs()),
@@ -126,10 +131,17 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
         out << line;
     }
     print_timing(out, run, totals);
-    const double rate = wall_seconds > 0 ? static_cast<double>(totals.cycles()) / wall_seconds : 0.0;
-    std::snprintf(line, sizeof line, "simulated in %.3f s wall time (%.2f M board cycles/s)\n", wall_seconds,
+    // The simulator's own time (each frame on the platform), apart from the
+    // software baselines timed beside it.
+    const double rate = wall.simulator_s > 0 ? static_cast<double>(totals.cycles()) / wall.simulator_s : 0.0;
+    std::snprintf(line, sizeof line, "simulated in %.3f s of native wall time (%.2f M board cycles/s)", wall.simulator_s,
                   rate / 1e6);
     out << line;
+    if (wall.baselines_s > 0) {
+        std::snprintf(line, sizeof line, "; the software baselines took %.3f s", wall.baselines_s);
+        out << line;
+    }
+    out << "\n";
 }
 
 }  // namespace cdvp

@@ -192,7 +192,7 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
             read_config_file(option.value);  // refused here, naming file and line
             o.inputs.push_back({"--config", option.value, option.value});
         }
-        if (option.key == "run.host_profile" && !option.value.empty()) {
+        if (option.key == "host.profile" && !option.value.empty()) {
             o.inputs.push_back({"--host-profile", option.value, option.value});
         }
     }
@@ -206,7 +206,7 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
         for (const std::string& value : axis.values) {
             if (axis.key == "trace" || axis.key == "config") o.inputs.push_back({"--" + axis.key, value, value});
             if (axis.key == "board") o.inputs.push_back({"--board", value, board_preset_path(value)});
-            if (axis.key == "run.host_profile") o.inputs.push_back({"--host-profile", value, value});
+            if (axis.key == "host.profile") o.inputs.push_back({"--host-profile", value, value});
         }
     }
     if (sources.size() == 2) throw InputError("--scene and --trace: give one of them (the points' frames come from it)");

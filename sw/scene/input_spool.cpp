@@ -118,7 +118,17 @@ InputSpool::InputSpool(const std::string& path, InputLimits limits, const std::s
         copy_ = mkostemp(name.data(), O_CLOEXEC);
         if (copy_ >= 0) unlink(name.c_str());
     }
-    if (copy_ < 0) system_error(path + ": cannot create a temporary file in " + directory, errno);
+    if (copy_ < 0) {
+        // A full or failing file system is the system's; a directory that is
+        // missing or not writable is the user's TMPDIR.
+        const int error = errno;
+        const char* tmp = std::getenv("TMPDIR");
+        const std::string where = tmp != nullptr && tmp[0] != '\0' && directory == tmp ? "TMPDIR " + excerpt(directory)
+                                                                                        : excerpt(directory);
+        throw_os_error(excerpt(path) + ": cannot copy it to a temporary file in " + where +
+                           (is_system_failure(error) ? std::string() : " (set TMPDIR to a writable directory)"),
+                       error);
+    }
     try {
         source_ = open_for_reading(path);
     } catch (...) {

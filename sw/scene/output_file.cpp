@@ -146,6 +146,13 @@ OutputFile::OutputFile(std::string final_path, std::string suffix, bool open_str
         // No signal between creating the temporary and registering it.
         CleanupSignalsBlocked blocked;
         fd = make_unique_file(pattern, suffix);
+        if (fd < 0 && target_.kind == OutputTarget::Kind::kDirect && !is_system_failure(errno)) {
+            // A device or descriptor is written from a temporary in $TMPDIR.
+            const int error = errno;
+            throw_os_error(final_path_ + ": cannot make its temporary file in " +
+                               fs::path(pattern).parent_path().string() + " (set TMPDIR to a writable directory)",
+                           error);
+        }
         if (fd < 0) fail(errno);
         temp_path_ = pattern;
         cleanup_slot_ = TemporaryRegistry::hold(temp_path_);

@@ -62,6 +62,18 @@ void OutputSet::open() {
         written.push_back({quoted(outputs_[k].label, outputs_[k].path), identity_of(targets[k]),
                            !direct || S_ISREG(targets[k].status.st_mode), direct ? targets[k].descriptor : -1});
     }
+    // An output written to standard output itself ("-", /dev/stdout) makes
+    // it a data stream: the summary is not mixed into it.
+    if (stdout_label_) {
+        struct stat status {};
+        const bool open_at_start = !standard_descriptor_was_closed(STDOUT_FILENO) && fstat(STDOUT_FILENO, &status) == 0;
+        for (const Written& w : written) {
+            const bool same = w.descriptor == STDOUT_FILENO ||
+                              (open_at_start && w.descriptor >= 0 && w.id.exists && w.id.device == status.st_dev &&
+                               w.id.inode == status.st_ino);
+            if (same) stdout_label_.reset();
+        }
+    }
     if (stdout_label_) {
         if (standard_descriptor_was_closed(STDOUT_FILENO)) {
             throw InputError(*stdout_label_ + ": closed when cdvp started; expected it open (or --quiet)");

@@ -46,7 +46,10 @@ public:
     // by open() like the others (open when cdvp started; a regular file
     // behind it is no input and no other output, unless written through the
     // same descriptor), and written by commit() after the devices and before
-    // any rename, so a summary that cannot be printed publishes no file.
+    // any rename, so a summary that cannot be printed publishes no file. When
+    // another output is written to standard output itself ("-",
+    // /dev/stdout), open() drops the summary: the stream carries only that
+    // output's data (JSON, CSV), for the program reading it.
     void add_standard_output(std::string label);
     void set_standard_output(std::string text);
 

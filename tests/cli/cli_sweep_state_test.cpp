@@ -136,6 +136,11 @@ TEST_F(CliSweepState, AFailedMergeLeavesOutAsItWas) {
     expect_refusal(run("merge --out merged s1 s2"), "cdvp merge: s2/sweep.csv:3: the point's report");
     EXPECT_FALSE(fs::exists(dir_ / "merged")) << "a new OUT is not left behind";
     fs::rename(dir_ / "kept.json", dir_ / "s2/points/board-adm-xrc-ii_m-2_objects-40.json");
+    const std::string whole = slurp(dir_ / "s2" / "sweep.csv");
+    write("s2/sweep.csv", whole + "board-adm-xrc-ii_m-1");  // a shard stopped while it appended a row
+    expect_refusal(run("merge --out merged s1 s2"), "cdvp merge: s2/sweep.csv: its last row is cut short");
+    EXPECT_FALSE(fs::exists(dir_ / "merged"));
+    write("s2/sweep.csv", whole);
     ASSERT_EQ(run("merge --out merged s1 -q").status, 0);
     const std::string before = snapshot("merged");
     Rows table = rows("s2");
@@ -243,6 +248,12 @@ TEST_F(CliSweepState, ASweepNeedsNoTemporaryDirectoryAndOneThatDoesNamesIt) {
     const Result fidelity = run("fidelity --scene spheres --objects 20 --frames 2 --out fid -q", "TMPDIR=/nonexistent");
     expect_refusal(fidelity, "cdvp fidelity: TMPDIR: /nonexistent: cannot create a temporary file (set TMPDIR to a "
                              "writable directory): No such file or directory");
+    const Result piped = shell("cat '" + trace("small.csv") + "' | TMPDIR=/nonexistent '" CDVP_BINARY
+                               "' sweep --trace /dev/stdin --set m=1 --out piped -q");
+    expect_refusal(piped, "cdvp sweep: /dev/stdin: cannot copy it to a temporary file in TMPDIR /nonexistent (set "
+                          "TMPDIR to a writable directory)");
+    const Result device = run("run --scene spheres --objects 20 --vcd /dev/null -q", "TMPDIR=/nonexistent");
+    expect_refusal(device, "cdvp run: --vcd: /dev/null: cannot make its temporary file in /nonexistent (set TMPDIR");
 }
 
 TEST_F(CliSweepState, WithoutPlotsTheDataFilesAreWrittenAll) {
@@ -277,6 +288,12 @@ TEST_F(CliSweepState, ARecalibratedHostProfileMakesAnotherSweep) {
     ASSERT_EQ(run("calibrate --repeat 1 -q", env).status, 0);
     expect_refusal(run(kGrid + "--out res -q", env),
                    "cdvp sweep: --out: res: --host-profile (its default place) changed since the sweep began");
+    // A profile named on the command line is an input too.
+    fs::copy_file(dir_ / "config" / "cdvp" / "host-profile.json", dir_ / "named.json");
+    ASSERT_EQ(run(kGrid + "--host-profile named.json --out named -q").status, 0);
+    write("named.json", slurp(dir_ / "named.json") + " ");
+    expect_refusal(run(kGrid + "--host-profile named.json --out named -q"),
+                   "cdvp sweep: --out: named: --host-profile named.json changed since the sweep began");
 }
 
 TEST_F(CliSweepState, PointsRunAtOnceShareTheDefaultMemoryBudget) {
