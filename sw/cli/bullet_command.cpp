@@ -225,7 +225,7 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
     if (!o.quiet) {
         std::ostringstream summary;
         print_summary(summary, run, totals, wall);
-        summary << times.table(setup.software, run.host, setup.host.describe());
+        summary << times.table(setup.software, run.host, setup.host.describe(), run.has_report);
         out.files.set_standard_output(summary.str());
     }
     if (const std::optional<OutputFailure> failure = out.files.try_commit()) return commit_failed("cdvp bullet", *failure);

@@ -131,7 +131,8 @@ nlohmann::json BulletTimes::section(const SceneSpec& spec, BroadphaseKind softwa
             {"summary", summary}};
 }
 
-std::string BulletTimes::table(BroadphaseKind software, const std::string& host, const std::string& factor) const {
+std::string BulletTimes::table(BroadphaseKind software, const std::string& host, const std::string& factor,
+                               bool has_report) const {
     std::ostringstream out;
     const std::string name = to_string(software);
     out << "\nagainst Bullet's " << name << " on host " << printable(host) << " (software: " << factor;
@@ -143,7 +144,10 @@ std::string BulletTimes::table(BroadphaseKind software, const std::string& host,
     for (std::size_t k = 0; k < frames_.size() && k < kRowsShown; ++k) {
         print_row(out, std::to_string(frames_[k].frame), frames_[k].proxies, frames_[k].pairs, frames_[k], true);
     }
-    if (frames_.size() > kRowsShown) out << "    ... (" << frames_.size() - kRowsShown << " more frames in --report)\n";
+    if (frames_.size() > kRowsShown) {
+        out << "    ... (" << frames_.size() - kRowsShown << " more frames"
+            << (has_report ? " in the report)\n" : "; --report FILE lists every frame)\n");
+    }
     if (frames_.empty()) return out.str();
     const uint32_t proxies = frames_.back().proxies;
     const std::size_t pairs = frames_.back().pairs;

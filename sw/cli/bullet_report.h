@@ -62,8 +62,9 @@ public:
     // and the summary.
     nlohmann::json section(const SceneSpec& spec, BroadphaseKind software) const;
     // The summary's table: the first frames, then the mean, p50, p99 and
-    // maximum of each time.
-    std::string table(BroadphaseKind software, const std::string& host, const std::string& factor) const;
+    // maximum of each time. has_report: --report lists every frame.
+    std::string table(BroadphaseKind software, const std::string& host, const std::string& factor,
+                      bool has_report) const;
 
 private:
     uint64_t warmup_frames_;
