@@ -5,11 +5,14 @@
 #include <sstream>
 #include <string>
 
+#include <boost/program_options.hpp>
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
 #include "platform/setting_values.h"
 #include "sw/cli/run_command.h"
+#include "sw/cli/run_options.h"
+#include "sw/cli/run_setup.h"
 
 namespace cdvp {
 
@@ -17,12 +20,17 @@ namespace {
 
 constexpr const char* kHelp =
     "Usage: cdvp settings [--json | --markdown]\n"
+    "       cdvp settings [--board NAME] [--config FILE] [-c NAME=VALUE]... [--json]\n"
     "\n"
     "Lists every setting of cdvp run: name, type, unit, default, range or choices, dedicated flag,\n"
     "help and the source or assumption behind the default. Set one with -c NAME=VALUE, a config\n"
     "file (--config FILE), a board preset, or its dedicated flag (docs/settings.md).\n"
     "--json prints a JSON array of objects with keys name, type, unit, default, min, max, choices,\n"
-    "flag, help and source; --markdown the table of docs/settings.md.\n";
+    "flag, help and source; --markdown the table of docs/settings.md.\n"
+    "\n"
+    "With --board, --config or -c: the settings a run with those layers would use, each with its\n"
+    "value and where it came from (the default, the preset file and key, the config file and line,\n"
+    "-c), checked as cdvp run checks them; --json prints an array of {name, value, origin}.\n";
 
 const char* type_name(SettingType type) {
     switch (type) {
@@ -97,9 +105,58 @@ std::string settings_markdown() {
     return out.str();
 }
 
+// Where a value came from, as the resolved listing says it.
+std::string origin_of(const SettingValues& values, const Setting& s) {
+    const SettingOrigin& origin = values.origin(s);
+    switch (origin.kind) {
+        case SettingOrigin::Kind::kDefault: return "default";
+        case SettingOrigin::Kind::kPreset: return "preset " + origin.file + ": " + s.name;
+        case SettingOrigin::Kind::kConfig:
+            return "config " + origin.file + (origin.line > 0 ? ":" + std::to_string(origin.line) : "") + ": " + s.name;
+        case SettingOrigin::Kind::kOverride: return "-c " + s.name;
+        case SettingOrigin::Kind::kFlag: return "--" + s.flag;
+    }
+    return "default";
+}
+
+// The settings the layers give, each with its value and origin.
+int resolved_settings(int argc, char** argv) {
+    namespace po = boost::program_options;
+    SettingLayers layers;
+    bool json = false;
+    po::options_description options;
+    options.add_options()("board", po::value(&layers.board_name), "")("config", po::value(&layers.config), "")(
+        ",c", po::value(&layers.overrides), "")("json", po::bool_switch(&json), "");
+    po::variables_map vm;
+    try {
+        vm = parse_strictly(argc, argv, options);
+    } catch (po::error& e) {
+        throw InputError(option_error_text(e, "cdvp settings"));
+    }
+    std::string board_name;
+    const SettingValues values = layered_settings(layers, vm, "", board_name);
+    values.check_board();
+    nlohmann::json all = nlohmann::json::array();
+    std::ostringstream text;
+    for (const Setting* s : values.effective()) {
+        const std::string value = to_text(s->get(values.settings()));
+        const std::string origin = origin_of(values, *s);
+        all.push_back({{"name", s->name}, {"value", to_json(s->get(values.settings()))}, {"origin", origin}});
+        text << s->name << " = " << printable(value) << "  (" << printable(origin) << ")\n";
+    }
+    return print_to_stdout("cdvp settings", json ? all.dump(2) + "\n" : text.str());
+}
+
 }  // namespace
 
 int settings_command(int argc, char** argv) {
+    for (int k = 1; k < argc; ++k) {
+        const std::string arg = argv[k];
+        if (arg == "--board" || arg == "--config" || arg.rfind("-c", 0) == 0 || arg.rfind("--board=", 0) == 0 ||
+            arg.rfind("--config=", 0) == 0) {
+            return exit_status_of("cdvp settings", [&] { return resolved_settings(argc, argv); });
+        }
+    }
     if (argc > 2) {
         std::cerr << "cdvp settings: unexpected argument '" << excerpt(argv[2]) << "' (see cdvp settings --help)\n";
         return kExitBadInput;

@@ -166,5 +166,21 @@ TEST_F(CliSettings, FidelityPassesConfigAndOverridesToEveryLevel) {
                    "cdvp fidelity: -c run.quantum_ns: set by cdvp fidelity for each level");
 }
 
+TEST_F(Cli, SettingsShowWhatAPresetConfigAndOverridesResolveTo) {
+    write("c.toml", "[board]\nfifo_depth = 1024\n");
+    const Result r = run("settings --board adm-xrc-ii --config c.toml -c board.m=4");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("board.m = 4  (-c board.m)\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("board.fifo_depth = 1024  (config c.toml:2: board.fifo_depth)\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("board.clock_mhz = 66  (preset "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("board.format = float32  (default)\n"), std::string::npos) << r.out;
+    const auto json = nlohmann::json::parse(run("settings --board adm-xrc-ii --json").out);
+    bool bus = false;
+    for (const auto& s : json) bus |= s["name"] == "bus.type" && s["value"] == "pci";
+    EXPECT_TRUE(bus) << "the preset's bus";
+    expect_refusal(run("settings --board adm-xrc-ii -c board.fifo_depth=1"), "cdvp settings: -c board.fifo_depth");
+    expect_refusal(run("settings -c board.mm=3"), "cdvp settings: -c board.mm: unknown setting; did you mean 'board.m'?");
+}
+
 }  // namespace
 }  // namespace cdvp::test
