@@ -34,7 +34,7 @@ series_lc(i) = series_family[i] == 2 ? baseline_colour[series_colour[i]] : palet
 series_pt(i) = series_family[i] == 2 ? baseline_shape[series_shape[i]] : \
                (series_filled[i] ? shape_filled[series_shape[i]] : shape_open[series_shape[i]])
 series_dt(i) = series_family[i] == 2 ? baseline_dash[series_dash[i]] : dash_type[series_dash[i]]
-series_lw(i) = (series_family[i] == 2 ? 2.5 : 1.5) + 2.5 * series_beneath[i]
+series_lw(i) = (series_family[i] == 2 ? 2.5 : 1.5) + 2 * series_beneath[i]
 # Use as: plot ... with linespoints @series_style title series_title[i]
 series_style = "lc rgb series_lc(i) pt series_pt(i) dt series_dt(i) lw series_lw(i) ps 1.3"
 
@@ -60,6 +60,6 @@ set grid lc rgb "#d0d0d0"
 if (key_beside) {
     set key outside right top vertical Left reverse maxcols 1 samplen 3
 } else {
-    set key outside below left Left reverse maxcols 3 samplen 3
+    set key outside below left Left reverse maxcols 3 samplen 3 height 1
 }
 set key spacing 1.1 width 2
