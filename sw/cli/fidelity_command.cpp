@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sw/cli/child_runs.h"
+#include "sw/cli/fidelity_figure.h"
 #include "sw/cli/forwarded_options.h"
 #include "sw/cli/run_budgets.h"
 #include "sw/cli/run_command.h"
@@ -60,6 +61,7 @@ struct LevelResult {
     std::array<double, kPhases.size()> phase_ns{};  // means over frames
     std::string pairs;  // the pairs CSV, to compare with the reference's
     uint64_t frames = 0;
+    nlohmann::json config;  // the report's, for the figure's title
 };
 
 double median(std::vector<double> values) {
@@ -83,6 +85,7 @@ LevelResult read_level(const std::string& report_path, const std::string& pairs_
     }
     result.wall_ns_per_frame = median(walls);
     result.pairs = slurp(pairs_path);
+    result.config = report.value("config", nlohmann::json::object());
     return result;
 }
 
@@ -127,25 +130,42 @@ std::string table_text(const std::vector<LevelResult>& results) {
     return t.str();
 }
 
-// gnuplot draws the CSV: wall time per frame (log) against the total's
-// error, one coloured point per level named in the key (levels with equal
-// errors stack on one vertical, so labels beside the points would collide).
-std::string plot_script(const std::string& csv_path, const std::string& png_path) {
-    std::ostringstream gp;
-    gp << "set terminal pngcairo noenhanced size 900,560 font 'sans,10'\n"
-       << "set output '" << png_path << "'\n"
-       << "set datafile separator ','\nset datafile columnheaders\n"
-       << "set title 'cdvp: simulator speed against timing error (reference: cycle engine, quantum 0)'\n"
-       << "set xlabel 'error of the simulated frame time (%)'\n"
-       << "set ylabel 'simulator wall time per frame (ms)'\n"
-       << "set logscale y\nset grid\nset key outside right\n"
-       << "set offsets graph 0.1, graph 0.1, graph 0.2, graph 0.2\n"
-       << "names = '";
-    for (const Level& level : kLevels) gp << level.fidelity << "/quantum=" << level.quantum_ns << "ns ";
-    gp << "'\n"
-       << "plot for [i=1:" << kLevels.size() << "] '" << csv_path
-       << "' every ::(i-1)::(i-1) using 19:($5/1e6) with points pt 7 ps 1.8 title word(names, i)\n";
-    return gp.str();
+// "fast, quantum 100 ns", "cycle, quantum 0".
+std::string level_words(const Level& level) {
+    const double q = level.quantum_ns;
+    std::ostringstream words;
+    words << level.fidelity << ", quantum ";
+    if (q == 0) {
+        words << 0;
+    } else if (q >= 1000) {
+        words << q / 1000 << " us";
+    } else {
+        words << q << " ns";
+    }
+    return words.str();
+}
+
+// The figure's context from the reference level's report: board and bus,
+// scene, m, frames, and whether every level found the reference's pairs.
+std::string figure_context(const std::vector<LevelResult>& results) {
+    const nlohmann::json& config = results.front().config;
+    std::ostringstream words;
+    words << config.value("board", std::string("no board")) << " (" << config.value("bus", std::string("untimed bus"))
+          << "), " << config.value("source", std::string()) << ", m=" << config.value("m", 0) << ", "
+          << results.front().frames << " frames\nreference: the cycle engine at quantum 0; pairs ";
+    const bool identical = std::all_of(results.begin(), results.end(),
+                                       [&](const LevelResult& r) { return r.pairs == results.front().pairs; });
+    words << (identical ? "identical at every level" : "DIFFER at some level (fidelity.csv)");
+    return words.str();
+}
+
+std::string plot_script(const std::vector<LevelResult>& results, const std::string& png_path) {
+    std::vector<FidelityPoint> points;
+    for (std::size_t k = 0; k < results.size(); ++k) {
+        points.push_back({level_words(kLevels[k]), results[k].wall_ns_per_frame / 1e6,
+                          error_percent(results[k], results[0], kPhases.size() - 1)});
+    }
+    return figure_script(fidelity_figure(points, figure_context(results)), png_path);
 }
 
 // What fidelity sets for each level itself, or what does not apply to it.
@@ -242,7 +262,7 @@ int fidelity_levels(int argc, char** argv) {
     const std::string csv_body = csv_text(results);
     files.file(csv).stream() << csv_body << std::flush;
     if (const std::optional<std::string> error =
-            run_gnuplot(plot_script(files.file(csv).temp_path(), files.file(png).temp_path()))) {
+            run_gnuplot(plot_script(results, files.file(png).temp_path()))) {
         std::cerr << "cdvp fidelity: gnuplot failed to draw " << out_dir << "/fidelity.png: " << printable(*error) << '\n';
         return kExitInternal;
     }

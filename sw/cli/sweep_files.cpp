@@ -19,20 +19,20 @@ int write_figures(const std::string& dir, const Grid& grid, const SweepTable& ta
     // The data files (crossover.csv, fit.csv) are written without the pictures too.
     if (!draw) {
         plan.figures.erase(std::remove_if(plan.figures.begin(), plan.figures.end(),
-                                          [](const Figure& figure) { return !figure.script.empty(); }),
+                                          [](const Figure& figure) { return !figure.template_name.empty(); }),
                            plan.figures.end());
     }
     if (plan.figures.empty()) return 0;
     OutputSet files;
     std::vector<std::size_t> slots;
     for (const Figure& figure : plan.figures) {
-        slots.push_back(files.add_output("--out", dir + "/" + figure.file, "", figure.script.empty()));
+        slots.push_back(files.add_output("--out", dir + "/" + figure.file, "", figure.template_name.empty()));
     }
     files.open();
     std::string script;
     for (std::size_t k = 0; k < plan.figures.size(); ++k) {
         const Figure& figure = plan.figures[k];
-        if (figure.script.empty()) {
+        if (figure.template_name.empty()) {
             files.file(slots[k]).stream() << figure.data;
         } else {
             script += figure_script(figure, files.file(slots[k]).temp_path());

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
-#include <sstream>
 
 namespace cdvp {
 
@@ -19,18 +18,32 @@ std::string Line::title() const {
     return variant.empty() ? m_part : m_part + " " + variant;
 }
 
-Series series(const std::vector<Sample>& samples, const std::string& board, const std::string& column, double scale) {
+Series series(const Samples& samples, const std::string& board, const std::string& column, double scale) {
     Series lines;
-    for (const Sample& s : samples) {
+    for (const Sample& s : samples.all) {
         const double y = number(s.row, column);
         if (s.board != board || std::isnan(y)) continue;
         Line& line = lines[{s.variant_order, s.m}];
         line.m = s.m;
         line.variant = s.variant;
+        line.m_place = s.m_place;
+        line.variant_place = s.variant_place;
         line.points.push_back({s.n, y * scale});
     }
     for (auto& [key, line] : lines) std::sort(line.points.begin(), line.points.end());
     return lines;
+}
+
+std::vector<PlotSeries> board_series(const Series& lines, const Samples& samples) {
+    std::vector<PlotSeries> all;
+    for (const auto& [key, line] : lines) {
+        PlotSeries s;
+        s.title = line.title();
+        s.style = series_style(line.m_place, samples.ms, line.variant_place, samples.variants);
+        for (const auto& [x, y] : line.points) s.points.push_back({x, y});
+        all.push_back(s);
+    }
+    return all;
 }
 
 double number(const RowView& row, const std::string& column) {
@@ -40,12 +53,6 @@ double number(const RowView& row, const std::string& column) {
 
 std::string text(const RowView& row, const std::string& column) { return row.get(column); }
 
-std::string quoted(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
-    return q + "'";
-}
-
 std::string file_part(std::string s) {
     for (char& c : s) {
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '+') c = '-';
@@ -53,17 +60,7 @@ std::string file_part(std::string s) {
     return s;
 }
 
-std::string num(double v) {
-    char t[40];
-    std::snprintf(t, sizeof t, "%.10g", v);
-    return t;
-}
-
-std::string datablock(const std::string& name, const std::vector<std::pair<double, double>>& points) {
-    std::string block = "$" + name + " << EOD\n";
-    for (const auto& [x, y] : points) block += num(x) + " " + num(y) + "\n";
-    return block + "EOD\n";
-}
+std::string num(double v) { return number_text(v); }
 
 }  // namespace sweep_figures
 
@@ -71,125 +68,132 @@ namespace {
 
 using namespace sweep_figures;
 
-std::string line_plot(const std::string& title, const std::string& ylabel, const Series& lines,
-                      const std::string& extra_blocks, const std::string& extra_plots) {
-    std::ostringstream gp;
-    std::vector<std::string> plots;
-    // A colour per m and a dash and point type per variant, so that lines stay
-    // apart when there are more of them than colours.
+// The extremes of every y over the series.
+std::pair<double, double> y_extent(const std::vector<PlotSeries>& all) {
+    double low = INFINITY, high = -INFINITY;
+    for (const PlotSeries& s : all) {
+        for (const SeriesPoint& p : s.points) {
+            low = std::min(low, p.y);
+            high = std::max(high, p.y);
+        }
+    }
+    return {low, high};
+}
+
+// N on a log axis that just holds the board's points, ticked at the swept values.
+PlotAxis n_axis(const std::vector<const Sample*>& points) {
+    PlotAxis axis;
+    axis.label = "N (objects)";
+    axis.log = true;
+    std::vector<double> ns;
+    for (const Sample* s : points) ns.push_back(s->n);
+    const auto [low, high] = std::minmax_element(ns.begin(), ns.end());
+    std::tie(axis.min, axis.max) = padded_log_range(*low, *high, 1.15);
+    axis.ticks = value_ticks(ns);
+    if (axis.ticks.size() > 12) axis.ticks = log_ticks(axis.min, axis.max);
+    return axis;
+}
+
+// A log y axis over the series, padded, with ticks a reader can read off.
+PlotAxis log_y_axis(const std::string& label, const std::vector<PlotSeries>& all, double include = NAN) {
+    PlotAxis axis;
+    axis.label = label;
+    axis.log = true;
+    auto [low, high] = y_extent(all);
+    if (!std::isnan(include)) low = std::min(low, include), high = std::max(high, include);
+    std::tie(axis.min, axis.max) = padded_log_range(low, high, 1.3);
+    axis.ticks = log_ticks(axis.min, axis.max);
+    return axis;
+}
+
+// Each baseline's time at each N: the median over the board's points there
+// (every point times the same software on the same frames; a median keeps
+// one disturbed point from bending the line).
+std::vector<PlotSeries> baseline_series(const Samples& samples, const std::string& board,
+                                        const std::vector<std::string>& baselines, double scale) {
+    std::vector<PlotSeries> all;
+    for (std::size_t b = 0; b < baselines.size(); ++b) {
+        std::map<double, std::vector<double>> by_n;
+        for (const Sample* s : on_board(samples, board)) {
+            const double t = number(s->row, baselines[b] + "_mean_host_ns");
+            if (!std::isnan(t)) by_n[s->n].push_back(t * scale);
+        }
+        if (by_n.empty()) continue;
+        PlotSeries line;
+        line.title = "software " + baseline_words(baselines[b]);
+        line.style = baseline_style(b);
+        for (auto& [n, times] : by_n) {
+            std::sort(times.begin(), times.end());
+            const std::size_t mid = times.size() / 2;
+            line.points.push_back({n, times.size() % 2 ? times[mid] : (times[mid - 1] + times[mid]) / 2});
+        }
+        all.push_back(line);
+    }
+    return all;
+}
+
+Figure time_figure(const Samples& samples, const std::string& board, const std::vector<std::string>& baselines) {
+    const std::vector<const Sample*> points = on_board(samples, board);
+    Figure figure;
+    figure.file = "time-" + file_part(board) + ".png";
+    figure.template_name = "time";
+    // Microseconds, or milliseconds once a frame takes 10 ms or more.
+    const Series us = series(samples, board, "mean_total_ns", 1e-3);
+    std::vector<PlotSeries> all = board_series(us, samples);
+    const std::vector<PlotSeries> software = baseline_series(samples, board, baselines, 1e-3);
+    all.insert(all.end(), software.begin(), software.end());
+    const bool in_ms = y_extent(all).second >= 1e4;
+    if (in_ms) {
+        for (PlotSeries& s : all) {
+            for (SeriesPoint& p : s.points) p.y /= 1e3;
+        }
+    }
+    figure.series = all;
+    figure.x = n_axis(points);
+    figure.y = log_y_axis(in_ms ? "mean time per frame (ms)" : "mean time per frame (us)", figure.series);
+    figure.title = "mean frame time against N on " + board_words(points) + "\n" + run_words(points);
+    if (!software.empty()) figure.title += "\n" + software_words(points, baselines);
+    return figure;
+}
+
+Figure speedup_figure(const Samples& samples, const std::string& board, const std::string& baseline) {
+    const std::vector<const Sample*> points = on_board(samples, board);
+    Figure figure;
+    figure.file = "speedup-" + file_part(board) + "-" + file_part(baseline) + ".png";
+    figure.template_name = "speedup";
+    figure.series = board_series(series(samples, board, baseline + "_speedup", 1), samples);
+    figure.x = n_axis(points);
+    figure.y = log_y_axis("speedup (x): software's mean frame time / board's", figure.series, 1.0);
+    figure.numbers["reference_y"] = 1;
+    figure.title = "speedup of " + board_words(points) + " over " + baseline_words(baseline) + "\n" +
+                   run_words(points) + "\n" + software_words(points, {baseline});
+    return figure;
+}
+
+template <class T>
+std::vector<T> sorted_unique(std::vector<T> values) {
+    std::sort(values.begin(), values.end());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+    return values;
+}
+
+// Each sample's place among the sweep's values of m and its variants, so a
+// series keeps its style from one figure to the next.
+void place_samples(Samples& samples) {
     std::vector<double> ms;
     std::vector<std::string> variants;
-    for (const auto& [key, line] : lines) {
-        if (std::find(ms.begin(), ms.end(), line.m) == ms.end()) ms.push_back(line.m);
-        if (std::find(variants.begin(), variants.end(), line.variant) == variants.end()) variants.push_back(line.variant);
+    for (const Sample& s : samples.all) {
+        ms.push_back(s.m);
+        variants.push_back(s.variant_order);
     }
-    std::sort(ms.begin(), ms.end());
-    static const int kPointTypes[] = {7, 5, 9, 11, 13, 15};
-    std::size_t k = 0;
-    for (const auto& [key, line] : lines) {
-        const auto colour = std::find(ms.begin(), ms.end(), line.m) - ms.begin();
-        const auto variant = std::find(variants.begin(), variants.end(), line.variant) - variants.begin();
-        gp << datablock("m" + std::to_string(k), line.points);
-        plots.push_back("$m" + std::to_string(k++) + " using 1:2 with linespoints lc " + std::to_string(colour + 1) +
-                        " dt " + std::to_string(variant % 5 + 1) + " pt " + std::to_string(kPointTypes[variant % 6]) +
-                        " title " + quoted(line.title()));
+    ms = sorted_unique(ms);
+    variants = sorted_unique(variants);
+    for (Sample& s : samples.all) {
+        s.m_place = std::lower_bound(ms.begin(), ms.end(), s.m) - ms.begin();
+        s.variant_place = std::lower_bound(variants.begin(), variants.end(), s.variant_order) - variants.begin();
     }
-    gp << extra_blocks << "set title " << quoted(title) << "\nset xlabel 'N (objects)'\nset ylabel " << quoted(ylabel)
-       << "\nset logscale x\nset logscale y\nset grid\nset key outside right\nplot ";
-    for (std::size_t p = 0; p < plots.size(); ++p) gp << (p == 0 ? "" : ", ") << plots[p];
-    gp << extra_plots << "\n";
-    return gp.str();
-}
-
-// The smallest N at which the board wins, and how it was found.
-struct Crossover {
-    double n = 0;
-    const char* how = "none";  // interpolated, measured (the smallest N already wins), none
-};
-Crossover crossover(const std::vector<std::pair<double, double>>& speedups) {
-    for (std::size_t k = 0; k < speedups.size(); ++k) {
-        const auto [n1, s1] = speedups[k];
-        if (s1 < 1) continue;
-        if (k == 0) return {n1, "measured"};
-        const auto [n0, s0] = speedups[k - 1];
-        const double t = (1 - s0) / (s1 - s0);
-        return {std::exp(std::log(n0) + t * (std::log(n1) - std::log(n0))), "interpolated"};
-    }
-    return {};
-}
-
-void add_crossovers(const std::vector<Sample>& samples, const std::vector<std::string>& boards,
-                    const std::vector<std::string>& variant_axes, const std::vector<std::string>& baselines,
-                    FigurePlan& plan) {
-    std::string csv = "board,m,";
-    for (const std::string& axis : variant_axes) csv += axis + ",";
-    csv += "baseline,crossover_n,how\n";
-    for (const std::string& baseline : baselines) {
-        std::ostringstream blocks, plots;
-        std::size_t drawn = 0;
-        for (const std::string& board : boards) {
-            // One line per variant: crossover N against m.
-            std::map<std::string, Line> by_variant;
-            for (const auto& [key, line] : series(samples, board, baseline + "_speedup", 1)) {
-                const Crossover c = crossover(line.points);
-                std::string values;
-                for (const Sample& s : samples) {
-                    if (s.board == board && s.variant == line.variant) {
-                        for (const std::string& v : s.variant_values) values += v + ",";
-                        break;
-                    }
-                }
-                csv += board + "," + num(line.m) + "," + values + baseline + "," + (c.n > 0 ? num(c.n) : "") + "," +
-                       c.how + "\n";
-                Line& variant_line = by_variant[key.first];
-                variant_line.variant = line.variant;
-                if (c.n > 0) variant_line.points.push_back({line.m, c.n});
-            }
-            for (const auto& [order, line] : by_variant) {
-                if (line.points.empty()) continue;
-                blocks << datablock("c" + std::to_string(drawn), line.points);
-                plots << (drawn == 0 ? "" : ", ") << "$c" << drawn << " using 1:2 with linespoints pt 7 title "
-                      << quoted(line.variant.empty() ? board : board + " " + line.variant);
-                ++drawn;
-            }
-        }
-        if (drawn == 0) {
-            plan.notes.push_back("no crossover plot against " + baseline + ": the board beats it at no N of the sweep");
-            continue;
-        }
-        plan.figures.push_back({"crossover-" + file_part(baseline) + ".png",
-                                blocks.str() + "set title " + quoted("crossover N against " + baseline +
-                                                                     " (interpolated in log N; crossover.csv)") +
-                                    "\nset xlabel 'm'\nset ylabel 'N where the board starts to win'\nset logscale y\n"
-                                    "set grid\nset key outside right\nset offsets 0.5, 0.5, 0, 0\nplot " + plots.str() + "\n",
-                                ""});
-    }
-    plan.figures.push_back({"crossover.csv", "", csv});
-}
-
-Figure phase_bars(const std::vector<Sample>& samples, const std::string& board, const std::vector<std::string>& phases) {
-    std::vector<const Sample*> bars;
-    for (const Sample& s : samples) {
-        if (s.board == board) bars.push_back(&s);
-    }
-    std::stable_sort(bars.begin(), bars.end(), [](const Sample* a, const Sample* b) {
-        return a->m != b->m ? a->m < b->m : a->n < b->n;
-    });
-    std::ostringstream gp;
-    gp << "$p << EOD\npoint";
-    for (const std::string& phase : phases) gp << ' ' << phase.substr(7, phase.size() - 10);  // median_X_ns -> X
-    gp << '\n';
-    for (const Sample* s : bars) {
-        gp << "N=" << num(s->n) << ",m=" << num(s->m);
-        for (const std::string& phase : phases) gp << ' ' << num(number(s->row, phase) / 1e3);
-        gp << '\n';
-    }
-    gp << "EOD\nset title " << quoted("median frame time by phase on " + board)
-       << "\nset ylabel 'us per frame'\nset style data histograms\nset style histogram rowstacked\n"
-          "set style fill solid 0.8 border -1\nset boxwidth 0.8\nset xtics rotate by -60 font ',8'\nset grid y\n"
-          "set key outside right\nplot for [i=2:"
-       << phases.size() + 1 << "] $p using i:xtic(1) title columnheader(i)\n";
-    return {"phases-" + file_part(board) + ".png", gp.str(), ""};
+    samples.ms = std::max<std::size_t>(1, ms.size());
+    samples.variants = std::max<std::size_t>(1, variants.size());
 }
 
 }  // namespace
@@ -215,8 +219,7 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
         variant_places.emplace_back();
         for (std::size_t k = 0; k < axis->values.size(); ++k) variant_places.back().emplace(axis->values[k], k);
     }
-    std::vector<Sample> samples;
-    std::vector<std::string> boards;
+    Samples samples;
     table.for_each([&](std::size_t, const RowView& row) {
         if (text(row, "status") != "ok") return;
         Sample s;
@@ -235,81 +238,47 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
             s.variant_order += order;
             s.variant_values.push_back(value);
         }
-        if (std::find(boards.begin(), boards.end(), s.board) == boards.end()) boards.push_back(s.board);
-        samples.push_back(s);
+        if (std::find(samples.boards.begin(), samples.boards.end(), s.board) == samples.boards.end()) {
+            samples.boards.push_back(s.board);
+        }
+        samples.all.push_back(s);
     });
-    if (samples.empty()) {
+    if (samples.all.empty()) {
         plan.notes.push_back("no plots: no point of the sweep ran");
         return plan;
     }
-    std::vector<std::string> phases, baselines;
+    place_samples(samples);
+    std::vector<std::string> baselines;
     for (const std::string& column : table.columns()) {
-        const bool phase = column.rfind("median_", 0) == 0 && column.size() > 10 &&
-                           column.compare(column.size() - 3, 3, "_ns") == 0 && column != "median_total_ns" &&
-                           !is_measured_column(column);
-        if (phase) phases.push_back(column);
         if (column.size() > 8 && column.compare(column.size() - 8, 8, "_speedup") == 0) {
             baselines.push_back(column.substr(0, column.size() - 8));
         }
     }
-    // The phases stacked in the order a frame goes through them.
-    const std::vector<std::string> kFrameOrder{"upload", "start", "compute", "irq", "readback", "driver"};
-    auto place = [&](const std::string& phase) {
-        return std::find(kFrameOrder.begin(), kFrameOrder.end(), phase.substr(7, phase.size() - 10)) - kFrameOrder.begin();
-    };
-    std::stable_sort(phases.begin(), phases.end(), [&](const auto& a, const auto& b) { return place(a) < place(b); });
-    for (const std::string& board : boards) {
-        if (!phases.empty()) plan.figures.push_back(phase_bars(samples, board, phases));
-    }
-    add_fit_figures(samples, boards, variant_names, plan);
+    add_phase_figures(samples, plan);
+    add_fit_figures(samples, variant_names, plan);
     if (n_axis == nullptr) {
         plan.notes.push_back("no plots against N (time, speedup, crossover): objects (or scene.objects) is not an axis of this sweep");
         return plan;
     }
-    if (baselines.empty()) plan.notes.push_back("no speedup or crossover plots: the sweep has no --baseline");
-    for (const std::string& board : boards) {
-        // Software lines are native time x the host factor: the labels say by how much.
-        const auto on_board = std::find_if(samples.begin(), samples.end(), [&](const Sample& s) { return s.board == board; });
-        auto on_host = [&](const std::string& baseline) {
-            const double factor = number(on_board->row, baseline + "_host_factor");
-            char label[128];
-            std::snprintf(label, sizeof label, std::isnan(factor) ? "%s on the modelled host" : "%s on the modelled host (native x %.3g)",
-                          baseline.c_str(), factor);
-            return std::string(label);
-        };
-        std::ostringstream blocks, plots;
-        for (std::size_t b = 0; b < baselines.size(); ++b) {
-            Series software = series(samples, board, baselines[b] + "_mean_host_ns", 1e-3);
-            if (software.empty()) continue;
-            blocks << datablock("b" + std::to_string(b), software.begin()->second.points);
-            plots << ", $b" << b << " using 1:2 with lines lc rgb 'gray30' dt 2 lw 3 title " << quoted(on_host(baselines[b]));
-        }
-        const Series times = series(samples, board, "mean_total_ns", 1e-3);
-        if (times.empty()) {
+    if (baselines.empty()) {
+        const bool asked = std::any_of(samples.all.begin(), samples.all.end(),
+                                       [](const Sample& s) { return !text(s.row, "config.baselines").empty(); });
+        plan.notes.push_back(asked ? "no speedup or crossover plots: no point timed a frame (--frames 0)"
+                                   : "no speedup or crossover plots: the sweep has no --baseline");
+    }
+    for (const std::string& board : samples.boards) {
+        if (series(samples, board, "mean_total_ns", 1).empty()) {
             plan.notes.push_back("no plots of time or speedup on " + board + ": no point timed a frame (--frames 0)");
             continue;
         }
-        plan.figures.push_back({"time-" + file_part(board) + ".png",
-                                line_plot("mean frame time on " + board + " (board: simulated)", "us per frame",
-                                          times, blocks.str(),
-                                          plots.str()),
-                                ""});
+        plan.figures.push_back(time_figure(samples, board, baselines));
         for (const std::string& baseline : baselines) {
-            plan.figures.push_back({"speedup-" + file_part(board) + "-" + file_part(baseline) + ".png",
-                                    line_plot("speedup over " + on_host(baseline) + " on " + board + ": ratio of mean frame times",
-                                              "speedup (x)",
-                                              series(samples, board, baseline + "_speedup", 1), "",
-                                              ", 1 with lines lc 'black' dt 3 title 'break-even'"),
-                                    ""});
+            if (series(samples, board, baseline + "_speedup", 1).empty()) continue;
+            plan.figures.push_back(speedup_figure(samples, board, baseline));
         }
     }
-    if (!baselines.empty()) add_crossovers(samples, boards, variant_names, baselines, plan);
+    if (!baselines.empty()) add_crossovers(samples, variant_names, baselines, plan);
     return plan;
-}
-
-std::string figure_script(const Figure& figure, const std::string& png_path) {
-    return "set terminal pngcairo noenhanced size 900,560 font 'sans,10'\nset output " + quoted(png_path) + "\n" +
-           figure.script + "unset output\nreset\n";
 }
 
 }  // namespace cdvp

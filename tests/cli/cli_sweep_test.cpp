@@ -80,6 +80,20 @@ TEST_F(Cli, SweepWritesARowPerPointAndARowWithItsReasonForAPointThatDoesNotFit) 
     EXPECT_EQ(leftovers(dir_), std::vector<std::string>{});
 }
 
+TEST_F(Cli, SweepDrawsEveryKindOfFigureFromItsTemplate) {
+    // Two formats (a variant), two m and two N, where the board loses to
+    // brute force at 50 boxes and wins at 400: every template is drawn.
+    const Result r = run("sweep --board adm-xrc-ii --set format=float32,fixed16 --set m=8,24 --set objects=50,400 "
+                         "--frames 3 --baseline brute --out res -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* png : {"time-adm-xrc-ii.png", "speedup-adm-xrc-ii-brute.png", "crossover-brute.png",
+                            "phases-adm-xrc-ii.png", "largest-m-adm-xrc-ii.png", "lanes-extra-adm-xrc-ii.png"}) {
+        const std::string picture = slurp(dir_ / "res" / png);
+        EXPECT_EQ(picture.substr(1, 3), "PNG") << png;
+        EXPECT_GT(picture.size(), 10000u) << png << " is too small to hold a plot";
+    }
+}
+
 TEST_F(Cli, SweepRecordsAPointWhoseSystemFaultsAsARowAndGoesOn) {
     const Result r = run("sweep --board adm-xrc-ii --set m=1,2 --set objects=20 --frames 2 "
                          "--inject board-error@frame=1 --out res");
