@@ -13,8 +13,8 @@
 #include <tlm_utils/tlm_quantumkeeper.h>
 
 #include "platform/host_memory.h"
-#include "sw/driver/board_driver.h"
-#include "sw/driver/host_port.h"
+#include "platform/driver/board_driver.h"
+#include "platform/driver/host_port.h"
 
 namespace cdvp {
 

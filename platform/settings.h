@@ -15,7 +15,7 @@
 
 #include "models/board/board_config.h"
 #include "models/pci/bus_timing.h"
-#include "sw/driver/board_driver.h"
+#include "platform/driver/board_driver.h"
 
 namespace cdvp {
 

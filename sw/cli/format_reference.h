@@ -11,7 +11,7 @@
 #include "models/common/aabb.h"
 #include "models/fast_engine/pair_finder.h"
 #include "models/number_format/number_format.h"
-#include "sw/driver/board_driver.h"
+#include "platform/driver/board_driver.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {

@@ -6,7 +6,7 @@
 #include "models/control_registers/control_registers.h"
 #include "platform/memory_plan.h"
 #include "sw/cli/run_checks.h"
-#include "sw/driver/frame_time.h"
+#include "platform/driver/frame_time.h"
 
 namespace cdvp {
 

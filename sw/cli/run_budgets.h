@@ -54,7 +54,7 @@ public:
     // A scene of frames of up to max_objects boxes against the memory budget
     // (everything but the pairs, then the pair budget's pairs), and against
     // the simulated-time limit with the driver's own bounds on each frame and
-    // wait (sw/driver/frame_time.h). Throws InputError. Sets pair_budget():
+    // wait (platform/driver/frame_time.h). Throws InputError. Sets pair_budget():
     // run.max_pairs, or what the memory budget leaves for pairs.
     void check_scene(uint64_t max_objects, uint64_t frames);
 

@@ -18,7 +18,7 @@
 #include "platform/setting_values.h"
 #include "sw/cli/run_budgets.h"
 #include "sw/cli/run_options.h"
-#include "sw/driver/board_driver.h"
+#include "platform/driver/board_driver.h"
 
 namespace cdvp {
 

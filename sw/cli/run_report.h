@@ -19,7 +19,7 @@
 #include "platform/setting_values.h"
 #include "sw/cli/format_reference.h"
 #include "sw/cli/host_factor.h"
-#include "sw/driver/board_driver.h"
+#include "platform/driver/board_driver.h"
 #include "sw/timing/frame_samples.h"
 
 namespace cdvp {

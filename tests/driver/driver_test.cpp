@@ -1,6 +1,6 @@
 // The driver is host software on its own: here it runs against a port that
 // reaches a plain C++ board directly, with no SystemC kernel at all.
-#include "sw/driver/board_driver.h"
+#include "platform/driver/board_driver.h"
 
 #include <gtest/gtest.h>
 

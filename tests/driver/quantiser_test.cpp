@@ -1,6 +1,6 @@
 // The host's quantiser: outward rounding, and the property that matters, no
 // pair of the float32 comparison is ever lost in any fixed format.
-#include "sw/driver/quantiser.h"
+#include "platform/driver/quantiser.h"
 
 #include <gtest/gtest.h>
 

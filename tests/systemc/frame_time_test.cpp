@@ -2,7 +2,7 @@
 // work, against what frames take through the whole platform: the bound must
 // hold for every way of moving data and waiting, with overflow pauses, on the
 // clocked and the fast engine, and under a loose host quantum.
-#include "sw/driver/frame_time.h"
+#include "platform/driver/frame_time.h"
 
 #include <gtest/gtest.h>
 

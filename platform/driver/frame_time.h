@@ -9,8 +9,8 @@
 
 #include "models/board/tile_config.h"
 #include "models/pci/bus_timing.h"
-#include "sw/driver/driver_config.h"
-#include "sw/driver/host_port.h"
+#include "platform/driver/driver_config.h"
+#include "platform/driver/host_port.h"
 
 namespace cdvp {
 

@@ -1,4 +1,4 @@
-#include "sw/driver/quantiser.h"
+#include "platform/driver/quantiser.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // How the driver works a board (transfer, waiting, timeouts) and what its
 // host's CPU costs: the settings of the driver, apart from the driver itself
-// so that the estimate before a run (sw/driver/frame_time.h) reads the same.
+// so that the estimate before a run (platform/driver/frame_time.h) reads the same.
 #pragma once
 
 #include "models/board/tile_config.h"

@@ -13,9 +13,9 @@
 #include "models/common/aabb.h"
 #include "models/number_format/number_format.h"
 #include "models/pci/bus_timing.h"
-#include "sw/driver/driver_config.h"
-#include "sw/driver/frame_time.h"
-#include "sw/driver/host_port.h"
+#include "platform/driver/driver_config.h"
+#include "platform/driver/frame_time.h"
+#include "platform/driver/host_port.h"
 
 namespace cdvp {
 
@@ -26,7 +26,7 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// A wait's deadline would pass kSimulatedTimeLimit (sw/driver/frame_time.h):
+// A wait's deadline would pass kSimulatedTimeLimit (platform/driver/frame_time.h):
 // refused before the wait starts. cdvp run's estimate before any work holds
 // a whole run to the same limit, so a run it lets through never meets this.
 class SimulatedTimeLimit : public std::runtime_error {
@@ -62,7 +62,7 @@ public:
     void open();
     uint32_t capacity() const { return capacity_; }
     // The board's comparators' format (its FORMAT register): the driver
-    // writes boxes in it (sw/driver/quantiser.h).
+    // writes boxes in it (platform/driver/quantiser.h).
     NumberFormat format() const { return format_; }
 
     // One frame: every overlapping pair into pairs (board order), or an

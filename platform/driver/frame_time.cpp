@@ -1,4 +1,4 @@
-#include "sw/driver/frame_time.h"
+#include "platform/driver/frame_time.h"
 
 #include <algorithm>
 #include <cstdio>

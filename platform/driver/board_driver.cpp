@@ -1,4 +1,4 @@
-#include "sw/driver/board_driver.h"
+#include "platform/driver/board_driver.h"
 
 #include <cinttypes>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/control_registers/control_registers.h"
 #include "models/pci/dma_registers.h"
-#include "sw/driver/quantiser.h"
+#include "platform/driver/quantiser.h"
 
 namespace cdvp {
 
