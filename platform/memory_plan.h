@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "models/board/board_config.h"
+#include "models/board_spec/board_config.h"
 #include "platform/settings.h"
 
 namespace cdvp {

@@ -13,7 +13,7 @@
 #include <variant>
 #include <vector>
 
-#include "models/board/board_config.h"
+#include "models/board_spec/board_config.h"
 #include "models/pci/bus_timing.h"
 #include "platform/driver/board_driver.h"
 

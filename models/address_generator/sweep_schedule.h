@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "models/board/tile_config.h"
+#include "models/address_generator/tile_config.h"
 
 namespace cdvp {
 

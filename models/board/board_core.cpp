@@ -5,6 +5,7 @@
 #include <string>
 
 #include "models/block_ram/block_ram.h"
+#include "models/board/engine_factory.h"
 
 namespace cdvp {
 

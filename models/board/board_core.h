@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "models/board/board_config.h"
-#include "models/board/board_engine.h"
+#include "models/board_spec/board_config.h"
+#include "models/board_spec/board_engine.h"
 #include "models/common/register_bank.h"
 #include "models/control_registers/control_registers.h"
 
@@ -18,7 +18,7 @@ namespace cdvp {
 // segment_edges() gives. Status bits derive from one phase variable.
 class BoardCore {
 public:
-    enum class Phase : uint8_t { Idle, Running, Paused, Done };
+    using Phase = BoardPhase;
 
     // capacity: boxes the coordinate memories hold (their depth); budget: the
     // most pairs the engine may find in a sweep (see make_engine).

@@ -16,7 +16,7 @@
 #include <tlm_utils/simple_target_socket.h>
 
 #include "models/board/board_core.h"
-#include "models/board/clocked_engine.h"
+#include "models/clocked_engine/clocked_engine.h"
 #include "models/common/fault_plan.h"
 #include "models/common/wave_list.h"
 

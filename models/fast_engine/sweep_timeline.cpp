@@ -41,17 +41,17 @@ void SweepTimeline::start(uint32_t objects, const std::vector<IndexPair>& pairs)
     pairs_ = &pairs;
     buffer_begin_ = 0;
     Cursor cursor;
-    cursor.phase = BoardCore::Phase::Running;
+    cursor.phase = BoardPhase::Running;
     run_segment(cursor);
 }
 
 void SweepTimeline::resume() {
-    if (end_.phase != BoardCore::Phase::Paused) throw std::logic_error("resume: the sweep is not paused");
+    if (end_.phase != BoardPhase::Paused) throw std::logic_error("resume: the sweep is not paused");
     buffer_begin_ += end_.buffer;
     Cursor cursor = end_;
     cursor.buffer = 0;  // the host has read the buffer
     cursor.segment_edges = 0;
-    cursor.phase = BoardCore::Phase::Running;
+    cursor.phase = BoardPhase::Running;
     run_segment(cursor);
 }
 
@@ -135,7 +135,7 @@ void SweepTimeline::drain_edges(Cursor& cursor, uint64_t k, uint32_t stall_per_e
 }
 
 void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoints) const {
-    using Phase = BoardCore::Phase;
+    using Phase = BoardPhase;
     const uint32_t drain = drain_per_cycle_;
     uint32_t events = 0;
     // Every pass runs at least one edge.

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "models/address_generator/sweep_schedule.h"
-#include "models/board/board_config.h"
-#include "models/board/board_engine.h"
+#include "models/board_spec/board_config.h"
+#include "models/board_spec/board_engine.h"
 
 namespace cdvp {
 

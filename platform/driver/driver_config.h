@@ -3,7 +3,7 @@
 // so that the estimate before a run (platform/driver/frame_time.h) reads the same.
 #pragma once
 
-#include "models/board/tile_config.h"
+#include "models/address_generator/tile_config.h"
 #include "models/common/pair_budget.h"
 
 namespace cdvp {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "models/board/tile_config.h"
+#include "models/address_generator/tile_config.h"
 #include "models/pci/bus_timing.h"
 #include "platform/driver/driver_config.h"
 #include "platform/driver/host_port.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "models/board/board_config.h"
+#include "models/board_spec/board_config.h"
 
 namespace cdvp {
 

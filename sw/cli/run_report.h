@@ -14,7 +14,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "models/board/board_config.h"
+#include "models/board_spec/board_config.h"
 #include "platform/device_fit.h"
 #include "platform/setting_values.h"
 #include "sw/cli/format_reference.h"

@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "models/board/clocked_engine.h"
+#include "models/clocked_engine/clocked_engine.h"
 #include "tests/fast_engine/word_scenes.h"
 
 namespace cdvp {

@@ -12,7 +12,8 @@
 #include <tuple>
 
 #include "models/address_generator/address_generator.h"
-#include "models/board/clocked_engine.h"
+#include "models/board/engine_factory.h"
+#include "models/clocked_engine/clocked_engine.h"
 #include "models/fast_engine/fast_engine.h"
 #include "tests/fast_engine/word_scenes.h"
 
@@ -269,7 +270,7 @@ TEST(TiledFastEngine, ReusedOverFramesOfDifferentSizes) {
         uint64_t pairs = 0;
         for (;;) {
             pairs += engine.observe(engine.segment_cycles()).buffer_count;
-            if (engine.phase() == BoardCore::Phase::Done) break;
+            if (engine.phase() == BoardPhase::Done) break;
             engine.resume();
         }
         EXPECT_EQ(pairs, testing::lane_hit_pairs(scene).size()) << "n=" << n;

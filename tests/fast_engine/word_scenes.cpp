@@ -9,7 +9,7 @@
 
 #include "models/address_generator/address_generator.h"
 #include "models/board/board_core.h"
-#include "models/board/clocked_engine.h"
+#include "models/clocked_engine/clocked_engine.h"
 #include "models/fast_engine/fast_engine.h"
 #include "tests/support/core_driver.h"
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "models/board/board_config.h"
+#include "models/board_spec/board_config.h"
 #include "models/fast_engine/pair_finder.h"
 
 namespace cdvp::testing {

@@ -7,7 +7,7 @@
 #include <limits>
 #include <random>
 
-#include "models/board/board_config.h"
+#include "models/board_spec/board_config.h"
 #include "models/comparison_unit/comparison_unit.h"
 
 namespace cdvp {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "models/board/board_config.h"
+#include "models/board_spec/board_config.h"
 
 namespace cdvp {
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "models/board/board_config.h"
+#include "models/board_spec/board_config.h"
 #include "models/common/aabb.h"
 #include "models/common/pair_budget.h"
 #include "models/comparison_unit/comparison_unit.h"
@@ -69,14 +69,12 @@ public:
     virtual const IndexPair& buffer_entry(uint32_t k) = 0;
 };
 
+// Where a sweep stands, as STATUS shows it: before START, sweeping, paused on
+// an overflow until RESUME, done. BoardCore keeps it; an engine reports it.
+enum class BoardPhase : uint8_t { Idle, Running, Paused, Done };
+
+// Which engine computes a board's sweeps (models/board/engine_factory.h makes it).
 enum class Fidelity : uint8_t { kCycle, kFast };
 const char* to_string(Fidelity fidelity);
-
-// The engine of a board with this configuration and coordinate-memory depth.
-// A fast engine finds a sweep's pairs at START and throws PairBudgetExceeded
-// there when they outgrow `budget`; the clocked one holds no more pairs than
-// its pair buffer (the driver's read-back holds the budget for it).
-std::unique_ptr<BoardEngine> make_engine(Fidelity fidelity, const BoardConfig& config, uint32_t capacity,
-                                         PairBudget budget = {});
 
 }  // namespace cdvp

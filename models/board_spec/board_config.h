@@ -7,7 +7,7 @@
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/number_format/number_format.h"
 #include "models/pair_collector/pair_collector.h"
-#include "models/board/tile_config.h"
+#include "models/address_generator/tile_config.h"
 
 namespace cdvp {
 

@@ -7,7 +7,7 @@
 
 #include "models/address_generator/address_generator.h"
 #include "models/address_generator/sweep_schedule.h"
-#include "models/board/board_engine.h"
+#include "models/board_spec/board_engine.h"
 #include "models/coordinate_memory/coordinate_memory.h"
 #include "models/pair_collector/pair_collector.h"
 #include "models/tile_loader/tile_loader.h"

@@ -1,4 +1,4 @@
-#include "models/board/clocked_engine.h"
+#include "models/clocked_engine/clocked_engine.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "models/board/board_config.h"
+#include "models/board_spec/board_config.h"
 
 #include <algorithm>
 #include <cmath>
