@@ -21,7 +21,7 @@
 #include "models/common/user_text.h"
 #include "sw/cli/digest.h"
 #include "sw/scene/input_spool.h"
-#include "sw/scene/output_cleanup.h"
+#include "sw/cli/output/output_cleanup.h"
 
 namespace cdvp {
 

@@ -22,7 +22,7 @@
 #include "sw/cli/forwarded_options.h"
 #include "sw/cli/run_budgets.h"
 #include "sw/cli/run_command.h"
-#include "sw/scene/output_set.h"
+#include "sw/cli/output/output_set.h"
 #include "models/common/user_text.h"
 #include "sw/scene/scene.h"
 

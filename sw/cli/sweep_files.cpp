@@ -6,7 +6,7 @@
 #include "models/common/user_text.h"
 #include "sw/cli/child_runs.h"
 #include "sw/cli/sweep_plots.h"
-#include "sw/scene/output_set.h"
+#include "sw/cli/output/output_set.h"
 
 namespace cdvp {
 

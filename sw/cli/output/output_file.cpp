@@ -1,4 +1,4 @@
-#include "sw/scene/output_file.h"
+#include "sw/cli/output/output_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "sw/scene/output_cleanup.h"
+#include "sw/cli/output/output_cleanup.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {

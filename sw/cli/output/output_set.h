@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
-#include "sw/scene/output_file.h"
+#include "sw/cli/output/output_file.h"
 
 namespace cdvp {
 

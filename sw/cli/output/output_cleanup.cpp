@@ -1,4 +1,4 @@
-#include "sw/scene/output_cleanup.h"
+#include "sw/cli/output/output_cleanup.h"
 
 #include <limits.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "sw/scene/output_set.h"
+#include "sw/cli/output/output_set.h"
 
 #include <unistd.h>
 
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "sw/scene/output_cleanup.h"
+#include "sw/cli/output/output_cleanup.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {

@@ -10,7 +10,7 @@
 #include <streambuf>
 #include <string>
 
-#include "sw/scene/output_target.h"
+#include "sw/cli/output/output_target.h"
 
 namespace cdvp {
 

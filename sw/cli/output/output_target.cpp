@@ -1,4 +1,4 @@
-#include "sw/scene/output_target.h"
+#include "sw/cli/output/output_target.h"
 
 #include <fcntl.h>
 #include <limits.h>
