@@ -8,6 +8,7 @@ project runs up (or sideways past the order) and is reported as FILE:LINE.
 
   scripts/check-layers.py [--root DIR] [--table FILE]   check (exit 1 on an up-arrow)
   scripts/check-layers.py --graph                        the include graph's arrows, counted
+  scripts/check-layers.py --dot | dot -Tpng -o FILE      the layers and the includes between them
   scripts/check-layers.py --self-test                    the check on made-up trees
 """
 import argparse
@@ -108,6 +109,40 @@ def graph(root, table=None):
     return lines
 
 
+def dot(root, table):
+    """Graphviz text: one box a layer (its folders inside), bottom to top, and an arrow from each
+    layer to each layer it includes, labelled with the count of includes: every arrow points down."""
+    layers, rank, _ = read_table(table)
+    layer_of = {f: name for name, folders in layers for f in folders}
+    arrows = collections.Counter()
+    for path in sources(root):
+        for _, target in includes(root, path):
+            a, b = layer_of.get(folder(path)), layer_of.get(folder(target))
+            if a and b and a != b:
+                arrows[(a, b)] += 1
+    lines = ["digraph layers {",
+             '  rankdir=BT; nodesep=0.25; ranksep=0.35;',
+             '  label="the layers, bottom to top; an arrow: the includes from one layer into one below it";',
+             '  labelloc=t; fontname="Helvetica"; fontsize=12;',
+             '  node [shape=box, style="rounded,filled", fillcolor="#eef3fb", fontname="Helvetica", fontsize=11];',
+             '  edge [color="#7f8c9d", arrowsize=0.6, fontname="Helvetica", fontsize=9, fontcolor="#56606b"];']
+    for name, folders in layers:
+        rows = []
+        for f in folders:  # three folders a line keeps the boxes narrow
+            if not rows or len(rows[-1]) == 3:
+                rows.append([])
+            rows[-1].append(f)
+        label = "\\n".join("  ".join(row) for row in rows)
+        lines.append(f'  "{name}" [label="{name}\\n{label}"];')
+    order = [name for name, _ in layers]
+    for below, above in zip(order, order[1:]):  # the stack itself, bottom to top
+        lines.append(f'  "{below}" -> "{above}" [style=invis, weight=10];')
+    for (a, b), n in sorted(arrows.items(), key=lambda x: (order.index(x[0][0]), order.index(x[0][1]))):
+        lines.append(f'  "{a}" -> "{b}" [label="{n}", constraint=false];')
+    lines.append("}")
+    return lines
+
+
 def self_test():
     """The check passes a tree that keeps the order and names each include that breaks it."""
     table_text = ("# a comment\nbase: models/common\nblocks: models/a\n        models/b  # goes on\n"
@@ -154,6 +189,7 @@ def main():
     parser.add_argument("--root", default=os.path.dirname(here))
     parser.add_argument("--table", help="the layer table (default ROOT/docs/layers.txt)")
     parser.add_argument("--graph", action="store_true", help="print the include graph's arrows")
+    parser.add_argument("--dot", action="store_true", help="print the layers as a Graphviz graph")
     parser.add_argument("--self-test", action="store_true", help="run the check on made-up trees")
     args = parser.parse_args()
     if args.self_test:
@@ -162,6 +198,9 @@ def main():
         print("\n".join(graph(args.root)))
         return 0
     table = args.table or os.path.join(args.root, "docs", "layers.txt")
+    if args.dot:
+        print("\n".join(dot(args.root, table)))
+        return 0
     problems = check(args.root, table)
     for problem in problems:
         print(problem)
