@@ -36,9 +36,10 @@ constexpr const char* kHelp =
     "\n"
     "Runs the scene at every modelling level: the clocked engine, and the fast engine with the host\n"
     "CPU's quantum at 0, 100 ns, 1 us, 10 us and 100 us. Writes DIR/fidelity.csv (per level: the\n"
-    "simulator's wall time per frame, the simulated time of each phase, its error against the clocked\n"
-    "engine at quantum 0 in percent of that level's frame time, and whether the pairs are identical)\n"
-    "and DIR/fidelity.png (wall time per frame against timing error, drawn by gnuplot).\n"
+    "simulator's wall time per frame, the median over the frames after --warmup; the mean simulated\n"
+    "time of each phase over those frames, its error against the clocked engine at quantum 0 in\n"
+    "percent of that engine's mean frame time; and whether the pairs are identical) and\n"
+    "DIR/fidelity.png (wall time per frame against timing error, drawn by gnuplot).\n"
     "\n"
     "Every option of 'cdvp run' that sets the scene, board, bus or host is accepted and passed on,\n"
     "--config FILE and -c NAME=VALUE included; --fidelity, --quantum-ns (and -c run.fidelity,\n"
@@ -56,34 +57,27 @@ constexpr std::array<Level, 6> kLevels{{{"cycle", 0}, {"fast", 0}, {"fast", 100}
 constexpr std::array<const char*, 7> kPhases{"upload_ns", "start_ns", "compute_ns", "irq_ns",
                                              "readback_ns", "driver_ns", "total_ns"};
 
+// One level's figures, as its run's report summarises them: the simulator's
+// wall time per frame is the median over the frames after warm-up (wall
+// clock is noisy; a median is what a repeat reproduces), the simulated
+// phases their means (what a user pays per frame), the same frames in both.
 struct LevelResult {
-    double wall_ns_per_frame = 0;  // median over frames
-    std::array<double, kPhases.size()> phase_ns{};  // means over frames
+    double p50_sim_wall_native_ns = 0;
+    std::array<double, kPhases.size()> mean_phase_ns{};
     std::string pairs;  // the pairs CSV, to compare with the reference's
-    uint64_t frames = 0;
+    uint64_t frames_in_means = 0;
     nlohmann::json config;  // the report's, for the figure's title
 };
 
-double median(std::vector<double> values) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t mid = values.size() / 2;
-    return values.size() % 2 == 1 ? values[mid] : (values[mid - 1] + values[mid]) / 2;
-}
-
 LevelResult read_level(const std::string& report_path, const std::string& pairs_path) {
     const nlohmann::json report = nlohmann::json::parse(slurp(report_path));
+    const nlohmann::json& summary = report.at("summary");
     LevelResult result;
-    std::vector<double> walls;
-    for (const auto& frame : report.at("frames")) {
-        walls.push_back(frame.at("sim_wall_native_ns").get<double>());
-        for (std::size_t k = 0; k < kPhases.size(); ++k) result.phase_ns[k] += frame.at(kPhases[k]).get<double>();
+    result.p50_sim_wall_native_ns = summary.at("p50_sim_wall_native_ns").get<double>();
+    for (std::size_t k = 0; k < kPhases.size(); ++k) {
+        result.mean_phase_ns[k] = summary.at(std::string("mean_") + kPhases[k]).get<double>();
     }
-    result.frames = walls.size();
-    if (!walls.empty()) {
-        for (double& p : result.phase_ns) p /= static_cast<double>(walls.size());
-    }
-    result.wall_ns_per_frame = median(walls);
+    result.frames_in_means = summary.at("frames_in_means").get<uint64_t>();
     result.pairs = slurp(pairs_path);
     result.config = report.value("config", nlohmann::json::object());
     return result;
@@ -92,23 +86,23 @@ LevelResult read_level(const std::string& report_path, const std::string& pairs_
 // Error of a phase against the reference, in percent of the reference's
 // frame time (a phase may be zero, so not of its own value).
 double error_percent(const LevelResult& level, const LevelResult& reference, std::size_t phase) {
-    const double total = reference.phase_ns.back();
+    const double total = reference.mean_phase_ns.back();
     if (total == 0) return 0;
-    return 100.0 * std::fabs(level.phase_ns[phase] - reference.phase_ns[phase]) / total;
+    return 100.0 * std::fabs(level.mean_phase_ns[phase] - reference.mean_phase_ns[phase]) / total;
 }
 
 std::string csv_text(const std::vector<LevelResult>& results) {
     std::ostringstream csv;
-    csv << "level,fidelity,quantum_ns,frames,wall_ns_per_frame";
-    for (const char* phase : kPhases) csv << ',' << phase;
+    csv << "level,fidelity,quantum_ns,frames_in_means,p50_sim_wall_native_ns";
+    for (const char* phase : kPhases) csv << ",mean_" << phase;
     for (const char* phase : kPhases) csv << ",error_" << std::string(phase, std::strlen(phase) - 3) << "_percent";
     csv << ",pairs_identical\n";
     csv << std::setprecision(10);
     for (std::size_t k = 0; k < results.size(); ++k) {
         const LevelResult& r = results[k];
-        csv << k << ',' << kLevels[k].fidelity << ',' << kLevels[k].quantum_ns << ',' << r.frames << ','
-            << r.wall_ns_per_frame;
-        for (double ns : r.phase_ns) csv << ',' << ns;
+        csv << k << ',' << kLevels[k].fidelity << ',' << kLevels[k].quantum_ns << ',' << r.frames_in_means << ','
+            << r.p50_sim_wall_native_ns;
+        for (double ns : r.mean_phase_ns) csv << ',' << ns;
         for (std::size_t p = 0; p < kPhases.size(); ++p) csv << ',' << error_percent(r, results[0], p);
         csv << ',' << (r.pairs == results[0].pairs ? "yes" : "no") << '\n';
     }
@@ -117,13 +111,14 @@ std::string csv_text(const std::vector<LevelResult>& results) {
 
 std::string table_text(const std::vector<LevelResult>& results) {
     std::ostringstream t;
-    t << "level           wall/frame   total (sim)     error   pairs\n";
+    t << "level           wall/frame   total (sim)     error   pairs\n"
+      << "                (p50)        (mean)\n";
     for (std::size_t k = 0; k < results.size(); ++k) {
         const LevelResult& r = results[k];
         std::ostringstream name;
         name << kLevels[k].fidelity << " q=" << kLevels[k].quantum_ns << "ns";
         t << std::left << std::setw(16) << name.str() << std::right << std::fixed << std::setprecision(3)
-          << std::setw(9) << r.wall_ns_per_frame / 1e6 << " ms" << std::setw(11) << r.phase_ns.back() / 1e3
+          << std::setw(9) << r.p50_sim_wall_native_ns / 1e6 << " ms" << std::setw(11) << r.mean_phase_ns.back() / 1e3
           << " us" << std::setw(9) << std::setprecision(4) << error_percent(r, results[0], kPhases.size() - 1)
           << " %   " << (r.pairs == results[0].pairs ? "identical" : "DIFFER") << '\n';
     }
@@ -152,7 +147,7 @@ std::string figure_context(const std::vector<LevelResult>& results) {
     std::ostringstream words;
     words << config.value("board", std::string("no board")) << " (" << config.value("bus", std::string("untimed bus"))
           << "), " << config.value("source", std::string()) << ", m=" << config.value("m", 0) << ", "
-          << results.front().frames << " frames\nreference: the cycle engine at quantum 0; pairs ";
+          << results.front().frames_in_means << " frames timed\nreference: the cycle engine at quantum 0; pairs ";
     const bool identical = std::all_of(results.begin(), results.end(),
                                        [&](const LevelResult& r) { return r.pairs == results.front().pairs; });
     words << (identical ? "identical at every level" : "DIFFER at some level (fidelity.csv)");
@@ -162,7 +157,7 @@ std::string figure_context(const std::vector<LevelResult>& results) {
 std::string plot_script(const std::vector<LevelResult>& results, const std::string& png_path) {
     std::vector<FidelityPoint> points;
     for (std::size_t k = 0; k < results.size(); ++k) {
-        points.push_back({level_words(kLevels[k]), results[k].wall_ns_per_frame / 1e6,
+        points.push_back({level_words(kLevels[k]), results[k].p50_sim_wall_native_ns / 1e6,
                           error_percent(results[k], results[0], kPhases.size() - 1)});
     }
     return figure_script(fidelity_figure(points, figure_context(results)), png_path);
@@ -248,7 +243,7 @@ int fidelity_levels(int argc, char** argv) {
             return WEXITSTATUS(wait_status);
         }
         results.push_back(read_level(report.path(), pairs.path()));
-        if (results.back().frames == 0) {
+        if (results.back().frames_in_means == 0) {
             throw InputError("the scene has no frames to time (--frames 0, or an empty trace); fidelity compares "
                              "frames: give at least one");
         }
