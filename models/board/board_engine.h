@@ -34,6 +34,10 @@ struct SweepCounters {
     }
 };
 
+// Where a sweep stands: the controller's state (the STATUS bits and the
+// waveforms' controller_state, in this order) and the clocked datapath's.
+enum class SweepState : uint8_t { kIdle, kRunning, kPaused, kDone };
+
 // A sweep runs in segments: from START or RESUME to the next overflow pause
 // or to done. The clock does not run between segments. Within a segment the
 // engine answers for any edge count, so the host may look at any time.
