@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -172,99 +173,120 @@ bool reserved(const std::string& key) {
     return false;
 }
 
-int fidelity_levels(int argc, char** argv) {
-    for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
-        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return print_to_stdout("cdvp fidelity", kHelp);
-    }
+struct FidelityOptions {
+    std::vector<std::string> forwarded;  // the options of cdvp run every level takes
+    std::string out_dir;
+    bool quiet = false;
+};
+
+FidelityOptions parse_fidelity_options(int argc, char** argv) {
     namespace po = boost::program_options;
     po::options_description own;
     own.add_options()("out", po::value<std::string>(), "")("quiet,q", po::bool_switch(), "");
     const ParsedCommandLine line = parse_with_run_options(argc, argv, own, "cdvp fidelity");
-    std::vector<std::string> forwarded;
+    FidelityOptions o;
     for (const ForwardedOption& option : line.forwarded) {
         if (reserved(option.key)) {
             throw InputError((option.typed.rfind("-c", 0) == 0 ? "-c " + option.key : excerpt(option.typed)) +
                              ": set by cdvp fidelity for each level, or not for it; leave it out");
         }
-        forwarded.insert(forwarded.end(), option.words.begin(), option.words.end());
+        o.forwarded.insert(o.forwarded.end(), option.words.begin(), option.words.end());
     }
-    const std::string out_dir = line.values.count("out") ? line.values["out"].as<std::string>() : std::string();
-    const bool quiet = line.values["quiet"].as<bool>();
-    if (out_dir.empty()) throw InputError("--out DIR is required (see cdvp fidelity --help)");
+    o.out_dir = line.values.count("out") ? line.values["out"].as<std::string>() : std::string();
+    o.quiet = line.values["quiet"].as<bool>();
+    if (o.out_dir.empty()) throw InputError("--out DIR is required (see cdvp fidelity --help)");
     struct stat status {};
-    if (stat(out_dir.c_str(), &status) == 0 && !S_ISDIR(status.st_mode)) {
-        throw InputError("--out: " + excerpt(out_dir) + ": expected a directory");
+    if (stat(o.out_dir.c_str(), &status) == 0 && !S_ISDIR(status.st_mode)) {
+        throw InputError("--out: " + excerpt(o.out_dir) + ": expected a directory");
     }
+    return o;
+}
+
+// Runs `cdvp run` at one level; its report and pairs, or the exit status
+// to end with (its own one-line error already printed, under this name).
+std::variant<LevelResult, int> run_level(const Level& level, const std::vector<std::string>& forwarded,
+                                         const std::optional<TraceSpool>& spool) {
+    ScratchFile report(".json"), pairs(".csv");
+    CapturedOutput errors("cdvp-level-stderr");
+    std::vector<std::string> args{self_path(), "run"};
+    args.insert(args.end(), forwarded.begin(), forwarded.end());
+    std::ostringstream quantum;
+    quantum << level.quantum_ns;
+    args.insert(args.end(), {"--fidelity", level.fidelity, "--quantum-ns", quantum.str(), "--report", report.path(),
+                             "--pairs-out", pairs.path(), "-q"});
+    ChildStreams streams;
+    streams.err = errors.fd();
+    if (spool && spool->descriptor() >= 0) streams.inherited = {spool->descriptor()};
+    const int wait_status = run_child(args, streams);
+    if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
+    if (WEXITSTATUS(wait_status) != 0) {
+        const std::string message = renamed_message(errors.text(64 * 1024), "cdvp fidelity");
+        std::cerr << (spool ? spool->restore_names(message) : message);
+        return WEXITSTATUS(wait_status);
+    }
+    LevelResult result = read_level(report.path(), pairs.path());
+    if (result.frames_in_means == 0) {
+        throw InputError("the scene has no frames to time (--frames 0, or an empty trace); fidelity compares "
+                         "frames: give at least one");
+    }
+    return result;
+}
+
+// fidelity.csv and fidelity.png together, and the table on stdout, or none.
+int write_outputs(const FidelityOptions& o, const std::vector<LevelResult>& results, OutputSet& files,
+                  CreatedDirectories& made) {
+    made.create(o.out_dir);
+    const std::size_t csv = files.add_output("--out", o.out_dir + "/fidelity.csv");
+    const std::size_t png = files.add_output("--out", o.out_dir + "/fidelity.png", "", false);
+    if (!o.quiet) files.add_standard_output("standard output");
+    files.open();
+    files.file(csv).stream() << csv_text(results) << std::flush;
+    if (const std::optional<std::string> error = run_gnuplot(plot_script(results, files.file(png).temp_path()))) {
+        std::cerr << "cdvp fidelity: gnuplot failed to draw " << o.out_dir << "/fidelity.png: " << printable(*error)
+                  << '\n';
+        return kExitInternal;
+    }
+    if (!o.quiet) files.set_standard_output(table_text(results));
+    if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp fidelity", *failure);
+    made.keep();
+    return kExitDone;
+}
+
+int fidelity_levels(int argc, char** argv) {
+    for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return print_to_stdout("cdvp fidelity", kHelp);
+    }
+    FidelityOptions o = parse_fidelity_options(argc, argv);
     // Declared first, so they go last: temporaries are removed before the
     // directories this run made, and a failed run leaves neither.
     CreatedDirectories made;
     OutputSet files;
     for (const std::string input : {"--trace", "--board", "--config"}) {
-        const std::string path = option_value(forwarded, input);
+        const std::string path = option_value(o.forwarded, input);
         // A board given by name is a shipped preset; only a path can be an output's target.
         if (!path.empty() && (input != "--board" || path.find('/') != std::string::npos)) {
             files.add_input(input, path);
         }
     }
-
     // Every level reads the trace from the start (a pipe is copied once).
     std::optional<TraceSpool> spool;
-    if (const std::optional<OptionValue> at = find_option(forwarded, "--trace")) {
-        spool.emplace(forwarded[at->index].substr(at->offset), spooled_trace_limits());
-        forwarded[at->index].replace(at->offset, std::string::npos, spool->path());
+    if (const std::optional<OptionValue> at = find_option(o.forwarded, "--trace")) {
+        spool.emplace(o.forwarded[at->index].substr(at->offset), spooled_trace_limits());
+        o.forwarded[at->index].replace(at->offset, std::string::npos, spool->path());
     }
-
-    const std::string self = self_path();
-    const bool show_progress = !quiet && isatty(STDERR_FILENO);
+    const bool show_progress = !o.quiet && isatty(STDERR_FILENO);
     std::vector<LevelResult> results;
     for (std::size_t k = 0; k < kLevels.size(); ++k) {
         if (show_progress) {
             std::cerr << "\rcdvp fidelity: level " << k + 1 << " of " << kLevels.size() << " (" << kLevels[k].fidelity
                       << ", quantum " << kLevels[k].quantum_ns << " ns)   " << std::flush;
         }
-        ScratchFile report(".json"), pairs(".csv");
-        CapturedOutput errors("cdvp-level-stderr");
-        std::vector<std::string> args{self, "run"};
-        args.insert(args.end(), forwarded.begin(), forwarded.end());
-        std::ostringstream quantum;
-        quantum << kLevels[k].quantum_ns;
-        args.insert(args.end(), {"--fidelity", kLevels[k].fidelity, "--quantum-ns", quantum.str(), "--report",
-                                 report.path(), "--pairs-out", pairs.path(), "-q"});
-        ChildStreams streams;
-        streams.err = errors.fd();
-        if (spool && spool->descriptor() >= 0) streams.inherited = {spool->descriptor()};
-        const int wait_status = run_child(args, streams);
+        std::variant<LevelResult, int> level = run_level(kLevels[k], o.forwarded, spool);
         if (show_progress) std::cerr << '\r' << std::string(60, ' ') << '\r';
-        if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
-        if (WEXITSTATUS(wait_status) != 0) {
-            // The level's own one-line error, under this command's name.
-            const std::string message = renamed_message(errors.text(64 * 1024), "cdvp fidelity");
-            std::cerr << (spool ? spool->restore_names(message) : message);
-            return WEXITSTATUS(wait_status);
-        }
-        results.push_back(read_level(report.path(), pairs.path()));
-        if (results.back().frames_in_means == 0) {
-            throw InputError("the scene has no frames to time (--frames 0, or an empty trace); fidelity compares "
-                             "frames: give at least one");
-        }
+        if (const int* status = std::get_if<int>(&level)) return *status;
+        results.push_back(std::move(std::get<LevelResult>(level)));
     }
-
-    made.create(out_dir);
-    const std::size_t csv = files.add_output("--out", out_dir + "/fidelity.csv");
-    const std::size_t png = files.add_output("--out", out_dir + "/fidelity.png", "", false);
-    if (!quiet) files.add_standard_output("standard output");
-    files.open();
-    const std::string csv_body = csv_text(results);
-    files.file(csv).stream() << csv_body << std::flush;
-    if (const std::optional<std::string> error =
-            run_gnuplot(plot_script(results, files.file(png).temp_path()))) {
-        std::cerr << "cdvp fidelity: gnuplot failed to draw " << out_dir << "/fidelity.png: " << printable(*error) << '\n';
-        return kExitInternal;
-    }
-    if (!quiet) files.set_standard_output(table_text(results));
-    if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp fidelity", *failure);
-    made.keep();
-    return kExitDone;
+    return write_outputs(o, results, files, made);
 }
 
 }  // namespace
