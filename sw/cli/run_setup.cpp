@@ -40,15 +40,15 @@ BoardSetup board_setup(const SettingLayers& layers, const po::variables_map& vm,
     setup.platform.board = settings.board;
     setup.platform.bus = setup.values.bus();
     setup.platform.driver = settings.driver;
-    setup.platform.driver.use_dma = settings.run.transfer == "dma";
-    setup.platform.driver.use_interrupts = settings.run.wait == "irq";
+    setup.platform.driver.use_dma = settings.run.transfer == Transfer::kDma;
+    setup.platform.driver.use_interrupts = settings.run.wait == WaitMode::kIrq;
     setup.platform.quantum_ns = settings.run.quantum_ns;
     return setup;
 }
 
 Fidelity engine_fidelity(const SettingValues& values, const po::variables_map& vm) {
     const Setting& setting = *find_setting("run.fidelity");
-    const bool cycle = values.settings().run.fidelity == "cycle";
+    const bool cycle = values.settings().run.fidelity == Fidelity::kCycle;
     if (vm.count("vcd") != 0) {
         if (!values.is_default(setting) && !cycle) {
             throw InputError("--vcd: waveforms need the clocked engine; " + values.where(setting) +
