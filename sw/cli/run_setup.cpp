@@ -4,6 +4,7 @@
 #include "platform/config_file.h"
 #include "platform/device_fit.h"
 #include "platform/memory_plan.h"
+#include "platform/platform_settings.h"
 #include "sw/bullet/scenes.h"
 
 namespace po = boost::program_options;
@@ -35,14 +36,7 @@ SettingValues layered_settings(const SettingLayers& layers, const po::variables_
 BoardSetup board_setup(const SettingLayers& layers, const po::variables_map& vm, const std::string& scene) {
     BoardSetup setup;
     setup.values = layered_settings(layers, vm, scene, setup.board);
-    const Settings& settings = setup.values.settings();
-    setup.values.check_board();
-    setup.platform.board = settings.board;
-    setup.platform.bus = setup.values.bus();
-    setup.platform.driver = settings.driver;
-    setup.platform.driver.use_dma = settings.run.transfer == Transfer::kDma;
-    setup.platform.driver.use_interrupts = settings.run.wait == WaitMode::kIrq;
-    setup.platform.quantum_ns = settings.run.quantum_ns;
+    setup.platform = platform_config(setup.values);
     return setup;
 }
 

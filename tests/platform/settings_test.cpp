@@ -20,6 +20,7 @@
 #include "models/common/user_text.h"
 #include "platform/board_preset.h"
 #include "platform/config_file.h"
+#include "platform/platform_settings.h"
 #include "models/common/nesting_limit.h"
 #include "tests/platform/nested_text.h"
 
@@ -170,6 +171,30 @@ TEST(SettingsTable, ValuesOutsideTypeOrRangeAreRefused) {
     } catch (const std::invalid_argument& e) {
         EXPECT_STREQ("expected irq or poll, got 'sleep'", e.what());
     }
+}
+
+TEST(PlatformConfig, FoldsEverySettingThePlatformTakes) {
+    SettingValues values;
+    values.apply(load_board_preset("adm-xrc-ii").values);
+    const PlatformConfig paper = platform_config(values);
+    EXPECT_EQ("PCI 32-bit/33.3 MHz", paper.bus->describe());
+    EXPECT_TRUE(paper.driver.use_dma);
+    EXPECT_TRUE(paper.driver.use_interrupts);
+    EXPECT_EQ(Fidelity::kFast, paper.fidelity);
+    EXPECT_EQ(values.settings().driver.ns_per_box, paper.driver.ns_per_box);
+    EXPECT_EQ(values.settings().board.clock_mhz, paper.board.clock_mhz);
+    values.apply({parse_override("run.transfer=pio"), parse_override("run.wait=poll"),
+                  parse_override("run.fidelity=cycle"), parse_override("run.quantum_ns=250"),
+                  parse_override("board.m=4")});
+    const PlatformConfig folded = platform_config(values);
+    EXPECT_FALSE(folded.driver.use_dma);
+    EXPECT_FALSE(folded.driver.use_interrupts);
+    EXPECT_EQ(Fidelity::kCycle, folded.fidelity);
+    EXPECT_EQ(250.0, folded.quantum_ns);
+    EXPECT_EQ(4u, folded.board.m);
+    EXPECT_EQ(nullptr, platform_config(SettingValues()).bus) << "the ideal bus";
+    values.apply({parse_override("board.fifo_depth=2")});
+    EXPECT_THROW(platform_config(values), InputError) << "the FIFO holds one cycle's hits, 2m-1";
 }
 
 TEST(SettingValues, LayersApplyInOrderAndKeepTheirOrigins) {
