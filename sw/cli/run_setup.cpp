@@ -71,10 +71,10 @@ RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& b
     run.host_timing = setup.host;
     run.load_average_start = load_average();
     run.settings = &setup.values;
-    run.dma = setup.platform.driver.use_dma;
-    run.interrupts = setup.platform.driver.use_interrupts;
-    run.quantum_ns = setup.platform.quantum_ns;
-    run.fidelity = to_string(setup.platform.fidelity);
+    run.transfer = settings.run.transfer;
+    run.wait = settings.run.wait;
+    run.quantum_ns = settings.run.quantum_ns;
+    run.fidelity = setup.platform.fidelity;
     run.baseline_runs = settings.run.repeat;
     run.budgets = {budgets.memory_bytes(), budgets.pair_budget().max_pairs(), budgets.footprint().before_pairs(),
                    budgets.footprint().per_pair};
