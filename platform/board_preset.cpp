@@ -202,18 +202,18 @@ BoardPreset read_board_preset(const std::string& name) {
                                 {SettingOrigin::Kind::kPreset, path, 0}});
         }
     }
-    SettingValues values;
-    values.apply(p.values);
-    const Settings& settings = values.settings();
-    p.board = settings.board;
-    p.block_rams = settings.device.block_rams;
-    p.bus = values.bus();
-    p.driver = settings.driver;
-    p.host = settings.host;
+    // The bus model's own rules, refused as any layer's would be.
+    p.applied().bus();
     return p;
 }
 
 }  // namespace
+
+SettingValues BoardPreset::applied() const {
+    SettingValues settings;
+    settings.apply(values);
+    return settings;
+}
 
 BoardPreset load_board_preset(const std::string& name) {
     try {
