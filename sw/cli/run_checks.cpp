@@ -202,11 +202,14 @@ void check_ssram(const FrameOrigin& origin, const SettingValues& values, uint64_
         if (board.block_rams(max_objects) <= settings.device.block_rams) largest = m;
     }
     board.m = settings.board.m;
+    // The format's own layout: word groups a box, boxes a primitive.
+    const BlockRamLayout layout = board.format.block_ram_layout(board.memory_depth(max_objects));
     throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(settings.device.block_rams) +
                      " block RAMs are too few for the SSRAM tile buffers of " +
                      values.value_and_origin(setting("board.m")) + " at " + objects_origin(origin, values, max_objects) +
-                     " in tiles of " + std::to_string(plan.tiles.boxes) + " boxes: they need 6 x (2m+2) x ceil(T/512) = " +
-                     std::to_string(board.block_rams(max_objects)) +
+                     " in tiles of " + std::to_string(plan.tiles.boxes) + " boxes: they need " +
+                     std::to_string(layout.word_groups()) + " x (2m+2) x ceil(T/" + std::to_string(layout.depth) +
+                     ") = " + std::to_string(board.block_rams(max_objects)) +
                      (largest > 0 ? " (largest m that fits: " + std::to_string(largest)
                                   : " (not even m=1 fits: use smaller tiles or a larger device") +
                      "; --ignore-capacity runs it anyway)");
