@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "platform/setting_choices.h"
 #include "sw/cli/child_runs.h"
 #include "sw/cli/fidelity_figure.h"
 #include "sw/cli/forwarded_options.h"
@@ -49,11 +50,16 @@ constexpr const char* kHelp =
     "the level being run.\n";
 
 struct Level {
-    const char* fidelity;
+    Fidelity engine;
     double quantum_ns;
+    const char* fidelity() const { return name_of(engine); }
 };
-constexpr std::array<Level, 6> kLevels{{{"cycle", 0}, {"fast", 0}, {"fast", 100}, {"fast", 1000},
-                                        {"fast", 10000}, {"fast", 100000}}};
+constexpr std::array<Level, 6> kLevels{{{Fidelity::kCycle, 0},
+                                        {Fidelity::kFast, 0},
+                                        {Fidelity::kFast, 100},
+                                        {Fidelity::kFast, 1000},
+                                        {Fidelity::kFast, 10000},
+                                        {Fidelity::kFast, 100000}}};
 
 constexpr std::array<const char*, 7> kPhases{"upload_ns", "start_ns", "compute_ns", "irq_ns",
                                              "readback_ns", "driver_ns", "total_ns"};
@@ -101,7 +107,7 @@ std::string csv_text(const std::vector<LevelResult>& results) {
     csv << std::setprecision(10);
     for (std::size_t k = 0; k < results.size(); ++k) {
         const LevelResult& r = results[k];
-        csv << k << ',' << kLevels[k].fidelity << ',' << kLevels[k].quantum_ns << ',' << r.frames_in_means << ','
+        csv << k << ',' << kLevels[k].fidelity() << ',' << kLevels[k].quantum_ns << ',' << r.frames_in_means << ','
             << r.p50_sim_wall_native_ns;
         for (double ns : r.mean_phase_ns) csv << ',' << ns;
         for (std::size_t p = 0; p < kPhases.size(); ++p) csv << ',' << error_percent(r, results[0], p);
@@ -117,7 +123,7 @@ std::string table_text(const std::vector<LevelResult>& results) {
     for (std::size_t k = 0; k < results.size(); ++k) {
         const LevelResult& r = results[k];
         std::ostringstream name;
-        name << kLevels[k].fidelity << " q=" << kLevels[k].quantum_ns << "ns";
+        name << kLevels[k].fidelity() << " q=" << kLevels[k].quantum_ns << "ns";
         t << std::left << std::setw(16) << name.str() << std::right << std::fixed << std::setprecision(3)
           << std::setw(9) << r.p50_sim_wall_native_ns / 1e6 << " ms" << std::setw(11) << r.mean_phase_ns.back() / 1e3
           << " us" << std::setw(9) << std::setprecision(4) << error_percent(r, results[0], kPhases.size() - 1)
@@ -130,7 +136,7 @@ std::string table_text(const std::vector<LevelResult>& results) {
 std::string level_words(const Level& level) {
     const double q = level.quantum_ns;
     std::ostringstream words;
-    words << level.fidelity << ", quantum ";
+    words << level.fidelity() << ", quantum ";
     if (q == 0) {
         words << 0;
     } else if (q >= 1000) {
@@ -212,7 +218,7 @@ std::variant<LevelResult, int> run_level(const Level& level, const std::vector<s
     args.insert(args.end(), forwarded.begin(), forwarded.end());
     std::ostringstream quantum;
     quantum << level.quantum_ns;
-    args.insert(args.end(), {"--fidelity", level.fidelity, "--quantum-ns", quantum.str(), "--report", report.path(),
+    args.insert(args.end(), {"--fidelity", level.fidelity(), "--quantum-ns", quantum.str(), "--report", report.path(),
                              "--pairs-out", pairs.path(), "-q"});
     ChildStreams streams;
     streams.err = errors.fd();
@@ -278,7 +284,7 @@ int fidelity_levels(int argc, char** argv) {
     std::vector<LevelResult> results;
     for (std::size_t k = 0; k < kLevels.size(); ++k) {
         if (show_progress) {
-            std::cerr << "\rcdvp fidelity: level " << k + 1 << " of " << kLevels.size() << " (" << kLevels[k].fidelity
+            std::cerr << "\rcdvp fidelity: level " << k + 1 << " of " << kLevels.size() << " (" << kLevels[k].fidelity()
                       << ", quantum " << kLevels[k].quantum_ns << " ns)   " << std::flush;
         }
         std::variant<LevelResult, int> level = run_level(kLevels[k], o.forwarded, spool);
