@@ -95,7 +95,7 @@ private:
 };
 
 // The keys of 'section' a preset of bus type 'bus' must give, in table order.
-std::vector<const Setting*> preset_settings(const std::string& section, const std::string& bus) {
+std::vector<const Setting*> preset_settings(const std::string& section, BusType bus) {
     std::vector<const Setting*> keys;
     for (const Setting& s : settings_table()) {
         if (s.in_preset && s.section() == section && s.applies_to_bus(bus)) keys.push_back(&s);
@@ -105,14 +105,14 @@ std::vector<const Setting*> preset_settings(const std::string& section, const st
 
 // A key the section does not declare: a setting of the other bus type, one
 // that is the user's and never a preset's, or a misspelling.
-void refuse_undeclared_keys(const PresetReader& r, const std::string& section, const std::string& bus) {
+void refuse_undeclared_keys(const PresetReader& r, const std::string& section, BusType bus) {
     std::vector<std::string> keys;
     for (const Setting* s : preset_settings(section, bus)) keys.push_back(s->key());
     for (const std::string& key : r.keys(section)) {
         if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
         const Setting* known = find_setting(section + "." + key);
         if (known != nullptr && known->in_preset) {
-            r.fail(known->name + ": a key of a " + known->bus_types() + " bus; this preset's bus is " + bus);
+            r.fail(known->name + ": a key of a " + known->bus_types() + " bus; this preset's bus is " + name_of(bus));
         }
         if (known != nullptr) {
             r.fail(known->name + ": not a preset key: the user's choice" +
@@ -188,8 +188,12 @@ BoardPreset read_board_preset(const std::string& name) {
     p.path = path;
     p.name = r.text("", "name");
     p.description = r.text("", "description");
-    const std::string bus = r.text("bus", "type");
-    if (bus != "pci" && bus != "pcie") r.fail("bus.type: expected \"pci\" or \"pcie\", got \"" + excerpt(bus) + "\"");
+    const std::string bus_text = r.text("bus", "type");
+    // A preset's board sits on a bus: the ideal one is no preset's.
+    const BusType bus = parse_choice<BusType>(bus_text).value_or(BusType::kIdeal);
+    if (bus == BusType::kIdeal) {
+        r.fail("bus.type: expected \"pci\" or \"pcie\", got \"" + excerpt(bus_text) + "\"");
+    }
     for (const char* section : {"board", "device", "bus", "host"}) {
         refuse_undeclared_keys(r, section, bus);
         for (const Setting* s : preset_settings(section, bus)) {
@@ -198,18 +202,18 @@ BoardPreset read_board_preset(const std::string& name) {
                                 {SettingOrigin::Kind::kPreset, path, 0}});
         }
     }
-    SettingValues values;
-    values.apply(p.values);
-    const Settings& settings = values.settings();
-    p.board = settings.board;
-    p.block_rams = settings.device.block_rams;
-    p.bus = values.bus();
-    p.driver = settings.driver;
-    p.host = settings.host;
+    // The bus model's own rules, refused as any layer's would be.
+    p.applied().bus();
     return p;
 }
 
 }  // namespace
+
+SettingValues BoardPreset::applied() const {
+    SettingValues settings;
+    settings.apply(values);
+    return settings;
+}
 
 BoardPreset load_board_preset(const std::string& name) {
     try {

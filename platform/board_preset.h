@@ -14,14 +14,14 @@ struct BoardPreset {
     std::string name;
     std::string description;
     std::string path;
-    BoardConfig board;      // m is the user's choice; the rest comes from the preset
-    uint32_t block_rams = 0;  // the FPGA's block RAMs: bounds m for a given N
-    std::shared_ptr<const BusTiming> bus;
-    DriverConfig driver;    // host CPU costs
-    HostConfig host;
     // Every setting the preset gives, checked against its range: the layer
-    // the preset puts over the defaults (platform/settings.h).
+    // the preset puts over the defaults (platform/settings.h). What the board,
+    // bus, device and host are is read through the settings: applied().
     std::vector<Assignment> values;
+
+    // The defaults with this preset's layer over them (m stays the user's
+    // choice, the default until a later layer gives it).
+    SettingValues applied() const;
 };
 
 // name: a preset in the boards directory (e.g. "adm-xrc-ii"), or a path to a

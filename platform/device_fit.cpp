@@ -14,12 +14,12 @@ double capacity_or_unbounded(uint64_t value) {
 
 }  // namespace
 
-bool has_device_family(const Settings& settings) { return settings.device.family != "none"; }
+bool has_device_family(const Settings& settings) { return settings.device.family != DeviceFamily::kNone; }
 
 DeviceFit fit_on_device(const Settings& settings, uint64_t capacity) {
     const DeviceSettings& d = settings.device;
     DeviceFit fit;
-    fit.device = {d.name, d.family, capacity_or_unbounded(d.luts), capacity_or_unbounded(d.flip_flops),
+    fit.device = {d.name, name_of(d.family), capacity_or_unbounded(d.luts), capacity_or_unbounded(d.flip_flops),
                   capacity_or_unbounded(d.block_rams), ""};
     const SynthesisTable& table = SynthesisTable::stored();
     const auto cost = [&](uint32_t m) {

@@ -37,8 +37,6 @@ struct FrameFault {
     explicit operator bool() const { return kind != Kind::kNone; }
 };
 
-// The CPU thread is the driver's host: it implements the driver's port with
-// blocking transport on its initiator socket and SystemC time.
 // The CPU's own quantum (the global one is shared by every platform in a
 // process), with sync points aligned to multiples of it as the global one's.
 class HostQuantumKeeper : public tlm_utils::tlm_quantumkeeper {
@@ -53,6 +51,8 @@ private:
     sc_core::sc_time quantum_;
 };
 
+// The CPU thread is the driver's host: it implements the driver's port with
+// blocking transport on its initiator socket and SystemC time.
 // The CPU thread is loosely timed, as Accellera's lt_td_initiator: accesses
 // annotate their delay into a quantum keeper instead of waiting, and the
 // thread synchronises when the quantum runs out or before it waits for the

@@ -45,10 +45,10 @@ MemoryPlan plan_memory(const Settings& settings, uint64_t capacity) {
     plan.tiles = ssram_tiles(device);  // boxes = 0 until SSRAM serves
     plan.ssram_capacity = device.ssram_banks == 0 ? 0 : device.ssram_words / plan.tiles.cycles_per_box;
     const uint32_t fitting = largest_tile(settings.board, capacity, device.block_rams);
-    const std::string& asked = settings.memory.memory;
-    if (asked == "block_ram") return plan;
-    if (asked == "auto") {
-        const bool in_block_ram = device.block_rams == 0 || settings.run.ignore_capacity == "yes" ||
+    const BoxMemory asked = settings.memory.memory;
+    if (asked == BoxMemory::kBlockRam) return plan;
+    if (asked == BoxMemory::kAuto) {
+        const bool in_block_ram = device.block_rams == 0 || settings.run.ignore_capacity ||
                                   settings.board.block_rams(capacity) <= device.block_rams;
         if (in_block_ram || fitting == 0) return plan;
     }

@@ -15,7 +15,6 @@ struct MemoryPlan {
     TileConfig tiles;  // tiles.boxes = 0 on a board in block RAM
     uint64_t ssram_capacity = 0;  // boxes the SSRAM holds (0: no SSRAM)
     bool tile_fits = true;        // the tile buffers fit the device's block RAMs
-    const char* memory_name() const { return ssram ? "SSRAM" : "block RAM"; }
 };
 
 // For boards of `capacity` boxes. block_ram and ssram are taken as asked;

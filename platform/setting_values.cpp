@@ -47,8 +47,8 @@ void SettingValues::apply(const std::vector<Assignment>& layer) {
             const Setting& type = *find_setting("bus.type");
             const std::string bus_origin = is_default(type) ? "the default" : origin(type).describe(type);
             throw InputError(at.where(s) + ": a setting of a " + s.bus_types() + " bus; the bus is " +
-                             settings_.bus_type + " (" + bus_origin + ")" +
-                             (settings_.bus_type == "ideal" ? ": give --board or -c bus.type=pci|pcie" : ""));
+                             name_of(settings_.bus_type) + " (" + bus_origin + ")" +
+                             (settings_.bus_type == BusType::kIdeal ? ": give --board or -c bus.type=pci|pcie" : ""));
         }
         s.set(settings_, a->value);
         origins_[s.name] = a->origin;

@@ -22,14 +22,17 @@ std::string join(const std::vector<std::string>& words, const std::string& last)
 }  // namespace
 
 std::shared_ptr<const BusTiming> Settings::make_bus() const {
-    if (bus_type == "pci") return std::make_shared<PciTiming>(pci);
-    if (bus_type == "pcie") return std::make_shared<PcieTiming>(pcie);
+    switch (bus_type) {
+        case BusType::kPci: return std::make_shared<PciTiming>(pci);
+        case BusType::kPcie: return std::make_shared<PcieTiming>(pcie);
+        case BusType::kIdeal: break;
+    }
     return nullptr;
 }
 
-bool Setting::applies_to_bus(const std::string& bus_type) const {
+bool Setting::applies_to_bus(BusType bus_type) const {
     if (buses == kNoBus) return true;
-    return (bus_type == "pci" && (buses & kPciBus) != 0) || (bus_type == "pcie" && (buses & kPcieBus) != 0);
+    return (bus_type == BusType::kPci && (buses & kPciBus) != 0) || (bus_type == BusType::kPcie && (buses & kPcieBus) != 0);
 }
 
 std::string Setting::bus_types() const {
@@ -39,11 +42,11 @@ std::string Setting::bus_types() const {
 // A key of both buses binds the member of the bus in effect; a key of one
 // bus always binds that bus's member.
 SettingValue Setting::get(const Settings& s) const {
-    return (s.bus_type == "pcie" && get_pcie) || !get_pci ? get_pcie(s) : get_pci(s);
+    return (s.bus_type == BusType::kPcie && get_pcie) || !get_pci ? get_pcie(s) : get_pci(s);
 }
 
 void Setting::set(Settings& s, const SettingValue& value) const {
-    if ((s.bus_type == "pcie" && set_pcie) || !set_pci) {
+    if ((s.bus_type == BusType::kPcie && set_pcie) || !set_pci) {
         set_pcie(s, value);
     } else {
         set_pci(s, value);
@@ -52,7 +55,7 @@ void Setting::set(Settings& s, const SettingValue& value) const {
 
 SettingValue Setting::default_value() const {
     Settings defaults;
-    if (buses != kNoBus) defaults.bus_type = (buses & kPciBus) != 0 ? "pci" : "pcie";
+    if (buses != kNoBus) defaults.bus_type = (buses & kPciBus) != 0 ? BusType::kPci : BusType::kPcie;
     return get(defaults);
 }
 

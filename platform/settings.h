@@ -15,6 +15,7 @@
 
 #include "models/board_spec/board_config.h"
 #include "models/pci/bus_timing.h"
+#include "platform/setting_choices.h"
 #include "platform/driver/board_driver.h"
 
 namespace cdvp {
@@ -42,13 +43,13 @@ struct SceneSettings {
 };
 
 struct RunSettings {
-    std::string transfer = "dma";   // dma | pio
-    std::string wait = "irq";       // irq | poll
-    std::string fidelity = "fast";  // fast | cycle
+    Transfer transfer = Transfer::kDma;
+    WaitMode wait = WaitMode::kIrq;
+    Fidelity fidelity = Fidelity::kFast;
     double quantum_ns = 0.0;
     uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
     uint32_t repeat = 1;
-    std::string ignore_capacity = "no";  // no | yes
+    bool ignore_capacity = false;
     // Budgets, checked before any work (sw/cli/run_budgets.h). 0: derived
     // (from this machine's memory; from the memory budget).
     uint64_t max_memory_mib = 0;
@@ -58,10 +59,10 @@ struct RunSettings {
 
 // The FPGA the board is built on, and what it holds (a preset's device
 // section). family names the synthesis results that cost the board
-// (models/resources); "none": no device, nothing is bounded.
+// (models/resources); kNone: no device, nothing is bounded.
 struct DeviceSettings {
     std::string name = "none";
-    std::string family = "none";  // none | xc2v | xcup
+    DeviceFamily family = DeviceFamily::kNone;
     uint64_t luts = 0;            // 0: unbounded
     uint64_t flip_flops = 0;      // 0: unbounded
     uint32_t block_rams = 0;      // 18-Kbit block RAMs; 0: unbounded
@@ -74,7 +75,7 @@ struct DeviceSettings {
 
 // Where the board keeps its boxes (platform/memory_plan.h resolves it).
 struct MemorySettings {
-    std::string memory = "auto";  // auto | block_ram | ssram
+    BoxMemory memory = BoxMemory::kAuto;
     uint64_t tile_boxes = 0;      // 0: the largest tile whose buffers fit the device
 };
 
@@ -84,7 +85,7 @@ struct Settings {
     BoardConfig board;
     MemorySettings memory;
     DeviceSettings device;
-    std::string bus_type = "ideal";  // ideal | pci | pcie
+    BusType bus_type = BusType::kIdeal;
     PciConfig pci;
     PcieConfig pcie;
     HostConfig host;
@@ -109,7 +110,7 @@ struct Setting {
     std::string unit;
     uint64_t count_min = 0, count_max = 0;  // kCount
     double min = 0, max = 0;                // kReal
-    std::vector<std::string> choices;       // kChoice
+    std::vector<std::string> choices;       // kChoice: the names of its type (setting_choices.h)
     // kText with a grammar: what it accepts (for range_text) and the check,
     // which throws std::invalid_argument "expected ..., got '...'".
     std::string accepts;
@@ -127,7 +128,7 @@ struct Setting {
 
     std::string section() const { return name.substr(0, name.find('.')); }
     std::string key() const { return name.substr(name.find('.') + 1); }
-    bool applies_to_bus(const std::string& bus_type) const;
+    bool applies_to_bus(BusType bus_type) const;
     std::string bus_types() const;  // "pci", "pcie" or "pci or pcie"
     SettingValue get(const Settings& s) const;
     void set(Settings& s, const SettingValue& value) const;

@@ -3,6 +3,8 @@
 // comes from.
 #include "platform/settings.h"
 
+#include <optional>
+#include <stdexcept>
 #include <type_traits>
 
 #include "models/control_registers/control_registers.h"
@@ -28,20 +30,31 @@ decltype(auto) reach(Object& object, Member member, Rest... rest) {
     }
 }
 
-// A setting bound to the member at the end of 'path'.
+// A choice's value from its name, which Setting::from_string has checked
+// (a name it has not is a caller's error).
+template <class T>
+T choice_value(const std::string& name) {
+    if (const std::optional<T> value = parse_choice<T>(name)) return *value;
+    throw std::logic_error("a choice set to a name it has not: '" + name + "'");
+}
+
+// A setting bound to the member at the end of 'path'; a choice (a type with
+// Choices, setting_choices.h) by its names.
 template <class... Path>
 Binding member(Path... path) {
     return {[=](const Settings& s) -> SettingValue {
                 const auto& field = reach(s, path...);
                 using T = std::decay_t<decltype(field)>;
-                if constexpr (std::is_same_v<T, std::string>) return field;
+                if constexpr (has_choices<T>::value) return std::string(name_of(field));
+                else if constexpr (std::is_same_v<T, std::string>) return field;
                 else if constexpr (std::is_floating_point_v<T>) return static_cast<double>(field);
                 else return static_cast<uint64_t>(field);
             },
             [=](Settings& s, const SettingValue& value) {
                 auto& field = reach(s, path...);
                 using T = std::decay_t<decltype(field)>;
-                if constexpr (std::is_same_v<T, std::string>) field = std::get<std::string>(value);
+                if constexpr (has_choices<T>::value) field = choice_value<T>(std::get<std::string>(value));
+                else if constexpr (std::is_same_v<T, std::string>) field = std::get<std::string>(value);
                 else if constexpr (std::is_floating_point_v<T>) field = static_cast<T>(std::get<double>(value));
                 else field = static_cast<T>(std::get<uint64_t>(value));
             }};
@@ -71,9 +84,11 @@ Setting real(const char* name, const char* unit, double lo, double hi, Binding b
     s.max = hi;
     return s;
 }
-Setting choice(const char* name, std::vector<std::string> choices, Binding b, const char* help, const char* source) {
+// A choice among the names of T (setting_choices.h), bound to a member of type T.
+template <class T>
+Setting choice(const char* name, Binding b, const char* help, const char* source) {
     Setting s = base(name, SettingType::kChoice, "", std::move(b), help, source);
-    s.choices = std::move(choices);
+    s.choices = choice_names<T>();
     return s;
 }
 Setting text(const char* name, Binding b, const char* help, const char* source) {
@@ -173,7 +188,7 @@ std::vector<Setting> board_settings() {
                           "pair buffer depth in pairs before the host drains it",
                           "assumption: one 2 MiB ZBT SSRAM bank of 64-bit entries (the ADM-XRC-II has six)")),
              "pair-buffer", "P"),
-        flag(choice("board.memory", {"auto", "block_ram", "ssram"}, member(&S::memory, &MemorySettings::memory),
+        flag(choice<BoxMemory>("board.memory", member(&S::memory, &MemorySettings::memory),
                     "where the boxes live: block_ram, ssram (off-chip, swept in tiles; docs/tiles.md) or auto "
                     "(block RAM while the boxes fit it or --ignore-capacity is given, else SSRAM)",
                     "auto: the paper's board keeps its boxes in block RAM up to about 500"),
@@ -194,7 +209,7 @@ std::vector<Setting> device_settings() {
     return {
         preset(text("device.name", member(&S::device, &V::name), "the FPGA the board is built on",
                     "none without a preset; adm-xrc-ii.json: the XC2V6000")),
-        preset(choice("device.family", {"none", "xc2v", "xcup"}, member(&S::device, &V::family),
+        preset(choice<DeviceFamily>("device.family", member(&S::device, &V::family),
                       "the FPGA family whose synthesis results cost the board (models/resources/synthesis.csv): "
                       "xc2v (Virtex-II), xcup (UltraScale+); none: resources not modelled",
                       "none without a preset")),
@@ -221,7 +236,7 @@ std::vector<Setting> device_settings() {
 
 std::vector<Setting> bus_settings() {
     return {
-        preset(choice("bus.type", {"ideal", "pci", "pcie"}, member(&S::bus_type),
+        preset(choice<BusType>("bus.type", member(&S::bus_type),
                       "the host bus: ideal (untimed, the board alone), pci or pcie; bus.* keys of one type are "
                       "refused on the other",
                       "ideal without a preset: only the board's compute time")),
@@ -340,14 +355,14 @@ std::vector<Setting> host_and_run_settings() {
         flag(count("scene.seed", "", 0, UINT64_MAX, member(&S::scene, &SceneSettings::seed),
                    "a generated scene's random seed (same seed, same scene)", "any fixed seed"),
              "seed", "S"),
-        flag(choice("run.transfer", {"dma", "pio"}, member(&S::run, &RunSettings::transfer),
+        flag(choice<Transfer>("run.transfer", member(&S::run, &RunSettings::transfer),
                     "how the driver moves boxes and pairs: bridge DMA or programmed I/O",
                     "the paper's driver uses the bridge's DMA"),
              "transfer", "dma|pio"),
-        flag(choice("run.wait", {"irq", "poll"}, member(&S::run, &RunSettings::wait),
+        flag(choice<WaitMode>("run.wait", member(&S::run, &RunSettings::wait),
                     "how the driver waits for the board: interrupt or polling", "the paper's driver takes interrupts"),
              "wait", "irq|poll"),
-        flag(choice("run.fidelity", {"cycle", "fast"}, member(&S::run, &RunSettings::fidelity),
+        flag(choice<Fidelity>("run.fidelity", member(&S::run, &RunSettings::fidelity),
                     "the board's engine: fast computes pairs and cycles from the schedule, cycle clocks the datapath "
                     "edge by edge; the same pairs, cycles and times (--vcd needs cycle, and picks it when the "
                     "fidelity is not given)",
@@ -367,7 +382,7 @@ std::vector<Setting> host_and_run_settings() {
                    "of the runs' means (the board's simulated times are deterministic and simulated once)",
                    "one run"),
              "repeat", "R"),
-        switch_flag(choice("run.ignore_capacity", {"no", "yes"}, member(&S::run, &RunSettings::ignore_capacity),
+        switch_flag(choice<bool>("run.ignore_capacity", member(&S::run, &RunSettings::ignore_capacity),
                            "run a board that does not fit its device (device.*) anyway, to explore what a larger "
                            "device would give",
                            "no: a board that does not fit is refused naming the resource"),

@@ -65,8 +65,6 @@ public:
     // stack, such as tests). Without a number, frames are numbered 0, 1, 2, ...
     const FrameResult& run_frame(const std::vector<FloatBox>& boxes);
     const FrameResult& run_frame(const std::vector<FloatBox>& boxes, uint64_t number);
-    // Frames run so far.
-    uint64_t frames_run() const { return frames_; }
     const FaultPlan& faults() const { return faults_; }
     // Flushes and closes the waveform file (also done by the destructor).
     void close_trace();

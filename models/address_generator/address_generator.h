@@ -1,6 +1,8 @@
 // The seed's address generator for the all-pairs sweep.
 #pragma once
 
+#include "models/address_generator/port_window.h"
+
 #include <cstdint>
 
 namespace cdvp {
@@ -13,13 +15,6 @@ namespace cdvp {
 // S(N,m) = sum_{r=1}^{N-1} ceil(r / (2m-1)) cycles.
 class AddressGenerator {
 public:
-    // One cycle's addresses: port 0 = row, port k (1-based) = first_column + k - 1.
-    struct Issue {
-        uint32_t row;
-        uint32_t first_column;
-        uint32_t valid_lanes;  // lanes 1..valid_lanes are valid (>= 1)
-    };
-
     explicit AddressGenerator(uint32_t m);
 
     uint32_t lanes() const { return lanes_; }
@@ -29,7 +24,7 @@ public:
     bool exhausted() const { return objects_ < 2 || row_ > objects_ - 2; }
 
     // The addresses driven this cycle; only while !exhausted().
-    Issue current() const {
+    PortWindow current() const {  // valid_lanes >= 1
         const uint32_t remaining = objects_ - first_column_;
         return {row_, first_column_, remaining < lanes_ ? remaining : lanes_};
     }

@@ -129,7 +129,7 @@ ScheduleWalker::Slot ScheduleWalker::step(Ready ready) {
             in_block_ = false;
             continue;
         }
-        Slot window{Slot::kWindow, row_, column_, std::min(lanes, column_end - column_), block_};
+        Slot window{Slot::kWindow, {row_, column_, std::min(lanes, column_end - column_)}, block_};
         column_ += lanes;
         if (column_ >= column_end) {
             ++row_;

@@ -4,6 +4,8 @@
 // of a board whose boxes live in off-chip SSRAM (docs/tiles.md).
 #pragma once
 
+#include "models/address_generator/port_window.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -86,9 +88,7 @@ class ScheduleWalker {
 public:
     struct Slot {
         enum Kind : uint8_t { kWindow, kWait, kEnd } kind = kEnd;
-        uint32_t row = 0;
-        uint32_t first_column = 0;
-        uint32_t valid_lanes = 0;
+        PortWindow window;   // kWindow only
         uint64_t block = 0;  // the block being compared or waited for
     };
 

@@ -9,20 +9,6 @@
 
 namespace cdvp {
 
-namespace {
-uint32_t low_word(uint64_t v) { return static_cast<uint32_t>(v); }
-uint32_t high_word(uint64_t v) { return static_cast<uint32_t>(v >> 32); }
-
-BoardCore::Write from(RegisterResult r) {
-    switch (r) {
-        case RegisterResult::kDone: return BoardCore::Write::kDone;
-        case RegisterResult::kRefused: return BoardCore::Write::kRefused;
-        case RegisterResult::kUnmapped: break;
-    }
-    return BoardCore::Write::kUnmapped;
-}
-}  // namespace
-
 BoardCore::BoardCore(const BoardConfig& config, uint32_t capacity, Fidelity fidelity, PairBudget budget)
     : config_((config.validate(), config)), capacity_(capacity) {
     if (capacity > address_map::kMaxObjects) {
@@ -40,22 +26,17 @@ void BoardCore::declare_registers() {
     using R = ControlRegisters;
     using A = RegisterAccess;
     auto constant = [](uint32_t v) { return [v] { return v; }; };
-    auto counter = [this](uint64_t SweepCounters::*field, bool high) {
-        return [this, field, high] {
-            const uint64_t v = counters().*field;
-            return high ? high_word(v) : low_word(v);
-        };
-    };
-    bank_.add("ID", R::kId, A::kReadOnly, constant(R::kIdValue));
-    bank_.add("CONTROL", R::kControl, A::kWriteOnly, {}, [this](uint32_t v) {
+    auto counter = [this](uint64_t SweepCounters::*field) { return [this, field] { return counters().*field; }; };
+    registers_.add("ID", R::kId, A::kReadOnly, constant(R::kIdValue));
+    registers_.add("CONTROL", R::kControl, A::kWriteOnly, {}, [this](uint32_t v) {
         if (v & R::kAbort) abort();
         else if (v & R::kStart) start();
         else if (v & R::kResume) resume();
         else if (v & R::kAcknowledge) irq_pending_ = false;
         return RegisterResult::kDone;
     });
-    bank_.add("STATUS", R::kStatus, A::kReadOnly, [this] { return status().bits(); });
-    bank_.add("OBJECT_COUNT", R::kObjectCount, A::kReadWrite, [this] { return object_count_; },
+    registers_.add("STATUS", R::kStatus, A::kReadOnly, [this] { return status().bits(); });
+    registers_.add("OBJECT_COUNT", R::kObjectCount, A::kReadWrite, [this] { return object_count_; },
               [this](uint32_t v) {
                   // The sweep uses the count it started with; read-back must agree.
                   if (status().busy) {
@@ -65,42 +46,40 @@ void BoardCore::declare_registers() {
                   object_count_ = v;
                   return RegisterResult::kDone;
               });
-    bank_.add("PAIR_COUNT", R::kPairCount, A::kReadOnly, [this] { return buffered_pairs(); });
-    bank_.add("CYCLES_LO", R::kCyclesLo, A::kReadOnly, counter(&SweepCounters::cycles, false));
-    bank_.add("CYCLES_HI", R::kCyclesHi, A::kReadOnly, counter(&SweepCounters::cycles, true));
-    bank_.add("STALLS_LO", R::kStallsLo, A::kReadOnly, counter(&SweepCounters::stalls, false));
-    bank_.add("STALLS_HI", R::kStallsHi, A::kReadOnly, counter(&SweepCounters::stalls, true));
-    bank_.add("TOTAL_PAIRS_LO", R::kTotalPairsLo, A::kReadOnly, counter(&SweepCounters::total_pairs, false));
-    bank_.add("TOTAL_PAIRS_HI", R::kTotalPairsHi, A::kReadOnly, counter(&SweepCounters::total_pairs, true));
-    bank_.add("PARALLELISM", R::kParallelism, A::kReadOnly, constant(config_.m));
-    bank_.add("CAPACITY", R::kCapacity, A::kReadOnly, constant(capacity_));
-    bank_.add("PAIR_BUFFER_DEPTH", R::kPairBufferDepth, A::kReadOnly, constant(config_.collector.buffer_depth));
-    bank_.add("ERROR_CAUSE", R::kErrorCause, A::kReadOnly, [this] { return error_cause_; });
-    bank_.add("FORMAT", R::kFormat, A::kReadOnly, constant(config_.format.register_value()));
+    registers_.add("PAIR_COUNT", R::kPairCount, A::kReadOnly, [this] { return buffered_pairs(); });
+    registers_.add_wide("CYCLES", R::kCyclesLo, R::kCyclesHi, A::kReadOnly, counter(&SweepCounters::cycles));
+    registers_.add_wide("STALLS", R::kStallsLo, R::kStallsHi, A::kReadOnly, counter(&SweepCounters::stalls));
+    registers_.add_wide("TOTAL_PAIRS", R::kTotalPairsLo, R::kTotalPairsHi, A::kReadOnly,
+                   counter(&SweepCounters::total_pairs));
+    registers_.add("PARALLELISM", R::kParallelism, A::kReadOnly, constant(config_.m));
+    registers_.add("CAPACITY", R::kCapacity, A::kReadOnly, constant(capacity_));
+    registers_.add("PAIR_BUFFER_DEPTH", R::kPairBufferDepth, A::kReadOnly, constant(config_.collector.buffer_depth));
+    registers_.add("ERROR_CAUSE", R::kErrorCause, A::kReadOnly, [this] { return error_cause_; });
+    registers_.add("FORMAT", R::kFormat, A::kReadOnly, constant(config_.format.register_value()));
 }
 
 bool BoardCore::read_register(uint32_t offset, uint32_t& value) {
-    return bank_.read(offset, value) == RegisterResult::kDone;
+    return registers_.read(offset, value) == RegisterResult::kDone;
 }
 
-BoardCore::Write BoardCore::write_register(uint32_t offset, uint32_t value) { return from(bank_.write(offset, value)); }
+RegisterResult BoardCore::write_register(uint32_t offset, uint32_t value) { return registers_.write(offset, value); }
 
-BoardCore::Write BoardCore::write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word) {
-    if (index >= capacity_) return Write::kUnmapped;
+RegisterResult BoardCore::write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word) {
+    if (index >= capacity_) return RegisterResult::kUnmapped;
     if (status().busy) {
         raise_error(ControlRegisters::kWriteWhileBusy);
-        return Write::kRefused;
+        return RegisterResult::kRefused;
     }
     store_[coordinate][index] = word & config_.format.word_mask();
-    return Write::kDone;
+    return RegisterResult::kDone;
 }
 
-BoardCore::Write BoardCore::write_coordinates(Coordinate coordinate, uint32_t first, const unsigned char* words,
+RegisterResult BoardCore::write_coordinates(Coordinate coordinate, uint32_t first, const unsigned char* words,
                                              uint32_t count) {
-    if (first > capacity_ || count > capacity_ - first) return Write::kUnmapped;
+    if (first > capacity_ || count > capacity_ - first) return RegisterResult::kUnmapped;
     if (status().busy) {
         raise_error(ControlRegisters::kWriteWhileBusy);
-        return Write::kRefused;
+        return RegisterResult::kRefused;
     }
     uint32_t* stored = store_[coordinate].data() + first;
     std::memcpy(stored, words, std::size_t{count} * sizeof(uint32_t));
@@ -109,7 +88,7 @@ BoardCore::Write BoardCore::write_coordinates(Coordinate coordinate, uint32_t fi
     if (mask != ~0u) {
         for (uint32_t k = 0; k < count; ++k) stored[k] &= mask;
     }
-    return Write::kDone;
+    return RegisterResult::kDone;
 }
 
 uint32_t BoardCore::Status::bits() const {
@@ -119,8 +98,8 @@ uint32_t BoardCore::Status::bits() const {
 }
 
 BoardCore::Status BoardCore::status() const {
-    return Status{phase_ == Phase::Running || phase_ == Phase::Paused, phase_ == Phase::Done,
-                  phase_ == Phase::Paused, error_, error_cause_};
+    return Status{phase_ == SweepState::kRunning || phase_ == SweepState::kPaused, phase_ == SweepState::kDone,
+                  phase_ == SweepState::kPaused, error_, error_cause_};
 }
 
 SweepCounters BoardCore::counters() { return running() ? engine_->counters_after(edges_) : held_; }
@@ -148,7 +127,7 @@ void BoardCore::advance_to(uint64_t edges) {
     }
     edges_ = engine_->segment_edges();
     held_ = engine_->counters_after(edges_);
-    phase_ = engine_->segment_finishes() ? Phase::Done : Phase::Paused;
+    phase_ = engine_->segment_finishes() ? SweepState::kDone : SweepState::kPaused;
     irq_pending_ = true;
 }
 
@@ -158,7 +137,7 @@ void BoardCore::abort() {
         held_ = engine_->counters_after(edges_);
         engine_->abort(edges_);
     }
-    phase_ = Phase::Idle;
+    phase_ = SweepState::kIdle;
     error_ = irq_pending_ = false;
     error_cause_ = ControlRegisters::kNoError;
 }
@@ -174,20 +153,20 @@ void BoardCore::start() {
     edges_ = 0;
     error_ = irq_pending_ = false;
     error_cause_ = ControlRegisters::kNoError;
-    phase_ = Phase::Running;
+    phase_ = SweepState::kRunning;
     ++segments_started_;
 }
 
 // RESUME after an overflow: the host has read every buffered pair.
 void BoardCore::resume() {
-    if (phase_ != Phase::Paused) {
+    if (phase_ != SweepState::kPaused) {
         raise_error(ControlRegisters::kResumeNotPaused);
         return;
     }
     engine_->resume();
     edges_ = 0;
     irq_pending_ = false;
-    phase_ = Phase::Running;
+    phase_ = SweepState::kRunning;
     ++segments_started_;
 }
 

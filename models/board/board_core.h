@@ -18,8 +18,6 @@ namespace cdvp {
 // segment_edges() gives. Status bits derive from one phase variable.
 class BoardCore {
 public:
-    using Phase = BoardPhase;
-
     // capacity: boxes the coordinate memories hold (their depth); budget: the
     // most pairs the engine may find in a sweep (see make_engine).
     BoardCore(const BoardConfig& config, uint32_t capacity, Fidelity fidelity = Fidelity::kCycle,
@@ -30,19 +28,18 @@ public:
     // Block RAM primitives of the six coordinate memories.
     uint32_t block_rams() const;
     BoardEngine& engine() { return *engine_; }
-    const RegisterBank& register_bank() const { return bank_; }
+    const RegisterBank& register_bank() const { return registers_; }
 
     // Host side. A read returns false for an unmapped offset.
     bool read_register(uint32_t offset, uint32_t& value);
-    enum class Write : uint8_t { kDone, kUnmapped, kRefused };
     // A refused write (OBJECT_COUNT during a sweep) also sets ERROR.
-    Write write_register(uint32_t offset, uint32_t value);
+    RegisterResult write_register(uint32_t offset, uint32_t value);
     // Coordinate memory writes are refused (kRefused, ERROR set) while busy,
     // kUnmapped past capacity.
-    Write write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word);
+    RegisterResult write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word);
     // A run of `count` words (little-endian, as on the bus) from box `first`
     // on: a burst's worth, checked once; refused whole while busy.
-    Write write_coordinates(Coordinate coordinate, uint32_t first, const unsigned char* words, uint32_t count);
+    RegisterResult write_coordinates(Coordinate coordinate, uint32_t first, const unsigned char* words, uint32_t count);
     uint32_t read_coordinate(Coordinate coordinate, uint32_t index) const { return store_[coordinate][index]; }
     // The pair buffer as the host reads it now.
     uint32_t buffered_pairs();
@@ -67,8 +64,8 @@ public:
     SweepCounters counters();
 
     // Clock side.
-    Phase phase() const { return phase_; }
-    bool running() const { return phase_ == Phase::Running; }
+    SweepState phase() const { return phase_; }
+    bool running() const { return phase_ == SweepState::kRunning; }
     // Counts START and RESUME commands taken: a new segment began when it changes.
     uint64_t segments_started() const { return segments_started_; }
     uint64_t edges() const { return edges_; }
@@ -89,10 +86,10 @@ private:
     BoardConfig config_;
     uint32_t capacity_;
     std::unique_ptr<BoardEngine> engine_;
-    RegisterBank bank_;
+    RegisterBank registers_;
     CoordinateStore store_;
 
-    Phase phase_ = Phase::Idle;
+    SweepState phase_ = SweepState::kIdle;
     uint32_t object_count_ = 0;
     bool error_ = false;
     uint32_t error_cause_ = ControlRegisters::kNoError;

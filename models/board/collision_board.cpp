@@ -103,7 +103,7 @@ void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& del
     const sc_time at = sc_time_stamp() + delay;
     sync(at);
     const uint64_t segments_before = core_.segments_started();
-    const BoardCore::Phase phase_before = core_.phase();
+    const SweepState phase_before = core_.phase();
     payload.set_response_status(
         access(payload.get_command(), payload.get_address(), payload.get_data_ptr(), payload.get_data_length()));
     if (payload.get_command() == tlm::TLM_WRITE_COMMAND) schedule_clock(segments_before, at);
@@ -124,11 +124,11 @@ unsigned int CollisionBoard::transport_dbg(tlm::tlm_generic_payload& payload) {
 }
 
 namespace {
-tlm::tlm_response_status response_for(BoardCore::Write result) {
+tlm::tlm_response_status response_for(RegisterResult result) {
     switch (result) {
-        case BoardCore::Write::kDone: return tlm::TLM_OK_RESPONSE;
-        case BoardCore::Write::kRefused: return tlm::TLM_COMMAND_ERROR_RESPONSE;
-        case BoardCore::Write::kUnmapped: break;
+        case RegisterResult::kDone: return tlm::TLM_OK_RESPONSE;
+        case RegisterResult::kRefused: return tlm::TLM_COMMAND_ERROR_RESPONSE;
+        case RegisterResult::kUnmapped: break;
     }
     return tlm::TLM_ADDRESS_ERROR_RESPONSE;
 }
@@ -220,7 +220,7 @@ void CollisionBoard::on_clock_event() {
         waves_.live.clk = true;
         fall_.notify(period_ / 2);
         sample_trace();
-        if (core_.phase() == BoardCore::Phase::Done && !first_traced_done_) first_traced_done_ = sc_time_stamp();
+        if (core_.phase() == SweepState::kDone && !first_traced_done_) first_traced_done_ = sc_time_stamp();
         if (core_.running()) {
             const uint64_t next = core_.edges() + 1;
             clock_event_.notify(segment_start_ + sc_time::from_value(next * period_.value()) - sc_time_stamp());
@@ -250,14 +250,14 @@ void CollisionBoard::sample_trace() {
     w.state = static_cast<uint32_t>(core_.phase());
     for (std::size_t k = 0; k < w.in_state.size(); ++k) w.in_state[k] = w.state == k;
     const ClockedEngine& engine = *traced_engine_;
-    const AddressGenerator::Issue& issue = engine.last_issue();
+    const PortWindow& issue = engine.last_issue();
     w.address[0] = issue.row;
     for (size_t port = 1; port < w.address.size(); ++port) {
         w.address[port] = issue.first_column + static_cast<uint32_t>(port) - 1;
     }
     const ClockedEngine::Slot& out = engine.compare_output();
-    const bool sweeping = out.kind == ClockedEngine::Slot::kSweep && out.valid_lanes > 0;
-    w.lane_valid = sweeping ? (~0ull >> (64 - out.valid_lanes)) : 0;
+    const bool sweeping = out.kind == ClockedEngine::Slot::kSweep && out.window.valid_lanes > 0;
+    w.lane_valid = sweeping ? (~0ull >> (64 - out.window.valid_lanes)) : 0;
     w.lane_hit = sweeping ? out.hits : 0;
     w.fifo_level = engine.fifo_level();
     w.stall = engine.stalled();

@@ -51,7 +51,7 @@ public:
     // When the first traced sweep's START and DONE were taken, once seen.
     const std::optional<sc_core::sc_time>& first_traced_start() const { return first_traced_start_; }
     const std::optional<sc_core::sc_time>& first_traced_done() const { return first_traced_done_; }
-    // The controller's states as the waveforms name them, in Phase order.
+    // The controller's states as the waveforms name them, in SweepState order.
     static const StateNames kControllerStates;
 
 private:

@@ -34,6 +34,10 @@ struct SweepCounters {
     }
 };
 
+// Where a sweep stands: the controller's state (the STATUS bits and the
+// waveforms' controller_state, in this order) and the clocked datapath's.
+enum class SweepState : uint8_t { kIdle, kRunning, kPaused, kDone };
+
 // A sweep runs in segments: from START or RESUME to the next overflow pause
 // or to done. The clock does not run between segments. Within a segment the
 // engine answers for any edge count, so the host may look at any time.
@@ -68,10 +72,6 @@ public:
     // reads copy them at once.
     virtual const IndexPair& buffer_entry(uint32_t k) = 0;
 };
-
-// Where a sweep stands, as STATUS shows it: before START, sweeping, paused on
-// an overflow until RESUME, done. BoardCore keeps it; an engine reports it.
-enum class BoardPhase : uint8_t { Idle, Running, Paused, Done };
 
 // Which engine computes a board's sweeps (models/board/engine_factory.h makes it).
 enum class Fidelity : uint8_t { kCycle, kFast };

@@ -47,7 +47,7 @@ void ClockedEngine::start(const CoordinateStore& store, uint32_t objects) {
     buffered_at_.clear();
     pushed_at_.clear();
     stall_runs_.clear();
-    state_ = State::kRunning;
+    state_ = SweepState::kRunning;
 }
 
 void ClockedEngine::resume() {
@@ -58,27 +58,27 @@ void ClockedEngine::resume() {
     buffered_at_.clear();
     pushed_at_.clear();
     stall_runs_.clear();
-    state_ = State::kRunning;
+    state_ = SweepState::kRunning;
 }
 
 void ClockedEngine::abort(uint64_t edges) {
     advance_to(edges);
     collector_.truncate_buffer(counters_after(edges).buffered);
-    state_ = State::kIdle;
+    state_ = SweepState::kIdle;
 }
 
 uint64_t ClockedEngine::segment_edges() {
-    while (state_ == State::kRunning) step();
+    while (state_ == SweepState::kRunning) step();
     return edges_;
 }
 
 bool ClockedEngine::segment_finishes() {
     segment_edges();
-    return state_ == State::kDone;
+    return state_ == SweepState::kDone;
 }
 
 void ClockedEngine::advance_to(uint64_t edges) {
-    while (state_ == State::kRunning && edges_ < edges) step();
+    while (state_ == SweepState::kRunning && edges_ < edges) step();
 }
 
 uint64_t ClockedEngine::stalls_through(uint64_t edges) const {
@@ -125,11 +125,13 @@ ClockedEngine::Slot ClockedEngine::issue() {
     if (next.kind == ScheduleWalker::Slot::kEnd) {
         if (end_issued_) return Slot{};
         end_issued_ = true;
-        return Slot{Slot::kEnd};
+        Slot end;
+        end.kind = Slot::kEnd;
+        return end;
     }
     block_ = next.block;
     if (waiting_) return Slot{};  // a bubble: the tile is still loading
-    const AddressGenerator::Issue addresses{next.row, next.first_column, next.valid_lanes};
+    const PortWindow& addresses = next.window;
     last_issue_ = addresses;
     const SweepSchedule::Block& block = schedule_.blocks()[next.block];
     const uint32_t row_base = loader_ ? schedule_.tile_begin(block.row_tile) : 0;
@@ -145,8 +147,7 @@ ClockedEngine::Slot ClockedEngine::issue() {
     // The hit mask is a pure function of the block RAM output registers just
     // loaded, so computing it here and presenting it compare-latency cycles
     // later is the same as computing it in the last compare stage.
-    return Slot{Slot::kSweep, addresses.row, addresses.first_column, addresses.valid_lanes,
-                comparison_unit_.evaluate(rows, columns, addresses.valid_lanes)};
+    return Slot{Slot::kSweep, addresses, comparison_unit_.evaluate(rows, columns, addresses.valid_lanes)};
 }
 
 void ClockedEngine::stall() {
@@ -167,7 +168,7 @@ void ClockedEngine::step() {
         // A pair must move and the buffer is full: this edge does no work
         // (a stall) and the clock stops until the host drains and resumes.
         stall();
-        state_ = State::kPaused;
+        state_ = SweepState::kPaused;
         return;
     }
     const uint32_t before = collector_.buffer_count();
@@ -177,7 +178,7 @@ void ClockedEngine::step() {
         // Only the FIFO's last pairs are left to move: every such cycle is
         // beyond S + L, so it counts as a stall.
         stall();
-        if (collector_.fifo_level() == 0) state_ = State::kDone;
+        if (collector_.fifo_level() == 0) state_ = SweepState::kDone;
         return;
     }
     Slot& leaving = line_[head_];
@@ -187,7 +188,7 @@ void ClockedEngine::step() {
             stall();  // back-pressure: the whole pipeline holds this cycle
             return;
         }
-        collector_.push(leaving.row, leaving.first_column, leaving.hits);
+        collector_.push(leaving.window.row, leaving.window.first_column, leaving.hits);
         pushed_at_.insert(pushed_at_.end(), hits, edges_);
     } else if (leaving.kind == Slot::kEnd) {
         end_seen_ = true;
@@ -195,7 +196,7 @@ void ClockedEngine::step() {
     stalled_ = false;
     leaving = issue();
     head_ = head_ + 1 == line_.size() ? 0 : head_ + 1;
-    if (end_seen_ && collector_.fifo_level() == 0) state_ = State::kDone;
+    if (end_seen_ && collector_.fifo_level() == 0) state_ = SweepState::kDone;
 }
 
 }  // namespace cdvp

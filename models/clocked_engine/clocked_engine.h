@@ -33,9 +33,7 @@ public:
     // lanes of one address-generator cycle, with the lane hits once compared.
     struct Slot {
         enum Kind : uint8_t { kBubble, kSweep, kEnd } kind = kBubble;
-        uint32_t row = 0;
-        uint32_t first_column = 0;
-        uint32_t valid_lanes = 0;
+        PortWindow window;
         uint64_t hits = 0;
     };
 
@@ -49,7 +47,7 @@ public:
     uint64_t segment_edges() override;
     bool ended_by(uint64_t edges) override {
         advance_to(edges);
-        return state_ != State::kRunning && edges_ <= edges;
+        return state_ != SweepState::kRunning && edges_ <= edges;
     }
     bool segment_finishes() override;
     SweepCounters counters_after(uint64_t edges) override;
@@ -57,13 +55,11 @@ public:
 
     // Steps the datapath to `edges` edges of the segment, or to its end.
     void advance_to(uint64_t edges);
-    uint64_t edges_run() const { return edges_; }
-    bool segment_over() const { return state_ != State::kRunning; }
 
     // Probes for waveforms: the last edge's addresses, compare output and stall;
     // on a tiled board the block's row and column tiles, whether a tile is
     // loading and whether the address generator waits for one.
-    const AddressGenerator::Issue& last_issue() const { return last_issue_; }
+    const PortWindow& last_issue() const { return last_issue_; }
     uint32_t row_tile() const { return tile_of(false); }
     uint32_t column_tile() const { return tile_of(true); }
     bool loading() const { return loader_ != nullptr && loader_->busy(); }
@@ -75,7 +71,6 @@ public:
     uint32_t block_rams() const;
 
 private:
-    enum class State : uint8_t { kIdle, kRunning, kPaused, kDone };
     void step();
     Slot issue();
     void stall();
@@ -96,14 +91,14 @@ private:
     ComparisonUnit comparison_unit_;
     PairCollector collector_;
 
-    State state_ = State::kIdle;
+    SweepState state_ = SweepState::kIdle;
     // Block RAM stage plus compare stages; head_ is the slot leaving this cycle.
     std::vector<Slot> line_;
     uint32_t head_ = 0;
     bool end_issued_ = false;  // the address generator sent its end marker
     bool end_seen_ = false;    // the end marker reached the collector
     bool stalled_ = false;
-    AddressGenerator::Issue last_issue_{};
+    PortWindow last_issue_{};
 
     // The segment so far: edges run, and the edge (1-based) at which each
     // buffer entry was written, each pair entered the FIFO and each run of

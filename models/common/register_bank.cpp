@@ -13,6 +13,18 @@ void RegisterBank::add(std::string name, uint32_t offset, RegisterAccess access,
     registers_.push_back(Register{std::move(name), offset, access, std::move(on_read), std::move(on_write)});
 }
 
+void RegisterBank::add_wide(const std::string& name, uint32_t offset_lo, uint32_t offset_hi, RegisterAccess access,
+                            WideReadCallback read, WideWriteCallback write) {
+    constexpr uint64_t kLow = 0xffffffffull;
+    WriteCallback write_lo, write_hi;
+    if (write) {
+        write_lo = [read, write](uint32_t v) { return write((read() & ~kLow) | v); };
+        write_hi = [read, write](uint32_t v) { return write((read() & kLow) | uint64_t{v} << 32); };
+    }
+    add(name + "_LO", offset_lo, access, [read] { return static_cast<uint32_t>(read()); }, std::move(write_lo));
+    add(name + "_HI", offset_hi, access, [read] { return static_cast<uint32_t>(read() >> 32); }, std::move(write_hi));
+}
+
 const RegisterBank::Register* RegisterBank::find(uint32_t offset) const {
     for (const Register& r : registers_) {
         if (r.offset == offset) return &r;

@@ -39,6 +39,14 @@ public:
     void add(std::string name, uint32_t offset, RegisterAccess access, ReadCallback on_read = {},
                   WriteCallback on_write = {});
 
+    // A 64-bit value as two registers, NAME_LO (bits 31..0) and NAME_HI
+    // (bits 63..32), each read from `read`; a write to either half hands the
+    // whole value, that half replaced, to `write` (none: read-only).
+    using WideReadCallback = std::function<uint64_t()>;
+    using WideWriteCallback = std::function<RegisterResult(uint64_t)>;
+    void add_wide(const std::string& name, uint32_t offset_lo, uint32_t offset_hi, RegisterAccess access,
+                  WideReadCallback read, WideWriteCallback write = {});
+
     // A write-only register reads as 0; a write to a read-only register is
     // ignored, as on the hardware (both kDone).
     RegisterResult read(uint32_t offset, uint32_t& value) const;

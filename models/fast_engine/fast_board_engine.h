@@ -22,7 +22,7 @@ public:
     void abort(uint64_t edges) override;
     uint64_t segment_edges() override { return end_edge_; }
     bool ended_by(uint64_t edges) override { return end_edge_ <= edges; }
-    bool segment_finishes() override { return !aborted_ && engine_.phase() == BoardPhase::Done; }
+    bool segment_finishes() override { return !aborted_ && engine_.phase() == SweepState::kDone; }
     SweepCounters counters_after(uint64_t edges) override;
     const IndexPair& buffer_entry(uint32_t k) override { return engine_.buffer_entry(k); }
 

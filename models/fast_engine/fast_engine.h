@@ -46,7 +46,7 @@ public:
     uint64_t segment_cycles() const { return timeline_.segment_cycles(); }
     BoardObservation observe(uint64_t edges) const { return timeline_.observe(edges); }
     // At the segment's end: Paused or Done (Idle before the first start).
-    BoardPhase phase() const { return timeline_.phase(); }
+    SweepState phase() const { return timeline_.phase(); }
 
     const IndexPair& buffer_entry(uint32_t k) const { return pairs_[timeline_.buffer_begin() + k]; }
     // Every pair of the sweep, in BoardCore's order.

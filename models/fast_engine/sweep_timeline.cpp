@@ -41,17 +41,17 @@ void SweepTimeline::start(uint32_t objects, const std::vector<IndexPair>& pairs)
     pairs_ = &pairs;
     buffer_begin_ = 0;
     Cursor cursor;
-    cursor.phase = BoardPhase::Running;
+    cursor.phase = SweepState::kRunning;
     run_segment(cursor);
 }
 
 void SweepTimeline::resume() {
-    if (end_.phase != BoardPhase::Paused) throw std::logic_error("resume: the sweep is not paused");
+    if (end_.phase != SweepState::kPaused) throw std::logic_error("resume: the sweep is not paused");
     buffer_begin_ += end_.buffer;
     Cursor cursor = end_;
     cursor.buffer = 0;  // the host has read the buffer
     cursor.segment_edges = 0;
-    cursor.phase = BoardPhase::Running;
+    cursor.phase = SweepState::kRunning;
     run_segment(cursor);
 }
 
@@ -135,11 +135,10 @@ void SweepTimeline::drain_edges(Cursor& cursor, uint64_t k, uint32_t stall_per_e
 }
 
 void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoints) const {
-    using Phase = BoardPhase;
     const uint32_t drain = drain_per_cycle_;
     uint32_t events = 0;
     // Every pass runs at least one edge.
-    while (c.phase == Phase::Running && c.segment_edges < limit) {
+    while (c.phase == SweepState::kRunning && c.segment_edges < limit) {
         if (checkpoints != nullptr && ++events % kCheckpointEvery == 0) checkpoints->push_back(c);
         uint64_t budget = limit - c.segment_edges;
         uint32_t room = buffer_depth_ - c.buffer;
@@ -148,14 +147,14 @@ void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoi
             ++c.segment_edges;
             ++c.cycles;
             ++c.stalls;
-            c.phase = Phase::Paused;
+            c.phase = SweepState::kPaused;
             continue;
         }
         // Edges until the buffer fills with pairs still in the FIFO (the next one pauses).
         uint64_t until_full = c.fifo > room ? ceil_div(room, drain) : kNever;
         if (c.end_seen) {  // only the FIFO's last pairs are left: each edge is a stall
             drain_edges(c, std::min({ceil_div(c.fifo, drain), until_full, budget}), 1);
-            if (c.fifo == 0) c.phase = Phase::Done;
+            if (c.fifo == 0) c.phase = SweepState::kDone;
             continue;
         }
         if (!c.head.known) locate_head(c);
@@ -175,7 +174,7 @@ void SweepTimeline::run(Cursor& c, uint64_t limit, std::vector<Cursor>* checkpoi
         if (head.hits == 0) {  // the end marker
             drain_edges(c, 1, 0);
             c.end_seen = true;
-            if (c.fifo == 0) c.phase = Phase::Done;
+            if (c.fifo == 0) c.phase = SweepState::kDone;
             continue;
         }
         if (c.fifo - moved + head.hits <= fifo_depth_) {  // the slot's hits enter the FIFO

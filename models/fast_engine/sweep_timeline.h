@@ -17,7 +17,7 @@ struct BoardObservation {
     uint32_t buffer_count = 0;  // PAIR_COUNT: pairs in the pair buffer
     uint64_t total_pairs = 0;   // TOTAL_PAIRS: pairs that entered the FIFO
     uint32_t fifo_level = 0;    // pairs in the FIFO (not a register; for tests and tracing)
-    BoardPhase phase = BoardPhase::Running;
+    SweepState phase = SweepState::kRunning;
 };
 
 // Replays BoardCore's pipeline, FIFO and pair buffer without stepping empty
@@ -58,7 +58,7 @@ public:
     // the segment's end observe its end: the clock has stopped).
     BoardObservation observe(uint64_t edges) const;
     // Phase at the segment's end: Paused or Done (Idle before any start).
-    BoardPhase phase() const { return end_.phase; }
+    SweepState phase() const { return end_.phase; }
     // Index in the pair list of the first pair in the buffer this segment.
     uint64_t buffer_begin() const { return buffer_begin_; }
 
@@ -82,7 +82,7 @@ private:
         uint32_t fifo = 0;
         uint32_t buffer = 0;
         bool end_seen = false;
-        BoardPhase phase = BoardPhase::Idle;
+        SweepState phase = SweepState::kIdle;
         HeadSlot head;  // the slot of next_pair, once computed
     };
 

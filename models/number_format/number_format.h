@@ -8,13 +8,6 @@
 
 namespace cdvp {
 
-// A value type. What a comparison means lives here, so that both engines
-// and the resource model ask the same object:
-//   float32: IEEE comparisons (NaN never true, -0 == +0, denormals as they are);
-//   fixedK:  unsigned comparisons of the word's low K bits (the memories are
-//            K bits wide and keep only those bits of what the host writes).
-// The fast engine compares ordered keys instead (key()): for every word that
-// is not excluded(), key(a) <= key(b) exactly when a <= b in the format.
 // The six coordinates of a box in block RAM: the primitives' aspect and how
 // many coordinates share one word of it.
 struct BlockRamLayout {
@@ -29,6 +22,13 @@ struct BlockRamLayout {
     uint64_t primitives(uint64_t boxes) const { return word_groups() * ((boxes + depth - 1) / depth); }
 };
 
+// A value type. What a comparison means lives here, so that both engines
+// and the resource model ask the same object:
+//   float32: IEEE comparisons (NaN never true, -0 == +0, denormals as they are);
+//   fixedK:  unsigned comparisons of the word's low K bits (the memories are
+//            K bits wide and keep only those bits of what the host writes).
+// The fast engine compares ordered keys instead (key()): for every word that
+// is not excluded(), key(a) <= key(b) exactly when a <= b in the format.
 class NumberFormat {
 public:
     static constexpr uint32_t kMinFixedBits = 8;

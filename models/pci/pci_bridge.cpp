@@ -73,24 +73,18 @@ tlm::tlm_response_status PciBridge::access_registers(tlm::tlm_generic_payload& p
 
 void PciBridge::declare_registers() {
     using A = RegisterAccess;
-    auto low = [](const uint64_t& field) { return [&field] { return static_cast<uint32_t>(field); }; };
-    auto high = [](const uint64_t& field) { return [&field] { return static_cast<uint32_t>(field >> 32); }; };
+    auto field = [](const uint64_t& f) { return [&f] { return f; }; };
     // The set-up registers are locked while a transfer runs: it reads them.
     auto setup = [this](auto assign) {
-        return [this, assign](uint32_t v) {
+        return [this, assign](auto v) {
             if (dma_.busy) return RegisterResult::kRefused;
             assign(v);
             return RegisterResult::kDone;
         };
     };
-    auto set_low = [](uint64_t& field) { return [&field](uint32_t v) { field = (field & ~0xffffffffull) | v; }; };
-    auto set_high = [](uint64_t& field) {
-        return [&field](uint32_t v) { field = (field & 0xffffffffull) | uint64_t{v} << 32; };
-    };
-    registers_.add("DMA_HOST_ADDRESS_LO", D::kHostAddressLo, A::kReadWrite, low(dma_.host_address),
-                   setup(set_low(dma_.host_address)));
-    registers_.add("DMA_HOST_ADDRESS_HI", D::kHostAddressHi, A::kReadWrite, high(dma_.host_address),
-                   setup(set_high(dma_.host_address)));
+    auto store = [](uint64_t& f) { return [&f](uint64_t v) { f = v; }; };
+    registers_.add_wide("DMA_HOST_ADDRESS", D::kHostAddressLo, D::kHostAddressHi, A::kReadWrite,
+                        field(dma_.host_address), setup(store(dma_.host_address)));
     registers_.add("DMA_LOCAL_ADDRESS", D::kLocalAddress, A::kReadWrite, [this] { return dma_.local_address; },
                    setup([this](uint32_t v) { dma_.local_address = v; }));
     registers_.add("DMA_BYTES", D::kBytes, A::kReadWrite, [this] { return dma_.bytes; },
@@ -106,14 +100,12 @@ void PciBridge::declare_registers() {
         inta_changed_.notify(SC_ZERO_TIME);
         return RegisterResult::kDone;
     });
-    registers_.add("DMA_CHAIN_LO", D::kChainLo, A::kReadWrite, low(dma_.chain_address),
-                   setup(set_low(dma_.chain_address)));
-    registers_.add("DMA_CHAIN_HI", D::kChainHi, A::kReadWrite, high(dma_.chain_address),
-                   setup(set_high(dma_.chain_address)));
+    registers_.add_wide("DMA_CHAIN", D::kChainLo, D::kChainHi, A::kReadWrite, field(dma_.chain_address),
+                        setup(store(dma_.chain_address)));
     registers_.add("DMA_ERROR_CAUSE", D::kErrorCause, A::kReadOnly,
                    [this] { return static_cast<uint32_t>(dma_.cause); });
-    registers_.add("DMA_ERROR_ADDRESS_LO", D::kErrorAddressLo, A::kReadOnly, low(dma_.fault_address));
-    registers_.add("DMA_ERROR_ADDRESS_HI", D::kErrorAddressHi, A::kReadOnly, high(dma_.fault_address));
+    registers_.add_wide("DMA_ERROR_ADDRESS", D::kErrorAddressLo, D::kErrorAddressHi, A::kReadOnly,
+                        field(dma_.fault_address));
 }
 
 void PciBridge::clear_error() {

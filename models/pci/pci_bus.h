@@ -34,7 +34,6 @@ public:
     PciBus(const sc_core::sc_module_name& name, std::shared_ptr<const BusTiming> timing);
 
     const BusTiming& timing() const { return *timing_; }
-    std::shared_ptr<const BusTiming> shared_timing() const { return timing_; }
     // Faults to inject (lost-irq); null for none. Not owned.
     void set_fault_plan(FaultPlan* plan) { faults_ = plan; }
     // Notified when the driver's interrupt handler runs.

@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "sw/baselines/brute_force.h"
+#include "sw/baselines/bullet_factory.h"
 
 namespace cdvp {
 
@@ -51,21 +53,11 @@ std::pair<btVector3, btVector3> world_bounds(const std::vector<FloatBox>& boxes)
     return {world_min, world_max};
 }
 
-constexpr std::size_t kMax16BitHandles = 16383;  // btAxisSweep3 adds a sentinel handle
-
-std::unique_ptr<btBroadphaseInterface> create_broadphase(BulletKind kind,
-                                                         const std::vector<FloatBox>& boxes) {
-    if (kind == BulletKind::dbvt) return std::make_unique<btDbvtBroadphase>();
+std::unique_ptr<btBroadphaseInterface> create_broadphase(BulletKind kind, const std::vector<FloatBox>& boxes) {
+    constexpr bool kRayAccelerator = false;  // a DBVT shadow we never query
+    if (kind == BulletKind::dbvt) return make_bullet_broadphase(kind, {}, {}, boxes.size(), kRayAccelerator);
     const auto [world_min, world_max] = world_bounds(boxes);
-    constexpr bool kDisableRaycastAccelerator = true;  // a DBVT shadow we never query
-    if (boxes.size() <= kMax16BitHandles) {
-        return std::make_unique<btAxisSweep3>(world_min, world_max,
-                                              static_cast<unsigned short>(boxes.size()), nullptr,
-                                              kDisableRaycastAccelerator);
-    }
-    return std::make_unique<bt32BitAxisSweep3>(world_min, world_max,
-                                               static_cast<unsigned int>(boxes.size()), nullptr,
-                                               kDisableRaycastAccelerator);
+    return make_bullet_broadphase(kind, world_min, world_max, boxes.size(), kRayAccelerator);
 }
 
 // Both broad phases own a btHashedOverlappingPairCache (the default when none is
@@ -144,6 +136,20 @@ private:
 
 std::unique_ptr<BroadPhase> make_bullet_broad_phase(BulletKind kind) {
     return std::make_unique<BulletBroadPhase>(kind);
+}
+
+std::unique_ptr<btBroadphaseInterface> make_bullet_broadphase(BulletKind kind, const btVector3& world_min,
+                                                              const btVector3& world_max, uint64_t handles,
+                                                              bool ray_accelerator) {
+    constexpr uint64_t kMax16BitHandles = 16384;  // btAxisSweep3's default
+    if (kind == BulletKind::dbvt) return std::make_unique<btDbvtBroadphase>();
+    if (handles > INT32_MAX) throw std::invalid_argument("too many proxies for Bullet's broad phases");
+    if (handles <= kMax16BitHandles) {
+        return std::make_unique<btAxisSweep3>(world_min, world_max, static_cast<unsigned short>(handles), nullptr,
+                                              !ray_accelerator);
+    }
+    return std::make_unique<bt32BitAxisSweep3>(world_min, world_max, static_cast<unsigned int>(handles), nullptr,
+                                               !ray_accelerator);
 }
 
 }  // namespace cdvp

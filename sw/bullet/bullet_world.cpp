@@ -6,6 +6,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "sw/baselines/bullet_factory.h"
 #include "sw/bullet/board_broadphase.h"
 
 namespace cdvp {
@@ -44,14 +45,16 @@ BroadphaseKind broadphase_kind(const std::string& name) {
 std::unique_ptr<btBroadphaseInterface> make_broadphase(BroadphaseKind kind, const btVector3& world_min,
                                                        const btVector3& world_max, uint32_t proxies,
                                                        BoardLink* link) {
+    // Room for twice the proxies the scene starts with, as it adds more.
     const uint64_t handles = std::max<uint64_t>(kDefaultHandles, 2 * uint64_t{proxies});
     if (handles > INT32_MAX) throw std::invalid_argument("too many proxies for Bullet's broad phases");
+    constexpr bool kRayAccelerator = true;  // Bullet's default: the scenes may cast rays
     switch (kind) {
         case BroadphaseKind::kSimple: return std::make_unique<btSimpleBroadphase>(static_cast<int>(handles));
         case BroadphaseKind::kSap:
-            if (handles == kDefaultHandles) return std::make_unique<btAxisSweep3>(world_min, world_max);
-            return std::make_unique<bt32BitAxisSweep3>(world_min, world_max, static_cast<unsigned>(handles));
-        case BroadphaseKind::kDbvt: return std::make_unique<btDbvtBroadphase>();
+            return make_bullet_broadphase(BulletKind::sap, world_min, world_max, handles, kRayAccelerator);
+        case BroadphaseKind::kDbvt:
+            return make_bullet_broadphase(BulletKind::dbvt, world_min, world_max, handles, kRayAccelerator);
         case BroadphaseKind::kBoard:
             if (link == nullptr) throw std::invalid_argument("the board broad phase needs a board link");
             return std::make_unique<BoardBroadphase>(*link);

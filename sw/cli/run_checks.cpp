@@ -176,7 +176,7 @@ void check_ssram(const FrameOrigin& origin, const SettingValues& values, uint64_
         throw InputError(values.where(setting("device.ssram_banks")) + ": the device has no off-chip SSRAM (0 banks); " +
                          memory + " needs some: use block_ram or give device.ssram_banks");
     }
-    if (settings.run.ignore_capacity != "yes" && max_objects > plan.ssram_capacity) {
+    if (!settings.run.ignore_capacity && max_objects > plan.ssram_capacity) {
         throw InputError(values.where(setting("device.ssram_words")) + ": " + std::to_string(settings.device.ssram_words) +
                          " words a bank in " + std::to_string(settings.device.ssram_banks) + " SSRAM banks hold " +
                          std::to_string(plan.ssram_capacity) + " boxes, too few for " +
@@ -202,11 +202,14 @@ void check_ssram(const FrameOrigin& origin, const SettingValues& values, uint64_
         if (board.block_rams(max_objects) <= settings.device.block_rams) largest = m;
     }
     board.m = settings.board.m;
+    // The format's own layout: word groups a box, boxes a primitive.
+    const BlockRamLayout layout = board.format.block_ram_layout(board.memory_depth(max_objects));
     throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(settings.device.block_rams) +
                      " block RAMs are too few for the SSRAM tile buffers of " +
                      values.value_and_origin(setting("board.m")) + " at " + objects_origin(origin, values, max_objects) +
-                     " in tiles of " + std::to_string(plan.tiles.boxes) + " boxes: they need 6 x (2m+2) x ceil(T/512) = " +
-                     std::to_string(board.block_rams(max_objects)) +
+                     " in tiles of " + std::to_string(plan.tiles.boxes) + " boxes: they need " +
+                     std::to_string(layout.word_groups()) + " x (2m+2) x ceil(T/" + std::to_string(layout.depth) +
+                     ") = " + std::to_string(board.block_rams(max_objects)) +
                      (largest > 0 ? " (largest m that fits: " + std::to_string(largest)
                                   : " (not even m=1 fits: use smaller tiles or a larger device") +
                      "; --ignore-capacity runs it anyway)");
@@ -214,7 +217,7 @@ void check_ssram(const FrameOrigin& origin, const SettingValues& values, uint64_
 
 void check_device_fits(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects) {
     const Settings& settings = values.settings();
-    if (settings.run.ignore_capacity == "yes") return;
+    if (settings.run.ignore_capacity) return;
     const MemoryPlan plan = plan_memory(settings, max_objects);
     const BoardConfig board = planned_board(settings, max_objects);
     const std::string m = values.value_and_origin(setting("board.m"));
@@ -243,7 +246,7 @@ void check_device_fits(const FrameOrigin& origin, const SettingValues& values, u
                      " are too few for " + at + ": the board needs " + whole(over.needed) + " (" +
                      std::to_string(2 * board.m - 1) + " " + board.format.name() +
                      " lanes, the memories, address generator, pair FIFO "
-                     "and control, from synthesis for " + settings.device.family + ")" +
+                     "and control, from synthesis for " + name_of(settings.device.family) + ")" +
                      (fit.largest_m > 0 ? " (largest m that fits: " + std::to_string(fit.largest_m) + explore + ")"
                                         : " (not even m=1 fits" + explore + ")"));
 }

@@ -16,6 +16,7 @@
 
 #include "models/board_spec/board_config.h"
 #include "platform/device_fit.h"
+#include "platform/setting_choices.h"
 #include "platform/setting_values.h"
 #include "sw/cli/format_reference.h"
 #include "sw/cli/host_factor.h"
@@ -58,10 +59,12 @@ struct RunConfig {
     std::string host;
     HostTiming host_timing;  // the factors from native to modelled-host time, and what they rest on
     std::array<double, 3> load_average_start{};
-    bool dma = true;
-    bool interrupts = true;
+    // The settings' typed values (the engine as the platform runs it: --vcd
+    // picks the clocked one); the report and the summary print their names.
+    Transfer transfer = Transfer::kDma;
+    WaitMode wait = WaitMode::kIrq;
     double quantum_ns = 0.0;
-    std::string fidelity = "cycle";
+    Fidelity fidelity = Fidelity::kCycle;
     std::vector<std::string> baseline_names;
     uint32_t baseline_runs = 1;  // --repeat
     std::vector<std::string> inject;  // fault specs, as parsed

@@ -4,6 +4,7 @@
 #include "platform/config_file.h"
 #include "platform/device_fit.h"
 #include "platform/memory_plan.h"
+#include "platform/platform_settings.h"
 #include "sw/bullet/scenes.h"
 
 namespace po = boost::program_options;
@@ -35,20 +36,13 @@ SettingValues layered_settings(const SettingLayers& layers, const po::variables_
 BoardSetup board_setup(const SettingLayers& layers, const po::variables_map& vm, const std::string& scene) {
     BoardSetup setup;
     setup.values = layered_settings(layers, vm, scene, setup.board);
-    const Settings& settings = setup.values.settings();
-    setup.values.check_board();
-    setup.platform.board = settings.board;
-    setup.platform.bus = setup.values.bus();
-    setup.platform.driver = settings.driver;
-    setup.platform.driver.use_dma = settings.run.transfer == "dma";
-    setup.platform.driver.use_interrupts = settings.run.wait == "irq";
-    setup.platform.quantum_ns = settings.run.quantum_ns;
+    setup.platform = platform_config(setup.values);
     return setup;
 }
 
 Fidelity engine_fidelity(const SettingValues& values, const po::variables_map& vm) {
     const Setting& setting = *find_setting("run.fidelity");
-    const bool cycle = values.settings().run.fidelity == "cycle";
+    const bool cycle = values.settings().run.fidelity == Fidelity::kCycle;
     if (vm.count("vcd") != 0) {
         if (!values.is_default(setting) && !cycle) {
             throw InputError("--vcd: waveforms need the clocked engine; " + values.where(setting) +
@@ -77,10 +71,10 @@ RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& b
     run.host_timing = setup.host;
     run.load_average_start = load_average();
     run.settings = &setup.values;
-    run.dma = setup.platform.driver.use_dma;
-    run.interrupts = setup.platform.driver.use_interrupts;
-    run.quantum_ns = setup.platform.quantum_ns;
-    run.fidelity = to_string(setup.platform.fidelity);
+    run.transfer = settings.run.transfer;
+    run.wait = settings.run.wait;
+    run.quantum_ns = settings.run.quantum_ns;
+    run.fidelity = setup.platform.fidelity;
     run.baseline_runs = settings.run.repeat;
     run.budgets = {budgets.memory_bytes(), budgets.pair_budget().max_pairs(), budgets.footprint().before_pairs(),
                    budgets.footprint().per_pair};

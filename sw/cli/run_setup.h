@@ -38,9 +38,9 @@ struct BoardSetup {
 SettingValues layered_settings(const SettingLayers& layers, const boost::program_options::variables_map& vm,
                                const std::string& scene, std::string& board_name);
 
-// The layers, the board's settings checked against each other, and the
-// platform they give: board, bus, driver, transfer and wait, host quantum.
-// The engine (engine_fidelity) and the host timing (resolve_host_timing) are
+// The layers and the platform they give (platform_config: the board checked,
+// bus, driver, transfer and wait, engine, host quantum). The engine as --vcd
+// needs it (engine_fidelity) and the host timing (resolve_host_timing) are
 // the caller's to set, after whatever checks it makes first.
 BoardSetup board_setup(const SettingLayers& layers, const boost::program_options::variables_map& vm,
                        const std::string& scene);

@@ -92,7 +92,7 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
     // Names may be long and come from files: printed whole and escaped.
     std::snprintf(line, sizeof line, ": m=%u (%u %s lanes), %.6g MHz, L=%u cycles, %u block RAMs for the boxes, %s engine\n", c.m,
                   c.lanes(), c.format.name().c_str(), c.clock_mhz, c.pipeline_latency(), run.block_rams,
-                  run.fidelity.c_str());
+                  name_of(run.fidelity));
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
     if (run.device_fit) print_resources(out, *run.device_fit);
     if (run.ssram) {

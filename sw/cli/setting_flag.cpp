@@ -17,7 +17,8 @@ std::string SettingFlag::name() const {
 
 void SettingFlag::parse(boost::any& store, const std::vector<std::string>& tokens, bool /*utf8*/) const {
     po::validators::check_first_occurrence(store);  // "--m 2 --m 3" is refused
-    const std::string text = setting_.value_name.empty() ? "yes" : tokens.empty() ? std::string() : tokens.front();
+    // A switch (no value) sets its yes|no choice to the name of true.
+    const std::string text = setting_.value_name.empty() ? name_of(true) : tokens.empty() ? std::string() : tokens.front();
     try {
         store = setting_.parse_text(text);
     } catch (const std::invalid_argument& e) {

@@ -51,7 +51,7 @@ std::string help_of(const Setting& s) {
 std::string default_text(const Setting& s) {
     if (s.buses != kAnyBus) return to_text(s.default_value());
     Settings pcie;
-    pcie.bus_type = "pcie";
+    pcie.bus_type = BusType::kPcie;
     return to_text(s.default_value()) + " (pci), " + to_text(s.get(pcie)) + " (pcie)";
 }
 

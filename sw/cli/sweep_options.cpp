@@ -141,20 +141,9 @@ void resolve_axis(Axis& axis, const std::string& label, const std::set<std::stri
     }
 }
 
-}  // namespace
-
-std::string sweep_help() { return kHelp; }
-
-std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
-    for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
-        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return std::nullopt;
-    }
-    std::vector<std::string> sets;
-    const ParsedCommandLine line = parse_with_run_options(argc, argv, own_options(sets), "cdvp sweep");
-    std::set<std::string> run_flags = run_option_names();
-    for (const char* own : {"help", "quiet", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format"}) run_flags.erase(own);
-
-    SweepOptions o;
+// The sweep's own options: its axes (--NAME LIST and --set NAME=LIST), --out,
+// --jobs and --shard.
+void read_own_options(const ParsedCommandLine& line, const std::set<std::string>& run_flags, SweepOptions& o) {
     for (const po::option& option : line.own) {
         const std::string& key = option.string_key;
         if (is_axis_option(key)) {
@@ -175,6 +164,12 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
             o.shard = parse_shard(option.value.at(0));
         }
     }
+}
+
+// The options of cdvp run every point takes: none the sweep sets itself,
+// none that is also an axis; a config file is read here, so that it is
+// refused before any point runs.
+void read_forwarded_options(const ParsedCommandLine& line, SweepOptions& o) {
     for (const ForwardedOption& option : line.forwarded) {
         if (option.key == "report" || option.key == "pairs-out" || option.key == "vcd" || option.key == "vcd-frames" ||
             option.key == "vcd-format") {
@@ -196,10 +191,11 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
             o.inputs.push_back({"--host-profile", option.value, option.value});
         }
     }
-    o.quiet = line.values["quiet"].as<bool>();
-    o.plots = !line.values["no-plots"].as<bool>();
-    o.rerun_invalid = line.values["rerun-invalid"].as<bool>();
-    if (o.out_dir.empty()) throw InputError("--out DIR is required (see cdvp sweep --help)");
+}
+
+// Every file an axis names (traces, configs, presets, host profiles), for the
+// manifest's digests; one source of frames at most.
+void name_axis_inputs(SweepOptions& o) {
     std::set<std::string> sources;
     for (const Axis& axis : o.axes) {
         if (axis.key == "scene" || axis.key == "trace") sources.insert(axis.key);
@@ -210,6 +206,30 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
         }
     }
     if (sources.size() == 2) throw InputError("--scene and --trace: give one of them (the points' frames come from it)");
+    if (sources.empty()) o.run_options.insert(o.run_options.begin(), "--scene=spheres");
+}
+
+}  // namespace
+
+std::string sweep_help() { return kHelp; }
+
+std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
+    for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return std::nullopt;
+    }
+    std::vector<std::string> sets;
+    const ParsedCommandLine line = parse_with_run_options(argc, argv, own_options(sets), "cdvp sweep");
+    std::set<std::string> run_flags = run_option_names();
+    for (const char* own : {"help", "quiet", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format"}) run_flags.erase(own);
+
+    SweepOptions o;
+    read_own_options(line, run_flags, o);
+    read_forwarded_options(line, o);
+    o.quiet = line.values["quiet"].as<bool>();
+    o.plots = !line.values["no-plots"].as<bool>();
+    o.rerun_invalid = line.values["rerun-invalid"].as<bool>();
+    if (o.out_dir.empty()) throw InputError("--out DIR is required (see cdvp sweep --help)");
+    name_axis_inputs(o);
     // The host profile the points read when none is named: a calibration
     // between two runs of the sweep changes its factors.
     const bool profile_named = std::any_of(o.inputs.begin(), o.inputs.end(),
@@ -217,7 +237,6 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
     if (const std::string path = default_host_profile_path(); !profile_named && !path.empty() && fs_exists(path)) {
         o.inputs.push_back({"--host-profile", "(its default place)", path});
     }
-    if (sources.empty()) o.run_options.insert(o.run_options.begin(), "--scene=spheres");
     return o;
 }
 

@@ -196,42 +196,49 @@ void place_samples(Samples& samples) {
     samples.variants = std::max<std::size_t>(1, variants.size());
 }
 
-}  // namespace
-
-FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
-    FigurePlan plan;
-    // Each by what it sets, whatever its name (a grid named by hand keys its axes by name).
-    const Axis* board_axis = grid.find("board");
-    const Axis* n_axis = grid.find("scene.objects") ? grid.find("scene.objects") : grid.find("objects");
-    const Axis* m_axis = grid.find("board.m") ? grid.find("board.m") : grid.find("m");
-    // Every other axis that varies draws lines of its own.
-    std::vector<const Axis*> variant_axes;
+// The axes the figures read, each by what it sets, whatever its name (a grid
+// named by hand keys its axes by name); every other axis that varies draws
+// lines of its own, a variant.
+struct PlotAxes {
+    const Axis* board = nullptr;
+    const Axis* n = nullptr;
+    const Axis* m = nullptr;
+    std::vector<const Axis*> variants;
     std::vector<std::string> variant_names;
-    for (const Axis& axis : grid.axes()) {
-        if (&axis != board_axis && &axis != n_axis && &axis != m_axis && axis.values.size() > 1) {
-            variant_axes.push_back(&axis);
-            variant_names.push_back(axis.name);
-        }
-    }
     // Each variant value's place in its axis, for lines in grid order.
     std::vector<std::map<std::string, std::size_t>> variant_places;
-    for (const Axis* axis : variant_axes) {
-        variant_places.emplace_back();
-        for (std::size_t k = 0; k < axis->values.size(); ++k) variant_places.back().emplace(axis->values[k], k);
+};
+
+PlotAxes plot_axes(const Grid& grid) {
+    PlotAxes axes;
+    axes.board = grid.find("board");
+    axes.n = grid.find("scene.objects") ? grid.find("scene.objects") : grid.find("objects");
+    axes.m = grid.find("board.m") ? grid.find("board.m") : grid.find("m");
+    for (const Axis& axis : grid.axes()) {
+        if (&axis == axes.board || &axis == axes.n || &axis == axes.m || axis.values.size() < 2) continue;
+        axes.variants.push_back(&axis);
+        axes.variant_names.push_back(axis.name);
+        axes.variant_places.emplace_back();
+        for (std::size_t k = 0; k < axis.values.size(); ++k) axes.variant_places.back().emplace(axis.values[k], k);
     }
+    return axes;
+}
+
+// One sample per point that ran, with its board, m, N and variant.
+Samples collect_samples(const PlotAxes& axes, const SweepTable& table) {
     Samples samples;
     table.for_each([&](std::size_t, const RowView& row) {
         if (text(row, "status") != "ok") return;
         Sample s;
-        s.board = text(row, board_axis ? board_axis->name : "config.board");
-        s.m = number(row, m_axis ? m_axis->name : "config.m");
-        s.n = number(row, n_axis ? n_axis->name : "median_objects");
+        s.board = text(row, axes.board ? axes.board->name : "config.board");
+        s.m = number(row, axes.m ? axes.m->name : "config.m");
+        s.n = number(row, axes.n ? axes.n->name : "median_objects");
         s.row = row;
-        for (std::size_t v = 0; v < variant_axes.size(); ++v) {
-            const Axis* axis = variant_axes[v];
+        for (std::size_t v = 0; v < axes.variants.size(); ++v) {
+            const Axis* axis = axes.variants[v];
             const std::string value = text(row, axis->name);
-            const auto at = variant_places[v].find(value);
-            const std::size_t place = at == variant_places[v].end() ? axis->values.size() : at->second;
+            const auto at = axes.variant_places[v].find(value);
+            const std::size_t place = at == axes.variant_places[v].end() ? axis->values.size() : at->second;
             char order[16];
             std::snprintf(order, sizeof order, "%08zu|", place);
             s.variant += (s.variant.empty() ? "" : " ") + axis->name + "=" + value;
@@ -243,6 +250,17 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
         }
         samples.all.push_back(s);
     });
+    return samples;
+}
+
+}  // namespace
+
+FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
+    FigurePlan plan;
+    const PlotAxes axes = plot_axes(grid);
+    const Axis* n_axis = axes.n;
+    const std::vector<std::string>& variant_names = axes.variant_names;
+    Samples samples = collect_samples(axes, table);
     if (samples.all.empty()) {
         plan.notes.push_back("no plots: no point of the sweep ran");
         return plan;

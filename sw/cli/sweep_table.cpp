@@ -114,70 +114,69 @@ std::string row_checksum(const Row& row, const std::string* report_sha256) {
     return sha256_hex(fields).substr(0, 16);
 }
 
-PointRow report_row(const Grid& grid, const Point& point, const std::string& report_text, double wall_seconds) {
-    const nlohmann::json report = nlohmann::json::parse(report_text);
-    Row row = axis_row(grid, point, PointStatus::kOk, "");
-    std::vector<std::string> order;  // the report's own order of its columns
-    auto put = [&](const std::string& column, const std::string& value) {
+namespace {
+
+// A row filled column by column, in the order the report first names each.
+struct RowBuilder {
+    Row row;
+    std::vector<std::string> order;
+    void put(const std::string& column, const std::string& value) {
         if (row.count(column) == 0) order.push_back(column);
         row[column] = value;
-    };
+    }
+};
+
+void put_config(const nlohmann::json& report, RowBuilder& out) {
     for (const auto& [key, item] : report.at("config").items()) {
         // The point's own command line names its report's path, which differs
         // between shards of one sweep: the sweep's columns are its settings.
         if (key == "command_line") continue;
         Row one;
         flatten(item, "config." + key, one);
-        for (const auto& [column, value] : one) put(column, value);
+        for (const auto& [column, value] : one) out.put(column, value);
     }
-    const auto& frames = report.at("frames");
-    const nlohmann::json summary = report.value("summary", nlohmann::json::object());
-    // Steady state: warm-up frames are left out (the incremental broad
-    // phases build their structures in them): as many as the report says,
-    // else the first; at least one frame stays.
-    const std::size_t warmup = summary.value("warmup_frames", std::size_t{1});
-    const std::size_t first = frames.size() > warmup ? warmup : frames.empty() ? 0 : frames.size() - 1;
-    put("report_frames", std::to_string(frames.size()));
-    put("frames_in_medians", std::to_string(frames.size() - first));
-    if (summary.contains("too_few_frames")) put("too_few_frames", value_text(summary["too_few_frames"]));
-    std::vector<std::string> numbers, baselines;
-    if (!frames.empty()) {
-        for (const auto& [key, item] : frames[0].items()) {
-            if (item.is_number() && key != "frame") numbers.push_back(key);
-        }
-        if (const auto at = frames[0].find("baselines"); at != frames[0].end()) {
-            for (const auto& [name, item] : at->items()) baselines.push_back(name);
-        }
-    }
-    auto frame_median = [&](auto value_of) {
+}
+
+// Medians over the frames from `first` on of every number a frame reports.
+void put_frame_medians(const nlohmann::json& frames, std::size_t first, RowBuilder& out) {
+    if (frames.empty()) return;
+    for (const auto& [key, item] : frames[0].items()) {
+        if (!item.is_number() || key == "frame") continue;
         std::vector<double> values;
-        for (std::size_t k = first; k < frames.size(); ++k) values.push_back(value_of(frames[k]));
-        return median(values);
-    };
-    for (const std::string& key : numbers) {
-        put("median_" + key, number_text(frame_median([&](const auto& f) { return f.at(key).template get<double>(); })));
+        for (std::size_t k = first; k < frames.size(); ++k) values.push_back(frames[k].at(key).get<double>());
+        out.put("median_" + key, number_text(median(values)));
     }
-    // The report's figures over the frames after the warm-up: the board's
-    // and the simulator's means, p50, p99 and maxima (simulated time plain,
-    // the simulator's _native_ns), and the load average at the end; none
-    // for a report of no frames, as no frame medians either.
+}
+
+// The report's figures over the frames after the warm-up: the board's and
+// the simulator's means, p50, p99 and maxima (simulated time plain, the
+// simulator's _native_ns), and the load average at the end; none for a
+// report of no frames, as no frame medians either.
+void put_summary_figures(const nlohmann::json& summary, bool any_frame, RowBuilder& out) {
     for (const auto& [key, item] : summary.items()) {
-        const bool figure = !frames.empty() && (key.rfind("mean_", 0) == 0 || key.rfind("p50_", 0) == 0 || key.rfind("p99_", 0) == 0 ||
-                            key.rfind("max_", 0) == 0);
-        if (figure && item.is_number()) put(key, number_text(item.get<double>()));
+        const bool figure = any_frame && (key.rfind("mean_", 0) == 0 || key.rfind("p50_", 0) == 0 ||
+                                          key.rfind("p99_", 0) == 0 || key.rfind("max_", 0) == 0);
+        if (figure && item.is_number()) out.put(key, number_text(item.get<double>()));
     }
-    if (summary.contains("load_average_end")) put("load_average_end", value_text(summary["load_average_end"]));
-    for (const std::string& name : baselines) {
-        // The report's own means and spread on the modelled host when it has
-        // them (they span every --repeat run), else the mean of the frames.
+    if (summary.contains("load_average_end")) out.put("load_average_end", value_text(summary["load_average_end"]));
+}
+
+// Each baseline's figures on the modelled host: the report's own means and
+// spread when it has them (they span every --repeat run), else the mean of
+// the frames from `first` on.
+void put_baselines(const nlohmann::json& frames, const nlohmann::json& summary, std::size_t first, RowBuilder& out) {
+    if (frames.empty()) return;
+    const auto at = frames[0].find("baselines");
+    if (at == frames[0].end()) return;
+    for (const auto& [name, ignored] : at->items()) {
         const nlohmann::json timed = summary.value("baselines", nlohmann::json::object()).value(name, nlohmann::json::object());
         if (timed.contains("mean_host_ns") && timed.contains("speedup")) {
             for (const char* figure : {"mean", "p50", "p99", "max"}) {
                 const std::string key = std::string(figure) + "_host_ns";
-                if (timed.contains(key)) put(name + "_" + key, number_text(timed[key].get<double>()));
+                if (timed.contains(key)) out.put(name + "_" + key, number_text(timed[key].get<double>()));
             }
-            if (timed.contains("host_factor")) put(name + "_host_factor", number_text(timed["host_factor"].get<double>()));
-            put(name + "_speedup", number_text(timed["speedup"].get<double>()));
+            if (timed.contains("host_factor")) out.put(name + "_host_factor", number_text(timed["host_factor"].get<double>()));
+            out.put(name + "_speedup", number_text(timed["speedup"].get<double>()));
             continue;
         }
         double ns = 0, board_ns = 0;
@@ -185,13 +184,35 @@ PointRow report_row(const Grid& grid, const Point& point, const std::string& rep
             ns += frames[k].at("baselines").at(name).at("host_ns").get<double>();
             board_ns += frames[k].at("total_ns").get<double>();
         }
-        put(name + "_mean_host_ns", number_text(frames.size() > first ? ns / static_cast<double>(frames.size() - first) : 0));
-        put(name + "_speedup", number_text(board_ns > 0 ? ns / board_ns : 0));
+        out.put(name + "_mean_host_ns",
+                number_text(frames.size() > first ? ns / static_cast<double>(frames.size() - first) : 0));
+        out.put(name + "_speedup", number_text(board_ns > 0 ? ns / board_ns : 0));
     }
-    put("point_wall_s", number_text(wall_seconds));
+}
+
+}  // namespace
+
+PointRow report_row(const Grid& grid, const Point& point, const std::string& report_text, double wall_seconds) {
+    const nlohmann::json report = nlohmann::json::parse(report_text);
+    RowBuilder out{axis_row(grid, point, PointStatus::kOk, ""), {}};
+    put_config(report, out);
+    const auto& frames = report.at("frames");
+    const nlohmann::json summary = report.value("summary", nlohmann::json::object());
+    // Steady state: warm-up frames are left out (the incremental broad
+    // phases build their structures in them): as many as the report says,
+    // else the first; at least one frame stays.
+    const std::size_t warmup = summary.value("warmup_frames", std::size_t{1});
+    const std::size_t first = frames.size() > warmup ? warmup : frames.empty() ? 0 : frames.size() - 1;
+    out.put("report_frames", std::to_string(frames.size()));
+    out.put("frames_in_medians", std::to_string(frames.size() - first));
+    if (summary.contains("too_few_frames")) out.put("too_few_frames", value_text(summary["too_few_frames"]));
+    put_frame_medians(frames, first, out);
+    put_summary_figures(summary, !frames.empty(), out);
+    put_baselines(frames, summary, first, out);
+    out.put("point_wall_s", number_text(wall_seconds));
     const std::string report_sha256 = sha256_hex(report_text);
-    row[kChecksumColumn] = row_checksum(row, &report_sha256);
-    return {order, row};
+    out.row[kChecksumColumn] = row_checksum(out.row, &report_sha256);
+    return {out.order, out.row};
 }
 
 PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, const std::string& reason,

@@ -79,7 +79,7 @@ void run_engine(benchmark::State& state, const cdvp::BoardConfig& board) {
     for (auto _ : state) {
         const BenchFrame& frame = scene[f++ % kFrames];
         engine.start(static_cast<uint32_t>(frame.boxes.size()), frame.view());
-        while (engine.phase() == cdvp::BoardCore::Phase::Paused) engine.resume();
+        while (engine.phase() == cdvp::SweepState::kPaused) engine.resume();
         pairs += engine.pairs().size();
         cycles += engine.observe(engine.segment_cycles()).cycles;
     }
@@ -116,7 +116,7 @@ void BM_FastEngineTimelineOnly(benchmark::State& state) {
     for (auto _ : state) {
         const std::size_t frame = f++ % kFrames;
         timeline.start(static_cast<uint32_t>(scene[frame].boxes.size()), pairs[frame]);
-        while (timeline.phase() == cdvp::BoardCore::Phase::Paused) timeline.resume();
+        while (timeline.phase() == cdvp::SweepState::kPaused) timeline.resume();
         benchmark::DoNotOptimize(timeline.segment_cycles());
     }
 }

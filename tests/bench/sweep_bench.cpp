@@ -74,6 +74,13 @@ Measured median_of(std::vector<Measured> runs) {
 
 int main(int argc, char** argv) {
     std::string grid = "--board adm-xrc-ii --set m=1,4,16 --set objects=100:800:x2 --frames 30 --baseline sap";
+    if (argc == 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
+        std::printf("Usage: sweep_bench [cdvp sweep options]\n"
+                    "Runs one grid at --jobs 1 and --jobs 2, three times each, alternated, and prints\n"
+                    "the median points per second of each and the sweep's own cost per point.\n"
+                    "The options replace the default grid: %s\n", grid.c_str());
+        return 0;
+    }
     if (argc > 1) {
         grid.clear();
         for (int k = 1; k < argc; ++k) grid += std::string(k > 1 ? " " : "") + argv[k];

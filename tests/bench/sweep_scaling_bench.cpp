@@ -83,8 +83,21 @@ int main(int argc, char** argv) {
     for (int k = 1; k < argc; ++k) {
         if (std::strcmp(argv[k], "--repeat") == 0 && k + 1 < argc) {
             repeats = std::max(1, std::atoi(argv[++k]));
+        } else if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
+            std::printf("Usage: sweep_scaling_bench [--repeat R] [POINTS...]\n"
+                        "Sweeps grids of POINTS points (default 100 1000 10000) at --jobs 1, R times each\n"
+                        "(default 3), and prints the medians of the wall and CPU time per point and the\n"
+                        "last tenth's time per point over the first's.\n");
+            return 0;
         } else {
-            sizes.push_back(static_cast<std::size_t>(std::strtoull(argv[k], nullptr, 10)));
+            char* end = nullptr;
+            const unsigned long long points = std::strtoull(argv[k], &end, 10);
+            if (end == argv[k] || *end != '\0' || points == 0) {
+                std::fprintf(stderr, "sweep_scaling_bench: %s is not a number of points (expected a positive integer)\n",
+                             argv[k]);
+                return 2;
+            }
+            sizes.push_back(static_cast<std::size_t>(points));
         }
     }
     if (sizes.empty()) sizes = {100, 1000, 10000};

@@ -128,6 +128,17 @@ TEST_F(Bullet, TheBoxesAtEightRunInSsramTilesAsRunsDo) {
     EXPECT_EQ(setting(i, "run.ignore_capacity"), (nlohmann::json{{"value", "yes"}, {"origin", "flag --ignore-capacity"}}));
 }
 
+// Bullet's board is refused as a run's is: fixed16's tile buffers by the
+// format's own layout (three word groups a box, not float32's six).
+TEST_F(Bullet, AFixedPointTileRefusalCountsTheFormatsBlockRams) {
+    const Result r = run("bullet --scene pyramid --frames 1 -q --board adm-xrc-ii --m 24 -c board.memory=ssram "
+                         "--format fixed16");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("in tiles of 122 boxes: they need 3 x (2m+2) x ceil(T/512) = 150 (largest m that fits: 23;"),
+              std::string::npos)
+        << r.err;
+}
+
 TEST_F(Bullet, ReportsEveryFrameWithTheAmdahlBound) {
     const Result r = run("bullet --scene stack --objects 20 --frames 6 --board adm-xrc-ii --report r.json");
     ASSERT_EQ(r.status, 0) << r.err;

@@ -20,7 +20,10 @@ using nlohmann::json;
 class CliSettings : public Cli {
 protected:
     std::string small() const { return "run --trace " + trace("small.csv") + " --quiet "; }
+public:
     json report() const { return json::parse(slurp(dir_ / "r.json"))["config"]; }
+    // A small run with one more setting, reported to r.json.
+    Result run_choice(const std::string& setting) { return run(small() + setting + " --report r.json"); }
 };
 
 TEST_F(CliSettings, LayersApplyInOrderAndTheReportNamesEachOrigin) {
@@ -50,6 +53,45 @@ TEST_F(CliSettings, LayersApplyInOrderAndTheReportNamesEachOrigin) {
     EXPECT_EQ(config["command_line"][0], "cdvp");
     EXPECT_EQ(config["command_line"][1], "run");
     EXPECT_EQ(config["command_line"].back(), "r.json");
+}
+
+// Every choice a run is given, the report and the summary name as the
+// choice's names table does (platform/setting_choices.h): in the settings
+// section, and in the config's own keys for the transfer, wait and engine.
+template <class T>
+void expect_named_as_chosen(CliSettings& cli, const char* setting, const char* config_key = nullptr) {
+    for (const ChoiceName<T>& c : Choices<T>::names) {
+        const Result r = cli.run_choice(std::string("-c ") + setting + "=" + c.name);
+        ASSERT_EQ(r.status, 0) << setting << "=" << c.name << ": " << r.err;
+        const json config = cli.report();
+        EXPECT_EQ(config["settings"][setting]["value"], c.name) << setting;
+        if (config_key != nullptr) {
+            EXPECT_EQ(config[config_key], c.name) << setting;
+        }
+    }
+}
+
+TEST_F(CliSettings, TheReportNamesEveryChoiceAsItsNamesTableDoes) {
+    expect_named_as_chosen<Transfer>(*this, "run.transfer", "transfer");
+    expect_named_as_chosen<WaitMode>(*this, "run.wait", "wait");
+    expect_named_as_chosen<Fidelity>(*this, "run.fidelity", "fidelity");
+    expect_named_as_chosen<bool>(*this, "run.ignore_capacity");
+    expect_named_as_chosen<BoxMemory>(*this, "board.memory");
+    expect_named_as_chosen<DeviceFamily>(*this, "device.family");
+    // The bus: a preset's, or none.
+    const std::pair<const char*, BusType> buses[] = {
+        {"", BusType::kIdeal}, {"--board adm-xrc-ii ", BusType::kPci}, {"--board pcie-gen3-x8 ", BusType::kPcie}};
+    for (const auto& [board, type] : buses) {
+        const Result r = run(small() + board + "--report r.json");
+        ASSERT_EQ(r.status, 0) << board << r.err;
+        EXPECT_EQ(report()["settings"]["bus.type"]["value"], name_of(type)) << board;
+    }
+    // The summary names the engine as the report does.
+    for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) {
+        const Result r = run("run --trace " + trace("small.csv") + " --fidelity " + c.name);
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_NE(r.out.find(std::string(", ") + c.name + " engine\n"), std::string::npos) << r.out;
+    }
 }
 
 TEST_F(CliSettings, TheBriefsExampleRunsAndChangesTheInterrupt) {

@@ -149,6 +149,21 @@ TEST_F(CliTiles, TileBuffersPastTheBlockRamsAndTooManyTilesAreRefused) {
                    "expected at most 1024 tiles");
 }
 
+// The refusal's formula is the number format's own layout: word groups a
+// box, boxes a primitive; its product is the count it names.
+TEST_F(CliTiles, ATileRefusalGivesTheFormatsOwnBlockRamFormula) {
+    const std::string at = "--m 24 -c board.memory=ssram";
+    EXPECT_NE(run(spheres(500, 1) + at).err.find("they need 6 x (2m+2) x ceil(T/512) = 300 (largest m that fits: 11;"),
+              std::string::npos);
+    EXPECT_NE(run(spheres(500, 1) + at + " --format fixed16")
+                  .err.find("they need 3 x (2m+2) x ceil(T/512) = 150 (largest m that fits: 23;"),
+              std::string::npos);
+    // 3 x 66 x ceil(60000/1024) = 11682
+    EXPECT_NE(run(spheres(60000, 1) + "--m 32 --memory ssram --tile-boxes 60000 --format fixed8")
+                  .err.find("they need 3 x (2m+2) x ceil(T/1024) = 11682 (not even m=1 fits"),
+              std::string::npos);
+}
+
 TEST_F(CliTiles, TheLargestMOfARefusalCountsTheSsramTilesThatAutoWouldUse) {
     // 1,600 boxes: in block RAM m <= 6 (6 x m x 4 <= 144), in SSRAM tiles m <= 11.
     const Result refused = run(spheres(1600, 1) + "--m 16");

@@ -50,7 +50,7 @@ private:
         if (write) std::memcpy(&value, data, 4);
         if (address < address_map::kRegistersSize) {
             const auto offset = static_cast<uint32_t>(address);
-            if (write) return board_.write_register(offset, value) == BoardCore::Write::kDone ? "" : "refused";
+            if (write) return board_.write_register(offset, value) == RegisterResult::kDone ? "" : "refused";
             if (!board_.read_register(offset, value)) return "unmapped";
         } else if (address >= address_map::kPairBuffer) {
             const uint64_t k = (address - address_map::kPairBuffer) / 4;
@@ -62,7 +62,7 @@ private:
             const auto c = static_cast<Coordinate>(offset / address_map::kWindowSize);
             const auto i = static_cast<uint32_t>(offset % address_map::kWindowSize / 4);
             if (!write) return "write-only here";
-            if (board_.write_coordinate(c, i, value) != BoardCore::Write::kDone) return "refused";
+            if (board_.write_coordinate(c, i, value) != RegisterResult::kDone) return "refused";
         }
         if (!write) std::memcpy(data, &value, 4);
         return "";

@@ -126,22 +126,22 @@ TEST(FastEngine, ObservingPastTheSegmentSeesItsEnd) {
     std::mt19937 rng(9);
     const WordScene scene = testing::overlapping_scene(20, rng);
     FastEngine engine(collector_config(2, 3, 1, 50));
-    EXPECT_EQ(engine.phase(), BoardPhase::Idle);
+    EXPECT_EQ(engine.phase(), SweepState::kIdle);
     EXPECT_THROW(engine.resume(), std::logic_error);
     engine.start(scene.size(), scene.view());
-    ASSERT_EQ(engine.phase(), BoardPhase::Paused);
+    ASSERT_EQ(engine.phase(), SweepState::kPaused);
     const BoardObservation end = engine.observe(engine.segment_cycles());
     const BoardObservation later = engine.observe(engine.segment_cycles() + 1000);
     EXPECT_EQ(later.cycles, end.cycles);
-    EXPECT_EQ(later.phase, BoardPhase::Paused);
+    EXPECT_EQ(later.phase, SweepState::kPaused);
     EXPECT_EQ(end.buffer_count, 50u);
     EXPECT_EQ(engine.observe(0).cycles, 0u);
-    EXPECT_EQ(engine.observe(0).phase, BoardPhase::Running);
+    EXPECT_EQ(engine.observe(0).phase, SweepState::kRunning);
     engine.resume();
     EXPECT_EQ(engine.observe(0).cycles, end.cycles) << "cycles count from START, not from RESUME";
     EXPECT_EQ(engine.observe(0).buffer_count, 0u);
-    while (engine.phase() == BoardPhase::Paused) engine.resume();
-    EXPECT_EQ(engine.phase(), BoardPhase::Done);
+    while (engine.phase() == SweepState::kPaused) engine.resume();
+    EXPECT_EQ(engine.phase(), SweepState::kDone);
     EXPECT_EQ(engine.pairs().size(), 190u);
     EXPECT_THROW(engine.resume(), std::logic_error);
 }
@@ -163,7 +163,7 @@ TEST(FastEngine, ReusedAcrossFramesOfAnySize) {
             ASSERT_EQ(a.stalls, b.stalls) << n;
             ASSERT_EQ(a.buffer_count, b.buffer_count) << n;
             ASSERT_EQ(reused.phase(), fresh.phase()) << n;
-            if (reused.phase() == BoardPhase::Done) break;
+            if (reused.phase() == SweepState::kDone) break;
             reused.resume();
             fresh.resume();
         }
@@ -181,7 +181,7 @@ TEST(FastEngine, BeyondSixtyFiveThousandBoxes) {
     FastEngine engine(config);
     engine.start(n, scene.view());
     uint64_t segments = 1;
-    for (; engine.phase() == BoardPhase::Paused; ++segments) engine.resume();
+    for (; engine.phase() == SweepState::kPaused; ++segments) engine.resume();
     const BoardObservation end = engine.observe(engine.segment_cycles());
     EXPECT_EQ(end.total_pairs, engine.pairs().size());
     EXPECT_EQ(segments, (engine.pairs().size() + 1023) / 1024);

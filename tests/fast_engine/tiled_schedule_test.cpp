@@ -91,8 +91,8 @@ TEST(TiledSchedule, UntiledIsTheSeedsSweep) {
                 ASSERT_NE(slot.kind, ScheduleWalker::Slot::kWait);
                 ASSERT_EQ(slot.kind == ScheduleWalker::Slot::kEnd, seed.exhausted()) << "n=" << n << " m=" << m;
                 if (seed.exhausted()) break;
-                const AddressGenerator::Issue issue = seed.current();
-                EXPECT_EQ(std::tie(slot.row, slot.first_column, slot.valid_lanes),
+                const PortWindow issue = seed.current();
+                EXPECT_EQ(std::tie(slot.window.row, slot.window.first_column, slot.window.valid_lanes),
                           std::tie(issue.row, issue.first_column, issue.valid_lanes));
                 seed.advance();
             }
@@ -117,10 +117,10 @@ TEST(TiledSchedule, TheWalkerIssuesEveryPairOnceInScheduleOrder) {
                         ++waits;
                         continue;
                     }
-                    for (uint32_t lane = 0; lane < s.valid_lanes; ++lane) {
-                        const uint32_t j = s.first_column + lane;
-                        ASSERT_EQ(schedule.pair_slot(s.row, j), slot) << "n=" << n << " m=" << m << " T=" << t;
-                        issued.push_back({s.row, j});
+                    for (uint32_t lane = 0; lane < s.window.valid_lanes; ++lane) {
+                        const uint32_t j = s.window.first_column + lane;
+                        ASSERT_EQ(schedule.pair_slot(s.window.row, j), slot) << "n=" << n << " m=" << m << " T=" << t;
+                        issued.push_back({s.window.row, j});
                     }
                 }
                 EXPECT_EQ(slot, schedule.slots());
@@ -270,7 +270,7 @@ TEST(TiledFastEngine, ReusedOverFramesOfDifferentSizes) {
         uint64_t pairs = 0;
         for (;;) {
             pairs += engine.observe(engine.segment_cycles()).buffer_count;
-            if (engine.phase() == BoardPhase::Done) break;
+            if (engine.phase() == SweepState::kDone) break;
             engine.resume();
         }
         EXPECT_EQ(pairs, testing::lane_hit_pairs(scene).size()) << "n=" << n;

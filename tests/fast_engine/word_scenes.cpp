@@ -234,7 +234,7 @@ uint32_t expect_lockstep(const BoardConfig& config, const WordScene& scene, uint
             }
             from_core.push_back(core.buffered_pair(k));
         }
-        if (core.phase() == BoardCore::Phase::Done) {
+        if (core.phase() == SweepState::kDone) {
             EXPECT_EQ(engine.pairs(), from_core) << context;
             EXPECT_EQ(core.counters().cycles,
                       config.sweep_cycles(n) + config.pipeline_latency() + core.counters().stalls)

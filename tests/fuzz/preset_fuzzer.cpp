@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
 
 #include "platform/board_preset.h"
@@ -68,20 +69,23 @@ void check_positive(const char* what, double value) {
 }
 
 void check_accepted(const cdvp::BoardPreset& p) {
-    check_positive("board.clock_mhz", p.board.clock_mhz);
-    check_positive("board clock period (ps)", p.board.period_ps());
-    check_positive("host.speed_factor", p.host.speed_factor);
-    if (!p.bus) violated("accepted preset has no bus timing");
-    check_time("bus PIO read", p.bus->pio_read_ns());
-    check_time("bus PIO write", p.bus->pio_write_ns());
-    check_time("bus interrupt", p.bus->interrupt_ns());
+    const cdvp::SettingValues values = p.applied();
+    const cdvp::Settings& s = values.settings();
+    check_positive("board.clock_mhz", s.board.clock_mhz);
+    check_positive("board clock period (ps)", s.board.period_ps());
+    check_positive("host.speed_factor", s.host.speed_factor);
+    const std::shared_ptr<const cdvp::BusTiming> bus = values.bus();
+    if (!bus) violated("accepted preset has no bus timing");
+    check_time("bus PIO read", bus->pio_read_ns());
+    check_time("bus PIO write", bus->pio_write_ns());
+    check_time("bus interrupt", bus->interrupt_ns());
     for (const uint64_t bytes : {uint64_t{4}, kDmaBytes}) {
-        check_time("bus DMA to the board", p.bus->dma_ns(bytes, cdvp::Direction::kToBoard));
-        check_time("bus DMA to the host", p.bus->dma_ns(bytes, cdvp::Direction::kToHost));
+        check_time("bus DMA to the board", bus->dma_ns(bytes, cdvp::Direction::kToBoard));
+        check_time("bus DMA to the host", bus->dma_ns(bytes, cdvp::Direction::kToHost));
     }
-    check_time("host.ns_per_box", p.driver.ns_per_box);
-    check_time("host.ns_per_pair", p.driver.ns_per_pair);
-    check_time("host.call_ns", p.driver.call_ns);
+    check_time("host.ns_per_box", s.driver.ns_per_box);
+    check_time("host.ns_per_pair", s.driver.ns_per_pair);
+    check_time("host.call_ns", s.driver.call_ns);
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ TEST(AddressGenerator, EveryPairExactlyOnceInSweepCycles) {
             std::vector<int> seen(static_cast<size_t>(n) * n, 0);
             uint64_t cycles = 0;
             while (!ag.exhausted()) {
-                const AddressGenerator::Issue is = ag.current();
+                const PortWindow is = ag.current();
                 ASSERT_GE(is.valid_lanes, 1u);
                 ASSERT_LE(is.valid_lanes, ag.lanes());
                 ASSERT_LT(is.row, is.first_column);

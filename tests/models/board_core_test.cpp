@@ -159,7 +159,7 @@ TEST(BoardCore, RegistersAndRefusedCommands) {
     ASSERT_TRUE(core.read_register(ControlRegisters::kParallelism, value));
     EXPECT_EQ(value, 2u);
     EXPECT_FALSE(core.read_register(0x3FC, value)) << "unmapped";
-    using Write = BoardCore::Write;
+    using Write = RegisterResult;
     EXPECT_EQ(core.write_register(0x3FC, 1), Write::kUnmapped);
     EXPECT_EQ(core.write_coordinate(kMinX, 10, 0), Write::kUnmapped) << "past capacity";
 
@@ -185,7 +185,7 @@ TEST(BoardCore, RegistersAndRefusedCommands) {
     EXPECT_TRUE(core.status().error) << "start while busy";
     EXPECT_EQ(core.status().error_cause, ControlRegisters::kStartWhileBusy);
     while (core.running()) core.step();
-    EXPECT_EQ(core.phase(), BoardCore::Phase::Done);
+    EXPECT_EQ(core.phase(), SweepState::kDone);
     EXPECT_TRUE(core.interrupt());
     core.write_register(ControlRegisters::kControl, ControlRegisters::kAcknowledge);
     EXPECT_FALSE(core.interrupt()) << "acknowledged: the shared line may fall";
@@ -207,11 +207,11 @@ TEST(BoardCore, AbortStopsASweepAndClearsEveryStatusBit) {
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
     ASSERT_TRUE(core.status().error);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
-    EXPECT_EQ(core.phase(), BoardCore::Phase::Idle);
+    EXPECT_EQ(core.phase(), SweepState::kIdle);
     EXPECT_EQ(core.status().bits(), 0u);
     EXPECT_EQ(core.status().error_cause, ControlRegisters::kNoError);
     EXPECT_FALSE(core.interrupt());
-    EXPECT_EQ(core.write_register(ControlRegisters::kObjectCount, 4), BoardCore::Write::kDone) << "idle again";
+    EXPECT_EQ(core.write_register(ControlRegisters::kObjectCount, 4), RegisterResult::kDone) << "idle again";
 }
 
 TEST(BoardCore, FormatRegisterAndMemoriesAsWideAsTheFormat) {
@@ -298,7 +298,7 @@ TEST(BoardCore, ASegmentComputedAheadAnswersForEveryEdge) {
             for (uint32_t k = 0; k < ahead.buffered_pairs(); ++k) {
                 ASSERT_EQ(ahead.buffered_pair(k), stepped.buffered_pair(k));
             }
-            if (stepped.phase() == BoardCore::Phase::Done) break;
+            if (stepped.phase() == SweepState::kDone) break;
             stepped.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
             ahead.write_register(ControlRegisters::kControl, ControlRegisters::kResume);
         }
@@ -350,7 +350,7 @@ TEST(BoardCore, AbortAfterComputingAheadKeepsTheBufferOfThatEdge) {
     const SweepCounters before = stepped.counters();
     ahead.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
     stepped.write_register(ControlRegisters::kControl, ControlRegisters::kAbort);
-    EXPECT_EQ(ahead.phase(), BoardCore::Phase::Idle);
+    EXPECT_EQ(ahead.phase(), SweepState::kIdle);
     EXPECT_EQ(ahead.counters(), before);
     ASSERT_EQ(ahead.buffered_pairs(), before.buffered);
     for (uint32_t k = 0; k < before.buffered; ++k) EXPECT_EQ(ahead.buffered_pair(k), stepped.buffered_pair(k));

@@ -48,5 +48,43 @@ TEST(RegisterBank, RefusesOverlappingOrMisalignedDeclarations) {
     EXPECT_THROW(bank.add("C", 0x2, RegisterAccess::kReadWrite), std::logic_error);
 }
 
+// A 64-bit value as NAME_LO and NAME_HI: each half reads its bits, a write
+// to one half keeps the other, a refusal leaves the value, and a read-only
+// pair ignores writes.
+TEST(RegisterBank, DeclaresA64BitValueAsLowAndHighHalves) {
+    RegisterBank bank;
+    uint64_t address = 0x1122334455667788ull;
+    bool locked = false;
+    bank.add_wide("ADDRESS", 0x0, 0x4, RegisterAccess::kReadWrite, [&] { return address; }, [&](uint64_t v) {
+        if (locked) return RegisterResult::kRefused;
+        address = v;
+        return RegisterResult::kDone;
+    });
+    const uint64_t counter = 0xa0000000bull;
+    bank.add_wide("COUNTER", 0x8, 0xc, RegisterAccess::kReadOnly, [&] { return counter; });
+    ASSERT_NE(bank.find(0x0), nullptr);
+    EXPECT_EQ(bank.find(0x0)->name, "ADDRESS_LO");
+    EXPECT_EQ(bank.find(0x4)->name, "ADDRESS_HI");
+    uint32_t v = 0;
+    EXPECT_EQ(bank.read(0x0, v), RegisterResult::kDone);
+    EXPECT_EQ(v, 0x55667788u);
+    EXPECT_EQ(bank.read(0x4, v), RegisterResult::kDone);
+    EXPECT_EQ(v, 0x11223344u);
+    EXPECT_EQ(bank.write(0x0, 0xdeadbeefu), RegisterResult::kDone);
+    EXPECT_EQ(address, 0x11223344deadbeefull);
+    EXPECT_EQ(bank.write(0x4, 0x1u), RegisterResult::kDone);
+    EXPECT_EQ(address, 0x00000001deadbeefull);
+    locked = true;
+    EXPECT_EQ(bank.write(0x4, 0x2u), RegisterResult::kRefused);
+    EXPECT_EQ(address, 0x00000001deadbeefull);
+    EXPECT_EQ(bank.read(0xc, v), RegisterResult::kDone);
+    EXPECT_EQ(v, 0xau);
+    EXPECT_EQ(bank.read(0x8, v), RegisterResult::kDone);
+    EXPECT_EQ(v, 0xbu);
+    EXPECT_EQ(bank.write(0x8, 0x5u), RegisterResult::kDone) << "a read-only register ignores writes";
+    EXPECT_EQ(bank.read(0x8, v), RegisterResult::kDone);
+    EXPECT_EQ(v, 0xbu);
+}
+
 }  // namespace
 }  // namespace cdvp

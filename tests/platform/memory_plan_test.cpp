@@ -33,18 +33,18 @@ TEST(MemoryPlan, AutoKeepsBlockRamWhileItFitsThenTiles) {
     EXPECT_TRUE(past.ssram);
     EXPECT_EQ(past.tiles.boxes, 512u);
     EXPECT_EQ(past.ssram_capacity, 524288u);
-    s.run.ignore_capacity = "yes";
+    s.run.ignore_capacity = true;
     EXPECT_FALSE(plan_memory(s, 2000).ssram) << "exploring a larger device keeps block RAM";
     s = on_device(144, 24);
     EXPECT_FALSE(plan_memory(s, 2000).ssram) << "no tile fits at m = 24: block RAM, refused as before";
-    s.memory.memory = "ssram";
+    s.memory.memory = BoxMemory::kSsram;
     EXPECT_TRUE(plan_memory(s, 2000).ssram);
     EXPECT_FALSE(plan_memory(s, 2000).tile_fits);
 }
 
 TEST(MemoryPlan, AskedMemoryAndTilesAreTakenAsGiven) {
     Settings s = on_device(144, 8);
-    s.memory.memory = "ssram";
+    s.memory.memory = BoxMemory::kSsram;
     s.memory.tile_boxes = 64;
     const MemoryPlan plan = plan_memory(s, 300);
     EXPECT_TRUE(plan.ssram);
@@ -53,7 +53,7 @@ TEST(MemoryPlan, AskedMemoryAndTilesAreTakenAsGiven) {
     s.device.ssram_banks = 4;  // two cycles a box, half the boxes
     EXPECT_EQ(plan_memory(s, 300).tiles.cycles_per_box, 2u);
     EXPECT_EQ(plan_memory(s, 300).ssram_capacity, 262144u);
-    s.memory.memory = "block_ram";
+    s.memory.memory = BoxMemory::kBlockRam;
     EXPECT_FALSE(plan_memory(s, 300).ssram);
     EXPECT_EQ(planned_board(s, 300).tiles.boxes, 0u);
 }

@@ -10,6 +10,8 @@
 
 #include <fstream>
 #include <functional>
+#include <optional>
+#include <utility>
 #include <sstream>
 #include <string>
 
@@ -18,6 +20,7 @@
 #include "models/common/user_text.h"
 #include "platform/board_preset.h"
 #include "platform/config_file.h"
+#include "platform/platform_settings.h"
 #include "models/common/nesting_limit.h"
 #include "tests/platform/nested_text.h"
 
@@ -37,7 +40,8 @@ TEST(SettingsTable, EveryPresetKeyMapsToExactlyOneSettingOfItsBus) {
     for (const std::string& preset : board_preset_names()) {
         std::ifstream in(boards_directory() + "/" + preset + ".json");
         const json root = json::parse(in);
-        const std::string bus = root["bus"]["type"];
+        const std::optional<BusType> bus = parse_choice<BusType>(root["bus"]["type"].get<std::string>());
+        ASSERT_TRUE(bus.has_value()) << preset;
         for (const char* section : {"board", "device", "bus", "host"}) {
             for (const auto& [key, value] : root[section].items()) {
                 const std::string name = std::string(section) + "." + key;
@@ -45,7 +49,7 @@ TEST(SettingsTable, EveryPresetKeyMapsToExactlyOneSettingOfItsBus) {
                 const Setting* s = find_setting(name);
                 ASSERT_NE(s, nullptr) << name;
                 EXPECT_TRUE(s->in_preset) << name;
-                EXPECT_TRUE(s->applies_to_bus(bus)) << preset << ": " << name;
+                EXPECT_TRUE(s->applies_to_bus(*bus)) << preset << ": " << name;
                 ++keys;
             }
         }
@@ -73,12 +77,82 @@ TEST(SettingsTable, ValuesBindTheirMembers) {
     Settings s;
     find_setting("board.fifo_depth")->set(s, SettingValue(uint64_t{77}));
     EXPECT_EQ(77u, s.board.collector.fifo_depth);
-    s.bus_type = "pcie";
+    s.bus_type = BusType::kPcie;
     find_setting("bus.interrupt_ns")->set(s, SettingValue(1234.0));
     EXPECT_EQ(1234.0, s.pcie.interrupt_ns);
     EXPECT_EQ(PciConfig{}.interrupt_ns, s.pci.interrupt_ns) << "a key of both buses sets the bus in effect";
     EXPECT_EQ(SettingValue(1234.0), find_setting("bus.interrupt_ns")->get(s));
     EXPECT_EQ(SettingValue(std::string("dma")), find_setting("run.transfer")->default_value());
+}
+
+// Each choice setting's names are its type's names, in the table's order,
+// and each parses to the value whose name it is and prints back the same.
+template <class T>
+void expect_choice_round_trip(const char* name) {
+    const Setting& setting = *find_setting(name);
+    EXPECT_EQ(SettingType::kChoice, setting.type) << name;
+    EXPECT_EQ(choice_names<T>(), setting.choices) << name;
+    for (const ChoiceName<T>& c : Choices<T>::names) {
+        ASSERT_EQ(std::optional<T>(c.value), parse_choice<T>(c.name)) << name << ' ' << c.name;
+        EXPECT_STREQ(c.name, name_of(c.value)) << name;
+        Settings s;
+        setting.set(s, setting.from_string(c.name));
+        EXPECT_EQ(SettingValue(std::string(c.name)), setting.get(s)) << name;
+        EXPECT_EQ(SettingValue(std::string(c.name)), setting.parse_text(c.name)) << name;
+    }
+    EXPECT_EQ(std::nullopt, parse_choice<T>("")) << name;
+    EXPECT_EQ(std::nullopt, parse_choice<T>(std::string(choice_names<T>().front()) + " ")) << name;
+}
+
+TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
+    expect_choice_round_trip<BoxMemory>("board.memory");
+    expect_choice_round_trip<DeviceFamily>("device.family");
+    expect_choice_round_trip<BusType>("bus.type");
+    expect_choice_round_trip<Transfer>("run.transfer");
+    expect_choice_round_trip<WaitMode>("run.wait");
+    expect_choice_round_trip<Fidelity>("run.fidelity");
+    expect_choice_round_trip<bool>("run.ignore_capacity");
+    int choices = 0;
+    for (const Setting& s : settings_table()) choices += s.type == SettingType::kChoice ? 1 : 0;
+    EXPECT_EQ(7, choices) << "a new choice setting: add it above";
+    // The engine's own names are the setting's.
+    for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) EXPECT_STREQ(c.name, to_string(c.value));
+}
+
+TEST(SettingsTable, ChoiceDefaultsAreTheTypedDefaults) {
+    const Settings defaults;
+    EXPECT_EQ(BoxMemory::kAuto, defaults.memory.memory);
+    EXPECT_EQ(DeviceFamily::kNone, defaults.device.family);
+    EXPECT_EQ(BusType::kIdeal, defaults.bus_type);
+    EXPECT_EQ(Transfer::kDma, defaults.run.transfer);
+    EXPECT_EQ(WaitMode::kIrq, defaults.run.wait);
+    EXPECT_EQ(Fidelity::kFast, defaults.run.fidelity);
+    EXPECT_FALSE(defaults.run.ignore_capacity);
+    EXPECT_EQ(SettingValue(std::string("auto")), find_setting("board.memory")->default_value());
+    EXPECT_EQ(SettingValue(std::string("no")), find_setting("run.ignore_capacity")->default_value());
+    EXPECT_EQ(SettingValue(std::string("fast")), find_setting("run.fidelity")->default_value());
+}
+
+TEST(SettingsTable, UnknownChoicesAreRefusedNamingEveryChoice) {
+    const std::pair<const char*, const char*> refusals[] = {
+        {"board.memory", "expected auto, block_ram or ssram, got 'sram'"},
+        {"device.family", "expected none, xc2v or xcup, got 'sram'"},
+        {"bus.type", "expected ideal, pci or pcie, got 'sram'"},
+        {"run.transfer", "expected dma or pio, got 'sram'"},
+        {"run.wait", "expected irq or poll, got 'sram'"},
+        {"run.fidelity", "expected cycle or fast, got 'sram'"},
+        {"run.ignore_capacity", "expected no or yes, got 'sram'"},
+    };
+    for (const auto& [name, message] : refusals) {
+        try {
+            find_setting(name)->parse_text("sram");
+            ADD_FAILURE() << name;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_STREQ(message, e.what());
+        }
+        Settings s;
+        EXPECT_THROW(find_setting(name)->set(s, SettingValue(std::string("sram"))), std::logic_error) << name;
+    }
 }
 
 TEST(SettingsTable, ValuesOutsideTypeOrRangeAreRefused) {
@@ -97,6 +171,30 @@ TEST(SettingsTable, ValuesOutsideTypeOrRangeAreRefused) {
     } catch (const std::invalid_argument& e) {
         EXPECT_STREQ("expected irq or poll, got 'sleep'", e.what());
     }
+}
+
+TEST(PlatformConfig, FoldsEverySettingThePlatformTakes) {
+    SettingValues values;
+    values.apply(load_board_preset("adm-xrc-ii").values);
+    const PlatformConfig paper = platform_config(values);
+    EXPECT_EQ("PCI 32-bit/33.3 MHz", paper.bus->describe());
+    EXPECT_TRUE(paper.driver.use_dma);
+    EXPECT_TRUE(paper.driver.use_interrupts);
+    EXPECT_EQ(Fidelity::kFast, paper.fidelity);
+    EXPECT_EQ(values.settings().driver.ns_per_box, paper.driver.ns_per_box);
+    EXPECT_EQ(values.settings().board.clock_mhz, paper.board.clock_mhz);
+    values.apply({parse_override("run.transfer=pio"), parse_override("run.wait=poll"),
+                  parse_override("run.fidelity=cycle"), parse_override("run.quantum_ns=250"),
+                  parse_override("board.m=4")});
+    const PlatformConfig folded = platform_config(values);
+    EXPECT_FALSE(folded.driver.use_dma);
+    EXPECT_FALSE(folded.driver.use_interrupts);
+    EXPECT_EQ(Fidelity::kCycle, folded.fidelity);
+    EXPECT_EQ(250.0, folded.quantum_ns);
+    EXPECT_EQ(4u, folded.board.m);
+    EXPECT_EQ(nullptr, platform_config(SettingValues()).bus) << "the ideal bus";
+    values.apply({parse_override("board.fifo_depth=2")});
+    EXPECT_THROW(platform_config(values), InputError) << "the FIFO holds one cycle's hits, 2m-1";
 }
 
 TEST(SettingValues, LayersApplyInOrderAndKeepTheirOrigins) {
@@ -176,7 +274,7 @@ TEST_F(ConfigFile, TomlAndJsonGiveTheSameSettings) {
         EXPECT_EQ(s.get(from_json.settings()), s.get(from_toml.settings())) << s.name;
     }
     EXPECT_EQ(4u, from_toml.settings().pcie.lanes);
-    EXPECT_EQ("poll", from_toml.settings().run.wait);
+    EXPECT_EQ(WaitMode::kPoll, from_toml.settings().run.wait);
     const Setting& m = *find_setting("board.m");
     EXPECT_EQ("config " + dir_ + "/c.toml:2", from_toml.origin(m).describe(m));
 }

@@ -247,7 +247,7 @@ TEST(AddressGeneratorRtl, IssuesTheModelsAddressesCycleByCycle) {
             model.start(objects);
             std::vector<std::string> expected;
             for (; !model.exhausted(); model.advance()) {
-                const AddressGenerator::Issue issue = model.current();
+                const PortWindow issue = model.current();
                 const uint64_t mask = (uint64_t{1} << issue.valid_lanes) - 1;
                 std::ostringstream line;
                 line << std::hex << issue.row << ' ' << issue.first_column << ' ' << mask;

@@ -15,7 +15,7 @@ CoreRun run_core(BoardCore& core, const std::vector<FloatBox>& boxes) {
     for (uint32_t i = 0; i < n; ++i) {
         for (uint32_t c = 0; c < kCoordinates; ++c) {
             const float v = c < 3 ? boxes[i].min[c] : boxes[i].max[c - 3];
-            if (core.write_coordinate(static_cast<Coordinate>(c), i, ComparisonUnit::as_bits(v)) != BoardCore::Write::kDone) {
+            if (core.write_coordinate(static_cast<Coordinate>(c), i, ComparisonUnit::as_bits(v)) != RegisterResult::kDone) {
                 throw std::runtime_error("coordinate write refused");
             }
         }
@@ -23,8 +23,8 @@ CoreRun run_core(BoardCore& core, const std::vector<FloatBox>& boxes) {
     core.write_register(ControlRegisters::kObjectCount, n);
     core.write_register(ControlRegisters::kControl, ControlRegisters::kStart);
     CoreRun run;
-    while (core.phase() != BoardCore::Phase::Done) {
-        if (core.phase() == BoardCore::Phase::Paused) {
+    while (core.phase() != SweepState::kDone) {
+        if (core.phase() == SweepState::kPaused) {
             drain(core, run.pairs);
             ++run.pauses;
             core.write_register(ControlRegisters::kControl, ControlRegisters::kResume);

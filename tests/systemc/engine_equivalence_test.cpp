@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "platform/board_preset.h"
+#include "tests/support/preset_platform.h"
 #include "platform/virtual_board.h"
 #include "tests/support/core_driver.h"
 
@@ -30,8 +31,7 @@ struct Variant {
 };
 
 PlatformConfig platform_for(const Variant& v, Fidelity fidelity) {
-    const BoardPreset preset = load_board_preset("adm-xrc-ii");
-    PlatformConfig config{preset.board, preset.bus, preset.driver, {}};
+    PlatformConfig config = testing::preset_platform("adm-xrc-ii");
     config.board.m = v.m;
     config.board.format = v.format;
     if (v.fifo_depth != 0) config.board.collector.fifo_depth = v.fifo_depth;

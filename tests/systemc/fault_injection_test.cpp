@@ -7,6 +7,7 @@
 #include <random>
 
 #include "platform/board_preset.h"
+#include "tests/support/preset_platform.h"
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
 #include "sw/baselines/brute_force.h"
@@ -17,8 +18,8 @@ namespace cdvp {
 namespace {
 
 PlatformConfig paper_platform(const std::string& faults, bool interrupts = true, bool dma = true) {
-    const BoardPreset preset = load_board_preset("adm-xrc-ii");
-    PlatformConfig config{preset.board, preset.bus, preset.driver, parse_fault_specs(faults)};
+    PlatformConfig config = testing::preset_platform("adm-xrc-ii");
+    config.faults = parse_fault_specs(faults);
     config.board.collector.buffer_depth = 64;  // a few overflow pauses per frame
     config.driver.use_interrupts = interrupts;
     config.driver.use_dma = dma;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "platform/board_preset.h"
+#include "tests/support/preset_platform.h"
 #include "platform/virtual_board.h"
 #include "tests/support/core_driver.h"
 
@@ -26,8 +27,7 @@ struct Variant {
 };
 
 PlatformConfig platform_config(const Variant& v) {
-    const BoardPreset preset = load_board_preset("adm-xrc-ii");
-    PlatformConfig config{preset.board, preset.bus, preset.driver, {}};
+    PlatformConfig config = testing::preset_platform("adm-xrc-ii");
     config.board.collector.buffer_depth = 64;  // pauses every 64 pairs
     config.driver.use_dma = v.dma;
     config.driver.use_interrupts = v.interrupts;

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "platform/board_preset.h"
+#include "tests/support/preset_platform.h"
 #include "platform/virtual_board.h"
 #include "sw/baselines/brute_force.h"
 #include "sw/scene/scene.h"
@@ -18,8 +19,7 @@ namespace {
 
 
 PlatformConfig paper_platform(bool dma = true, bool interrupts = true) {
-    const BoardPreset preset = load_board_preset("adm-xrc-ii");
-    PlatformConfig config{preset.board, preset.bus, preset.driver, {}};
+    PlatformConfig config = testing::preset_platform("adm-xrc-ii");
     config.driver.use_dma = dma;
     config.driver.use_interrupts = interrupts;
     return config;
@@ -99,8 +99,7 @@ TEST(Platform, OverflowIsDrainedAndResumedByTheDriver) {
 }
 
 TEST(Platform, PcieWhatIfUploadsFasterThanPci) {
-    const BoardPreset pcie = load_board_preset("pcie-gen3-x8");
-    VirtualBoard fast("fast", PlatformConfig{pcie.board, pcie.bus, pcie.driver, {}}, 2000);
+    VirtualBoard fast("fast", testing::preset_platform("pcie-gen3-x8"), 2000);
     VirtualBoard paper("paper", paper_platform(), 2000);
     const auto boxes = scene(2000, 4);
     const FramePhases on_pci = paper.run_frame(boxes).phases;
@@ -116,12 +115,13 @@ TEST(BoardPreset, EveryPresetLoadsWithSourcedNumbers) {
     for (const std::string& name : names) {
         const BoardPreset p = load_board_preset(name);
         EXPECT_EQ(p.name, name);
-        EXPECT_NO_THROW(p.board.validate());
-        EXPECT_GT(p.host.speed_factor, 0);
-        EXPECT_GT(p.block_rams, 0u);
+        const SettingValues values = p.applied();
+        EXPECT_NO_THROW(values.settings().board.validate());
+        EXPECT_GT(values.settings().host.speed_factor, 0);
+        EXPECT_GT(values.settings().device.block_rams, 0u);
     }
-    EXPECT_EQ(load_board_preset("adm-xrc-ii").bus->describe(), "PCI 32-bit/33.3 MHz");
-    EXPECT_EQ(load_board_preset("adm-xrc-ii-64").bus->describe(), "PCI 64-bit/66.7 MHz");
+    EXPECT_EQ(load_board_preset("adm-xrc-ii").applied().bus()->describe(), "PCI 32-bit/33.3 MHz");
+    EXPECT_EQ(load_board_preset("adm-xrc-ii-64").applied().bus()->describe(), "PCI 64-bit/66.7 MHz");
 }
 
 TEST(BoardPreset, RejectsUnsourcedNumbersAndUnknownNames) {

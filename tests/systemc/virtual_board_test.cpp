@@ -11,6 +11,7 @@
 #include <string>
 
 #include "platform/board_preset.h"
+#include "tests/support/preset_platform.h"
 #include "sw/baselines/brute_force.h"
 #include "tests/support/core_driver.h"
 #include "tests/support/vcd_reader.h"
@@ -91,10 +92,9 @@ TEST(VirtualBoard, AWindowOfFramesHoldsEverySignalOutsideIt) {
     char dir[] = "/tmp/cdvp-window-XXXXXX";
     ASSERT_NE(mkdtemp(dir), nullptr);
     const std::string base = std::string(dir) + "/waves";
-    const BoardPreset preset = load_board_preset("adm-xrc-ii");
     std::vector<sc_time> frame_ends;
     {
-        VirtualBoard platform("platform", PlatformConfig{preset.board, preset.bus, preset.driver, {}}, 60, base);
+        VirtualBoard platform("platform", testing::preset_platform("adm-xrc-ii"), 60, base);
         platform.set_trace_window(1, 1);
         std::mt19937 rng(5);
         for (int frame = 0; frame < 3; ++frame) {

@@ -1,0 +1,19 @@
+#include "platform/platform_settings.h"
+
+namespace cdvp {
+
+PlatformConfig platform_config(const SettingValues& values) {
+    const Settings& settings = values.settings();
+    values.check_board();
+    PlatformConfig platform;
+    platform.board = settings.board;
+    platform.bus = values.bus();
+    platform.driver = settings.driver;
+    platform.driver.use_dma = settings.run.transfer == Transfer::kDma;
+    platform.driver.use_interrupts = settings.run.wait == WaitMode::kIrq;
+    platform.fidelity = settings.run.fidelity;
+    platform.quantum_ns = settings.run.quantum_ns;
+    return platform;
+}
+
+}  // namespace cdvp
