@@ -23,6 +23,7 @@
 #include "sw/cli/fidelity_figure.h"
 #include "sw/cli/forwarded_options.h"
 #include "sw/cli/run_budgets.h"
+#include "sw/cli/report_summary.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/output/output_set.h"
 #include "models/common/user_text.h"
@@ -61,8 +62,7 @@ constexpr std::array<Level, 6> kLevels{{{Fidelity::kCycle, 0},
                                         {Fidelity::kFast, 10000},
                                         {Fidelity::kFast, 100000}}};
 
-constexpr std::array<const char*, 7> kPhases{"upload_ns", "start_ns", "compute_ns", "irq_ns",
-                                             "readback_ns", "driver_ns", "total_ns"};
+constexpr const std::array<const char*, ReportSummary::kPhases>& kPhases = ReportSummary::kPhaseKeys;
 
 // One level's figures, as its run's report summarises them: the simulator's
 // wall time per frame is the median over the frames after warm-up (wall
@@ -78,13 +78,11 @@ struct LevelResult {
 
 LevelResult read_level(const std::string& report_path, const std::string& pairs_path) {
     const nlohmann::json report = nlohmann::json::parse(slurp(report_path));
-    const nlohmann::json& summary = report.at("summary");
+    const ReportSummary summary = summary_from_json(report.at("summary"), "the level's report");
     LevelResult result;
-    result.p50_sim_wall_native_ns = summary.at("p50_sim_wall_native_ns").get<double>();
-    for (std::size_t k = 0; k < kPhases.size(); ++k) {
-        result.mean_phase_ns[k] = summary.at(std::string("mean_") + kPhases[k]).get<double>();
-    }
-    result.frames_in_means = summary.at("frames_in_means").get<uint64_t>();
+    result.p50_sim_wall_native_ns = summary.sim_wall_native_ns.p50;
+    result.mean_phase_ns = summary.mean_phase_ns;
+    result.frames_in_means = summary.frames_in_means;
     result.pairs = slurp(pairs_path);
     result.config = report.value("config", nlohmann::json::object());
     return result;

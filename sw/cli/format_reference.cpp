@@ -5,19 +5,6 @@
 
 namespace cdvp {
 
-double ExtraPairs::share() const {
-    const uint64_t board = reference_pairs + extra_pairs;
-    return board > 0 ? static_cast<double>(extra_pairs) / static_cast<double>(board) : 0.0;
-}
-
-ExtraPairs& ExtraPairs::operator+=(const ExtraPairs& other) {
-    reference_pairs += other.reference_pairs;
-    extra_pairs += other.extra_pairs;
-    extra_readback_ns += other.extra_readback_ns;
-    extra_driver_ns += other.extra_driver_ns;
-    return *this;
-}
-
 FormatReference::Check FormatReference::check(const std::vector<FloatBox>& boxes, const PairList& board_pairs,
                                               const FramePhases& phases) {
     Check result;

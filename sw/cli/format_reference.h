@@ -11,25 +11,11 @@
 #include "models/common/aabb.h"
 #include "models/fast_engine/pair_finder.h"
 #include "models/number_format/number_format.h"
+#include "sw/cli/extra_pairs.h"
 #include "platform/driver/board_driver.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {
-
-// A frame's pairs against the float32 reference, and what the extra ones cost:
-// their share of the simulated readback phase, and the driver's unpacking of
-// them (the host preset's ns per pair each), both already inside the frame's
-// simulated time.
-struct ExtraPairs {
-    uint64_t reference_pairs = 0;
-    uint64_t extra_pairs = 0;
-    double extra_readback_ns = 0;
-    double extra_driver_ns = 0;
-
-    // Extra pairs as a share of the board's pairs (0 without pairs).
-    double share() const;
-    ExtraPairs& operator+=(const ExtraPairs& other);
-};
 
 class FormatReference {
 public:

@@ -7,12 +7,12 @@
 #include "models/address_generator/sweep_schedule.h"
 #include "models/common/user_text.h"
 #include "sw/cli/report_provenance.h"
+#include "sw/cli/report_summary.h"
 #include "sw/cli/version.h"
 
 namespace cdvp {
 
-const char* const kPhaseNames[RunTotals::kPhases] = {"upload_ns",   "start_ns",  "compute_ns", "irq_ns",
-                                                     "readback_ns", "driver_ns", "total_ns"};
+static_assert(RunTotals::kPhases == static_cast<int>(ReportSummary::kPhases), "one list of phases");
 
 namespace {
 
@@ -158,14 +158,6 @@ nlohmann::json frame_json(const FrameStats& f) {
     return frame;
 }
 
-// mean_KEY, p50_KEY, p99_KEY and max_KEY: flat, like the phases' mean_ keys beside them.
-void add_spread(nlohmann::json& json, const std::string& key, const Spread& s) {
-    json["mean_" + key] = s.mean;
-    json["p50_" + key] = s.p50;
-    json["p99_" + key] = s.p99;
-    json["max_" + key] = s.max;
-}
-
 }  // namespace
 
 void RunTotals::add(const FrameStats& frame) {
@@ -209,30 +201,33 @@ void ReportWriter::frame(const FrameStats& frame) {
     any_frame_ = true;
 }
 
-void ReportWriter::end(const RunTotals& totals, const HostTiming& host, const nlohmann::json* more) {
-    const TimingFigures board = totals.board_figures();
-    nlohmann::json baselines = nlohmann::json::object();
-    for (const auto& [name, figures] : totals.baseline_figures()) {
+ReportSummary RunTotals::summary(const HostTiming& host) const {
+    const TimingFigures board = board_figures();
+    ReportSummary s;
+    for (const auto& [name, figures] : baseline_figures()) {
         const double factor = host.factor(name);
-        const Spread modelled = figures.spread.scaled(factor);
-        nlohmann::json& b = baselines[name];
-        add_spread(b, "native_ns", figures.spread);
-        add_spread(b, "host_ns", modelled);
-        b["run_means_native_ns"] = figures.run_means;
-        b["host_factor"] = factor;
-        b["speedup"] = speedup(modelled, board.spread);
+        BaselineSummary& b = s.baselines[name];
+        b.native_ns = figures.spread;
+        b.host_ns = figures.spread.scaled(factor);
+        b.run_means_native_ns = figures.run_means;
+        b.host_factor = factor;
+        b.speedup = speedup(b.host_ns, board.spread);
     }
-    nlohmann::json summary = {{"frames", totals.frames()},
-                              {"warmup_frames", totals.warmup_frames()},
-                              {"frames_in_means", totals.frames_in_means()},
-                              {"too_few_frames", totals.frames() > 0 && board.too_few_frames()},
-                              {"baselines", baselines},
-                              {"pairs", totals.pairs()},
-                              {"load_average_end", load_json(load_average())}};
-    add_extra(summary, totals.extra());
-    add_spread(summary, "total_ns", board.spread);
-    add_spread(summary, "sim_wall_native_ns", totals.sim_wall_figures().spread);
-    for (int k = 0; k < RunTotals::kPhases; ++k) summary[std::string("mean_") + kPhaseNames[k]] = totals.mean_phase(k);
+    s.frames = frames();
+    s.warmup_frames = warmup_frames();
+    s.frames_in_means = frames_in_means();
+    s.too_few_frames = frames() > 0 && board.too_few_frames();
+    s.pairs = pairs();
+    s.load_average_end = load_average();
+    s.extra = extra();
+    s.total_ns = board.spread;
+    s.sim_wall_native_ns = sim_wall_figures().spread;
+    for (int k = 0; k < kPhases; ++k) s.mean_phase_ns[static_cast<std::size_t>(k)] = mean_phase(k);
+    return s;
+}
+
+void ReportWriter::end(const RunTotals& totals, const HostTiming& host, const nlohmann::json* more) {
+    const nlohmann::json summary = to_json(totals.summary(host));
     out_ << (any_frame_ ? "\n  ]" : "]") << ",\n  \"summary\": " << nested(summary, 1);
     if (more != nullptr) {
         for (const auto& [name, section] : more->items()) {

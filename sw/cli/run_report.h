@@ -20,6 +20,7 @@
 #include "platform/setting_values.h"
 #include "sw/cli/format_reference.h"
 #include "sw/cli/host_factor.h"
+#include "sw/cli/report_summary.h"
 #include "platform/driver/board_driver.h"
 #include "sw/timing/frame_samples.h"
 
@@ -111,7 +112,7 @@ public:
     uint64_t cycles() const { return cycles_; }
     uint64_t stalls() const { return stalls_; }
     uint64_t last_objects() const { return last_objects_; }
-    // Mean of phase k (kPhaseNames order) over the frames in the means.
+    // Mean of phase k (ReportSummary::kPhaseKeys order) over the frames in the means.
     double mean_phase(int k) const;
     // Means, p50, p99 and maxima over the frames after the warm-up: the
     // board's simulated frame time, the simulator's wall time, each
@@ -119,6 +120,8 @@ public:
     TimingFigures board_figures() const { return board_total_.figures(); }
     TimingFigures sim_wall_figures() const { return sim_wall_.figures(); }
     std::map<std::string, TimingFigures> baseline_figures() const;
+    // The report's summary: these figures, each baseline's on the host too.
+    ReportSummary summary(const HostTiming& host) const;
 
 private:
     // Sums over the warm-up frames and over the frames after them, kept
@@ -135,8 +138,6 @@ private:
     std::vector<FrameStats> shown_;
 };
 
-// The phase keys of a frame in the report, in RunTotals' order.
-extern const char* const kPhaseNames[RunTotals::kPhases];
 
 // Writes the report as the run goes: begin() the configuration (with the
 // provenance at the start), frame() each frame, end() the summary (with the

@@ -5,6 +5,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/cli/digest.h"
+#include "sw/cli/report_summary.h"
 #include "sw/cli/sweep_csv.h"
 
 namespace cdvp {
@@ -161,32 +162,16 @@ void put_summary_figures(const nlohmann::json& summary, bool any_frame, RowBuild
     if (summary.contains("load_average_end")) out.put("load_average_end", value_text(summary["load_average_end"]));
 }
 
-// Each baseline's figures on the modelled host: the report's own means and
-// spread when it has them (they span every --repeat run), else the mean of
-// the frames from `first` on.
-void put_baselines(const nlohmann::json& frames, const nlohmann::json& summary, std::size_t first, RowBuilder& out) {
-    if (frames.empty()) return;
-    const auto at = frames[0].find("baselines");
-    if (at == frames[0].end()) return;
-    for (const auto& [name, ignored] : at->items()) {
-        const nlohmann::json timed = summary.value("baselines", nlohmann::json::object()).value(name, nlohmann::json::object());
-        if (timed.contains("mean_host_ns") && timed.contains("speedup")) {
-            for (const char* figure : {"mean", "p50", "p99", "max"}) {
-                const std::string key = std::string(figure) + "_host_ns";
-                if (timed.contains(key)) out.put(name + "_" + key, number_text(timed[key].get<double>()));
-            }
-            if (timed.contains("host_factor")) out.put(name + "_host_factor", number_text(timed["host_factor"].get<double>()));
-            out.put(name + "_speedup", number_text(timed["speedup"].get<double>()));
-            continue;
-        }
-        double ns = 0, board_ns = 0;
-        for (std::size_t k = first; k < frames.size(); ++k) {
-            ns += frames[k].at("baselines").at(name).at("host_ns").get<double>();
-            board_ns += frames[k].at("total_ns").get<double>();
-        }
-        out.put(name + "_mean_host_ns",
-                number_text(frames.size() > first ? ns / static_cast<double>(frames.size() - first) : 0));
-        out.put(name + "_speedup", number_text(board_ns > 0 ? ns / board_ns : 0));
+// Each baseline's figures on the modelled host, as the report summarises
+// them over every --repeat run.
+void put_baselines(const ReportSummary& summary, RowBuilder& out) {
+    for (const auto& [name, b] : summary.baselines) {
+        out.put(name + "_mean_host_ns", number_text(b.host_ns.mean));
+        out.put(name + "_p50_host_ns", number_text(b.host_ns.p50));
+        out.put(name + "_p99_host_ns", number_text(b.host_ns.p99));
+        out.put(name + "_max_host_ns", number_text(b.host_ns.max));
+        out.put(name + "_host_factor", number_text(b.host_factor));
+        out.put(name + "_speedup", number_text(b.speedup));
     }
 }
 
@@ -208,7 +193,7 @@ PointRow report_row(const Grid& grid, const Point& point, const std::string& rep
     if (summary.contains("too_few_frames")) out.put("too_few_frames", value_text(summary["too_few_frames"]));
     put_frame_medians(frames, first, out);
     put_summary_figures(summary, !frames.empty(), out);
-    put_baselines(frames, summary, first, out);
+    if (!frames.empty()) put_baselines(summary_from_json(summary, "point " + point.id + "'s report"), out);
     out.put("point_wall_s", number_text(wall_seconds));
     const std::string report_sha256 = sha256_hex(report_text);
     out.row[kChecksumColumn] = row_checksum(out.row, &report_sha256);

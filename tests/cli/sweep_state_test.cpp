@@ -4,6 +4,8 @@
 // and one writer per directory.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -19,6 +21,7 @@
 #include "sw/cli/directory_lock.h"
 #include "sw/cli/sweep_csv.h"
 #include "sw/cli/sweep_manifest.h"
+#include "sw/cli/report_summary.h"
 #include "sw/cli/sweep_state.h"
 #include "sw/cli/sweep_table.h"
 #include "tests/scene/temp_dir.h"
@@ -28,7 +31,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kReport = R"({"config": {"m": 8}, "frames": [{"frame": 0, "total_ns": 100.0}]})";
+// A report of one frame, its summary in the report's own schema.
+const std::string kReport = nlohmann::json{{"config", {{"m", 8}}},
+                                           {"frames", {{{"frame", 0}, {"total_ns", 100.0}}}},
+                                           {"summary", to_json(ReportSummary{})}}
+                                .dump();
 
 void write_file(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "sw/cli/report_summary.h"
 #include "sw/cli/sweep_grid.h"
 #include "sw/cli/sweep_csv.h"
 #include "sw/cli/sweep_plots.h"
@@ -160,6 +161,8 @@ TEST(SweepGrid, RefusesRepeatedAxesAndNoAxes) {
     EXPECT_THROW(Grid(std::vector<Axis>{}), InputError);
 }
 
+// A report as cdvp run writes it: four frames, the first a warm-up, and the
+// summary over the other three in the report's own schema.
 nlohmann::json report(double board_ns, double sap_ns) {
     nlohmann::json frames = nlohmann::json::array();
     for (int k = 0; k < 4; ++k) {
@@ -167,7 +170,21 @@ nlohmann::json report(double board_ns, double sap_ns) {
         frames.push_back({{"frame", k}, {"pairs", 10 + k}, {"total_ns", total}, {"sim_wall_native_ns", 5.0},
                           {"baselines", {{"sap", {{"native_ns", sap_ns / 4}, {"host_ns", sap_ns + k}}}}}});
     }
-    return {{"config", {{"command_line", "cdvp run --report out/points/p.json"}, {"m", 8}, {"board", "b"}, {"baselines", {"sap"}}, {"bus", {{"width", 32}}}}}, {"frames", frames}};
+    ReportSummary summary;
+    summary.frames = 4;
+    summary.warmup_frames = 1;
+    summary.frames_in_means = 3;
+    summary.total_ns = {board_ns + 2, board_ns + 2, board_ns + 3, board_ns + 3};
+    summary.mean_phase_ns.back() = board_ns + 2;
+    summary.sim_wall_native_ns = {5, 5, 5, 5};
+    BaselineSummary& sap = summary.baselines["sap"];
+    sap.host_ns = {sap_ns + 2, sap_ns + 2, sap_ns + 3, sap_ns + 3};
+    sap.native_ns = sap.host_ns.scaled(0.25);
+    sap.host_factor = 4;
+    sap.speedup = sap.host_ns.mean / summary.total_ns.mean;
+    return {{"config", {{"command_line", "cdvp run --report out/points/p.json"}, {"m", 8}, {"board", "b"}, {"baselines", {"sap"}}, {"bus", {{"width", 32}}}}},
+            {"frames", frames},
+            {"summary", to_json(summary)}};
 }
 
 TEST(SweepTable, RowsHoldSettingsMediansAfterTheFirstFrameAndSpeedups) {
@@ -186,8 +203,8 @@ TEST(SweepTable, RowsHoldSettingsMediansAfterTheFirstFrameAndSpeedups) {
     EXPECT_EQ(row.get("median_total_ns"), "102");  // frames 1..3: 101, 102, 103
     EXPECT_EQ(row.get("median_pairs"), "12");
     EXPECT_EQ(row.get("median_sim_wall_native_ns"), "5");
-    // Without a summary: the means of the frames after the first (301..303
-    // against the board's 101..103).
+    // The summary's means over the frames after the first (301..303 against
+    // the board's 101..103).
     EXPECT_EQ(row.get("sap_mean_host_ns"), "302");
     EXPECT_NEAR(std::stod(row.get("sap_speedup")), 302.0 / 102.0, 1e-9);
     EXPECT_EQ(row.get(kChecksumColumn).size(), 16u);
@@ -204,12 +221,19 @@ TEST(SweepTable, RowsHoldSettingsMediansAfterTheFirstFrameAndSpeedups) {
 TEST(SweepTable, BaselinesComeFromTheReportsSummaryAndItsWarmUpIsLeftOut) {
     const Grid grid(std::vector<Axis>{{"objects", {"50"}}});
     nlohmann::json with_summary = report(100, 300);
-    with_summary["summary"] = {{"warmup_frames", 2}, {"too_few_frames", true}, {"mean_total_ns", 102.5},
-                               {"p99_total_ns", 102.99}, {"max_total_ns", 103}, {"load_average_end", {0.5, 0.25, 0.125}},
-                               {"baselines", {{"sap", {{"mean_host_ns", 290.0}, {"p50_host_ns", 280.0},
-                                                        {"p99_host_ns", 310.0}, {"max_host_ns", 320.0},
-                                                        {"mean_native_ns", 72.5}, {"host_factor", 4.0},
-                                                        {"speedup", 2.5}}}}}};
+    ReportSummary summary = summary_from_json(with_summary["summary"], "the test's report");
+    summary.warmup_frames = 2;
+    summary.frames_in_means = 2;
+    summary.too_few_frames = true;
+    summary.total_ns = {102.5, 102.5, 102.99, 103};
+    summary.mean_phase_ns.back() = 102.5;
+    summary.load_average_end = {0.5, 0.25, 0.125};
+    BaselineSummary& sap = summary.baselines["sap"];
+    sap.host_ns = {290.0, 280.0, 310.0, 320.0};
+    sap.native_ns = {72.5, 70.0, 77.5, 80.0};
+    sap.host_factor = 4.0;
+    sap.speedup = 2.5;
+    with_summary["summary"] = to_json(summary);
     const Row row = report_row(grid, grid.point(0), with_summary.dump(), 0.5).values;
     EXPECT_EQ(row.at("frames_in_medians"), "2");
     EXPECT_EQ(row.at("median_total_ns"), "102.5");  // frames 2 and 3: 102, 103
