@@ -19,7 +19,7 @@
 #include "sw/cli/number_option.h"
 #include "sw/cli/reference_workload.h"
 #include "sw/scene/conversion.h"
-#include "sw/cli/output/output_set.h"
+#include "sw/study/output/output_set.h"
 #include "sw/timing/frame_samples.h"
 
 namespace po = boost::program_options;

@@ -8,8 +8,8 @@
 #include <new>
 
 #include "models/common/user_text.h"
-#include "sw/cli/output/output_set.h"
-#include "sw/cli/output/output_target.h"
+#include "sw/study/output/output_set.h"
+#include "sw/study/output/output_target.h"
 
 namespace cdvp {
 

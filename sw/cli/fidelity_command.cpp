@@ -19,13 +19,13 @@
 #include <nlohmann/json.hpp>
 
 #include "platform/setting_choices.h"
-#include "sw/cli/child_runs.h"
-#include "sw/cli/fidelity_figure.h"
+#include "sw/study/child_runs.h"
+#include "sw/study/fidelity_figure.h"
 #include "sw/cli/forwarded_options.h"
 #include "sw/cli/run_budgets.h"
-#include "sw/cli/report_summary.h"
+#include "sw/study/report_summary.h"
 #include "sw/cli/run_command.h"
-#include "sw/cli/output/output_set.h"
+#include "sw/study/output/output_set.h"
 #include "models/common/user_text.h"
 #include "sw/scene/scene.h"
 

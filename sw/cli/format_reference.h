@@ -11,7 +11,7 @@
 #include "models/common/aabb.h"
 #include "models/fast_engine/pair_finder.h"
 #include "models/number_format/number_format.h"
-#include "sw/cli/extra_pairs.h"
+#include "sw/study/extra_pairs.h"
 #include "platform/driver/board_driver.h"
 #include "sw/scene/scene.h"
 

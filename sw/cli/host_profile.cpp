@@ -9,7 +9,7 @@
 
 #include "models/common/user_text.h"
 #include "platform/preset_json.h"
-#include "sw/cli/digest.h"
+#include "sw/study/digest.h"
 #include "sw/cli/reference_workload.h"
 #include "sw/cli/report_provenance.h"
 

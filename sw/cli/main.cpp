@@ -14,7 +14,7 @@
 #include "sw/cli/settings_command.h"
 #include "sw/cli/version.h"
 #include "sw/cli/sweep_command.h"
-#include "sw/cli/output/output_target.h"
+#include "sw/study/output/output_target.h"
 #include "models/common/user_text.h"
 
 namespace {

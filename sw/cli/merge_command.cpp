@@ -18,15 +18,15 @@
 #include <boost/program_options.hpp>
 
 #include "models/common/user_text.h"
-#include "sw/cli/child_runs.h"
-#include "sw/cli/directory_lock.h"
+#include "sw/study/child_runs.h"
+#include "sw/study/directory_lock.h"
 #include "sw/cli/exit_status.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/run_options.h"
 #include "sw/cli/sweep_command.h"
 #include "sw/cli/sweep_files.h"
-#include "sw/cli/sweep_manifest.h"
-#include "sw/cli/sweep_state.h"
+#include "sw/study/sweep_manifest.h"
+#include "sw/study/sweep_state.h"
 
 namespace po = boost::program_options;
 

@@ -7,7 +7,7 @@
 #include "sw/bullet/scene_recording.h"
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/run_command.h"
-#include "sw/cli/output/output_set.h"
+#include "sw/study/output/output_set.h"
 #include "sw/scene/trace_csv.h"
 
 namespace po = boost::program_options;

@@ -7,7 +7,7 @@
 #include "models/address_generator/sweep_schedule.h"
 #include "models/common/user_text.h"
 #include "sw/cli/report_provenance.h"
-#include "sw/cli/report_summary.h"
+#include "sw/study/report_summary.h"
 #include "sw/cli/version.h"
 
 namespace cdvp {

@@ -20,7 +20,7 @@
 #include "platform/setting_values.h"
 #include "sw/cli/format_reference.h"
 #include "sw/cli/host_factor.h"
-#include "sw/cli/report_summary.h"
+#include "sw/study/report_summary.h"
 #include "platform/driver/board_driver.h"
 #include "sw/timing/frame_samples.h"
 

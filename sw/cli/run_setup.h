@@ -18,7 +18,7 @@
 #include "sw/cli/run_budgets.h"
 #include "sw/cli/run_options.h"
 #include "sw/cli/run_report.h"
-#include "sw/cli/output/output_set.h"
+#include "sw/study/output/output_set.h"
 
 namespace cdvp {
 

@@ -14,17 +14,17 @@
 #include <vector>
 
 #include "models/common/user_text.h"
-#include "sw/cli/child_runs.h"
-#include "sw/cli/directory_lock.h"
+#include "sw/study/child_runs.h"
+#include "sw/study/directory_lock.h"
 #include "sw/cli/exit_status.h"
 #include "sw/cli/machine_memory.h"
 #include "sw/cli/run_budgets.h"
 #include "sw/cli/sweep_files.h"
-#include "sw/cli/sweep_manifest.h"
+#include "sw/study/sweep_manifest.h"
 #include "sw/cli/sweep_options.h"
 #include "sw/cli/sweep_progress.h"
 #include "sw/cli/sweep_runner.h"
-#include "sw/cli/sweep_state.h"
+#include "sw/study/sweep_state.h"
 #include "sw/cli/version.h"
 
 namespace cdvp {

@@ -4,9 +4,9 @@
 #include <iostream>
 
 #include "models/common/user_text.h"
-#include "sw/cli/child_runs.h"
-#include "sw/cli/sweep_plots.h"
-#include "sw/cli/output/output_set.h"
+#include "sw/study/child_runs.h"
+#include "sw/study/sweep_plots.h"
+#include "sw/study/output/output_set.h"
 
 namespace cdvp {
 

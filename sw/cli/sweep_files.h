@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "sw/cli/sweep_grid.h"
-#include "sw/cli/sweep_table.h"
+#include "sw/study/sweep_grid.h"
+#include "sw/study/sweep_table.h"
 
 namespace cdvp {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "sw/cli/sweep_grid.h"
+#include "sw/study/sweep_grid.h"
 
 namespace cdvp {
 

@@ -15,12 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "sw/cli/child_runs.h"
-#include "sw/cli/sweep_grid.h"
+#include "sw/study/child_runs.h"
+#include "sw/study/sweep_grid.h"
 #include "sw/cli/sweep_options.h"
 #include "sw/cli/sweep_progress.h"
-#include "sw/cli/sweep_state.h"
-#include "sw/cli/sweep_table.h"
+#include "sw/study/sweep_state.h"
+#include "sw/study/sweep_table.h"
 
 namespace cdvp {
 

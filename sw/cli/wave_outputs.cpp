@@ -7,7 +7,7 @@
 #include "models/common/user_text.h"
 #include "platform/gtkw_save_file.h"
 #include "platform/virtual_board.h"
-#include "sw/cli/child_runs.h"
+#include "sw/study/child_runs.h"
 
 namespace cdvp {
 

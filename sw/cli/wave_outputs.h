@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "sw/cli/output/output_set.h"
+#include "sw/study/output/output_set.h"
 
 namespace cdvp {
 

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "sw/cli/sweep_csv.h"
-#include "sw/cli/sweep_table.h"
+#include "sw/study/sweep_csv.h"
+#include "sw/study/sweep_table.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "sw/cli/sweep_table.h"
+#include "sw/study/sweep_table.h"
 #include "tests/cli/cli_support.h"
 
 namespace cdvp::test {

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sw/cli/sweep_csv.h"
+#include "sw/study/sweep_csv.h"
 #include "tests/cli/cli_support.h"
 
 namespace cdvp::test {

@@ -17,8 +17,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sw/cli/sweep_csv.h"
-#include "sw/cli/sweep_table.h"
+#include "sw/study/sweep_csv.h"
+#include "sw/study/sweep_table.h"
 #include "tests/cli/cli_support.h"
 
 namespace cdvp::test {

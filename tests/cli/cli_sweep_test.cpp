@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "sw/cli/sweep_csv.h"
-#include "sw/cli/sweep_table.h"
+#include "sw/study/sweep_csv.h"
+#include "sw/study/sweep_table.h"
 #include "tests/cli/cli_support.h"
 
 namespace cdvp::test {

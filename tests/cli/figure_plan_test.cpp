@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "sw/cli/fidelity_figure.h"
-#include "sw/cli/figure_templates.h"
-#include "sw/cli/sweep_plots.h"
-#include "sw/cli/sweep_table.h"
+#include "sw/study/fidelity_figure.h"
+#include "sw/study/figure_templates.h"
+#include "sw/study/sweep_plots.h"
+#include "sw/study/sweep_table.h"
 
 namespace cdvp {
 namespace {

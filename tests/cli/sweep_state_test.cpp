@@ -17,13 +17,13 @@
 #include <vector>
 
 #include "models/common/user_text.h"
-#include "sw/cli/child_runs.h"
-#include "sw/cli/directory_lock.h"
-#include "sw/cli/sweep_csv.h"
-#include "sw/cli/sweep_manifest.h"
-#include "sw/cli/report_summary.h"
-#include "sw/cli/sweep_state.h"
-#include "sw/cli/sweep_table.h"
+#include "sw/study/child_runs.h"
+#include "sw/study/directory_lock.h"
+#include "sw/study/sweep_csv.h"
+#include "sw/study/sweep_manifest.h"
+#include "sw/study/report_summary.h"
+#include "sw/study/sweep_state.h"
+#include "sw/study/sweep_table.h"
 #include "tests/scene/temp_dir.h"
 
 namespace cdvp {

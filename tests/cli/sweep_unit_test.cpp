@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "models/common/user_text.h"
-#include "sw/cli/report_summary.h"
-#include "sw/cli/sweep_grid.h"
-#include "sw/cli/sweep_csv.h"
-#include "sw/cli/sweep_plots.h"
-#include "sw/cli/sweep_table.h"
+#include "sw/study/report_summary.h"
+#include "sw/study/sweep_grid.h"
+#include "sw/study/sweep_csv.h"
+#include "sw/study/sweep_plots.h"
+#include "sw/study/sweep_table.h"
 
 namespace cdvp {
 namespace {

@@ -1,0 +1,199 @@
+#include "sw/study/sweep_manifest.h"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "models/common/user_text.h"
+#include "models/common/nesting_limit.h"
+#include "sw/study/child_runs.h"
+#include "sw/study/digest.h"
+
+namespace cdvp {
+
+namespace {
+
+using nlohmann::json;
+
+// sweep.json lists every value of every axis: 100,000 values of a long path
+// stay far below this.
+constexpr std::size_t kMaxManifestBytes = std::size_t{256} << 20;
+
+json parse_manifest_text(const std::string& text, const std::string& path) {
+    const std::string label = excerpt(path);
+    check_json_nesting(label, text, "a sweep manifest");  // before the parser builds anything deep
+    if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+        throw InputError(text_position(label, text, nul) + ": a NUL byte; expected the manifest cdvp sweep writes");
+    }
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error& e) {
+        throw InputError(text_position(label, text, e.byte == 0 ? 0 : e.byte - 1) +
+                         ": not JSON; expected the manifest cdvp sweep writes");
+    }
+}
+
+// Checked access to the manifest's fields: a missing or mistyped field is
+// refused naming it.
+class Fields {
+public:
+    explicit Fields(std::string path) : path_(std::move(path)) {}
+
+    const json& at(const json& object, const std::string& key, const std::string& where) const {
+        if (!object.is_object() || !object.contains(key)) refuse(where + key, "is missing");
+        return object[key];
+    }
+    std::string text(const json& object, const std::string& key, const std::string& where = "") const {
+        const json& value = at(object, key, where);
+        if (!value.is_string()) refuse(where + key, "expected a string");
+        return value.get<std::string>();
+    }
+    uint64_t count(const json& object, const std::string& key, const std::string& where = "") const {
+        const json& value = at(object, key, where);
+        if (!value.is_number_unsigned()) refuse(where + key, "expected a whole number");
+        return value.get<uint64_t>();
+    }
+    std::vector<std::string> texts(const json& object, const std::string& key, const std::string& where = "") const {
+        const json& value = at(object, key, where);
+        if (!value.is_array()) refuse(where + key, "expected a list of strings");
+        std::vector<std::string> items;
+        for (const json& item : value) {
+            if (!item.is_string()) refuse(where + key, "expected a list of strings");
+            items.push_back(item.get<std::string>());
+        }
+        return items;
+    }
+    const json& list(const json& object, const std::string& key) const {
+        const json& value = at(object, key, "");
+        if (!value.is_array()) refuse(key, "expected a list");
+        return value;
+    }
+    [[noreturn]] void refuse(const std::string& field, const std::string& why) const {
+        throw InputError(excerpt(path_) + ": field '" + excerpt(field) + "': " + why +
+                         "; expected the manifest cdvp sweep writes");
+    }
+
+private:
+    std::string path_;
+};
+
+json input_json(const SweepInput& input) {
+    return {{"option", input.option}, {"value", input.value}, {"path", input.path}, {"sha256", input.sha256},
+            {"bytes", input.bytes}};
+}
+
+}  // namespace
+
+SweepInput digest_input(std::string option, std::string value, std::string path) {
+    const std::optional<FileDigest> digest = digest_file(path);
+    if (!digest) {
+        throw InputError(option + ": " + excerpt(value) + ": cannot read: " + std::strerror(errno));
+    }
+    return {std::move(option), std::move(value), std::move(path), digest->sha256, digest->bytes};
+}
+
+json Manifest::to_json() const {
+    const Grid grid(axes);
+    json axes_json = json::array();
+    for (std::size_t a = 0; a < grid.axes().size(); ++a) {
+        const Axis& axis = grid.axes()[a];
+        axes_json.push_back({{"name", axis.name}, {"key", axis.key}, {"flag", axis.flag}, {"values", axis.values},
+                             {"ids", grid.fragments(a)}});
+    }
+    json inputs_json = json::array();
+    for (const SweepInput& input : inputs) inputs_json.push_back(input_json(input));
+    return {{"format", kManifestFormat},
+            {"cdvp", cdvp_version},
+            {"axes", axes_json},
+            {"run_options", run_options},
+            {"inputs", inputs_json},
+            {"points", grid.size()},
+            {"shard", shard.text()},
+            {"point_ids", "NAME-ID of each axis joined by '_', ID from 'ids' (docs/sweep.md)"}};
+}
+
+std::optional<Manifest> read_manifest(const std::string& path) {
+    struct stat status {};
+    if (lstat(path.c_str(), &status) != 0) {
+        if (errno == ENOENT) return std::nullopt;
+        throw InputError(excerpt(path) + ": cannot read: " + std::strerror(errno));
+    }
+    if (!S_ISREG(status.st_mode)) throw InputError(excerpt(path) + ": expected a regular file (a sweep's manifest)");
+    if (static_cast<uint64_t>(status.st_size) > kMaxManifestBytes) {
+        throw InputError(excerpt(path) + ": " + std::to_string(status.st_size) + " bytes; expected the manifest cdvp "
+                         "sweep writes (at most " + std::to_string(kMaxManifestBytes) + ")");
+    }
+    const json document = parse_manifest_text(slurp(path), path);
+    const Fields fields(path);
+    if (!document.is_object()) fields.refuse("(top level)", "expected an object");
+    const std::string format = fields.text(document, "format");
+    if (format != kManifestFormat) {
+        fields.refuse("format", "'" + excerpt(format) + "' is not '" + kManifestFormat +
+                                    "' (a sweep of another cdvp version: give a new --out)");
+    }
+    Manifest manifest;
+    manifest.cdvp_version = fields.text(document, "cdvp");
+    const json& axes = fields.list(document, "axes");
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        const std::string where = "axes[" + std::to_string(a) + "].";
+        manifest.axes.push_back({fields.text(axes[a], "name", where), fields.texts(axes[a], "values", where),
+                                 fields.text(axes[a], "key", where), fields.text(axes[a], "flag", where)});
+        if (manifest.axes.back().key.empty()) fields.refuse(where + "key", "expected a setting or flag name");
+    }
+    manifest.run_options = fields.texts(document, "run_options");
+    const json& inputs = fields.list(document, "inputs");
+    for (std::size_t k = 0; k < inputs.size(); ++k) {
+        const std::string where = "inputs[" + std::to_string(k) + "].";
+        manifest.inputs.push_back({fields.text(inputs[k], "option", where), fields.text(inputs[k], "value", where),
+                                   fields.text(inputs[k], "path", where), fields.text(inputs[k], "sha256", where),
+                                   fields.count(inputs[k], "bytes", where)});
+    }
+    try {
+        manifest.shard = parse_shard(fields.text(document, "shard"));
+        const Grid grid(manifest.axes);
+        if (fields.count(document, "points") != grid.size()) fields.refuse("points", "does not match the axes");
+        for (std::size_t a = 0; a < grid.axes().size(); ++a) {
+            const std::string where = "axes[" + std::to_string(a) + "].";
+            if (fields.texts(axes[a], "ids", where) != grid.fragments(a)) {
+                fields.refuse(where + "ids", "not the ids of the axis's values");
+            }
+        }
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        if (message.rfind(excerpt(path) + ":", 0) == 0) throw;
+        throw InputError(excerpt(path) + ": " + message);
+    }
+    return manifest;
+}
+
+std::optional<SweepDifference> difference(const Manifest& existing, const Manifest& wanted) {
+    const auto other = [](std::string what) { return std::optional<SweepDifference>({std::move(what), false}); };
+    if (existing.cdvp_version != wanted.cdvp_version) {
+        return other("a sweep of cdvp " + excerpt(existing.cdvp_version) + ", this is " + wanted.cdvp_version);
+    }
+    if (existing.axes.size() != wanted.axes.size()) return other("other axes");
+    for (std::size_t a = 0; a < existing.axes.size(); ++a) {
+        const Axis& e = existing.axes[a];
+        const Axis& w = wanted.axes[a];
+        if (e.name != w.name || e.key != w.key || e.flag != w.flag) return other("other axes");
+        if (e.values != w.values) return other("other values of " + excerpt(w.name));
+    }
+    if (existing.run_options != wanted.run_options) return other("other options given to every point");
+    if (existing.inputs.size() != wanted.inputs.size()) return other("other input files");
+    for (std::size_t k = 0; k < existing.inputs.size(); ++k) {
+        const SweepInput& e = existing.inputs[k];
+        const SweepInput& w = wanted.inputs[k];
+        if (e.option != w.option || e.value != w.value) return other("other input files");
+        if (e.sha256 != w.sha256) {
+            return SweepDifference{w.option + " " + excerpt(w.value) + " changed since the sweep began (" +
+                                       std::to_string(e.bytes) + " bytes, sha256 " + e.sha256.substr(0, 12) +
+                                       "... then; " + std::to_string(w.bytes) + " bytes, sha256 " +
+                                       w.sha256.substr(0, 12) + "... now)",
+                                   true};
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace cdvp
