@@ -9,8 +9,8 @@ PlatformConfig platform_config(const SettingValues& values) {
     platform.board = settings.board;
     platform.bus = values.bus();
     platform.driver = settings.driver;
-    platform.driver.use_dma = settings.run.transfer == Transfer::kDma;
-    platform.driver.use_interrupts = settings.run.wait == WaitMode::kIrq;
+    platform.driver.transfer = settings.run.transfer;
+    platform.driver.wait = settings.run.wait;
     platform.fidelity = settings.run.fidelity;
     platform.quantum_ns = settings.run.quantum_ns;
     return platform;

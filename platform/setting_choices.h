@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "models/board_spec/board_engine.h"
+#include "platform/driver/driver_config.h"
 
 namespace cdvp {
 
@@ -21,10 +22,6 @@ enum class BusType : uint8_t { kIdeal, kPci, kPcie };
 enum class BoxMemory : uint8_t { kAuto, kBlockRam, kSsram };
 // The FPGA family whose synthesis results cost the board (device.family).
 enum class DeviceFamily : uint8_t { kNone, kXc2v, kXcup };
-// How the driver moves boxes and pairs (run.transfer).
-enum class Transfer : uint8_t { kDma, kPio };
-// How the driver waits for the board (run.wait).
-enum class WaitMode : uint8_t { kIrq, kPoll };
 
 template <class T>
 struct ChoiceName {

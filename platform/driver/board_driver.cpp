@@ -129,20 +129,20 @@ SimTime BoardDriver::timeout_for(double worst_ns) const {
 uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what) {
     const SimTime deadline = port_.now() + timeout;
     for (;;) {
-        if (config_.use_interrupts) port_.wait_for_interrupt(deadline - port_.now());
+        if (config_.wait == WaitMode::kIrq) port_.wait_for_interrupt(deadline - port_.now());
         noticed_ = port_.now();  // the handler runs: the status read is readback work
         const uint32_t value = read(status_address);
-        if (!config_.use_interrupts) noticed_ = port_.now();  // a poll notices when its read returns
+        if (config_.wait != WaitMode::kIrq) noticed_ = port_.now();  // a poll notices when its read returns
         const bool late = port_.now() >= deadline;
         if (value & bits) {
-            if (late && config_.use_interrupts) ++timeouts_recovered_;  // the interrupt was lost
+            if (late && config_.wait == WaitMode::kIrq) ++timeouts_recovered_;  // the interrupt was lost
             return value;
         }
         if (late) {
             throw DeviceFault(std::string(what) + " timed out: no completion within " + microseconds(timeout) +
                               " of simulated time");
         }
-        if (!config_.use_interrupts) poll_pause();
+        if (config_.wait != WaitMode::kIrq) poll_pause();
     }
 }
 
@@ -151,7 +151,7 @@ uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, SimTime t
 void BoardDriver::run_dma(uint32_t control, double worst_ns) {
     const SimTime timeout = timeout_for(worst_ns);
     write(D::kBase + D::kControl,
-          control | D::kStart | (config_.use_interrupts ? uint32_t{D::kInterruptOnDone} : 0u));
+          control | D::kStart | (config_.wait == WaitMode::kIrq ? uint32_t{D::kInterruptOnDone} : 0u));
     const uint32_t status = wait_for(D::kBase + D::kStatus, D::kDone | D::kError, timeout, "DMA");
     if (status & D::kError) dma_fault();
     write(D::kBase + D::kStatus, D::kDone);  // clear done: the shared line falls
@@ -188,7 +188,7 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
     auto local = [](uint32_t c) {
         return static_cast<uint32_t>(address_map::kCoordinateBase + c * address_map::kWindowSize);
     };
-    if (!config_.use_dma) {
+    if (config_.transfer != Transfer::kDma) {
         cpu_work(config_.call_ns + config_.ns_per_box * n);  // packing, done natively above
         for (uint32_t c = 0; c < kCoordinates; ++c) {
             pio_write(local(c), port_.memory(coordinate_area(capacity_, c)), 4 * n);
@@ -215,7 +215,7 @@ uint32_t BoardDriver::wait_for_board(uint32_t objects) {
     const SimTime timeout = timeout_for(time_->board_worst_ns(objects));
     const uint32_t status = wait_for(R::kStatus, R::kDone | R::kOverflow | R::kError, timeout, "board");
     mark_ = noticed_;
-    if (config_.use_interrupts) write(R::kControl, R::kAcknowledge);
+    if (config_.wait == WaitMode::kIrq) write(R::kControl, R::kAcknowledge);
     if (status & R::kError) {
         throw DeviceFault(std::string("board error status: ") + R::describe(read(R::kErrorCause)));
     }
@@ -235,7 +235,7 @@ void BoardDriver::read_pairs(PairList& pairs) {
     if (count == 0) return;
     config_.pair_budget.check(uint64_t{pairs.size()} + count);
     const uint64_t area = pair_area(capacity_);
-    if (config_.use_dma) {
+    if (config_.transfer == Transfer::kDma) {
         dma(area, static_cast<uint32_t>(address_map::kPairBuffer), 8 * count, true);
     } else {
         pio_read(address_map::kPairBuffer, port_.memory(area), 8 * count);

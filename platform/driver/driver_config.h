@@ -3,14 +3,22 @@
 // so that the estimate before a run (platform/driver/frame_time.h) reads the same.
 #pragma once
 
+#include <cstdint>
+
 #include "models/address_generator/tile_config.h"
 #include "models/common/pair_budget.h"
 
 namespace cdvp {
 
+// How the driver moves boxes and pairs (run.transfer), and how it waits for
+// the board (run.wait); their names are the settings table's
+// (platform/setting_choices.h).
+enum class Transfer : uint8_t { kDma, kPio };
+enum class WaitMode : uint8_t { kIrq, kPoll };
+
 struct DriverConfig {
-    bool use_dma = true;          // false: boxes and pairs by programmed I/O
-    bool use_interrupts = true;   // false: poll the status register
+    Transfer transfer = Transfer::kDma;  // kPio: boxes and pairs by programmed I/O
+    WaitMode wait = WaitMode::kIrq;      // kPoll: poll the status register
     double poll_gap_ns = 0.0;     // CPU time between two status polls
     // Host CPU work, per frame (assumptions of the host preset): packing a box
     // (six double-to-float conversions and stores), unpacking a pair, and a

@@ -76,7 +76,7 @@ double FrameTime::access_ns() const { return std::max(bus_.pio_read_ns(), bus_.p
 
 // A poll may just miss the event: one more gap and read, and the read that finds it.
 double FrameTime::notice_ns() const {
-    const double notice = config_.use_interrupts
+    const double notice = config_.wait == WaitMode::kIrq
                               ? bus_.interrupt_ns()
                               : 2 * bus_.pio_read_ns() + std::max(config_.poll_gap_ns, period_ns_);
     return notice + quantum_ns_;  // a CPU that ran ahead notices up to a quantum late
@@ -88,13 +88,13 @@ double FrameTime::frame_bound_ns(uint32_t objects, uint64_t pairs) const {
     const uint64_t segments = this->segments(pairs);
     const double n = objects, p = static_cast<double>(pairs), s = static_cast<double>(segments);
     // Upload: the DMA chain and its notice, or every word by programmed I/O.
-    double ns = config_.use_dma ? upload_worst_ns(objects) + notice_ns() : kCoordinates * n * bus_.pio_write_ns();
+    double ns = config_.transfer == Transfer::kDma ? upload_worst_ns(objects) + notice_ns() : kCoordinates * n * bus_.pio_write_ns();
     // The board: every slot of the sweep, a stall a pair, each segment's tail.
     const double cycles = static_cast<double>(worst_run_cycles(objects) - buffer_depth_) + p +
                           s * static_cast<double>(kPipelineSlack);
     ns += cycles * period_ns_ + s * notice_ns();
     // Read-back: full buffers at each pause, then the rest.
-    if (config_.use_dma) {
+    if (config_.transfer == Transfer::kDma) {
         const uint64_t last = std::min<uint64_t>(pairs, buffer_depth_);
         ns += (s - 1) * dma_worst_ns(8 * uint64_t{buffer_depth_}, Direction::kToHost) +
               dma_worst_ns(8 * last, Direction::kToHost) + s * notice_ns();

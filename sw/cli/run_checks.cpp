@@ -122,10 +122,10 @@ std::vector<FaultSpec> fault_specs(const std::vector<std::string>& texts, const 
             const bool needs_dma = spec.kind == FaultKind::kTargetAbort || spec.kind == FaultKind::kMasterAbort ||
                                    spec.kind == FaultKind::kRetry || spec.kind == FaultKind::kDisconnect ||
                                    spec.kind == FaultKind::kDmaHang;
-            if (needs_dma && !driver.use_dma) {
+            if (needs_dma && driver.transfer != Transfer::kDma) {
                 throw InputError("--inject: '" + to_string(spec) + "' faults a DMA; it needs --transfer dma");
             }
-            if (spec.kind == FaultKind::kLostIrq && !driver.use_interrupts) {
+            if (spec.kind == FaultKind::kLostIrq && driver.wait != WaitMode::kIrq) {
                 throw InputError("--inject: '" + to_string(spec) + "' loses an interrupt; it needs --wait irq");
             }
             specs.push_back(spec);

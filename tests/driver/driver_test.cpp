@@ -82,8 +82,8 @@ TEST(DriverWithoutKernel, RunsFramesThroughOverflowPausesByPioAndPolling) {
     const SimTime period = fs_from_ns(15.0), access = fs_from_ns(100.0);
     DirectPort port(board, period, access);
     DriverConfig driver_config;
-    driver_config.use_dma = false;
-    driver_config.use_interrupts = false;
+    driver_config.transfer = Transfer::kPio;
+    driver_config.wait = WaitMode::kPoll;
     BoardDriver driver(port, period, driver_config, nullptr);
     driver.open();
     EXPECT_EQ(driver.capacity(), 300u);
@@ -126,8 +126,8 @@ TEST(DriverWithoutKernel, RefusesTheBufferThatWouldPassThePairBudget) {
     const uint64_t all = reference_pairs(boxes).size();
     ASSERT_GT(all, 200u);
     DriverConfig driver_config;
-    driver_config.use_dma = false;
-    driver_config.use_interrupts = false;
+    driver_config.transfer = Transfer::kPio;
+    driver_config.wait = WaitMode::kPoll;
     driver_config.pair_budget = PairBudget(100);
     BoardDriver driver(port, period, driver_config, nullptr);
     driver.open();

@@ -178,8 +178,8 @@ TEST(PlatformConfig, FoldsEverySettingThePlatformTakes) {
     values.apply(load_board_preset("adm-xrc-ii").values);
     const PlatformConfig paper = platform_config(values);
     EXPECT_EQ("PCI 32-bit/33.3 MHz", paper.bus->describe());
-    EXPECT_TRUE(paper.driver.use_dma);
-    EXPECT_TRUE(paper.driver.use_interrupts);
+    EXPECT_TRUE(paper.driver.transfer == Transfer::kDma);
+    EXPECT_TRUE(paper.driver.wait == WaitMode::kIrq);
     EXPECT_EQ(Fidelity::kFast, paper.fidelity);
     EXPECT_EQ(values.settings().driver.ns_per_box, paper.driver.ns_per_box);
     EXPECT_EQ(values.settings().board.clock_mhz, paper.board.clock_mhz);
@@ -187,8 +187,8 @@ TEST(PlatformConfig, FoldsEverySettingThePlatformTakes) {
                   parse_override("run.fidelity=cycle"), parse_override("run.quantum_ns=250"),
                   parse_override("board.m=4")});
     const PlatformConfig folded = platform_config(values);
-    EXPECT_FALSE(folded.driver.use_dma);
-    EXPECT_FALSE(folded.driver.use_interrupts);
+    EXPECT_FALSE(folded.driver.transfer == Transfer::kDma);
+    EXPECT_FALSE(folded.driver.wait == WaitMode::kIrq);
     EXPECT_EQ(Fidelity::kCycle, folded.fidelity);
     EXPECT_EQ(250.0, folded.quantum_ns);
     EXPECT_EQ(4u, folded.board.m);

@@ -36,8 +36,8 @@ PlatformConfig platform_for(const Variant& v, Fidelity fidelity) {
     config.board.format = v.format;
     if (v.fifo_depth != 0) config.board.collector.fifo_depth = v.fifo_depth;
     config.board.collector.buffer_depth = v.buffer_depth;
-    config.driver.use_dma = v.dma;
-    config.driver.use_interrupts = v.irq;
+    config.driver.transfer = (v.dma) ? Transfer::kDma : Transfer::kPio;
+    config.driver.wait = (v.irq) ? WaitMode::kIrq : WaitMode::kPoll;
     config.driver.poll_gap_ns = v.poll_gap_ns;
     config.board.tiles.boxes = v.tile_boxes;
     config.fidelity = fidelity;

@@ -21,8 +21,8 @@ PlatformConfig paper_platform(const std::string& faults, bool interrupts = true,
     PlatformConfig config = testing::preset_platform("adm-xrc-ii");
     config.faults = parse_fault_specs(faults);
     config.board.collector.buffer_depth = 64;  // a few overflow pauses per frame
-    config.driver.use_interrupts = interrupts;
-    config.driver.use_dma = dma;
+    config.driver.wait = (interrupts) ? WaitMode::kIrq : WaitMode::kPoll;
+    config.driver.transfer = (dma) ? Transfer::kDma : Transfer::kPio;
     return config;
 }
 

@@ -29,8 +29,8 @@ struct Variant {
 PlatformConfig platform_config(const Variant& v) {
     PlatformConfig config = testing::preset_platform("adm-xrc-ii");
     config.board.collector.buffer_depth = 64;  // pauses every 64 pairs
-    config.driver.use_dma = v.dma;
-    config.driver.use_interrupts = v.interrupts;
+    config.driver.transfer = (v.dma) ? Transfer::kDma : Transfer::kPio;
+    config.driver.wait = (v.interrupts) ? WaitMode::kIrq : WaitMode::kPoll;
     config.fidelity = v.fidelity;
     config.quantum_ns = v.quantum_ns;
     return config;

@@ -20,8 +20,8 @@ namespace {
 
 PlatformConfig paper_platform(bool dma = true, bool interrupts = true) {
     PlatformConfig config = testing::preset_platform("adm-xrc-ii");
-    config.driver.use_dma = dma;
-    config.driver.use_interrupts = interrupts;
+    config.driver.transfer = (dma) ? Transfer::kDma : Transfer::kPio;
+    config.driver.wait = (interrupts) ? WaitMode::kIrq : WaitMode::kPoll;
     return config;
 }
 
