@@ -61,9 +61,9 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
         WaveList waves(trace_, "interrupts");
         waves.add(interrupts_.shown().irq, std::string(this->name()) + ".irq");
         waves.add(interrupts_.shown().inta, std::string(this->name()) + ".inta");
-        bus_.trace(waves);
-        bridge_.trace(waves);
-        board_.trace(waves);
+        bus_.add_waves(waves);
+        bridge_.add_waves(waves);
+        board_.add_waves(waves);
         traced_ = waves.signals();
     }
 }

@@ -47,7 +47,7 @@ int bits_for(uint64_t max) {
 }
 }  // namespace
 
-void CollisionBoard::trace(WaveList& waves) {
+void CollisionBoard::add_waves(WaveList& waves) {
     traced_engine_ = dynamic_cast<ClockedEngine*>(&core_.engine());
     if (traced_engine_ == nullptr) throw std::logic_error("waveforms need the clocked engine");
     // The waveforms start from the board as it is (idle), not from zeros.

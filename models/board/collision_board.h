@@ -43,7 +43,7 @@ public:
     // Adds the board's waveforms, scoped by block, to a trace file (before
     // the first sc_start). Needs the clocked engine (throws std::logic_error
     // otherwise). Without this call the board does no per-edge work at all.
-    void trace(WaveList& waves);
+    void add_waves(WaveList& waves);
     // Traced boards only: whether the following sweeps are clocked edge by
     // edge and sampled (a window of frames), or run as untraced ones do and
     // leave the waveforms holding. Switch between sweeps only.

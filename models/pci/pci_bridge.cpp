@@ -314,7 +314,7 @@ void PciBridge::show_waves() {
     waves_.show();
 }
 
-void PciBridge::trace(WaveList& waves) const {
+void PciBridge::add_waves(WaveList& waves) const {
     const std::string p = std::string(name()) + ".dma.";
     const Waves& shown = waves_.shown();
     waves.group("bridge: DMA engine");

@@ -45,7 +45,7 @@ public:
 
     // Adds the DMA engine's waveforms (state, busy, direction, bytes,
     // descriptors, error) to a trace file, before the first sc_start.
-    void trace(WaveList& waves) const;
+    void add_waves(WaveList& waves) const;
     // Whether the frames that follow are traced (a --vcd-frames window):
     // outside it the DMA engine's waveforms hold.
     void set_tracing(bool on) { waves_.set_open(on); }

@@ -43,7 +43,7 @@ void PciBus::master_transport(tlm::tlm_generic_payload& payload, sc_time& delay)
     memory_socket->b_transport(payload, delay);
 }
 
-void PciBus::trace(WaveList& waves) const {
+void PciBus::add_waves(WaveList& waves) const {
     const std::string p = std::string(name()) + ".";
     waves.group("PCI bus");
     const Waves& shown = waves_.shown();

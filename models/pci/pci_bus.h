@@ -42,7 +42,7 @@ public:
     // the CPU's programmed I/O (accesses so far, the last one's address,
     // direction and bytes) and the bytes the bridge moved as bus master, so
     // that PIO transfers and DMA show beside the board's compute.
-    void trace(WaveList& waves) const;
+    void add_waves(WaveList& waves) const;
     // Whether the frames that follow are traced (a --vcd-frames window):
     // outside it the bus's waveforms hold.
     void set_tracing(bool on) { waves_.set_open(on); }

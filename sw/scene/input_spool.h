@@ -68,7 +68,6 @@ private:
     int copy_;
     std::string copy_name_;
     std::vector<char> chunk_;
-    std::size_t chunk_end_ = 0, handed_end_ = 0;  // read into chunk_, handed out of it
     uint64_t handed_out_ = 0;                     // bytes handed out in all
     uint64_t line_ = 1;                           // the line of the next byte
     std::size_t line_bytes_ = 0;                  // of that line so far
