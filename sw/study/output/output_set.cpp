@@ -4,6 +4,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -35,7 +36,48 @@ void OutputSet::add_standard_output(std::string label) { stdout_label_ = std::mo
 
 void OutputSet::set_standard_output(std::string text) { stdout_text_ = std::move(text); }
 
-void OutputSet::open() {
+namespace {
+
+// What an output writes to, for the sameness checks. A device, FIFO or pipe
+// is written, never replaced, so it may be named twice; a regular file
+// reached through a descriptor (/dev/fd/3 3>>FILE, stdout >>FILE) is
+// appended to, so it must be no input, and no other output unless both
+// write through the same descriptor, one after the other.
+struct Written {
+    std::string name;  // label and path, for messages
+    FileIdentity id;
+    bool checked;    // a regular file (or a new one)
+    int descriptor;  // >= 0: written through this process's descriptor
+};
+
+// Whether an output writes to standard output itself ("-", /dev/stdout):
+// standard output is then a data stream, and the summary is not mixed in.
+bool writes_standard_output(const std::vector<Written>& written) {
+    struct stat status {};
+    const bool open_at_start = !standard_descriptor_was_closed(STDOUT_FILENO) && fstat(STDOUT_FILENO, &status) == 0;
+    return std::any_of(written.begin(), written.end(), [&](const Written& w) {
+        return w.descriptor == STDOUT_FILENO || (open_at_start && w.descriptor >= 0 && w.id.exists &&
+                                                 w.id.device == status.st_dev && w.id.inode == status.st_ino);
+    });
+}
+
+Written standard_output_written(const std::string& label) {
+    if (standard_descriptor_was_closed(STDOUT_FILENO)) {
+        throw InputError(label + ": closed when cdvp started; expected it open (or --quiet)");
+    }
+    struct stat status {};
+    if (fstat(STDOUT_FILENO, &status) != 0) throw InputError(label + ": " + std::strerror(errno));
+    FileIdentity id;
+    id.path = "/dev/stdout";
+    id.exists = true;
+    id.device = status.st_dev;
+    id.inode = status.st_ino;
+    return {label, id, S_ISREG(status.st_mode) != 0, STDOUT_FILENO};
+}
+
+}  // namespace
+
+std::vector<OutputTarget> OutputSet::resolve_targets() const {
     std::vector<OutputTarget> targets;
     for (const Declared& out : outputs_) {
         if (out.path.empty()) throw InputError(out.label + ": expected a file path, got ''");
@@ -45,48 +87,19 @@ void OutputSet::open() {
             throw InputError(out.label + ": " + e.what());
         }
     }
-    // What each output writes to, for the sameness checks. A device, FIFO or
-    // pipe is written, never replaced, so it may be named twice; a regular
-    // file reached through a descriptor (/dev/fd/3 3>>FILE, stdout >>FILE) is
-    // appended to, so it must be no input, and no other output unless both
-    // write through the same descriptor, one after the other.
-    struct Written {
-        std::string name;  // label and path, for messages
-        FileIdentity id;
-        bool checked;    // a regular file (or a new one)
-        int descriptor;  // >= 0: written through this process's descriptor
-    };
+    return targets;
+}
+
+void OutputSet::open() {
+    const std::vector<OutputTarget> targets = resolve_targets();
     std::vector<Written> written;
     for (std::size_t k = 0; k < outputs_.size(); ++k) {
         const bool direct = targets[k].kind == OutputTarget::Kind::kDirect;
         written.push_back({quoted(outputs_[k].label, outputs_[k].path), identity_of(targets[k]),
                            !direct || S_ISREG(targets[k].status.st_mode), direct ? targets[k].descriptor : -1});
     }
-    // An output written to standard output itself ("-", /dev/stdout) makes
-    // it a data stream: the summary is not mixed into it.
-    if (stdout_label_) {
-        struct stat status {};
-        const bool open_at_start = !standard_descriptor_was_closed(STDOUT_FILENO) && fstat(STDOUT_FILENO, &status) == 0;
-        for (const Written& w : written) {
-            const bool same = w.descriptor == STDOUT_FILENO ||
-                              (open_at_start && w.descriptor >= 0 && w.id.exists && w.id.device == status.st_dev &&
-                               w.id.inode == status.st_ino);
-            if (same) stdout_label_.reset();
-        }
-    }
-    if (stdout_label_) {
-        if (standard_descriptor_was_closed(STDOUT_FILENO)) {
-            throw InputError(*stdout_label_ + ": closed when cdvp started; expected it open (or --quiet)");
-        }
-        struct stat status {};
-        if (fstat(STDOUT_FILENO, &status) != 0) throw InputError(*stdout_label_ + ": " + std::strerror(errno));
-        FileIdentity id;
-        id.path = "/dev/stdout";
-        id.exists = true;
-        id.device = status.st_dev;
-        id.inode = status.st_ino;
-        written.push_back({*stdout_label_, id, S_ISREG(status.st_mode) != 0, STDOUT_FILENO});
-    }
+    if (stdout_label_ && writes_standard_output(written)) stdout_label_.reset();
+    if (stdout_label_) written.push_back(standard_output_written(*stdout_label_));
     std::vector<FileIdentity> input_ids;
     for (const Declared& in : inputs_) input_ids.push_back(identity_of_input(in.path));
     for (std::size_t k = 0; k < written.size(); ++k) {

@@ -11,6 +11,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/study/output/output_file.h"
+#include "sw/study/output/output_target.h"
 
 namespace cdvp {
 
@@ -67,6 +68,8 @@ public:
     std::optional<OutputFailure> try_commit() noexcept;
 
 private:
+    std::vector<OutputTarget> resolve_targets() const;
+
     struct Declared {
         std::string label, path, suffix;
         bool open_stream;
