@@ -64,6 +64,65 @@ bool standard_descriptor_was_closed(int descriptor) {
     return descriptor >= 0 && descriptor < 3 && g_closed_at_start[descriptor];
 }
 
+namespace {
+
+// Nothing at `path`: the file is created in its (existing, writable) directory.
+OutputTarget new_file_target(const std::string& given, const std::string& path) {
+    const std::string parent = parent_of(path);
+    const std::string name = fs::path(path).filename().string();
+    struct stat parent_status {};
+    if (stat(parent.c_str(), &parent_status) != 0) {
+        refuse(given, "directory '" + parent + "'" +
+                          (errno == ENOENT ? std::string(" does not exist") : ": " + std::string(std::strerror(errno))));
+    }
+    if (!S_ISDIR(parent_status.st_mode)) refuse(given, "'" + parent + "' is not a directory");
+    if (name == "." || name == "..") refuse(given, "names a directory, expected a file");
+    const std::string real_parent = real_path(parent);
+    if (real_parent.empty()) refuse(given, std::strerror(errno));
+    require_writable_directory(given, real_parent);
+    OutputTarget target;
+    target.kind = OutputTarget::Kind::kNew;
+    target.path = (fs::path(real_parent) / name).string();
+    return target;
+}
+
+// A link in /proc/self/fd or /dev/fd: the descriptor is written as it is.
+OutputTarget descriptor_target(const std::string& given, const std::string& path, const std::string& real_parent) {
+    OutputTarget target;
+    target.kind = OutputTarget::Kind::kDirect;
+    target.path = path;
+    if (real_parent == "/proc/" + std::to_string(getpid()) + "/fd") {
+        target.descriptor = std::atoi(fs::path(path).filename().c_str());
+        if (standard_descriptor_was_closed(target.descriptor)) {
+            refuse(given, "descriptor " + std::to_string(target.descriptor) + " was closed when cdvp started");
+        }
+    }
+    if (stat(path.c_str(), &target.status) != 0) refuse(given, std::strerror(errno));
+    if (access(path.c_str(), W_OK) != 0) refuse(given, std::strerror(errno));
+    return target;
+}
+
+// Something that is no link: a regular file is replaced, a device or FIFO written.
+OutputTarget existing_target(const std::string& given, const std::string& path, const struct stat& status) {
+    const mode_t type = status.st_mode & S_IFMT;
+    if (type == S_IFDIR) refuse(given, "is a directory");
+    if (type != S_IFREG && type != S_IFCHR && type != S_IFIFO) refuse(given, "not a regular file, character device or FIFO");
+    OutputTarget target;
+    target.status = status;
+    target.path = real_path(path);
+    if (target.path.empty()) refuse(given, std::strerror(errno));
+    if (access(target.path.c_str(), W_OK) != 0) refuse(given, std::strerror(errno));
+    if (type == S_IFREG) {
+        target.kind = OutputTarget::Kind::kRegular;
+        require_writable_directory(given, parent_of(target.path));
+    } else {
+        target.kind = OutputTarget::Kind::kDirect;
+    }
+    return target;
+}
+
+}  // namespace
+
 OutputTarget resolve_output_target(const std::string& given) {
     if (given.empty()) refuse(given, "empty path");
     if (given == "-") {  // the usual spelling of standard output
@@ -77,64 +136,19 @@ OutputTarget resolve_output_target(const std::string& given) {
     std::string path = given;
     for (int hops = 0;; ++hops) {
         if (hops > kMaxLinkHops) refuse(given, std::strerror(ELOOP));
-        OutputTarget target;
-        if (lstat(path.c_str(), &target.status) != 0) {
+        struct stat status {};
+        if (lstat(path.c_str(), &status) != 0) {
             if (errno != ENOENT && errno != ENOTDIR) refuse(given, std::strerror(errno));
-            // Nothing there: the file is created in its (existing) directory.
-            const std::string parent = parent_of(path);
-            const std::string name = fs::path(path).filename().string();
-            struct stat parent_status {};
-            if (stat(parent.c_str(), &parent_status) != 0) {
-                refuse(given, "directory '" + parent + "'" +
-                                  (errno == ENOENT ? std::string(" does not exist") : ": " + std::string(std::strerror(errno))));
-            }
-            if (!S_ISDIR(parent_status.st_mode)) refuse(given, "'" + parent + "' is not a directory");
-            if (name == "." || name == "..") refuse(given, "names a directory, expected a file");
-            const std::string real_parent = real_path(parent);
-            if (real_parent.empty()) refuse(given, std::strerror(errno));
-            require_writable_directory(given, real_parent);
-            target.kind = OutputTarget::Kind::kNew;
-            target.path = (fs::path(real_parent) / name).string();
-            target.status = {};
-            return target;
+            return new_file_target(given, path);
         }
-        if (S_ISLNK(target.status.st_mode)) {
-            const std::string real_parent = real_path(parent_of(path));
-            if (is_descriptor_directory(real_parent)) {
-                target.kind = OutputTarget::Kind::kDirect;
-                target.path = path;
-                if (real_parent == "/proc/" + std::to_string(getpid()) + "/fd") {
-                    target.descriptor = std::atoi(fs::path(path).filename().c_str());
-                    if (standard_descriptor_was_closed(target.descriptor)) {
-                        refuse(given, "descriptor " + std::to_string(target.descriptor) + " was closed when cdvp started");
-                    }
-                }
-                if (stat(path.c_str(), &target.status) != 0) refuse(given, std::strerror(errno));
-                if (access(path.c_str(), W_OK) != 0) refuse(given, std::strerror(errno));
-                return target;
-            }
-            char link[PATH_MAX];
-            const ssize_t length = readlink(path.c_str(), link, sizeof link - 1);
-            if (length < 0) refuse(given, std::strerror(errno));
-            link[length] = '\0';
-            path = link[0] == '/' ? std::string(link) : (fs::path(parent_of(path)) / link).string();
-            continue;
-        }
-        const mode_t type = target.status.st_mode & S_IFMT;
-        if (type == S_IFDIR) refuse(given, "is a directory");
-        if (type != S_IFREG && type != S_IFCHR && type != S_IFIFO) {
-            refuse(given, "not a regular file, character device or FIFO");
-        }
-        target.path = real_path(path);
-        if (target.path.empty()) refuse(given, std::strerror(errno));
-        if (access(target.path.c_str(), W_OK) != 0) refuse(given, std::strerror(errno));
-        if (type == S_IFREG) {
-            target.kind = OutputTarget::Kind::kRegular;
-            require_writable_directory(given, parent_of(target.path));
-        } else {
-            target.kind = OutputTarget::Kind::kDirect;
-        }
-        return target;
+        if (!S_ISLNK(status.st_mode)) return existing_target(given, path, status);
+        const std::string real_parent = real_path(parent_of(path));
+        if (is_descriptor_directory(real_parent)) return descriptor_target(given, path, real_parent);
+        char link[PATH_MAX];
+        const ssize_t length = readlink(path.c_str(), link, sizeof link - 1);
+        if (length < 0) refuse(given, std::strerror(errno));
+        link[length] = '\0';
+        path = link[0] == '/' ? std::string(link) : (fs::path(parent_of(path)) / link).string();
     }
 }
 
