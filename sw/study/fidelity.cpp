@@ -1,0 +1,171 @@
+#include "sw/study/fidelity.h"
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <variant>
+
+#include "models/common/user_text.h"
+#include "platform/setting_choices.h"
+#include "sw/scene/scene.h"
+#include "sw/study/fidelity_figure.h"
+#include "sw/study/figure_plan.h"
+
+namespace cdvp {
+
+namespace {
+
+constexpr std::array<FidelityLevel, 6> kLevels{{{Fidelity::kCycle, 0},
+                                                {Fidelity::kFast, 0},
+                                                {Fidelity::kFast, 100},
+                                                {Fidelity::kFast, 1000},
+                                                {Fidelity::kFast, 10000},
+                                                {Fidelity::kFast, 100000}}};
+
+const std::array<const char*, ReportSummary::kPhases>& kPhases = ReportSummary::kPhaseKeys;
+
+FidelityResult read_level(const std::string& report_path, const std::string& pairs_path) {
+    const nlohmann::json report = nlohmann::json::parse(slurp(report_path));
+    const ReportSummary summary = summary_from_json(report.at("summary"), "the level's report");
+    FidelityResult result;
+    result.p50_sim_wall_native_ns = summary.sim_wall_native_ns.p50;
+    result.mean_phase_ns = summary.mean_phase_ns;
+    result.frames_in_means = summary.frames_in_means;
+    result.pairs = slurp(pairs_path);
+    result.config = report.value("config", nlohmann::json::object());
+    return result;
+}
+
+// Runs `cdvp run` at one level; its report and pairs, or the exit status
+// to end with (its own one-line error already printed, under this name).
+std::variant<FidelityResult, int> run_level(const FidelityLevel& level, const std::vector<std::string>& forwarded,
+                                            const TraceSpool* spool) {
+    ScratchFile report(".json"), pairs(".csv");
+    CapturedOutput errors("cdvp-level-stderr");
+    std::vector<std::string> args{self_path(), "run"};
+    args.insert(args.end(), forwarded.begin(), forwarded.end());
+    std::ostringstream quantum;
+    quantum << level.quantum_ns;
+    args.insert(args.end(), {"--fidelity", level.fidelity(), "--quantum-ns", quantum.str(), "--report", report.path(),
+                             "--pairs-out", pairs.path(), "-q"});
+    ChildStreams streams;
+    streams.err = errors.fd();
+    if (spool != nullptr && spool->descriptor() >= 0) streams.inherited = {spool->descriptor()};
+    const int wait_status = run_child(args, streams);
+    if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
+    if (WEXITSTATUS(wait_status) != 0) {
+        const std::string message = renamed_message(errors.text(64 * 1024), "cdvp fidelity");
+        std::cerr << (spool != nullptr ? spool->restore_names(message) : message);
+        return WEXITSTATUS(wait_status);
+    }
+    FidelityResult result = read_level(report.path(), pairs.path());
+    if (result.frames_in_means == 0) {
+        throw InputError("the scene has no frames to time (--frames 0, or an empty trace); fidelity compares "
+                         "frames: give at least one");
+    }
+    return result;
+}
+
+// "fast, quantum 100 ns", "cycle, quantum 0".
+std::string level_words(const FidelityLevel& level) {
+    const double q = level.quantum_ns;
+    std::ostringstream words;
+    words << level.fidelity() << ", quantum ";
+    if (q == 0) {
+        words << 0;
+    } else if (q >= 1000) {
+        words << q / 1000 << " us";
+    } else {
+        words << q << " ns";
+    }
+    return words.str();
+}
+
+// The figure's context from the reference level's report: board and bus,
+// scene, m, frames, and whether every level found the reference's pairs.
+std::string figure_context(const std::vector<FidelityResult>& results) {
+    const nlohmann::json& config = results.front().config;
+    std::ostringstream words;
+    words << config.value("board", std::string("no board")) << " (" << config.value("bus", std::string("untimed bus"))
+          << "), " << config.value("source", std::string()) << ", m=" << config.value("m", 0) << ", "
+          << results.front().frames_in_means << " frames timed\nreference: the cycle engine at quantum 0; pairs ";
+    const bool identical = std::all_of(results.begin(), results.end(),
+                                       [&](const FidelityResult& r) { return r.pairs == results.front().pairs; });
+    words << (identical ? "identical at every level" : "DIFFER at some level (fidelity.csv)");
+    return words.str();
+}
+
+}  // namespace
+
+const char* FidelityLevel::fidelity() const { return name_of(engine); }
+
+const std::array<FidelityLevel, 6>& fidelity_levels() { return kLevels; }
+
+std::optional<int> run_fidelity(const std::vector<std::string>& forwarded, const TraceSpool* spool,
+                                std::vector<FidelityResult>& results, const FidelityProgress& progress) {
+    for (std::size_t k = 0; k < kLevels.size(); ++k) {
+        if (progress) progress(k, kLevels[k], false);
+        std::variant<FidelityResult, int> level = run_level(kLevels[k], forwarded, spool);
+        if (progress) progress(k, kLevels[k], true);
+        if (const int* status = std::get_if<int>(&level)) return *status;
+        results.push_back(std::move(std::get<FidelityResult>(level)));
+    }
+    return std::nullopt;
+}
+
+double fidelity_error_percent(const FidelityResult& level, const FidelityResult& reference, std::size_t phase) {
+    const double total = reference.mean_phase_ns.back();
+    if (total == 0) return 0;
+    return 100.0 * std::fabs(level.mean_phase_ns[phase] - reference.mean_phase_ns[phase]) / total;
+}
+
+std::string fidelity_csv(const std::vector<FidelityResult>& results) {
+    std::ostringstream csv;
+    csv << "level,fidelity,quantum_ns,frames_in_means,p50_sim_wall_native_ns";
+    for (const char* phase : kPhases) csv << ",mean_" << phase;
+    for (const char* phase : kPhases) csv << ",error_" << std::string(phase, std::strlen(phase) - 3) << "_percent";
+    csv << ",pairs_identical\n";
+    csv << std::setprecision(10);
+    for (std::size_t k = 0; k < results.size(); ++k) {
+        const FidelityResult& r = results[k];
+        csv << k << ',' << kLevels[k].fidelity() << ',' << kLevels[k].quantum_ns << ',' << r.frames_in_means << ','
+            << r.p50_sim_wall_native_ns;
+        for (double ns : r.mean_phase_ns) csv << ',' << ns;
+        for (std::size_t p = 0; p < kPhases.size(); ++p) csv << ',' << fidelity_error_percent(r, results[0], p);
+        csv << ',' << (r.pairs == results[0].pairs ? "yes" : "no") << '\n';
+    }
+    return csv.str();
+}
+
+std::string fidelity_table(const std::vector<FidelityResult>& results) {
+    std::ostringstream t;
+    t << "level           wall/frame   total (sim)     error   pairs\n"
+      << "                (p50)        (mean)\n";
+    for (std::size_t k = 0; k < results.size(); ++k) {
+        const FidelityResult& r = results[k];
+        std::ostringstream name;
+        name << kLevels[k].fidelity() << " q=" << kLevels[k].quantum_ns << "ns";
+        t << std::left << std::setw(16) << name.str() << std::right << std::fixed << std::setprecision(3)
+          << std::setw(9) << r.p50_sim_wall_native_ns / 1e6 << " ms" << std::setw(11) << r.mean_phase_ns.back() / 1e3
+          << " us" << std::setw(9) << std::setprecision(4)
+          << fidelity_error_percent(r, results[0], kPhases.size() - 1) << " %   "
+          << (r.pairs == results[0].pairs ? "identical" : "DIFFER") << '\n';
+    }
+    return t.str();
+}
+
+std::string fidelity_plot_script(const std::vector<FidelityResult>& results, const std::string& png_path) {
+    std::vector<FidelityPoint> points;
+    for (std::size_t k = 0; k < results.size(); ++k) {
+        points.push_back({level_words(kLevels[k]), results[k].p50_sim_wall_native_ns / 1e6,
+                          fidelity_error_percent(results[k], results[0], kPhases.size() - 1)});
+    }
+    return figure_script(fidelity_figure(points, figure_context(results)), png_path);
+}
+
+}  // namespace cdvp

@@ -1,0 +1,63 @@
+// Fidelity as a study: the scene run by `cdvp run` at every modelling level
+// (the clocked engine, and the fast engine at five host quanta), each level's
+// figures read back from its report's summary, and the error of each against
+// the clocked engine at quantum 0. `cdvp fidelity` parses its arguments and
+// writes what this returns (docs/README: cdvp fidelity).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "models/board_spec/board_engine.h"
+#include "sw/study/child_runs.h"
+#include "sw/study/report_summary.h"
+
+namespace cdvp {
+
+struct FidelityLevel {
+    Fidelity engine;
+    double quantum_ns;
+    const char* fidelity() const;  // the engine's name, as --fidelity takes it
+};
+
+// The levels, the reference (the clocked engine at quantum 0) first.
+const std::array<FidelityLevel, 6>& fidelity_levels();
+
+// One level's figures, as its run's report summarises them: the simulator's
+// wall time per frame is the median over the frames after warm-up (wall
+// clock is noisy; a median is what a repeat reproduces), the simulated
+// phases their means (what a user pays per frame), the same frames in both.
+struct FidelityResult {
+    double p50_sim_wall_native_ns = 0;
+    std::array<double, ReportSummary::kPhases> mean_phase_ns{};
+    std::string pairs;  // the pairs CSV, to compare with the reference's
+    uint64_t frames_in_means = 0;
+    nlohmann::json config;  // the report's, for the figure's title
+};
+
+// Runs every level with `forwarded` (options of cdvp run) and the trace
+// spool if any; results in level order. Returns the exit status to end with
+// when a level failed (its one-line error printed on stderr under the name
+// cdvp fidelity), else none. progress(k, level, done) before and after each.
+// Throws InputError when the scene has no frame to time.
+using FidelityProgress = std::function<void(std::size_t, const FidelityLevel&, bool)>;
+std::optional<int> run_fidelity(const std::vector<std::string>& forwarded, const TraceSpool* spool,
+                                std::vector<FidelityResult>& results, const FidelityProgress& progress);
+
+// Error of a phase against the reference, in percent of the reference's
+// mean frame time (a phase may be zero, so not of its own value).
+double fidelity_error_percent(const FidelityResult& level, const FidelityResult& reference, std::size_t phase);
+
+// fidelity.csv, the table printed, and the figure's gnuplot script.
+std::string fidelity_csv(const std::vector<FidelityResult>& results);
+std::string fidelity_table(const std::vector<FidelityResult>& results);
+std::string fidelity_plot_script(const std::vector<FidelityResult>& results, const std::string& png_path);
+
+}  // namespace cdvp
