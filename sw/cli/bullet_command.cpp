@@ -88,12 +88,8 @@ void open_outputs(const BulletOptions& o, const po::variables_map& vm, Outputs& 
     add_setting_inputs(out.files, o.layers, vm);
     std::optional<std::size_t> report;
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
-    if (vm.count("vcd-format") && !vm.count("vcd")) throw InputError("--vcd-format: the format of --vcd; give --vcd too");
-    if (vm.count("vcd")) out.waves.declare(out.files, o.vcd, parse_dump_format(o.vcd_format));
-    if (!o.quiet) out.files.add_standard_output("standard output");
-    out.files.open();
+    open_with_waves_and_summary(out.files, out.waves, vm, o.vcd, o.vcd_format, o.quiet);
     if (report) out.report = &out.files.file(*report);
-    out.waves.bind(out.files);
 }
 
 struct Setup : BoardSetup {

@@ -55,14 +55,9 @@ void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out
     std::optional<std::size_t> pairs, report;
     if (vm.count("pairs-out")) pairs = out.files.add_output("--pairs-out", o.pairs_out);
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
-    if (vm.count("vcd-format") && !vm.count("vcd")) throw InputError("--vcd-format: the format of --vcd; give --vcd too");
-    if (vm.count("vcd")) out.waves.declare(out.files, o.vcd, parse_dump_format(o.vcd_format));
-    // The summary is an output too: committed with the files or not at all.
-    if (!o.quiet) out.files.add_standard_output("standard output");
-    out.files.open();
+    open_with_waves_and_summary(out.files, out.waves, vm, o.vcd, o.vcd_format, o.quiet);
     if (pairs) out.pairs = &out.files.file(*pairs);
     if (report) out.report = &out.files.file(*report);
-    out.waves.bind(out.files);
 }
 
 std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm, const SettingValues& values,

@@ -18,6 +18,7 @@
 #include "sw/cli/run_budgets.h"
 #include "sw/cli/run_options.h"
 #include "sw/cli/run_report.h"
+#include "sw/cli/wave_outputs.h"
 #include "sw/study/output/output_set.h"
 
 namespace cdvp {
@@ -62,5 +63,12 @@ void add_setting_inputs(OutputSet& files, const SettingLayers& layers, const boo
 RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& budgets);
 // The command line as the report records it: "cdvp", then the command's argv.
 std::vector<std::string> report_command_line(int argc, char** argv);
+
+// What a simulating command (run, bullet) declares after its own outputs:
+// the waveforms (--vcd, --vcd-format) and, unless quiet, the summary on
+// standard output (an output too: committed with the files or not at all);
+// then opens the set and binds the waveforms to it.
+void open_with_waves_and_summary(OutputSet& files, WaveOutputs& waves, const boost::program_options::variables_map& vm,
+                                 const std::string& vcd, const std::string& vcd_format, bool quiet);
 
 }  // namespace cdvp
