@@ -55,9 +55,9 @@ std::pair<btVector3, btVector3> world_bounds(const std::vector<FloatBox>& boxes)
 
 std::unique_ptr<btBroadphaseInterface> create_broadphase(BulletKind kind, const std::vector<FloatBox>& boxes) {
     constexpr bool kRayAccelerator = false;  // a DBVT shadow we never query
-    if (kind == BulletKind::dbvt) return make_bullet_broadphase(kind, {}, {}, boxes.size(), kRayAccelerator);
+    if (kind == BulletKind::dbvt) return make_bt_broadphase(kind, {}, {}, boxes.size(), kRayAccelerator);
     const auto [world_min, world_max] = world_bounds(boxes);
-    return make_bullet_broadphase(kind, world_min, world_max, boxes.size(), kRayAccelerator);
+    return make_bt_broadphase(kind, world_min, world_max, boxes.size(), kRayAccelerator);
 }
 
 // Both broad phases own a btHashedOverlappingPairCache (the default when none is
@@ -138,7 +138,7 @@ std::unique_ptr<BroadPhase> make_bullet_broad_phase(BulletKind kind) {
     return std::make_unique<BulletBroadPhase>(kind);
 }
 
-std::unique_ptr<btBroadphaseInterface> make_bullet_broadphase(BulletKind kind, const btVector3& world_min,
+std::unique_ptr<btBroadphaseInterface> make_bt_broadphase(BulletKind kind, const btVector3& world_min,
                                                               const btVector3& world_max, uint64_t handles,
                                                               bool ray_accelerator) {
     constexpr uint64_t kMax16BitHandles = 16384;  // btAxisSweep3's default

@@ -18,7 +18,7 @@ namespace cdvp {
 // above; ray_accelerator false drops the DBVT shadow it keeps for ray casts.
 // dbvt: btDbvtBroadphase (needs neither bounds nor a handle count).
 // Throws std::invalid_argument for more handles than bt32BitAxisSweep3 takes.
-std::unique_ptr<btBroadphaseInterface> make_bullet_broadphase(BulletKind kind, const btVector3& world_min,
+std::unique_ptr<btBroadphaseInterface> make_bt_broadphase(BulletKind kind, const btVector3& world_min,
                                                               const btVector3& world_max, uint64_t handles,
                                                               bool ray_accelerator);
 

@@ -52,9 +52,9 @@ std::unique_ptr<btBroadphaseInterface> make_broadphase(BroadphaseKind kind, cons
     switch (kind) {
         case BroadphaseKind::kSimple: return std::make_unique<btSimpleBroadphase>(static_cast<int>(handles));
         case BroadphaseKind::kSap:
-            return make_bullet_broadphase(BulletKind::sap, world_min, world_max, handles, kRayAccelerator);
+            return make_bt_broadphase(BulletKind::sap, world_min, world_max, handles, kRayAccelerator);
         case BroadphaseKind::kDbvt:
-            return make_bullet_broadphase(BulletKind::dbvt, world_min, world_max, handles, kRayAccelerator);
+            return make_bt_broadphase(BulletKind::dbvt, world_min, world_max, handles, kRayAccelerator);
         case BroadphaseKind::kBoard:
             if (link == nullptr) throw std::invalid_argument("the board broad phase needs a board link");
             return std::make_unique<BoardBroadphase>(*link);
