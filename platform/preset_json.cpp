@@ -164,7 +164,7 @@ json parse_strictly(const std::string& path, const std::string& text) {
         throw InputError(text_position(path, text, *nul) +
                          ": invalid JSON: syntax error while parsing value - unexpected NUL byte; expected end of input");
     }
-    if (!duplicate.empty()) throw InputError(path + ": " + duplicate + ": key given twice");
+    if (!duplicate.empty()) throw InputError(path + ": " + excerpt(duplicate) + ": key given twice");
     if (!root.is_object()) throw InputError(path + ": expected a JSON object");
     return root;
 }

@@ -139,6 +139,8 @@ TEST_F(PresetFile, KeysGivenTwiceAreRefused) {
     EXPECT_EQ(path_ + ": board.clock_mhz: key given twice",
               error_for("{\"board\": {\"clock_mhz\": {}, \"clock_mhz\": {}}}"));
     EXPECT_EQ(path_ + ": name: key given twice", error_for("{\"name\": \"a\", \"name\": \"b\"}"));
+    // A key holding an escaped line end is quoted on one line (found by config_fuzzer).
+    EXPECT_EQ(path_ + ": b\\nm: key given twice", error_for("{\"b\\nm\": 50, \"b\\nm\": 500}"));
 }
 
 TEST_F(PresetFile, OnlyASmallRegularFileIsAPreset) {
