@@ -5,14 +5,9 @@
 #include <functional>
 #include <string>
 
-namespace cdvp {
+#include "sw/study/exit_codes.h"
 
-// Exit statuses of cdvp (README: exit status; docs/numerics.md).
-constexpr int kExitDone = 0;
-constexpr int kExitInternal = 1;     // a cdvp bug
-constexpr int kExitBadInput = 2;     // a bad trace, flag, preset or output path
-constexpr int kExitDeviceFault = 3;  // the simulated system faulted (bus, DMA, driver timeout, board error)
-constexpr int kExitSystem = 4;       // the operating system failed a write or a resource (disk full, I/O error)
+namespace cdvp {
 
 // Runs a command's body and maps what escapes it to the exit status: an
 // InputError is bad input (kExitBadInput, "PROGRAM: message"), a SystemError

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "sw/study/child_runs.h"
+
 namespace cdvp {
 
 namespace {

@@ -28,7 +28,6 @@ struct MachineMemory {
 // limit of an enclosing cgroup counts too), RLIMIT_AS from getrlimit, and
 // the runs sharing it from CDVP_MEMORY_SHARE (1 to 1024; else 1).
 MachineMemory machine_memory();
-constexpr const char* kMemoryShareVariable = "CDVP_MEMORY_SHARE";
 
 // The least memory limit of the cgroup at `cgroup_path` and its ancestors,
 // from the cgroup file system mounted at `root` (v2: ROOT/PATH/memory.max, v1:

@@ -12,7 +12,7 @@
 #include "sw/cli/fidelity_command.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/settings_command.h"
-#include "sw/cli/version.h"
+#include "sw/study/version.h"
 #include "sw/cli/sweep_command.h"
 #include "sw/study/output/output_target.h"
 #include "models/common/user_text.h"

@@ -8,7 +8,7 @@
 #include "models/common/user_text.h"
 #include "sw/cli/report_provenance.h"
 #include "sw/study/report_summary.h"
-#include "sw/cli/version.h"
+#include "sw/study/version.h"
 
 namespace cdvp {
 

@@ -143,7 +143,7 @@ void resolve_axis(Axis& axis, const std::string& label, const std::set<std::stri
 
 // The sweep's own options: its axes (--NAME LIST and --set NAME=LIST), --out,
 // --jobs and --shard.
-void read_own_options(const ParsedCommandLine& line, const std::set<std::string>& run_flags, SweepOptions& o) {
+void read_own_options(const ParsedCommandLine& line, const std::set<std::string>& run_flags, SweepSpec& o) {
     for (const po::option& option : line.own) {
         const std::string& key = option.string_key;
         if (is_axis_option(key)) {
@@ -169,7 +169,7 @@ void read_own_options(const ParsedCommandLine& line, const std::set<std::string>
 // The options of cdvp run every point takes: none the sweep sets itself,
 // none that is also an axis; a config file is read here, so that it is
 // refused before any point runs.
-void read_forwarded_options(const ParsedCommandLine& line, SweepOptions& o) {
+void read_forwarded_options(const ParsedCommandLine& line, SweepSpec& o) {
     for (const ForwardedOption& option : line.forwarded) {
         if (option.key == "report" || option.key == "pairs-out" || option.key == "vcd" || option.key == "vcd-frames" ||
             option.key == "vcd-format") {
@@ -195,7 +195,7 @@ void read_forwarded_options(const ParsedCommandLine& line, SweepOptions& o) {
 
 // Every file an axis names (traces, configs, presets, host profiles), for the
 // manifest's digests; one source of frames at most.
-void name_axis_inputs(SweepOptions& o) {
+void name_axis_inputs(SweepSpec& o) {
     std::set<std::string> sources;
     for (const Axis& axis : o.axes) {
         if (axis.key == "scene" || axis.key == "trace") sources.insert(axis.key);
@@ -213,7 +213,7 @@ void name_axis_inputs(SweepOptions& o) {
 
 std::string sweep_help() { return kHelp; }
 
-std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
+std::optional<SweepSpec> parse_sweep_options(int argc, char** argv) {
     for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
         if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return std::nullopt;
     }
@@ -222,7 +222,7 @@ std::optional<SweepOptions> parse_sweep_options(int argc, char** argv) {
     std::set<std::string> run_flags = run_option_names();
     for (const char* own : {"help", "quiet", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format"}) run_flags.erase(own);
 
-    SweepOptions o;
+    SweepSpec o;
     read_own_options(line, run_flags, o);
     read_forwarded_options(line, o);
     o.quiet = line.values["quiet"].as<bool>();

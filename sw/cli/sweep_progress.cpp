@@ -6,8 +6,10 @@
 
 namespace cdvp {
 
-SweepProgress::SweepProgress(std::size_t total, std::size_t done, bool enabled)
-    : total_(total), done_(done), done_before_(done), enabled_(enabled), start_(std::chrono::steady_clock::now()) {
+void SweepProgress::started(std::size_t total, std::size_t done) {
+    total_ = total;
+    done_ = done_before_ = done;
+    start_ = std::chrono::steady_clock::now();
     draw();
 }
 
@@ -34,7 +36,7 @@ void SweepProgress::draw() {
     drawn_ = true;
 }
 
-void SweepProgress::finish() {
+void SweepProgress::points_ended() {
     if (drawn_) std::cerr << "\r\033[K" << std::flush;
     drawn_ = false;
 }

@@ -56,6 +56,10 @@ std::string slurp(const std::string& path);
 // The whole file, or nothing when it cannot be opened or read (errno tells why).
 std::optional<std::string> read_whole_file(const std::string& path);
 
+// The environment variable through which a parent running J children at once
+// tells each that its default memory budget is a J-th of the machine's.
+constexpr const char* kMemoryShareVariable = "CDVP_MEMORY_SHARE";
+
 // The running cdvp executable, for its child runs.
 std::string self_path();
 

@@ -1,4 +1,4 @@
-#include "sw/cli/sweep_runner.h"
+#include "sw/study/sweep_runner.h"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,7 +12,7 @@
 #include <stdexcept>
 
 #include "models/common/user_text.h"
-#include "sw/cli/exit_status.h"
+#include "sw/study/exit_codes.h"
 
 namespace cdvp {
 
@@ -75,10 +75,10 @@ struct SweepRunner::Slot {
     int wait_status = 0;
 };
 
-SweepRunner::SweepRunner(const SweepOptions& options, const Grid& grid, SweepTable& table, TableFile& file,
+SweepRunner::SweepRunner(const SweepSpec& spec, const Grid& grid, SweepTable& table, TableFile& file,
                          const std::map<std::string, std::string>& trace_paths, std::function<void()> check_inputs)
-    : o_(options), grid_(grid), table_(table), file_(file), trace_paths_(trace_paths),
-      check_inputs_(std::move(check_inputs)), self_(self_path()) {
+    : o_(spec), grid_(grid), table_(table), file_(file), trace_paths_(trace_paths),
+      check_inputs_(std::move(check_inputs)), self_(spec.cdvp_binary.empty() ? self_path() : spec.cdvp_binary) {
     for (unsigned k = 0; k < o_.jobs; ++k) slots_.push_back(std::make_unique<Slot>());
 }
 
@@ -92,7 +92,7 @@ SweepRunner::~SweepRunner() {
     for (volatile pid_t& pid : g_running) pid = 0;
 }
 
-int SweepRunner::run(const std::vector<std::size_t>& todo, SweepProgress& progress) {
+int SweepRunner::run(const std::vector<std::size_t>& todo, SweepObserver& observer) {
     const StopSignalsHandled handled;
     std::size_t next = 0;
     while (true) {
@@ -115,7 +115,7 @@ int SweepRunner::run(const std::vector<std::size_t>& todo, SweepProgress& progre
             g_running[k] = 0;
             const int status = finish(slot);
             if (status != 0 && failing_ == 0) failing_ = status;  // no new points; the running ones may still end well
-            progress.point_done();
+            observer.point_done();
         }
     }
     return failing_;
@@ -159,7 +159,7 @@ int SweepRunner::finish(Slot& slot) {
     const std::string& id = slot.point.id;
     if (WIFSIGNALED(slot.wait_status)) {
         if (g_stop_signal != 0 || failing_ != 0) return 0;  // stopped with the sweep: it runs again on resume
-        std::cerr << "cdvp sweep: point " << id << ": cdvp run was killed by signal " << WTERMSIG(slot.wait_status)
+        std::cerr << o_.program << ": point " << id << ": cdvp run was killed by signal " << WTERMSIG(slot.wait_status)
                   << "; the point is not recorded\n";
         return kExitInternal;
     }
@@ -168,7 +168,7 @@ int SweepRunner::finish(Slot& slot) {
     const std::string report = report_path(o_.out_dir, slot.point);
     check_inputs_();  // a file changed during the point: its row would not belong to this sweep
     auto fail = [&](int status, const std::string& why) {
-        std::cerr << "cdvp sweep: point " << id << ": " << why << "; the point is not recorded\n";
+        std::cerr << o_.program << ": point " << id << ": " << why << "; the point is not recorded\n";
         return status;
     };
     if (code == kExitDone) {

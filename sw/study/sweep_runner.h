@@ -16,22 +16,18 @@
 #include <vector>
 
 #include "sw/study/child_runs.h"
+#include "sw/study/sweep.h"
 #include "sw/study/sweep_grid.h"
-#include "sw/cli/sweep_options.h"
-#include "sw/cli/sweep_progress.h"
 #include "sw/study/sweep_state.h"
 #include "sw/study/sweep_table.h"
 
 namespace cdvp {
 
-// The signal that stopped the sweep (forwarded to its points), or 0.
-int sweep_stop_signal();
-
 class SweepRunner {
 public:
     // 'spools' gives the path the points read each trace value at (a pipe's
     // copy); 'check_inputs' throws InputError when an input file changed.
-    SweepRunner(const SweepOptions& options, const Grid& grid, SweepTable& table, TableFile& file,
+    SweepRunner(const SweepSpec& spec, const Grid& grid, SweepTable& table, TableFile& file,
                 const std::map<std::string, std::string>& trace_paths, std::function<void()> check_inputs);
     ~SweepRunner();
     SweepRunner(const SweepRunner&) = delete;
@@ -39,7 +35,7 @@ public:
 
     // Runs the points 'todo'; 0, or the status the sweep ends with, its
     // reason printed.
-    int run(const std::vector<std::size_t>& todo, SweepProgress& progress);
+    int run(const std::vector<std::size_t>& todo, SweepObserver& observer);
 
 private:
     struct Slot;
@@ -48,7 +44,7 @@ private:
     std::size_t running() const;
     void signal_running(int signal_number);
 
-    const SweepOptions& o_;
+    const SweepSpec& o_;
     const Grid& grid_;
     SweepTable& table_;
     TableFile& file_;

@@ -1,4 +1,4 @@
-// The figures of a sweep directory, shared by `cdvp sweep` and `cdvp merge`.
+// The figures of a sweep directory, drawn by a sweep and by a merge.
 #pragma once
 
 #include <string>

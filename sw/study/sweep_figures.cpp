@@ -1,4 +1,4 @@
-#include "sw/cli/sweep_files.h"
+#include "sw/study/sweep_figures.h"
 
 #include <algorithm>
 #include <iostream>

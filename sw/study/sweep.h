@@ -1,0 +1,73 @@
+// A sweep: every point of a grid run as `cdvp run` in a child process, J at a
+// time, gathered into OUT/sweep.csv (one row per point, appended and synced as
+// each point ends) with each point's report in OUT/points and the figures the
+// table supports. Resumable: the same spec into the same OUT runs only the
+// points not done yet, after checking every row kept; another grid, other
+// options or a changed input file is refused. One sweep or merge at a time
+// writes a directory (docs/sweep.md).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "sw/scene/input_spool.h"
+#include "sw/study/sweep_grid.h"
+
+namespace cdvp {
+
+// Each running point holds its stderr in memory; 24 at once is more than two
+// cores use (several shards spread further).
+constexpr unsigned kMaxJobs = 24;
+
+// A file the points read, as the command line names it: the option ("--trace",
+// "--board", "--config"), the value given, and the path it is read at.
+struct NamedInput {
+    std::string option, value, path;
+};
+
+struct SweepSpec {
+    std::vector<Axis> axes;                // in the order given, named by what they set
+    std::vector<std::string> run_options;  // passed on to every point, in order, one word each
+    std::vector<NamedInput> inputs;        // every file the points read
+    std::string out_dir;
+    unsigned jobs = 1;                     // 1 to kMaxJobs
+    Shard shard;
+    bool quiet = false;                    // no notes on stderr
+    bool plots = true;                     // false: the CSV and data files only
+    bool rerun_invalid = false;            // rows that do not match the grid are run again, not refused
+    InputLimits trace_limits;              // what a trace read from a pipe may hold when it is spooled
+    std::string program = "cdvp sweep";    // the name notes and errors are printed under
+    std::string cdvp_binary;               // the cdvp the points run; empty: this process's executable
+};
+
+// Told how a sweep goes: a progress bar on a terminal, a callback in a notebook.
+class SweepObserver {
+public:
+    virtual ~SweepObserver() = default;
+    // Before the first point: the points of this shard, and how many of them were done before.
+    virtual void started(std::size_t total, std::size_t done) { (void)total, (void)done; }
+    // After each point that ended (recorded or not).
+    virtual void point_done() {}
+    // After the last point, before the figures are drawn.
+    virtual void points_ended() {}
+};
+
+struct SweepOutcome {
+    int status = 0;             // 0, or the exit status the sweep ended with (its reason printed)
+    std::size_t points = 0;     // rows in the table
+    std::size_t ok = 0, refused = 0, faulted = 0;
+    std::size_t run_now = 0;    // points this call ran
+};
+
+// Runs the sweep. Throws InputError (bad OUT, another sweep's OUT, a changed
+// input, every point refused) or SystemError; a point that failed inside cdvp
+// or could not be written ends the sweep with its status, the points recorded
+// so far kept. A stop signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT) is forwarded
+// to the running points and ends the sweep: sweep_stop_signal() says which.
+SweepOutcome run_sweep(const SweepSpec& spec, SweepObserver* observer = nullptr);
+
+// The signal that stopped the last sweep (forwarded to its points), or 0.
+int sweep_stop_signal();
+
+}  // namespace cdvp
