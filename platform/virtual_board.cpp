@@ -14,10 +14,9 @@ namespace {
 std::shared_ptr<const BusTiming> bus_or_ideal(const std::shared_ptr<const BusTiming>& bus) {
     return bus ? bus : std::make_shared<IdealBusTiming>();
 }
-// The driver knows the board's memory as it knows the bitstream it loaded.
+// The run's pair budget bounds the driver's read-back.
 DriverConfig driver_for(const PlatformConfig& config) {
     DriverConfig driver = config.driver;
-    driver.tiles = config.board.tiles;
     driver.pair_budget = config.pair_budget;
     return driver;
 }

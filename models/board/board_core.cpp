@@ -56,6 +56,13 @@ void BoardCore::declare_registers() {
     registers_.add("PAIR_BUFFER_DEPTH", R::kPairBufferDepth, A::kReadOnly, constant(config_.collector.buffer_depth));
     registers_.add("ERROR_CAUSE", R::kErrorCause, A::kReadOnly, [this] { return error_cause_; });
     registers_.add("FORMAT", R::kFormat, A::kReadOnly, constant(config_.format.register_value()));
+    // The memory the bitstream was built with: the driver bounds a sweep's cycles by it.
+    const TileConfig& tiles = config_.tiles;
+    registers_.add("TILE_BOXES", R::kTileBoxes, A::kReadOnly, constant(tiles.boxes));
+    registers_.add("TILE_TIMING", R::kTileTiming, A::kReadOnly,
+                   constant(tiles.tiled() ? (tiles.load_latency_cycles & R::kTileTimingLatencyMask) |
+                                                tiles.cycles_per_box << R::kTileTimingCyclesShift
+                                          : 0));
 }
 
 bool BoardCore::read_register(uint32_t offset, uint32_t& value) {

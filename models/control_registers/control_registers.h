@@ -44,6 +44,8 @@ struct ControlRegisters {
         kPairBufferDepth = 0x34,  // ro: pair buffer depth in pairs
         kErrorCause = 0x38,       // ro: why ERROR is set (a BoardError)
         kFormat = 0x3C,           // ro: the comparators' number format: 0 float32, K fixedK (NumberFormat)
+        kTileBoxes = 0x40,        // ro: boxes per tile when the boxes sit in SSRAM; 0: block RAM holds them all
+        kTileTiming = 0x44,       // ro: tiled boards: bits 15:0 SSRAM load latency, 31:16 cycles per box (kTileTiming*)
     };
     // ABORT stops any sweep and clears every status bit: the board is idle,
     // ready for a new START (a driver's recovery after a fault).
@@ -59,6 +61,9 @@ struct ControlRegisters {
         kInjectedError = 5,     // an injected board-error fault (docs/faults.md)
     };
     static constexpr uint32_t kIdValue = 0xCD7B'0001;  // "cdvp", register map version 1
+    // TILE_TIMING's fields.
+    static constexpr uint32_t kTileTimingLatencyMask = 0xFFFF;
+    static constexpr uint32_t kTileTimingCyclesShift = 16;
 
     static const char* describe(uint32_t cause) {
         switch (cause) {

@@ -87,7 +87,16 @@ void BoardDriver::open() {
     buffer_depth_ = read(R::kPairBufferDepth);
     parallelism_ = read(R::kParallelism);
     format_ = NumberFormat::from_register(read(R::kFormat));
-    time_.emplace(config_, *bus_, period_, parallelism_, buffer_depth_);
+    // Where the boxes sit bounds a sweep's cycles (the timeouts): block RAM,
+    // or SSRAM swept in tiles.
+    TileConfig tiles;
+    tiles.boxes = read(R::kTileBoxes);
+    if (tiles.tiled()) {
+        const uint32_t timing = read(R::kTileTiming);
+        tiles.load_latency_cycles = timing & R::kTileTimingLatencyMask;
+        tiles.cycles_per_box = timing >> R::kTileTimingCyclesShift;
+    }
+    time_.emplace(config_, *bus_, period_, parallelism_, buffer_depth_, tiles);
     if (port_.memory_size() < host_memory_bytes(capacity_, buffer_depth_)) {
         throw std::runtime_error("host memory too small for the board's capacity and pair buffer");
     }

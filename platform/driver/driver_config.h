@@ -5,7 +5,6 @@
 
 #include <cstdint>
 
-#include "models/address_generator/tile_config.h"
 #include "models/common/pair_budget.h"
 
 namespace cdvp {
@@ -33,10 +32,6 @@ struct DriverConfig {
     // status once (a lost interrupt recovers) and otherwise fails the frame.
     double timeout_factor = 2.0;
     double timeout_floor_ns = 100000.0;
-    // The board's memory as its bitstream was built (block RAM or SSRAM
-    // tiles): the driver knows it as it knows the board it loaded; it bounds
-    // the sweep's cycles. Not a setting: the platform copies the board's.
-    TileConfig tiles;
     // The most pairs a frame may hold (run.max_pairs): the read-back stops
     // with PairBudgetExceeded before the pairs past it are copied. Not a
     // setting of its own: the platform passes the run's budget.

@@ -32,12 +32,13 @@ std::string simulated_seconds(double ns) {
 }
 
 FrameTime::FrameTime(const DriverConfig& config, const BusTiming& bus, SimTime period_fs, uint32_t m,
-                     uint32_t buffer_depth, double quantum_ns)
+                     uint32_t buffer_depth, const TileConfig& tiles, double quantum_ns)
     : config_(config),
       bus_(bus),
       period_ns_(ns_from_fs(period_fs)),
       m_(m),
       buffer_depth_(std::max<uint32_t>(buffer_depth, 1)),
+      tiles_(tiles),
       quantum_ns_(quantum_ns) {}
 
 double FrameTime::timeout_ns(double worst_ns) const {
@@ -57,7 +58,7 @@ double FrameTime::dma_worst_ns(uint64_t bytes, Direction direction) const {
 // Every stall edge moves a pair, so a run between two events drains at most
 // one buffer beyond the sweep.
 uint64_t FrameTime::worst_run_cycles(uint32_t objects) const {
-    const uint64_t slots = config_.tiles.tiled() ? SweepSchedule(m_, config_.tiles, objects).slots()
+    const uint64_t slots = tiles_.tiled() ? SweepSchedule(m_, tiles_, objects).slots()
                                                  : AddressGenerator::sweep_cycles(objects, m_);
     return slots + buffer_depth_ + kPipelineSlack;
 }

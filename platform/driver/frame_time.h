@@ -29,11 +29,13 @@ std::string simulated_seconds(double ns);
 // What a frame's waits and work cost on one board and bus. All times in ns.
 class FrameTime {
 public:
-    // period_fs: the board's clock; m, buffer_depth: its parallelism and pair
-    // buffer (the driver reads them from the board at open); quantum_ns: how
-    // far the host CPU may run ahead, which delays each wait's end.
+    // period_fs: the board's clock; m, buffer_depth, tiles: its parallelism,
+    // pair buffer and memory (the driver reads them from the board's
+    // registers at open; the estimate before a run takes the board's
+    // configuration); quantum_ns: how far the host CPU may run ahead, which
+    // delays each wait's end.
     FrameTime(const DriverConfig& config, const BusTiming& bus, SimTime period_fs, uint32_t m, uint32_t buffer_depth,
-              double quantum_ns = 0.0);
+              const TileConfig& tiles, double quantum_ns = 0.0);
 
     // A wait gives up after config.timeout_factor x its worst case plus
     // config.timeout_floor_ns.
@@ -71,6 +73,7 @@ private:
     double period_ns_;
     uint32_t m_;
     uint32_t buffer_depth_;
+    TileConfig tiles_;
     double quantum_ns_;
 };
 

@@ -356,5 +356,31 @@ TEST(BoardCore, AbortAfterComputingAheadKeepsTheBufferOfThatEdge) {
     for (uint32_t k = 0; k < before.buffered; ++k) EXPECT_EQ(ahead.buffered_pair(k), stepped.buffered_pair(k));
 }
 
+// The driver bounds a sweep by what these registers say, not by a copy of the
+// board's configuration.
+TEST(BoardCore, TileRegistersDescribeTheMemoryTheBoardWasBuiltWith) {
+    auto read = [](BoardCore& core, uint32_t offset) {
+        uint32_t value = 0xFFFF'FFFFu;
+        EXPECT_TRUE(core.read_register(offset, value));
+        return value;
+    };
+    BoardConfig block_ram;
+    BoardCore untiled(block_ram, 64);
+    EXPECT_EQ(read(untiled, ControlRegisters::kTileBoxes), 0u);
+    EXPECT_EQ(read(untiled, ControlRegisters::kTileTiming), 0u);
+
+    BoardConfig ssram;
+    ssram.tiles.boxes = 96;
+    ssram.tiles.load_latency_cycles = 5;
+    ssram.tiles.cycles_per_box = 3;
+    BoardCore tiled(ssram, 1000);
+    EXPECT_EQ(read(tiled, ControlRegisters::kTileBoxes), 96u);
+    const uint32_t timing = read(tiled, ControlRegisters::kTileTiming);
+    EXPECT_EQ(timing & ControlRegisters::kTileTimingLatencyMask, 5u);
+    EXPECT_EQ(timing >> ControlRegisters::kTileTimingCyclesShift, 3u);
+    tiled.write_register(ControlRegisters::kTileBoxes, 7);  // read-only: ignored
+    EXPECT_EQ(read(tiled, ControlRegisters::kTileBoxes), 96u);
+}
+
 }  // namespace
 }  // namespace cdvp

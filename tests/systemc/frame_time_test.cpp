@@ -52,7 +52,8 @@ TEST(FrameTime, BoundsWhatEveryFrameTakesThroughThePlatform) {
             const PlatformConfig config = platform_config(variants[k]);
             const FrameResult& result = platforms[k]->run_frame(boxes);
             const FrameTime time(config.driver, platforms[k]->bus_timing(), platforms[k]->board().period().value(),
-                                 config.board.m, config.board.collector.buffer_depth, config.quantum_ns);
+                                 config.board.m, config.board.collector.buffer_depth, config.board.tiles,
+                                 config.quantum_ns);
             const double bound = time.frame_bound_ns(n, result.pairs.size());
             EXPECT_LE(result.phases.total_ns, bound) << variants[k].name << " n=" << n;
             EXPECT_LE(bound, 3 * result.phases.total_ns + 1e6) << variants[k].name << " n=" << n << ": not absurd";
