@@ -1,7 +1,6 @@
 # `cmake --install build --prefix P`: P/bin/cdvp, the presets in
 # P/share/cdvp/boards, the README, LICENSE and docs in P/share/doc/cdvp, and a
 # man page in P/share/man/man1/cdvp.1 generated from the --help texts.
-install(TARGETS cdvp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/platform/boards/ DESTINATION ${CDVP_INSTALL_BOARDS_DIR}
         FILES_MATCHING PATTERN "*.json")
 install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
@@ -25,3 +24,61 @@ if(CDVP_HELP2MAN)
 else()
   message(STATUS "help2man not found: no man page (apt-get install help2man)")
 endif()
+
+# The C++ package (docs/library.md): the libraries below the command line,
+# static and position-independent, with their headers under
+# P/include/cdvp (included as "models/board/collision_board.h" and so on), a
+# CMake package (find_package(cdvp CONFIG REQUIRED): cdvp::board,
+# cdvp::platform, cdvp::bullet, cdvp::study, ...) and a pkg-config file.
+# Static, so that a user's program or module carries the model it was built
+# against and no library path is needed at run time; position-independent so
+# that a shared library or Python module may link them.
+set(cdvp_package_libraries
+    # target                export name    what it is
+    cdvp_models_base        base           # geometry, register bank, transactions, bad input
+    cdvp_models_blocks      blocks         # the board's blocks
+    cdvp_models_board_spec  board_spec     # BoardConfig, BoardEngine
+    cdvp_models_engines     engines        # the clocked and fast engines
+    cdvp_models             board_core     # BoardCore and the engine factory, no SystemC
+    cdvp_models_systemc     board          # CollisionBoard, PciBus, PciBridge: the board as SystemC IP
+    cdvp_driver             driver         # BoardDriver against a HostPort
+    cdvp_platform           platform       # VirtualBoard, presets, the settings table
+    cdvp_timing             timing
+    cdvp_scene              scene          # traces, pairs CSV, spheres
+    cdvp_baselines          baselines      # software broad phases
+    cdvp_apps               apps           # the bouncing spheres
+    cdvp_bullet             bullet         # BoardBroadphase for btDiscreteDynamicsWorld
+    cdvp_study_output       study_output   # transactional output files
+    cdvp_study              study)         # child runs, reports, sweeps, merges, fidelity
+set(cdvp_package_targets "")
+set(cdvp_package_list ${cdvp_package_libraries})
+while(cdvp_package_list)
+  list(POP_FRONT cdvp_package_list target export_name)
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${export_name})
+  target_include_directories(${target} INTERFACE $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/cdvp>)
+  add_library(cdvp::${export_name} ALIAS ${target})
+  list(APPEND cdvp_package_targets ${target})
+endwhile()
+install(TARGETS ${cdvp_package_targets} EXPORT cdvpTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# The binary too, as cdvp::cdvp: the study library runs it for each point.
+set_target_properties(cdvp PROPERTIES EXPORT_NAME cdvp)
+install(TARGETS cdvp EXPORT cdvpTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# Headers: every header of the layers the libraries hold (the public surface
+# and the internals it includes; docs/library.md says which is which).
+foreach(dir models platform sw/timing sw/scene sw/baselines sw/apps sw/bullet sw/study)
+  install(DIRECTORY ${CMAKE_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cdvp/${dir}
+          FILES_MATCHING PATTERN "*.h" PATTERN "rtl" EXCLUDE PATTERN "boards" EXCLUDE PATTERN "figures" EXCLUDE)
+endforeach()
+set(cdvp_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/cdvp)
+install(EXPORT cdvpTargets NAMESPACE cdvp:: DESTINATION ${cdvp_cmake_dir})
+include(CMakePackageConfigHelpers)
+configure_package_config_file(${CMAKE_SOURCE_DIR}/cmake/cdvpConfig.cmake.in ${CMAKE_BINARY_DIR}/cdvpConfig.cmake
+                              INSTALL_DESTINATION ${cdvp_cmake_dir}
+                              PATH_VARS CDVP_INSTALL_BOARDS_DIR CMAKE_INSTALL_INCLUDEDIR)
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/cdvpConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_BINARY_DIR}/cdvpConfig.cmake ${CMAKE_BINARY_DIR}/cdvpConfigVersion.cmake
+        DESTINATION ${cdvp_cmake_dir})
+# The prefix relative to the .pc file, so that a moved prefix still works.
+file(RELATIVE_PATH cdvp_pc_up "/p/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/p")
+configure_file(${CMAKE_SOURCE_DIR}/cmake/cdvp.pc.in ${CMAKE_BINARY_DIR}/cdvp.pc @ONLY)
+install(FILES ${CMAKE_BINARY_DIR}/cdvp.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
