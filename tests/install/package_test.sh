@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# package_test.sh BUILD_DIR CMAKE SOURCE_DIR
+# Installs the build into a temporary prefix and uses it as a user would:
+# each of examples/ configured and built from a copy outside the tree against
+# the prefix (find_package(cdvp), warnings as errors), run and its output
+# checked; a small program built with `pkg-config --cflags --libs cdvp`; then
+# the prefix moved, and the package must still configure from its new place.
+set -euo pipefail
+build=$1 cmake=$2 source=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "package test: $*" >&2; exit 1; }
+
+"$cmake" --install "$build" --prefix "$work/prefix" > "$work/install.log" || fail "cmake --install failed: $(cat "$work/install.log")"
+cp -r "$source/examples" "$work/examples"
+unset CDVP_BOARDS CDVP_BINARY
+generator=()
+command -v ninja > /dev/null && generator=(-G Ninja)
+launcher=()
+if command -v ccache > /dev/null; then  # paths relative to $work: a rerun hits the cache
+  export CCACHE_BASEDIR=$work CCACHE_NOHASHDIR=1
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+
+build_example() {  # build_example NAME PREFIX: configures and builds, one job (ctest runs others beside)
+  "$cmake" -S "$work/examples/$1" -B "$work/build-$1" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_PREFIX_PATH="$2" -DCMAKE_COMPILE_WARNING_AS_ERROR=ON > "$work/$1.log" 2>&1 &&
+    "$cmake" --build "$work/build-$1" -j1 >> "$work/$1.log" 2>&1 || fail "$1 did not build: $(tail -20 "$work/$1.log")"
+}
+expect() {  # expect NAME TEXT: NAME's output holds TEXT
+  grep -qF -- "$2" "$work/$1.out" || fail "$1's output lacks '$2':"$'\n'"$(cat "$work/$1.out")"
+}
+mkdir "$work/run"
+cd "$work/run"
+
+build_example foreign_platform "$work/prefix"
+"$work/build-foreign_platform/foreign_platform" > "$work/foreign_platform.out" 2>/dev/null || fail "foreign_platform failed: $(cat "$work/foreign_platform.out")"
+expect foreign_platform "refused m too large: -c board.m: expected an integer from 1 to 32, got '40'"
+expect foreign_platform "refused a bad preset value: bad-preset.json: board.clock_mhz: expected 1 to 1000 MHz, got -66"
+[ "$(grep -c '^frame [0-9]*: 400 boxes, [0-9]* pairs (= all-pairs test)' "$work/foreign_platform.out")" = 4 ] ||
+  fail "foreign_platform did not match the all-pairs test on 4 frames: $(cat "$work/foreign_platform.out")"
+expect foreign_platform "4 frames, 491 pairs, 0 mismatches"
+
+build_example bullet_app "$work/prefix"
+"$work/build-bullet_app/bullet_app" > "$work/bullet_app.out" 2>/dev/null || fail "bullet_app failed: $(cat "$work/bullet_app.out")"
+expect bullet_app "120 steps, 40 bodies"
+expect bullet_app "0 failing steps"
+expect bullet_app "41 of 41 bodies bit-identical to btSimpleBroadphase"
+
+build_example study_api "$work/prefix"
+"$work/build-study_api/study_api" > "$work/study_api.out" 2>&1 || fail "study_api failed: $(cat "$work/study_api.out")"
+for objects in 100 200 400; do expect study_api "N=$objects  4 frames"; done
+expect study_api "refused: status 2: cdvp run: --objects: expected an integer"
+expect study_api "status 0, 2 rows (2 ok, 0 refused, 0 faulted)"
+
+# pkg-config: the board's headers and every library, in link order.
+cat > "$work/pc_program.cpp" <<'PROGRAM'
+#include <cstdio>
+#include "models/board/collision_board.h"
+#include "platform/driver/board_driver.h"
+#include "platform/kernel.h"
+int sc_main(int, char*[]) {
+    cdvp::configure_kernel();
+    cdvp::CollisionBoard board("board", cdvp::BoardConfig{}, 1000);
+    std::printf("board of %u boxes, %u lanes; the driver needs %llu bytes of host memory\n", board.core().capacity(),
+                cdvp::BoardConfig{}.lanes(), static_cast<unsigned long long>(cdvp::BoardDriver::host_memory_bytes(1000, 4096)));
+    return 0;
+}
+PROGRAM
+export PKG_CONFIG_PATH=$work/prefix/lib/pkgconfig
+# shellcheck disable=SC2046  # pkg-config's words are meant to split
+g++ -Wall -Wextra -Werror -o "$work/pc_program" "$work/pc_program.cpp" $(pkg-config --cflags --libs cdvp) 2> "$work/pc.log" ||
+  fail "pkg-config build failed: $(head -20 "$work/pc.log")"
+"$work/pc_program" > "$work/pc_program.out" 2>/dev/null || fail "the pkg-config program failed"
+expect pc_program "board of 1000 boxes, 15 lanes"
+
+# Relocatable: the moved prefix's package names its own places.
+mv "$work/prefix" "$work/moved"
+mkdir "$work/probe"
+cat > "$work/probe/CMakeLists.txt" <<'PROBE'
+cmake_minimum_required(VERSION 3.16)
+project(probe CXX)
+find_package(cdvp CONFIG REQUIRED)
+get_target_property(include_dirs cdvp::base INTERFACE_INCLUDE_DIRECTORIES)
+message(STATUS "boards: ${cdvp_BOARDS_DIR}; binary: ${cdvp_EXECUTABLE}; includes: ${include_dirs}")
+PROBE
+"$cmake" -S "$work/probe" -B "$work/build-probe" -DCMAKE_PREFIX_PATH="$work/moved" > "$work/probe.out" 2>&1 ||
+  fail "the moved package does not configure: $(cat "$work/probe.out")"
+expect probe "boards: $work/moved/share/cdvp/boards; binary: $work/moved/bin/cdvp; includes: $work/moved/include/cdvp"
+[ "$(PKG_CONFIG_PATH=$work/moved/lib/pkgconfig pkg-config --variable=includedir cdvp)" -ef "$work/moved/include/cdvp" ] ||
+  fail "the moved cdvp.pc names $(PKG_CONFIG_PATH=$work/moved/lib/pkgconfig pkg-config --variable=includedir cdvp)"
+echo "examples built and checked against $work/prefix; pkg-config program ran; the moved package configures"
