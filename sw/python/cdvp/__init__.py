@@ -9,6 +9,7 @@ down, and the results are the command's byte for byte.
 
 import json
 import os
+import signal
 
 import pandas as pd
 
@@ -72,8 +73,10 @@ def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=Tru
     words += flag_words({**options, "out": os.fspath(out), "jobs": jobs, "no_plots": not plots, "quiet": quiet})
     words += setting_words(settings)
     outcome = _cdvp.sweep(words, find_binary(), progress)
-    if outcome["stop_signal"] == 2:
+    if outcome["stop_signal"] == signal.SIGINT:
         raise KeyboardInterrupt
+    if outcome["stop_signal"]:
+        raise InternalError(f"cdvp sweep: stopped by signal {outcome['stop_signal']}", 1)
     if outcome["status"] != 0:
         status = outcome["status"]
         raise error_class(status)(f"cdvp sweep: ended with status {status} after {outcome['points']} points "
