@@ -55,6 +55,8 @@ std::string default_text(const Setting& s) {
     return to_text(s.default_value()) + " (pci), " + to_text(s.get(pcie)) + " (pcie)";
 }
 
+}  // namespace
+
 nlohmann::json settings_json() {
     nlohmann::json all = nlohmann::json::array();
     for (const Setting& s : settings_table()) {
@@ -74,6 +76,8 @@ nlohmann::json settings_json() {
     }
     return all;
 }
+
+namespace {
 
 std::string settings_text() {
     std::ostringstream out;

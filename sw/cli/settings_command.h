@@ -3,8 +3,12 @@
 // dedicated flag, help and the source behind its default.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 namespace cdvp {
 
 int settings_command(int argc, char** argv);
+// What --json prints: the table as an array of objects, one a setting.
+nlohmann::json settings_json();
 
 }  // namespace cdvp

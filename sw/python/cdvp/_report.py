@@ -1,0 +1,77 @@
+"""A run's report as Python objects: its config, typed summary, frames and pairs."""
+
+import io
+from dataclasses import dataclass, field
+
+import pandas as pd
+
+# The phases of a frame in simulated time, as the report names them (sw/study/report_summary.h).
+PHASES = ("upload", "start", "compute", "irq", "readback", "driver", "total")
+
+
+@dataclass
+class Baseline:
+    """One software baseline's time a frame on the modelled host, and the board's speedup over it."""
+
+    mean_host_ns: float
+    p50_host_ns: float
+    p99_host_ns: float
+    max_host_ns: float
+    mean_native_ns: float
+    host_factor: float
+    speedup: float
+
+
+@dataclass
+class Summary:
+    """The report's summary: means over the frames after the warm-up (simulated time unless _native)."""
+
+    frames: int
+    warmup_frames: int
+    frames_in_means: int
+    too_few_frames: bool
+    pairs: int
+    mean_phase_ns: dict   # phase -> mean ns: upload, start, compute, irq, readback, driver, total
+    total_ns: dict        # mean, p50, p99, max of the board's frame time
+    mean_sim_wall_native_ns: float
+    baselines: dict       # name -> Baseline
+    extra_pairs: int      # against the float32 reference (a fixed-point format's)
+
+    @classmethod
+    def from_json(cls, summary):
+        baselines = {name: Baseline(**{key: b[key] for key in Baseline.__dataclass_fields__})
+                     for name, b in summary["baselines"].items()}
+        return cls(frames=summary["frames"], warmup_frames=summary["warmup_frames"],
+                   frames_in_means=summary["frames_in_means"], too_few_frames=summary["too_few_frames"],
+                   pairs=summary["pairs"],
+                   mean_phase_ns={phase: summary[f"mean_{phase}_ns"] for phase in PHASES},
+                   total_ns={stat: summary[f"{stat}_total_ns"] for stat in ("mean", "p50", "p99", "max")},
+                   mean_sim_wall_native_ns=summary["mean_sim_wall_native_ns"],
+                   baselines=baselines, extra_pairs=summary["extra_pairs"])
+
+
+@dataclass
+class Report:
+    """What one cdvp run wrote: `raw` is its JSON report as parsed, `pairs_csv` its pairs file's bytes."""
+
+    config: dict
+    summary: Summary
+    frames: pd.DataFrame  # one row a frame; a baseline's times as columns sap_host_ns, sap_native_ns
+    raw: dict = field(repr=False)
+    pairs_csv: bytes = field(default=None, repr=False)
+
+    @property
+    def pairs(self):
+        """The pairs of every frame (columns frame, a, b), or None if the run was not asked for them."""
+        return None if self.pairs_csv is None else pd.read_csv(io.BytesIO(self.pairs_csv))
+
+
+def frames_table(frames):
+    """The report's frames as a DataFrame, each baseline's nested times flattened into columns."""
+    rows = []
+    for frame in frames:
+        row = {key: value for key, value in frame.items() if key != "baselines"}
+        for name, times in frame.get("baselines", {}).items():
+            row.update({f"{name}_{key}": value for key, value in times.items()})
+        rows.append(row)
+    return pd.DataFrame(rows)

@@ -1,0 +1,81 @@
+"""cdvp.run: many configurations in one session, the CLI's results byte for byte, its errors."""
+
+import json
+
+import pytest
+
+import cdvp
+from conftest import SMALL, cli_words
+
+# Report fields measured on this machine (wall-clock, load) or naming the report's own path.
+MEASURED = ("native", "load_average", "command_line", "provenance")
+
+
+def simulated(value):
+    """A report without its measured fields."""
+    if isinstance(value, dict):
+        return {k: simulated(v) for k, v in value.items() if not any(word in k for word in MEASURED)}
+    if isinstance(value, list):
+        return [simulated(v) for v in value]
+    return value
+
+
+def test_many_configurations_run_in_one_session():
+    narrow = cdvp.run(**SMALL, m=1)
+    wide = cdvp.run(**SMALL, m=16)
+    pcie = cdvp.run(**{**SMALL, "board": "pcie-gen3-x8"}, m=16)
+    slow_irq = cdvp.run(**SMALL, m=16, settings={"bus.interrupt_ns": 50000})
+    assert narrow.config["m"] == 1 and wide.config["m"] == 16
+    assert narrow.summary.mean_phase_ns["compute"] > wide.summary.mean_phase_ns["compute"]
+    assert pcie.summary.total_ns["mean"] < wide.summary.total_ns["mean"]
+    assert slow_irq.summary.mean_phase_ns["irq"] > wide.summary.mean_phase_ns["irq"]
+    assert narrow.summary.pairs == wide.summary.pairs == pcie.summary.pairs
+    assert list(wide.frames["frame"]) == [0, 1]
+    assert wide.summary.frames == 2
+
+
+def test_report_and_pairs_equal_the_commands(cli, tmp_path):
+    options = {**SMALL, "m": 4, "quantum_ns": 1000}
+    ours = cdvp.run(**options, settings={"bus.interrupt_ns": 5000}, pairs=True)
+    report, pairs = tmp_path / "report.json", tmp_path / "pairs.csv"
+    done = cli("run", *cli_words(options), "-c", "bus.interrupt_ns=5000", "--report", str(report),
+               "--pairs-out", str(pairs), "-q")
+    assert done.returncode == 0, done.stderr
+    assert simulated(ours.raw) == simulated(json.loads(report.read_text()))
+    assert ours.pairs_csv == pairs.read_bytes()
+    assert list(ours.pairs.columns) == ["frame", "a", "b"] and len(ours.pairs) == ours.summary.pairs
+
+
+@pytest.mark.parametrize("options, words", [
+    ({"objects": "0x"}, ["--objects", "0x"]),
+    ({"bogus_flag": 1}, ["--bogus-flag", "1"]),
+    ({"m": 33}, ["--m", "33"]),
+])
+def test_bad_input_is_an_input_error_with_the_commands_message(cli, options, words):
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.run(board="adm-xrc-ii", scene="spheres", **options)
+    assert refused.value.status == 2
+    done = cli("run", "--board", "adm-xrc-ii", "--scene", "spheres", *words)
+    assert done.returncode == 2
+    assert str(refused.value) == done.stderr.splitlines()[0]
+
+
+def test_an_unknown_setting_is_refused_by_name():
+    with pytest.raises(cdvp.InputError, match="no.such"):
+        cdvp.run(**SMALL, settings={"no.such": 1})
+
+
+def test_an_injected_fault_is_a_device_fault_and_the_session_goes_on(cli):
+    with pytest.raises(cdvp.DeviceFault) as faulted:
+        cdvp.run(**SMALL, inject="board-error@frame=1")
+    assert faulted.value.status == 3 and isinstance(faulted.value, cdvp.Error)
+    done = cli("run", *cli_words(SMALL), "--inject", "board-error@frame=1", "-q")
+    assert done.returncode == 3
+    assert str(faulted.value) == done.stderr.splitlines()[0]
+    assert "injected board-error" in str(faulted.value)
+    assert cdvp.run(**SMALL).summary.frames == 2
+
+
+def test_the_report_path_is_the_studys_own():
+    with pytest.raises(cdvp.InputError, match="--report is the study's own"):
+        cdvp.run(**SMALL, report="x.json")
