@@ -3,7 +3,8 @@
 # Installs the build into a temporary prefix and uses it as a user would:
 # each of examples/ configured and built from a copy outside the tree against
 # the prefix (find_package(cdvp), warnings as errors), run and its output
-# checked; a small program built with `pkg-config --cflags --libs cdvp`; then
+# checked; the Python module imported from the prefix and run; a small program
+# built with `pkg-config --cflags --libs cdvp`; then
 # the prefix moved, and the package must still configure from its new place.
 set -euo pipefail
 build=$1 cmake=$2 source=$3
@@ -52,6 +53,30 @@ build_example study_api "$work/prefix"
 for objects in 100 200 400; do expect study_api "N=$objects  4 frames"; done
 expect study_api "refused: status 2: cdvp run: --objects: expected an integer"
 expect study_api "status 0, 2 rows (2 ok, 0 refused, 0 faulted)"
+
+# Python: the installed module, imported with the prefix's site-packages on
+# PYTHONPATH by Debian's python3, runs several configurations in one process on
+# the prefix's own binary and presets, and refuses bad input with the CLI's line.
+site=$(find "$work/prefix" -type d -name dist-packages | head -1)
+[ -n "$site" ] && [ -f "$site/cdvp/__init__.py" ] || fail "no cdvp Python package under $work/prefix"
+PYTHONPATH=$site /usr/bin/python3 - "$work/prefix" > "$work/python.out" 2>&1 <<'PYTHON' || fail "the installed Python module failed: $(cat "$work/python.out")"
+import os, sys
+import cdvp
+prefix = os.path.realpath(sys.argv[1])
+assert os.path.realpath(cdvp.find_binary()).startswith(prefix), cdvp.find_binary()
+assert "adm-xrc-ii" in cdvp.presets()
+for m in (4, 8):
+    report = cdvp.run(board="adm-xrc-ii", scene="spheres", objects=60, frames=2, m=m)
+    print("m", m, "frames", len(report.frames), "pairs", int(report.frames["pairs"].sum()))
+try:
+    cdvp.run(board="adm-xrc-ii", scene="spheres", objects="lots")
+    raise SystemExit("a bad option was not refused")
+except cdvp.InputError as error:
+    print("refused", error.status, error)
+PYTHON
+[ "$(grep -c '^m [48] frames 2 pairs [0-9]' "$work/python.out")" = 2 ] || fail "the installed module's runs: $(cat "$work/python.out")"
+grep -qF "refused 2 cdvp run: --objects: expected an integer" "$work/python.out" ||
+  fail "the installed module's refusal: $(cat "$work/python.out")"
 
 # pkg-config: the board's headers and every library, in link order.
 cat > "$work/pc_program.cpp" <<'PROGRAM'
