@@ -23,6 +23,10 @@ bool executable(const std::filesystem::path& path) {
 // Options a request may not give: where the report and pairs go is the study's.
 void check_options(const std::vector<std::string>& options) {
     for (const std::string& option : options) {
+        // A command-line word ends at its first NUL: the rest would be lost, not refused.
+        if (option.find('\0') != std::string::npos) {
+            throw InputError("option " + excerpt(option.substr(0, option.find('\0'))) + "...: holds a NUL character");
+        }
         for (const char* own : {"--report", "--pairs-out"}) {
             if (option == own || option.rfind(std::string(own) + "=", 0) == 0) {
                 throw InputError(std::string(own) + " is the study's own: the report comes back as a RunResult");

@@ -67,6 +67,10 @@ def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=Tru
     progress: called as progress(done, total) before the first point and after each.
     Resumable: the same call into the same out runs only the points not done yet (outcome in
     DataFrame.attrs["outcome"], its "run_now" the points this call ran). Raises as run() does."""
+    if not isinstance(axes, dict):
+        raise TypeError(f"cdvp.sweep: axes must be a dict of name -> values, not {type(axes).__name__}")
+    if progress is not None and not callable(progress):
+        raise TypeError(f"cdvp.sweep: progress must be callable as progress(done, total), not {type(progress).__name__}")
     words = []
     for name, values in axes.items():
         words += ["--set", f"{name}={value_text(values)}"]

@@ -1,5 +1,7 @@
 """Python keywords as cdvp's command-line words."""
 
+from ._errors import InputError
+
 
 def value_text(value):
     """A value as the command line spells it: 5000, yes, sap,soa."""
@@ -7,7 +9,10 @@ def value_text(value):
         return "yes" if value else "no"
     if isinstance(value, (list, tuple)):
         return ",".join(value_text(item) for item in value)
-    return str(value)
+    text = str(value)
+    if "\0" in text:  # a command-line word ends at its first NUL: the rest would be lost, not refused
+        raise InputError(f"cdvp: {text!r}: a value may not hold a NUL character", 2)
+    return text
 
 
 def flag_words(options):

@@ -50,3 +50,14 @@ def test_an_exception_in_progress_is_raised_after_the_sweep(tmp_path):
     with pytest.raises(RuntimeError, match="stop here"):
         cdvp.sweep({"m": [1, 2]}, tmp_path, progress=fail, objects=20, **POINT_OPTIONS)
     assert len(cdvp.sweep({"m": [1, 2]}, tmp_path, objects=20, **POINT_OPTIONS)) == 2
+
+
+def test_wrong_types_are_refused_before_any_point_runs(tmp_path):
+    with pytest.raises(TypeError, match="axes must be a dict"):
+        cdvp.sweep("m", tmp_path / "a")
+    with pytest.raises(TypeError, match="progress must be callable"):
+        cdvp.sweep({"m": [1]}, tmp_path / "b", board="adm-xrc-ii", scene="spheres", progress=5)
+    assert not (tmp_path / "b").exists()
+    with pytest.raises(cdvp.InputError, match="NUL") as refused:
+        cdvp.run(board="adm-xrc-ii", scene="spheres", objects="5\0")
+    assert refused.value.status == 2
