@@ -1,0 +1,73 @@
+// A frame's simulated time and its phases from closed forms alone: no
+// SystemC kernel, no engine stepping. It follows BoardDriver::run_frame
+// operation by operation with the BusTiming formulas; only the board's stall
+// cycles are estimated (docs/analytic.md says what is exact and measures the rest).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "models/address_generator/tile_config.h"
+#include "models/common/aabb.h"
+#include "models/common/pair_count.h"
+#include "models/pci/bus_timing.h"
+#include "platform/driver/board_driver.h"
+#include "platform/driver/driver_config.h"
+#include "platform/driver/host_port.h"
+
+namespace cdvp {
+
+// What of the board the time depends on: its clock, parallelism and memory
+// (as the driver reads them at open) and its pipeline (BoardConfig's
+// pipeline_latency() and its collector's FIFO and drain), given by the
+// caller so that the driver layer needs no board configuration.
+struct AnalyticBoard {
+    SimTime period_fs = 0;
+    uint32_t m = 1;
+    uint32_t pipeline_latency = 0;  // L: a sweep without stalls takes S(N, m) + L edges
+    uint32_t fifo_depth = 512;
+    uint32_t drain_per_cycle = 1;
+    uint32_t buffer_depth = 262144;
+    TileConfig tiles;
+};
+
+class AnalyticFrame {
+public:
+    // bus must outlive this. The forms are those of a host that
+    // synchronises at every access (PlatformConfig::quantum_ns 0): a host
+    // quantum's late notices are not modelled.
+    AnalyticFrame(const DriverConfig& driver, const BusTiming& bus, const AnalyticBoard& board);
+
+    // A frame of `objects` boxes whose sweep finds `pairs` pairs.
+    FramePhases estimate(uint32_t objects, uint64_t pairs) const;
+    // The same, counting the pairs first (PairCounter: sort and sweep).
+    FramePhases estimate(const std::vector<FloatBox>& boxes);
+
+    // The address generator's slots: S(N, m), or the tiled schedule's.
+    uint64_t sweep_slots(uint32_t objects) const;
+    // Back-pressure stall edges, estimated: none while the drain keeps up
+    // with the pairs; past that the drain is busy from the first pair to
+    // the last, so the sweep's edges become pairs / drain.
+    uint64_t fifo_stall_estimate(uint64_t slots, uint64_t pairs) const;
+
+private:
+    // One programmed access of `words` words (one bus transaction's delay).
+    SimTime read_fs(uint64_t words = 1) const;
+    SimTime write_fs(uint64_t words = 1) const;
+    // From a command's end to the driver noticing an event `event_fs` after
+    // it: the interrupt handler running, or the poll whose read finds it.
+    SimTime notice_fs(SimTime event_fs) const;
+    // The status read after noticing: its own under interrupts, the poll's already.
+    SimTime status_read_fs() const { return driver_.wait == WaitMode::kIrq ? read_fs() : 0; }
+    // A DMA in register mode, from setting its registers to clearing its status.
+    SimTime dma_fs(uint64_t bytes, Direction direction) const;
+    SimTime upload_fs(uint32_t objects) const;
+    static SimTime cpu_fs(double ns) { return ns > 0 ? fs_from_ns(ns) : 0; }
+
+    DriverConfig driver_;
+    const BusTiming& bus_;
+    AnalyticBoard board_;
+    PairCounter counter_;
+};
+
+}  // namespace cdvp
