@@ -64,4 +64,20 @@ DirectoryLock::~DirectoryLock() {
     close(fd_);
 }
 
+namespace {
+
+// Refuses a file, then makes the directory (as mkdir -p): the path to lock.
+const std::string& made_directory(CreatedDirectories& made, const std::string& dir) {
+    struct stat status {};
+    if (stat(dir.c_str(), &status) == 0 && !S_ISDIR(status.st_mode)) {
+        throw InputError("--out: " + excerpt(dir) + ": expected a directory");
+    }
+    made.create(dir);
+    return dir;
+}
+
+}  // namespace
+
+LockedOutDirectory::LockedOutDirectory(const std::string& dir) : lock_(made_directory(made_, dir), "--out") {}
+
 }  // namespace cdvp

@@ -9,6 +9,8 @@
 
 #include <string>
 
+#include "sw/study/child_runs.h"
+
 namespace cdvp {
 
 class DirectoryLock {
@@ -25,6 +27,19 @@ public:
 private:
     std::string path_;
     int fd_ = -1;
+};
+
+// The --out directory a sweep or a merge writes: refused when it names a
+// file, made as mkdir -p (the directories it made removed again unless
+// made().keep() is called) and locked for as long as this lives.
+class LockedOutDirectory {
+public:
+    explicit LockedOutDirectory(const std::string& dir);
+    CreatedDirectories& made() { return made_; }
+
+private:
+    CreatedDirectories made_;  // declared first: the lock goes before the directories do
+    DirectoryLock lock_;
 };
 
 }  // namespace cdvp

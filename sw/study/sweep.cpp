@@ -156,13 +156,8 @@ SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
     const Grid grid(o.axes);
     const SweepInputs inputs(o.inputs, o.trace_limits);
     const Manifest wanted{grid.axes(), o.run_options, inputs.digests(), o.shard, kCdvpVersion};
-    struct stat out_status {};
-    if (stat(o.out_dir.c_str(), &out_status) == 0 && !S_ISDIR(out_status.st_mode)) {
-        throw InputError("--out: " + excerpt(o.out_dir) + ": expected a directory");
-    }
-    CreatedDirectories made;
-    made.create(o.out_dir);
-    DirectoryLock lock(o.out_dir, "--out");
+    LockedOutDirectory out(o.out_dir);
+    CreatedDirectories& made = out.made();
     const std::optional<Manifest> existing = read_manifest(manifest_path(o.out_dir));
     check_out_dir(o.out_dir, existing, wanted);
     remove_stale_temporaries(o.out_dir);

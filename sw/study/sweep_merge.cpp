@@ -117,13 +117,8 @@ void swap_into_place(const std::string& staging, const std::string& out) {
 MergeOutcome merge_sweeps(const MergeSpec& o) {
     const Manifest merged = shards_manifest(o.shards);
     const Grid grid(merged.axes);
-    struct stat out_status {};
-    if (stat(o.out.c_str(), &out_status) == 0 && !S_ISDIR(out_status.st_mode)) {
-        throw InputError("--out: " + excerpt(o.out) + ": expected a directory");
-    }
-    CreatedDirectories made;
-    made.create(o.out);
-    DirectoryLock lock(o.out, "--out");
+    LockedOutDirectory out(o.out);
+    CreatedDirectories& made = out.made();
     const std::optional<Manifest> existing = read_manifest(manifest_path(o.out));
     if (existing ? difference(*existing, merged).has_value() || !existing->shard.whole()
                  : !directory_contents(o.out).empty()) {
