@@ -13,21 +13,27 @@
 
 namespace cdvp {
 
+CommandFailure failure_of_current_exception(const std::string& program) {
+    try {
+        throw;
+    } catch (const InputError& e) {
+        return {kExitBadInput, program + ": " + printable(e.what())};
+    } catch (const SystemError& e) {
+        return {kExitSystem, program + ": " + printable(e.what())};
+    } catch (const std::bad_alloc&) {
+        return {kExitInternal, program + ": internal error (a cdvp bug): out of memory past the run's memory budget"};
+    } catch (const std::exception& e) {
+        return {kExitInternal, program + ": internal error (a cdvp bug): " + printable(e.what())};
+    }
+}
+
 int exit_status_of(const std::string& program, const std::function<int()>& body) {
     try {
         return body();
-    } catch (const InputError& e) {
-        std::cerr << program << ": " << printable(e.what()) << '\n';
-        return kExitBadInput;
-    } catch (const SystemError& e) {
-        std::cerr << program << ": " << printable(e.what()) << '\n';
-        return kExitSystem;
-    } catch (const std::bad_alloc&) {
-        std::cerr << program << ": internal error (a cdvp bug): out of memory past the run's memory budget\n";
-        return kExitInternal;
-    } catch (const std::exception& e) {
-        std::cerr << program << ": internal error (a cdvp bug): " << printable(e.what()) << '\n';
-        return kExitInternal;
+    } catch (const std::exception&) {
+        const CommandFailure failure = failure_of_current_exception(program);
+        std::cerr << failure.line << '\n';
+        return failure.status;
     }
 }
 

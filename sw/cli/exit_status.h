@@ -16,6 +16,15 @@ namespace cdvp {
 // internal error (a cdvp bug): message"); each one line on stderr.
 int exit_status_of(const std::string& program, const std::function<int()>& body);
 
+// The exception being handled (call it inside a catch) as exit_status_of
+// maps it: the exit status and the one line, without its newline. An
+// exception not derived from std::exception is rethrown.
+struct CommandFailure {
+    int status;
+    std::string line;
+};
+CommandFailure failure_of_current_exception(const std::string& program);
+
 struct OutputFailure;
 // Prints a failed commit's one line under 'program'; its exit status
 // (kExitSystem for a full disk or an I/O error, else kExitBadInput).

@@ -19,6 +19,7 @@
 
 #include "models/common/user_text.h"
 #include "platform/board_preset.h"
+#include "sw/cli/exit_status.h"
 #include "sw/cli/run_budgets.h"
 #include "sw/cli/settings_command.h"
 #include "sw/cli/sweep_options.h"
@@ -51,16 +52,11 @@ auto as_command(const std::string& program, Body&& body) -> decltype(body()) {
         throw;
     } catch (const RunFailed& e) {
         throw Refusal{e.status(), e.what()};
-    } catch (const InputError& e) {
-        throw Refusal{kExitBadInput, program + ": " + printable(e.what())};
     } catch (const boost::program_options::error& e) {
         throw Refusal{kExitBadInput, program + ": " + printable(e.what()) + " (see " + program + " --help)"};
-    } catch (const SystemError& e) {
-        throw Refusal{kExitSystem, program + ": " + printable(e.what())};
-    } catch (const std::bad_alloc&) {
-        throw Refusal{kExitInternal, program + ": internal error (a cdvp bug): out of memory"};
-    } catch (const std::exception& e) {
-        throw Refusal{kExitInternal, program + ": internal error (a cdvp bug): " + printable(e.what())};
+    } catch (const std::exception&) {
+        const CommandFailure failure = failure_of_current_exception(program);
+        throw Refusal{failure.status, failure.line};
     }
 }
 
