@@ -57,11 +57,22 @@ template <>
 struct Choices<WaitMode> {
     static constexpr ChoiceName<WaitMode> names[] = {{WaitMode::kIrq, "irq"}, {WaitMode::kPoll, "poll"}};
 };
-// The board's engine (run.fidelity); the model's to_string(Fidelity) gives the same names.
+// The board's engine; the model's to_string(Fidelity) gives the same names.
 template <>
 struct Choices<Fidelity> {
     static constexpr ChoiceName<Fidelity> names[] = {{Fidelity::kCycle, "cycle"}, {Fidelity::kFast, "fast"}};
 };
+// The modelling level of a run (run.fidelity): one of the engines on the
+// SystemC platform, or the analytic level's closed forms without a kernel
+// (platform/analytic_platform.h).
+enum class ModelLevel : uint8_t { kCycle, kFast, kAnalytic };
+template <>
+struct Choices<ModelLevel> {
+    static constexpr ChoiceName<ModelLevel> names[] = {
+        {ModelLevel::kCycle, "cycle"}, {ModelLevel::kFast, "fast"}, {ModelLevel::kAnalytic, "analytic"}};
+};
+// The engine a level runs on the platform (the analytic level runs none).
+inline Fidelity engine_of(ModelLevel level) { return level == ModelLevel::kCycle ? Fidelity::kCycle : Fidelity::kFast; }
 // A switch (run.ignore_capacity).
 template <>
 struct Choices<bool> {

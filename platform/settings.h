@@ -45,7 +45,7 @@ struct SceneSettings {
 struct RunSettings {
     Transfer transfer = Transfer::kDma;
     WaitMode wait = WaitMode::kIrq;
-    Fidelity fidelity = Fidelity::kFast;
+    ModelLevel fidelity = ModelLevel::kFast;
     double quantum_ns = 0.0;
     uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
     uint32_t repeat = 1;

@@ -362,12 +362,13 @@ std::vector<Setting> host_and_run_settings() {
         flag(choice<WaitMode>("run.wait", member(&S::run, &RunSettings::wait),
                     "how the driver waits for the board: interrupt or polling", "the paper's driver takes interrupts"),
              "wait", "irq|poll"),
-        flag(choice<Fidelity>("run.fidelity", member(&S::run, &RunSettings::fidelity),
-                    "the board's engine: fast computes pairs and cycles from the schedule, cycle clocks the datapath "
-                    "edge by edge; the same pairs, cycles and times (--vcd needs cycle, and picks it when the "
-                    "fidelity is not given)",
-                    "fast: the same results, faster (docs/fast_engine.md)"),
-             "fidelity", "cycle|fast"),
+        flag(choice<ModelLevel>("run.fidelity", member(&S::run, &RunSettings::fidelity),
+                    "the modelling level: fast computes pairs and cycles from the schedule, cycle clocks the datapath "
+                    "edge by edge (the same pairs, cycles and times; --vcd needs cycle, and picks it when the "
+                    "fidelity is not given); analytic finds the same pairs and times the frame from closed forms "
+                    "without the SystemC kernel (FIFO stalls estimated, the host quantum not modelled)",
+                    "fast: exact, faster (docs/fast_engine.md); analytic: docs/analytic.md"),
+             "fidelity", "cycle|fast|analytic"),
         flag(real("run.quantum_ns", "ns", 0, 1e9, member(&S::run, &RunSettings::quantum_ns),
                   "host CPU quantum in ns: how far the CPU runs ahead of the board and bus before it synchronises "
                   "(0: at every access, exact; larger is faster and loosely timed)",

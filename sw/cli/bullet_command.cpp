@@ -100,7 +100,12 @@ struct Setup : BoardSetup {
 Setup make_setup(const BulletOptions& o, const po::variables_map& vm) {
     Setup setup;
     static_cast<BoardSetup&>(setup) = board_setup(o.layers, vm, o.scene);
-    setup.platform.fidelity = engine_fidelity(setup.values, vm);
+    setup.level = model_level(setup.values, vm);
+    if (setup.level == ModelLevel::kAnalytic) {
+        throw InputError(setup.values.where(*find_setting("run.fidelity")) +
+                         " analytic: cdvp bullet runs Bullet's world on the platform's engines; expected cycle or fast");
+    }
+    setup.platform.fidelity = engine_of(setup.level);
     setup.trace_window = vcd_window(o.vcd_frames, vm);
     // Bullet's times are whole worlds, not the reference workload's
     // baselines: they all take the overall factor.

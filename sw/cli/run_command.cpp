@@ -16,6 +16,7 @@
 
 #include <boost/program_options.hpp>
 
+#include "platform/analytic_platform.h"
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
 #include "sw/bullet/scenes.h"
@@ -98,11 +99,26 @@ struct Setup : BoardSetup {
     std::pair<uint64_t, uint64_t> trace_window{0, UINT64_MAX};  // --vcd-frames
 };
 
+// What the analytic level cannot model is refused, not silently ignored.
+void check_analytic_run(const SettingValues& values, const RunOptions& o) {
+    const std::string level = "the analytic level (" + values.where(*find_setting("run.fidelity")) + ")";
+    if (!o.inject.empty()) {
+        throw InputError("--inject: " + level + " has no engine to inject faults into; use --fidelity fast or cycle");
+    }
+    const Setting& quantum = *find_setting("run.quantum_ns");
+    if (values.settings().run.quantum_ns != 0) {
+        throw InputError(values.where(quantum) + ": " + level +
+                         " times a host that synchronises at every access; expected 0 (docs/analytic.md)");
+    }
+}
+
 Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     Setup setup;
     static_cast<BoardSetup&>(setup) = board_setup(o.layers, vm, vm.count("scene") ? o.scene : "");
     setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
-    setup.platform.fidelity = engine_fidelity(setup.values, vm);
+    setup.level = model_level(setup.values, vm);
+    setup.platform.fidelity = engine_of(setup.level);
+    if (setup.level == ModelLevel::kAnalytic) check_analytic_run(setup.values, o);
     setup.trace_window = vcd_window(o.vcd_frames, vm);
     setup.host = resolve_host_timing(setup.values);
     setup.baselines = BaselineTimer(o.baselines, setup.host);
@@ -119,7 +135,7 @@ RunShape run_shape(const po::variables_map& vm, const Setup& setup) {
     RunShape shape;
     shape.trace = vm.count("trace") != 0;
     shape.bullet_worlds = !shape.trace && is_bullet_scene(vm["scene"].as<std::string>()) ? 1 : 0;
-    shape.clocked = setup.platform.fidelity == Fidelity::kCycle;
+    shape.clocked = setup.level == ModelLevel::kCycle;
     shape.pairs_out = vm.count("pairs-out") != 0;
     shape.baselines = setup.baselines.names();
     shape.repeat = shape.baselines.empty() ? 1 : setup.values.settings().run.repeat;
@@ -138,6 +154,29 @@ auto within_budget(const RunBudgets& budgets, uint64_t frame, Stage&& stage) {
     }
 }
 
+// What a run's frames run on: the SystemC platform with its engine, or the
+// analytic level, which elaborates nothing.
+class RunPlatform {
+public:
+    RunPlatform(const Setup& setup, uint32_t capacity, const std::string& trace_base) {
+        if (setup.level == ModelLevel::kAnalytic) {
+            analytic_ = std::make_unique<AnalyticPlatform>(setup.platform, capacity);
+        } else {
+            board_ = std::make_unique<VirtualBoard>("platform", setup.platform, capacity, trace_base);
+        }
+    }
+    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) {
+        return board_ ? board_->try_run_frame(boxes, number, fault) : analytic_->try_run_frame(boxes, number, fault);
+    }
+    const BusTiming& bus_timing() const { return board_ ? board_->bus_timing() : analytic_->bus_timing(); }
+    // The SystemC platform, or null at the analytic level (which has no waveforms).
+    VirtualBoard* board() { return board_.get(); }
+
+private:
+    std::unique_ptr<VirtualBoard> board_;
+    std::unique_ptr<AnalyticPlatform> analytic_;
+};
+
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
              const std::vector<std::string>& command_line, const RunBudgets& budgets) {
     RunConfig run = describe_run(setup, static_cast<uint32_t>(source.max_objects()), budgets);
@@ -146,9 +185,9 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     run.has_report = out.report != nullptr;
     run.baseline_names = setup.baselines.names();
     for (const FaultSpec& spec : setup.platform.faults) run.inject.push_back(to_string(spec));
-    VirtualBoard platform("platform", setup.platform, run.capacity, out.waves.trace_base());
+    RunPlatform platform(setup, run.capacity, out.waves.trace_base());
     run.bus = platform.bus_timing().describe();
-    platform.set_trace_window(setup.trace_window.first, setup.trace_window.second);
+    if (VirtualBoard* board = platform.board()) board->set_trace_window(setup.trace_window.first, setup.trace_window.second);
     if (out.pairs) write_pairs_header(out.pairs->stream());
     // Every output is written a frame at a time: memory stays flat however
     // long the run.
@@ -216,10 +255,12 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         setup.baselines.repeat(source, setup.values.settings().run.repeat, totals, [&] { progress.update(++frames_done); });
         wall.baselines_s += seconds_since(repeats_start);
     }
-    platform.close_trace();
-    if (const std::optional<std::string> failed = out.waves.finish(platform)) {
-        std::cerr << "cdvp run: " << *failed << '\n';
-        return kExitSystem;
+    if (VirtualBoard* board = platform.board()) {
+        board->close_trace();
+        if (const std::optional<std::string> failed = out.waves.finish(*board)) {
+            std::cerr << "cdvp run: " << *failed << '\n';
+            return kExitSystem;
+        }
     }
 
     if (report) report->end(totals, setup.host);

@@ -65,7 +65,7 @@ struct RunConfig {
     Transfer transfer = Transfer::kDma;
     WaitMode wait = WaitMode::kIrq;
     double quantum_ns = 0.0;
-    Fidelity fidelity = Fidelity::kCycle;
+    ModelLevel fidelity = ModelLevel::kCycle;
     std::vector<std::string> baseline_names;
     uint32_t baseline_runs = 1;  // --repeat
     std::vector<std::string> inject;  // fault specs, as parsed

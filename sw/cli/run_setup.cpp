@@ -40,17 +40,17 @@ BoardSetup board_setup(const SettingLayers& layers, const po::variables_map& vm,
     return setup;
 }
 
-Fidelity engine_fidelity(const SettingValues& values, const po::variables_map& vm) {
+ModelLevel model_level(const SettingValues& values, const po::variables_map& vm) {
     const Setting& setting = *find_setting("run.fidelity");
-    const bool cycle = values.settings().run.fidelity == Fidelity::kCycle;
+    const ModelLevel level = values.settings().run.fidelity;
     if (vm.count("vcd") != 0) {
-        if (!values.is_default(setting) && !cycle) {
-            throw InputError("--vcd: waveforms need the clocked engine; " + values.where(setting) +
-                             " asks for fast: use --fidelity cycle (or leave the fidelity out)");
+        if (!values.is_default(setting) && level != ModelLevel::kCycle) {
+            throw InputError("--vcd: waveforms need the clocked engine; " + values.where(setting) + " asks for " +
+                             name_of(level) + ": use --fidelity cycle (or leave the fidelity out)");
         }
-        return Fidelity::kCycle;
+        return ModelLevel::kCycle;
     }
-    return cycle ? Fidelity::kCycle : Fidelity::kFast;
+    return level;
 }
 
 void add_setting_inputs(OutputSet& files, const SettingLayers& layers, const po::variables_map& vm) {
@@ -74,7 +74,7 @@ RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& b
     run.transfer = settings.run.transfer;
     run.wait = settings.run.wait;
     run.quantum_ns = settings.run.quantum_ns;
-    run.fidelity = setup.platform.fidelity;
+    run.fidelity = setup.level;
     run.baseline_runs = settings.run.repeat;
     run.budgets = {budgets.memory_bytes(), budgets.pair_budget().max_pairs(), budgets.footprint().before_pairs(),
                    budgets.footprint().per_pair};

@@ -28,6 +28,7 @@ struct BoardSetup {
     SettingValues values;         // every setting in effect and where it came from
     PlatformConfig platform;      // the board, its bus and driver, the engine
     std::string board = "ideal";  // the preset's name
+    ModelLevel level = ModelLevel::kFast;  // as the run goes: --vcd picks cycle (model_level)
     HostTiming host;              // from native to modelled-host time
 };
 
@@ -47,8 +48,8 @@ BoardSetup board_setup(const SettingLayers& layers, const boost::program_options
                        const std::string& scene);
 
 // run.fidelity: fast unless waveforms are asked for (--vcd), which need the
-// clocked engine; an explicit fast with --vcd is refused naming where it came from.
-Fidelity engine_fidelity(const SettingValues& values, const boost::program_options::variables_map& vm);
+// clocked engine; an explicit other level with --vcd is refused naming where it came from.
+ModelLevel model_level(const SettingValues& values, const boost::program_options::variables_map& vm);
 
 // The files the settings are read from (--board's preset, --config's file):
 // inputs that no output may name.

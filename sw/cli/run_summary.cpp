@@ -90,9 +90,9 @@ void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& tot
     const BoardConfig& c = run.config;
     char line[512];
     // Names may be long and come from files: printed whole and escaped.
-    std::snprintf(line, sizeof line, ": m=%u (%u %s lanes), %.6g MHz, L=%u cycles, %u block RAMs for the boxes, %s engine\n", c.m,
+    std::snprintf(line, sizeof line, ": m=%u (%u %s lanes), %.6g MHz, L=%u cycles, %u block RAMs for the boxes, %s %s\n", c.m,
                   c.lanes(), c.format.name().c_str(), c.clock_mhz, c.pipeline_latency(), run.block_rams,
-                  name_of(run.fidelity));
+                  name_of(run.fidelity), run.fidelity == ModelLevel::kAnalytic ? "level" : "engine");
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
     if (run.device_fit) print_resources(out, *run.device_fit);
     if (run.ssram) {

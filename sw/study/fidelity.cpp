@@ -20,12 +20,13 @@ namespace cdvp {
 
 namespace {
 
-constexpr std::array<FidelityLevel, 6> kLevels{{{Fidelity::kCycle, 0},
-                                                {Fidelity::kFast, 0},
-                                                {Fidelity::kFast, 100},
-                                                {Fidelity::kFast, 1000},
-                                                {Fidelity::kFast, 10000},
-                                                {Fidelity::kFast, 100000}}};
+constexpr std::array<FidelityLevel, 7> kLevels{{{ModelLevel::kCycle, 0},
+                                                {ModelLevel::kFast, 0},
+                                                {ModelLevel::kFast, 100},
+                                                {ModelLevel::kFast, 1000},
+                                                {ModelLevel::kFast, 10000},
+                                                {ModelLevel::kFast, 100000},
+                                                {ModelLevel::kAnalytic, 0}}};
 
 const std::array<const char*, ReportSummary::kPhases>& kPhases = ReportSummary::kPhaseKeys;
 
@@ -102,9 +103,9 @@ std::string figure_context(const std::vector<FidelityResult>& results) {
 
 }  // namespace
 
-const char* FidelityLevel::fidelity() const { return name_of(engine); }
+const char* FidelityLevel::fidelity() const { return name_of(level); }
 
-const std::array<FidelityLevel, 6>& fidelity_levels() { return kLevels; }
+const std::array<FidelityLevel, 7>& fidelity_levels() { return kLevels; }
 
 std::optional<int> run_fidelity(const std::vector<std::string>& forwarded, const TraceSpool* spool,
                                 std::vector<FidelityResult>& results, const FidelityProgress& progress) {

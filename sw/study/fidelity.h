@@ -15,20 +15,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "models/board_spec/board_engine.h"
+#include "platform/setting_choices.h"
 #include "sw/study/child_runs.h"
 #include "sw/study/report_summary.h"
 
 namespace cdvp {
 
 struct FidelityLevel {
-    Fidelity engine;
+    ModelLevel level;
     double quantum_ns;
-    const char* fidelity() const;  // the engine's name, as --fidelity takes it
+    const char* fidelity() const;  // the level's name, as --fidelity takes it
 };
 
 // The levels, the reference (the clocked engine at quantum 0) first.
-const std::array<FidelityLevel, 6>& fidelity_levels();
+const std::array<FidelityLevel, 7>& fidelity_levels();
 
 // One level's figures, as its run's report summarises them: the simulator's
 // wall time per frame is the median over the frames after warm-up (wall

@@ -74,7 +74,7 @@ void expect_named_as_chosen(CliSettings& cli, const char* setting, const char* c
 TEST_F(CliSettings, TheReportNamesEveryChoiceAsItsNamesTableDoes) {
     expect_named_as_chosen<Transfer>(*this, "run.transfer", "transfer");
     expect_named_as_chosen<WaitMode>(*this, "run.wait", "wait");
-    expect_named_as_chosen<Fidelity>(*this, "run.fidelity", "fidelity");
+    expect_named_as_chosen<ModelLevel>(*this, "run.fidelity", "fidelity");
     expect_named_as_chosen<bool>(*this, "run.ignore_capacity");
     expect_named_as_chosen<BoxMemory>(*this, "board.memory");
     expect_named_as_chosen<DeviceFamily>(*this, "device.family");
@@ -86,11 +86,12 @@ TEST_F(CliSettings, TheReportNamesEveryChoiceAsItsNamesTableDoes) {
         ASSERT_EQ(r.status, 0) << board << r.err;
         EXPECT_EQ(report()["settings"]["bus.type"]["value"], name_of(type)) << board;
     }
-    // The summary names the engine as the report does.
-    for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) {
+    // The summary names the engine, or the analytic level, as the report does.
+    for (const ChoiceName<ModelLevel>& c : Choices<ModelLevel>::names) {
         const Result r = run("run --trace " + trace("small.csv") + " --fidelity " + c.name);
         ASSERT_EQ(r.status, 0) << r.err;
-        EXPECT_NE(r.out.find(std::string(", ") + c.name + " engine\n"), std::string::npos) << r.out;
+        const char* what = c.value == ModelLevel::kAnalytic ? " level\n" : " engine\n";
+        EXPECT_NE(r.out.find(std::string(", ") + c.name + what), std::string::npos) << r.out;
     }
 }
 

@@ -110,13 +110,16 @@ TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     expect_choice_round_trip<BusType>("bus.type");
     expect_choice_round_trip<Transfer>("run.transfer");
     expect_choice_round_trip<WaitMode>("run.wait");
-    expect_choice_round_trip<Fidelity>("run.fidelity");
+    expect_choice_round_trip<ModelLevel>("run.fidelity");
     expect_choice_round_trip<bool>("run.ignore_capacity");
     int choices = 0;
     for (const Setting& s : settings_table()) choices += s.type == SettingType::kChoice ? 1 : 0;
     EXPECT_EQ(7, choices) << "a new choice setting: add it above";
-    // The engine's own names are the setting's.
+    // The engines' own names are the setting's, and each level but the analytic one runs the engine of its name.
     for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) EXPECT_STREQ(c.name, to_string(c.value));
+    for (const ChoiceName<ModelLevel>& c : Choices<ModelLevel>::names) {
+        if (c.value != ModelLevel::kAnalytic) EXPECT_STREQ(c.name, to_string(engine_of(c.value)));
+    }
 }
 
 TEST(SettingsTable, ChoiceDefaultsAreTheTypedDefaults) {
@@ -126,7 +129,7 @@ TEST(SettingsTable, ChoiceDefaultsAreTheTypedDefaults) {
     EXPECT_EQ(BusType::kIdeal, defaults.bus_type);
     EXPECT_EQ(Transfer::kDma, defaults.run.transfer);
     EXPECT_EQ(WaitMode::kIrq, defaults.run.wait);
-    EXPECT_EQ(Fidelity::kFast, defaults.run.fidelity);
+    EXPECT_EQ(ModelLevel::kFast, defaults.run.fidelity);
     EXPECT_FALSE(defaults.run.ignore_capacity);
     EXPECT_EQ(SettingValue(std::string("auto")), find_setting("board.memory")->default_value());
     EXPECT_EQ(SettingValue(std::string("no")), find_setting("run.ignore_capacity")->default_value());
@@ -140,7 +143,7 @@ TEST(SettingsTable, UnknownChoicesAreRefusedNamingEveryChoice) {
         {"bus.type", "expected ideal, pci or pcie, got 'sram'"},
         {"run.transfer", "expected dma or pio, got 'sram'"},
         {"run.wait", "expected irq or poll, got 'sram'"},
-        {"run.fidelity", "expected cycle or fast, got 'sram'"},
+        {"run.fidelity", "expected cycle, fast or analytic, got 'sram'"},
         {"run.ignore_capacity", "expected no or yes, got 'sram'"},
     };
     for (const auto& [name, message] : refusals) {

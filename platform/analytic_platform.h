@@ -1,0 +1,46 @@
+// The analytic level of the platform (--fidelity analytic): no SystemC kernel,
+// no engine stepping. A frame's pairs are those the board's comparison unit
+// accepts in its number format, found by the fast engine's PairFinder (so the
+// application and the float32 check see the board's exact pairs); its time is
+// AnalyticFrame's closed forms for those pairs (docs/analytic.md says which
+// phases are exact and measures the rest). Nothing is elaborated, so a process
+// may build any number of these: a sweep evaluates analytic points in process.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "models/fast_engine/pair_finder.h"
+#include "platform/driver/analytic_frame.h"
+#include "platform/host_cpu.h"
+#include "platform/virtual_board.h"
+
+namespace cdvp {
+
+// What AnalyticFrame needs of a board configuration; the clock period rounded
+// to femtoseconds as sc_time rounds the board's (CollisionBoard::period()).
+AnalyticBoard analytic_board(const BoardConfig& board);
+
+class AnalyticPlatform {
+public:
+    // config's faults must be empty (there is no engine to inject into) and its
+    // quantum is not modelled: callers refuse both with the setting's name.
+    AnalyticPlatform(const PlatformConfig& config, uint32_t capacity);
+
+    // As VirtualBoard::try_run_frame: the frame's result, or null with fault
+    // set (only a pair budget's refusal: nothing here can fault).
+    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    const BusTiming& bus_timing() const { return *bus_; }
+
+private:
+    uint32_t capacity_;
+    NumberFormat format_;
+    std::shared_ptr<const BusTiming> bus_;
+    AnalyticFrame frame_;
+    PairFinder finder_;
+    std::vector<uint32_t> words_[kCoordinates];
+    FrameResult result_;
+};
+
+}  // namespace cdvp
