@@ -280,8 +280,12 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
 
 namespace {
 
+// What run_checked returns, having done nothing, when asked for an analytic
+// run only and the settings choose another level.
+constexpr int kNotAnalytic = -1;
+
 // The run, with option errors pointing at --help.
-int run_checked(int argc, char** argv) {
+int run_checked(int argc, char** argv, bool analytic_only = false) {
     try {
         RunOptions o;
         const po::variables_map vm = parse_run_options(argc, argv, o);
@@ -294,6 +298,7 @@ int run_checked(int argc, char** argv) {
         open_outputs(o, vm, out);
         check_source_options(o, vm);
         Setup setup = make_setup(o, vm);
+        if (analytic_only && setup.level != ModelLevel::kAnalytic) return kNotAnalytic;
         check_scene_settings(vm, setup.values);
         const FrameOrigin origin = vm.count("trace") ? FrameOrigin{o.trace, ""} : FrameOrigin{"", o.scene};
         RunBudgets budgets(setup.values, setup.platform, run_shape(vm, setup), origin);
@@ -344,6 +349,28 @@ int run_command(int argc, char** argv) {
         }
     }
     return exit_status_of("cdvp run", [&] { return run_checked(argc, argv); });
+}
+
+std::optional<int> run_analytic_in_process(const std::vector<std::string>& args, std::string& errors) {
+    std::vector<std::string> words{"run"};  // as main passes a command its words
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    // The run's one-line error is the caller's, as a child's stderr would be.
+    std::ostringstream captured;
+    std::streambuf* const previous = std::cerr.rdbuf(captured.rdbuf());
+    int status = 0;
+    try {
+        status = exit_status_of("cdvp run", [&] { return run_checked(static_cast<int>(words.size()), argv.data(), true); });
+    } catch (...) {
+        std::cerr.rdbuf(previous);
+        throw;
+    }
+    std::cerr.rdbuf(previous);
+    errors = captured.str();
+    if (status == kNotAnalytic) return std::nullopt;
+    return status;
 }
 
 }  // namespace cdvp

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "sw/cli/exit_status.h"
+#include "sw/cli/run_command.h"
 #include "sw/cli/run_budgets.h"
 #include "sw/cli/sweep_options.h"
 #include "sw/cli/sweep_progress.h"
@@ -39,6 +40,7 @@ void print_summary(const std::string& out, const SweepOutcome& outcome) {
 
 int run_sweep_command(SweepSpec spec) {
     spec.trace_limits = spooled_trace_limits();
+    if (spec.cdvp_binary.empty()) spec.in_process = run_analytic_in_process;  // analytic points need no child
     SweepProgress progress(!spec.quiet && isatty(STDERR_FILENO));
     const SweepOutcome outcome = run_sweep(spec, &progress);
     if (outcome.status == 0 && sweep_stop_signal() == 0 && !spec.quiet) print_summary(spec.out_dir, outcome);

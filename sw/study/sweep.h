@@ -8,6 +8,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,12 @@ struct NamedInput {
     std::string option, value, path;
 };
 
+// Runs `cdvp run ARGS` inside this process when it can (a point at the
+// analytic level elaborates no SystemC kernel): its exit status, with what it
+// printed on stderr in `errors`; none when the point needs a process of its
+// own. Set by the command line, which owns `cdvp run`.
+using InProcessRun = std::function<std::optional<int>(const std::vector<std::string>& args, std::string& errors)>;
+
 struct SweepSpec {
     std::vector<Axis> axes;                // in the order given, named by what they set
     std::vector<std::string> run_options;  // passed on to every point, in order, one word each
@@ -39,6 +47,7 @@ struct SweepSpec {
     InputLimits trace_limits;              // what a trace read from a pipe may hold when it is spooled
     std::string program = "cdvp sweep";    // the name notes and errors are printed under
     std::string cdvp_binary;               // the cdvp the points run; empty: this process's executable
+    InProcessRun in_process;               // points it takes run here, one at a time; empty: every point a child
 };
 
 // Told how a sweep goes: a progress bar on a terminal, a callback in a notebook.

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "models/common/user_text.h"
+#include "sw/study/output/output_cleanup.h"
 #include "sw/study/exit_codes.h"
 
 namespace cdvp {
@@ -93,11 +94,19 @@ SweepRunner::~SweepRunner() {
 }
 
 int SweepRunner::run(const std::vector<std::size_t>& todo, SweepObserver& observer) {
+    // The temporaries' handlers first, so that the stop handlers below stay
+    // in place while points run in process (their outputs are committed or
+    // discarded before the sweep ends by the signal).
+    if (o_.in_process) TemporaryRegistry::install_handlers();
     const StopSignalsHandled handled;
     std::size_t next = 0;
+    const auto go_on = [&] { return next < todo.size() && g_stop_signal == 0 && failing_ == 0; };
     while (true) {
-        for (std::size_t k = 0; k < slots_.size() && next < todo.size() && g_stop_signal == 0 && failing_ == 0; ++k) {
-            if (slots_[k]->pid == 0) launch(*slots_[k], k, grid_.point(todo[next++]));
+        for (std::size_t k = 0; k < slots_.size(); ++k) {
+            while (slots_[k]->pid == 0 && go_on()) {
+                const Point point = grid_.point(todo[next++]);
+                if (!run_in_process(point, observer)) launch(*slots_[k], k, point);
+            }
         }
         if (running() == 0) break;
         int wait_status = 0;
@@ -118,7 +127,26 @@ int SweepRunner::run(const std::vector<std::size_t>& todo, SweepObserver& observ
             observer.point_done();
         }
     }
+    file_.sync();
     return failing_;
+}
+
+bool SweepRunner::run_in_process(const Point& point, SweepObserver& observer) {
+    if (!o_.in_process) return false;
+    std::string errors;
+    const auto started = std::chrono::steady_clock::now();
+    const std::optional<int> code = o_.in_process(point_arguments(point), errors);
+    if (!code) return false;
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const int status = record(point, *code, reason_of(errors, trace_paths_), wall, false);
+    if (status != 0 && failing_ == 0) failing_ = status;
+    // Rows of fast points are synced together, a few times a second.
+    if (std::chrono::steady_clock::now() - last_sync_ > std::chrono::milliseconds(250)) {
+        file_.sync();
+        last_sync_ = std::chrono::steady_clock::now();
+    }
+    observer.point_done();
+    return true;
 }
 
 std::size_t SweepRunner::running() const {
@@ -133,14 +161,19 @@ void SweepRunner::signal_running(int signal_number) {
     }
 }
 
-void SweepRunner::launch(Slot& slot, std::size_t k, const Point& point) {
-    std::vector<std::string> args{self_, "run"};
-    args.insert(args.end(), o_.run_options.begin(), o_.run_options.end());
+std::vector<std::string> SweepRunner::point_arguments(const Point& point) const {
+    std::vector<std::string> args = o_.run_options;
     for (std::string& arg : grid_.run_arguments(point)) {
         if (arg.rfind("--trace=", 0) == 0) arg = "--trace=" + trace_paths_.at(arg.substr(8));
         args.push_back(std::move(arg));
     }
     args.insert(args.end(), {"--report=" + report_path(o_.out_dir, point), "-q"});
+    return args;
+}
+
+void SweepRunner::launch(Slot& slot, std::size_t k, const Point& point) {
+    std::vector<std::string> args{self_, "run"};
+    for (std::string& arg : point_arguments(point)) args.push_back(std::move(arg));
     slot.point = point;
     slot.errors.clear();
     slot.started = std::chrono::steady_clock::now();
@@ -163,9 +196,14 @@ int SweepRunner::finish(Slot& slot) {
                   << "; the point is not recorded\n";
         return kExitInternal;
     }
-    const int code = WEXITSTATUS(slot.wait_status);
-    const std::string reason = reason_of(slot.errors.text(64 * 1024), trace_paths_);
-    const std::string report = report_path(o_.out_dir, slot.point);
+    return record(slot.point, WEXITSTATUS(slot.wait_status), reason_of(slot.errors.text(64 * 1024), trace_paths_), wall,
+                  true);
+}
+
+// The row of a point that ended with `code`; 0, or the status that ends the sweep.
+int SweepRunner::record(const Point& point, int code, const std::string& reason, double wall, bool sync_now) {
+    const std::string& id = point.id;
+    const std::string report = report_path(o_.out_dir, point);
     check_inputs_();  // a file changed during the point: its row would not belong to this sweep
     auto fail = [&](int status, const std::string& why) {
         std::cerr << o_.program << ": point " << id << ": " << why << "; the point is not recorded\n";
@@ -175,18 +213,18 @@ int SweepRunner::finish(Slot& slot) {
         const std::optional<std::string> text = read_whole_file(report);
         if (!text) return fail(kExitInternal, "cdvp run ended well but its report " + excerpt(report) + " cannot be read: " +
                                                   std::strerror(errno) + " (internal error: a cdvp bug)");
-        table_.add(slot.point.index, report_row(grid_, slot.point, *text, wall));
+        table_.add(point.index, report_row(grid_, point, *text, wall));
     } else if (code == kExitSystem) {
         return fail(kExitSystem, reason);
     } else if ((code == kExitBadInput || code == kExitDeviceFault) && reason.rfind("--report", 0) == 0) {
         return fail(code, "its report could not be written: " + reason);  // the sweep's own file, not the point's answer
     } else if (code == kExitBadInput || code == kExitDeviceFault) {
         const PointStatus status = code == kExitBadInput ? PointStatus::kRefused : PointStatus::kFault;
-        table_.add(slot.point.index, failed_row(grid_, slot.point, status, reason, wall));
+        table_.add(point.index, failed_row(grid_, point, status, reason, wall));
     } else {
         return fail(kExitInternal, "cdvp run failed (status " + std::to_string(code) + "): " + reason);
     }
-    file_.append(table_, slot.point.index);
+    file_.append(table_, point.index, sync_now);
     return 0;
 }
 

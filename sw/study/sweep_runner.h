@@ -8,6 +8,7 @@
 // neither running points nor scratch files.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -39,8 +40,12 @@ public:
 
 private:
     struct Slot;
+    std::vector<std::string> point_arguments(const Point& point) const;  // of cdvp run
+    // Runs the point here when the spec's in_process takes it; false: it needs a child.
+    bool run_in_process(const Point& point, SweepObserver& observer);
     void launch(Slot& slot, std::size_t k, const Point& point);
     int finish(Slot& slot);
+    int record(const Point& point, int code, const std::string& reason, double wall, bool sync_now);
     std::size_t running() const;
     void signal_running(int signal_number);
 
@@ -52,6 +57,7 @@ private:
     std::function<void()> check_inputs_;
     std::string self_;
     std::vector<std::unique_ptr<Slot>> slots_;
+    std::chrono::steady_clock::time_point last_sync_{};
     int failing_ = 0;  // the status a failed point ends the sweep with: no new points start
 };
 

@@ -216,7 +216,7 @@ void TableFile::rewrite(const SweepTable& table) {
     if (fd_ < 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
 }
 
-void TableFile::append(const SweepTable& table, std::size_t index) {
+void TableFile::append(const SweepTable& table, std::size_t index, bool sync_now) {
     if (index < last_index_) in_order_ = false;
     last_index_ = std::max(last_index_, index);
     if (header_ != table.header_line()) {
@@ -231,6 +231,10 @@ void TableFile::append(const SweepTable& table, std::size_t index) {
         done += static_cast<std::size_t>(put);
     }
     // On disk before the next point starts: a crash keeps every row reported done.
+    if (sync_now) sync();
+}
+
+void TableFile::sync() {
     if (fdatasync(fd_) != 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
 }
 

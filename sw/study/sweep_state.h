@@ -55,7 +55,10 @@ public:
     TableFile& operator=(const TableFile&) = delete;
 
     // The row of 'index', just added to 'table'.
-    void append(const SweepTable& table, std::size_t index);
+    // Synced unless `sync_now` is false (rows of points run in process come fast:
+    // synced by sync() at most every few hundred milliseconds and at the end).
+    void append(const SweepTable& table, std::size_t index, bool sync_now = true);
+    void sync();
     // The whole table in point order, when anything was appended out of it.
     void finish(const SweepTable& table);
 

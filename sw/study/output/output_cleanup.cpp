@@ -34,7 +34,9 @@ extern "C" void unlink_temporaries_and_reraise(int signal_number) {
     errno = saved_errno;
 }
 
-void install_handlers() {
+}  // namespace
+
+void TemporaryRegistry::install_handlers() {
     if (g_installed) return;
     g_installed = true;
     for (int signal_number : TemporaryRegistry::kSignals) {
@@ -48,14 +50,12 @@ void install_handlers() {
     }
 }
 
-}  // namespace
-
 const int TemporaryRegistry::kSignals[12] = {SIGINT,  SIGTERM, SIGHUP,  SIGPIPE, SIGQUIT,   SIGALRM,
                                              SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF};
 
 int TemporaryRegistry::hold(const std::string& path) {
     if (path.size() >= PATH_MAX) throw std::length_error(path + ": path too long for a temporary");
-    install_handlers();
+    TemporaryRegistry::install_handlers();
     for (int k = 0; k < kSlots; ++k) {
         if (g_in_use[k]) continue;
         std::memcpy(g_paths[k], path.c_str(), path.size() + 1);

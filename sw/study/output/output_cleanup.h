@@ -20,6 +20,9 @@ public:
     static int hold(const std::string& path);
     // Forgets the slot (the path was renamed or removed); -1 is ignored.
     static void release(int slot) noexcept;
+    // Installs the handlers now (once per process): a caller that handles
+    // the same signals itself for a while (a sweep) installs its own after.
+    static void install_handlers();
     // The signals whose default action the handler keeps.
     static const int kSignals[12];
 };
