@@ -28,11 +28,18 @@ std::shared_ptr<const BusTiming> bus_or_ideal(const std::shared_ptr<const BusTim
 
 AnalyticPlatform::AnalyticPlatform(const PlatformConfig& config, uint32_t capacity)
     : capacity_(capacity),
+      stall_free_pairs_(config.board.collector.fifo_depth > config.board.lanes()
+                            ? config.board.collector.fifo_depth - config.board.lanes()
+                            : 0),
       format_(config.board.format),
       bus_(bus_or_ideal(config.bus)),
       frame_(config.driver, *bus_, analytic_board(config.board)),
       finder_(config.board.format, config.pair_budget) {
     if (!config.faults.empty()) throw std::invalid_argument("the analytic level has no engine to inject faults into");
+}
+
+bool AnalyticPlatform::exact_by_bound(const FrameResult& result) const {
+    return result.pairs.size() <= stall_free_pairs_ && result.phases.overflow_pauses == 0;
 }
 
 const FrameResult* AnalyticPlatform::try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number,

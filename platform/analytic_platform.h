@@ -32,9 +32,15 @@ public:
     // set (only a pair budget's refusal: nothing here can fault).
     const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
     const BusTiming& bus_timing() const { return *bus_; }
+    // Whether every phase of a frame this platform timed is exact by bound,
+    // not by estimate: its pairs and a full row of lane hits fit the pair
+    // FIFO together (so the FIFO never pushes back) and the pair buffer took
+    // them in one segment (docs/analytic.md).
+    bool exact_by_bound(const FrameResult& result) const;
 
 private:
     uint32_t capacity_;
+    uint64_t stall_free_pairs_;  // FIFO depth less one row of hits (2m - 1 lanes)
     NumberFormat format_;
     std::shared_ptr<const BusTiming> bus_;
     AnalyticFrame frame_;

@@ -65,13 +65,17 @@ struct Choices<Fidelity> {
 // The modelling level of a run (run.fidelity): one of the engines on the
 // SystemC platform, or the analytic level's closed forms without a kernel
 // (platform/analytic_platform.h).
-enum class ModelLevel : uint8_t { kCycle, kFast, kAnalytic };
+// auto: the analytic level where its error is bounded or measured within
+// run.max_error_percent, the fast engine elsewhere (sw/cli/run_platform.h).
+enum class ModelLevel : uint8_t { kCycle, kFast, kAnalytic, kAuto };
 template <>
 struct Choices<ModelLevel> {
-    static constexpr ChoiceName<ModelLevel> names[] = {
-        {ModelLevel::kCycle, "cycle"}, {ModelLevel::kFast, "fast"}, {ModelLevel::kAnalytic, "analytic"}};
+    static constexpr ChoiceName<ModelLevel> names[] = {{ModelLevel::kCycle, "cycle"},
+                                                       {ModelLevel::kFast, "fast"},
+                                                       {ModelLevel::kAnalytic, "analytic"},
+                                                       {ModelLevel::kAuto, "auto"}};
 };
-// The engine a level runs on the platform (the analytic level runs none).
+// The engine a level runs on the platform (the analytic level runs none; auto the fast one beside it).
 inline Fidelity engine_of(ModelLevel level) { return level == ModelLevel::kCycle ? Fidelity::kCycle : Fidelity::kFast; }
 // A switch (run.ignore_capacity).
 template <>

@@ -47,6 +47,7 @@ struct RunSettings {
     WaitMode wait = WaitMode::kIrq;
     ModelLevel fidelity = ModelLevel::kFast;
     double quantum_ns = 0.0;
+    double max_error_percent = 1.0;  // run.fidelity auto's bound
     uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
     uint32_t repeat = 1;
     bool ignore_capacity = false;

@@ -366,9 +366,15 @@ std::vector<Setting> host_and_run_settings() {
                     "the modelling level: fast computes pairs and cycles from the schedule, cycle clocks the datapath "
                     "edge by edge (the same pairs, cycles and times; --vcd needs cycle, and picks it when the "
                     "fidelity is not given); analytic finds the same pairs and times the frame from closed forms "
-                    "without the SystemC kernel (FIFO stalls estimated, the host quantum not modelled)",
+                    "without the SystemC kernel (FIFO stalls estimated, the host quantum not modelled); auto takes "
+                    "the analytic level where its error is bounded or measured within --max-error, fast elsewhere",
                     "fast: exact, faster (docs/fast_engine.md); analytic: docs/analytic.md"),
-             "fidelity", "cycle|fast|analytic"),
+             "fidelity", "cycle|fast|analytic|auto"),
+        flag(real("run.max_error_percent", "%", 0, 100, member(&S::run, &RunSettings::max_error_percent),
+                  "--fidelity auto: the largest error of any phase, in percent of the frame time, the analytic level "
+                  "may have where it is measured against the fast engine",
+                  "1%: below the spread of the paper's own measurements (assumption)"),
+             "max-error", "E"),
         flag(real("run.quantum_ns", "ns", 0, 1e9, member(&S::run, &RunSettings::quantum_ns),
                   "host CPU quantum in ns: how far the CPU runs ahead of the board and bus before it synchronises "
                   "(0: at every access, exact; larger is faster and loosely timed)",

@@ -40,7 +40,7 @@ constexpr const char* kHelp =
 
 // What fidelity sets for each level itself, or what does not apply to it.
 bool reserved(const std::string& key) {
-    for (const char* option : {"run.fidelity", "run.quantum_ns", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format",
+    for (const char* option : {"run.fidelity", "run.quantum_ns", "run.max_error_percent", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format",
                                "inject", "baseline"}) {
         if (key == option) return true;
     }

@@ -16,7 +16,6 @@
 
 #include <boost/program_options.hpp>
 
-#include "platform/analytic_platform.h"
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
 #include "sw/bullet/scenes.h"
@@ -25,6 +24,7 @@
 #include "sw/cli/frame_source.h"
 #include "sw/cli/run_checks.h"
 #include "sw/cli/run_options.h"
+#include "sw/cli/run_platform.h"
 #include "sw/cli/run_report.h"
 #include "sw/cli/run_setup.h"
 #include "sw/cli/wave_outputs.h"
@@ -101,7 +101,8 @@ struct Setup : BoardSetup {
 
 // What the analytic level cannot model is refused, not silently ignored.
 void check_analytic_run(const SettingValues& values, const RunOptions& o) {
-    const std::string level = "the analytic level (" + values.where(*find_setting("run.fidelity")) + ")";
+    const std::string level = std::string("the ") + name_of(values.settings().run.fidelity) + " level (" +
+                              values.where(*find_setting("run.fidelity")) + ")";
     if (!o.inject.empty()) {
         throw InputError("--inject: " + level + " has no engine to inject faults into; use --fidelity fast or cycle");
     }
@@ -118,7 +119,7 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
     setup.level = model_level(setup.values, vm);
     setup.platform.fidelity = engine_of(setup.level);
-    if (setup.level == ModelLevel::kAnalytic) check_analytic_run(setup.values, o);
+    if (setup.level == ModelLevel::kAnalytic || setup.level == ModelLevel::kAuto) check_analytic_run(setup.values, o);
     setup.trace_window = vcd_window(o.vcd_frames, vm);
     setup.host = resolve_host_timing(setup.values);
     setup.baselines = BaselineTimer(o.baselines, setup.host);
@@ -153,29 +154,6 @@ auto within_budget(const RunBudgets& budgets, uint64_t frame, Stage&& stage) {
         throw InputError(budgets.pair_budget_refusal(frame, e.found()));
     }
 }
-
-// What a run's frames run on: the SystemC platform with its engine, or the
-// analytic level, which elaborates nothing.
-class RunPlatform {
-public:
-    RunPlatform(const Setup& setup, uint32_t capacity, const std::string& trace_base) {
-        if (setup.level == ModelLevel::kAnalytic) {
-            analytic_ = std::make_unique<AnalyticPlatform>(setup.platform, capacity);
-        } else {
-            board_ = std::make_unique<VirtualBoard>("platform", setup.platform, capacity, trace_base);
-        }
-    }
-    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) {
-        return board_ ? board_->try_run_frame(boxes, number, fault) : analytic_->try_run_frame(boxes, number, fault);
-    }
-    const BusTiming& bus_timing() const { return board_ ? board_->bus_timing() : analytic_->bus_timing(); }
-    // The SystemC platform, or null at the analytic level (which has no waveforms).
-    VirtualBoard* board() { return board_.get(); }
-
-private:
-    std::unique_ptr<VirtualBoard> board_;
-    std::unique_ptr<AnalyticPlatform> analytic_;
-};
 
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
              const std::vector<std::string>& command_line, const RunBudgets& budgets) {
@@ -263,10 +241,15 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         }
     }
 
-    if (report) report->end(totals, setup.host);
+    if (report) {
+        const nlohmann::json choice =
+            platform.choice() ? nlohmann::json{{"fidelity_choice", platform.choice()->to_json()}} : nlohmann::json::object();
+        report->end(totals, setup.host, &choice);
+    }
     if (!o.quiet) {
         std::ostringstream summary;
         print_summary(summary, run, totals, wall);
+        if (const LevelChoice* choice = platform.choice()) summary << choice->words() << '\n';
         out.files.set_standard_output(summary.str());
     }
     // Reported by value, not thrown: see OutputFile::try_finish.

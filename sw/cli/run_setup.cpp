@@ -43,6 +43,10 @@ BoardSetup board_setup(const SettingLayers& layers, const po::variables_map& vm,
 ModelLevel model_level(const SettingValues& values, const po::variables_map& vm) {
     const Setting& setting = *find_setting("run.fidelity");
     const ModelLevel level = values.settings().run.fidelity;
+    const Setting& max_error = *find_setting("run.max_error_percent");
+    if (!values.is_default(max_error) && level != ModelLevel::kAuto) {
+        throw InputError(values.where(max_error) + ": only --fidelity auto picks a level by its error; give --fidelity auto");
+    }
     if (vm.count("vcd") != 0) {
         if (!values.is_default(setting) && level != ModelLevel::kCycle) {
             throw InputError("--vcd: waveforms need the clocked engine; " + values.where(setting) + " asks for " +

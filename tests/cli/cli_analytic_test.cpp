@@ -50,5 +50,42 @@ TEST_F(Cli, AnalyticRefusesWhatItCannotModel) {
     EXPECT_FALSE(fs::exists(dir_ / "w.vcd"));
 }
 
+TEST_F(Cli, AutoTakesTheAnalyticLevelWhereItsErrorIsBoundedOrMeasuredWithinTheLimit) {
+    // Sparse: every frame's pairs fit the FIFO, so the analytic level is exact by bound, and is the fast engine's.
+    const std::string sparse = "run --board adm-xrc-ii --scene spheres --objects 100 --frames 4 ";
+    ASSERT_EQ(run(sparse + "--report fast.json -q").status, 0);
+    const Result bounded = run(sparse + "--fidelity auto --report auto.json");
+    ASSERT_EQ(bounded.status, 0) << bounded.err;
+    EXPECT_NE(bounded.out.find("auto: analytic level on 4 of 4 frames (4 exact by bound)\n"), std::string::npos)
+        << bounded.out;
+    const auto fast = report_of(dir_ / "fast.json"), chosen = report_of(dir_ / "auto.json");
+    EXPECT_EQ(chosen["config"]["fidelity"], "auto");
+    EXPECT_EQ(chosen["fidelity_choice"]["exact_by_bound_frames"], 4);
+    for (std::size_t k = 0; k < 4; ++k) {
+        for (const char* field : {"upload_ns", "start_ns", "compute_ns", "irq_ns", "readback_ns", "total_ns"}) {
+            EXPECT_NEAR(chosen["frames"][k][field].get<double>(), fast["frames"][k][field].get<double>(), 1e-6)
+                << "frame " << k << " " << field;
+        }
+    }
+    // Polling with pair-buffer pauses: measured on the first frame, 0.106% off in total.
+    const std::string paused = "run --board adm-xrc-ii --scene spheres --objects 700 --frames 4 --pair-buffer 100 "
+                               "--wait poll --fidelity auto ";
+    const Result within = run(paused + "--max-error 1");
+    ASSERT_EQ(within.status, 0) << within.err;
+    EXPECT_NE(within.out.find("auto: analytic level on 3 of 4 frames (0 exact by bound); measured on frame 0 against "
+                              "the fast engine: total off by 0.106%, within --max-error 1%\n"),
+              std::string::npos)
+        << within.out;
+    const Result beyond = run(paused + "--max-error 0.1 --report beyond.json");
+    ASSERT_EQ(beyond.status, 0) << beyond.err;
+    EXPECT_NE(beyond.out.find("analytic level on 0 of 4 frames (0 exact by bound); measured on frame 0 against the fast "
+                              "engine: total off by 0.106%, beyond --max-error 0.1%; the fast engine on the rest\n"),
+              std::string::npos)
+        << beyond.out;
+    EXPECT_EQ(report_of(dir_ / "beyond.json")["fidelity_choice"]["fast_frames"], 4);
+    expect_refusal(run(sparse + "--max-error 2"),
+                   "cdvp run: --max-error: only --fidelity auto picks a level by its error; give --fidelity auto");
+}
+
 }  // namespace
 }  // namespace cdvp::test

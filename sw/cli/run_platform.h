@@ -1,0 +1,58 @@
+// What `cdvp run` runs its frames on, by run.fidelity: the SystemC platform
+// with the clocked or fast engine, the analytic level (no kernel), or auto,
+// which takes the analytic level wherever its error is bounded or measured
+// within --max-error and the fast engine (exact) elsewhere.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "platform/analytic_platform.h"
+#include "platform/virtual_board.h"
+#include "sw/cli/run_setup.h"
+
+namespace cdvp {
+
+// --fidelity auto, frame by frame: a frame the analytic level is exact on by
+// bound (AnalyticPlatform::exact_by_bound) is timed by it; until a frame
+// needs measuring, that is all. The first frame that does runs on both: if
+// the analytic level's largest phase error on it, in percent of the fast
+// engine's frame time, is within --max-error, the analytic level times the
+// rest of the run, else the fast engine does. That frame's result is the
+// fast engine's.
+struct LevelChoice {
+    double max_error_percent = 1.0;
+    uint64_t analytic_frames = 0, bounded_frames = 0, fast_frames = 0;
+    bool measured = false;
+    uint64_t measured_frame = 0;
+    double measured_error_percent = 0;
+    const char* measured_phase = "";
+    std::string words() const;        // "analytic on 18 of 20 frames: ...", for the summary
+    nlohmann::json to_json() const;   // the report's "fidelity_choice"
+};
+
+class RunPlatform {
+public:
+    RunPlatform(const BoardSetup& setup, uint32_t capacity, const std::string& trace_base);
+    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    const BusTiming& bus_timing() const { return board_ ? board_->bus_timing() : analytic_->bus_timing(); }
+    // The SystemC platform, or null at the analytic level (which has no waveforms).
+    VirtualBoard* board() { return board_.get(); }
+    // Under --fidelity auto, what was chosen and why; else null.
+    const LevelChoice* choice() const { return auto_ ? &choice_ : nullptr; }
+
+private:
+    const FrameResult* run_auto(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+
+    std::unique_ptr<VirtualBoard> board_;
+    std::unique_ptr<AnalyticPlatform> analytic_;
+    bool auto_ = false;
+    enum class Decided : uint8_t { kNot, kAnalytic, kFast } decided_ = Decided::kNot;
+    LevelChoice choice_;
+};
+
+}  // namespace cdvp
