@@ -71,5 +71,31 @@ TEST(PairCount, MatchesEveryPairComparedOnRandomScenes) {
     EXPECT_GT(checked, 10000u) << "the scenes must hold many pairs for the check to mean anything";
 }
 
+// Both algorithms on every scene whatever its size, and scenes that stress a
+// grid: unbounded and huge boxes (filed nowhere, tested against all), NaN,
+// inverted boxes, every box in one cell, one axis without extent.
+TEST(PairCount, TheGridAndTheSweepCountAsComparingEveryPair) {
+    std::mt19937 rng(7);
+    PairCounter counter;
+    uint64_t checked = 0;
+    for (std::size_t n : {0u, 1u, 2u, 40u, 700u, 2500u}) {
+        for (int largest : {0, 2, 12}) {
+            std::vector<FloatBox> boxes = grid_scene(n, 16, largest, rng);
+            for (std::size_t k = 0; k < boxes.size(); k += 97) boxes[k].max[k % 3] = INFINITY;
+            for (std::size_t k = 5; k < boxes.size(); k += 131) boxes[k].min[1] = -INFINITY;
+            for (std::size_t k = 9; k < boxes.size(); k += 211) boxes[k] = box(-1e30f, -1e30f, -1e30f, 1e30f, 1e30f, 1e30f);
+            for (std::size_t k = 3; k < boxes.size(); k += 173) boxes[k].min[2] = NAN;
+            const uint64_t expected = count_pairs_brute_force(boxes);
+            EXPECT_EQ(counter.count_by_grid(boxes), expected) << "grid n=" << n << " largest=" << largest;
+            EXPECT_EQ(counter.count_by_sweep(boxes), expected) << "sweep n=" << n << " largest=" << largest;
+            checked += expected;
+        }
+        std::vector<FloatBox> flat(n, box(0, 0, 0, 0, 0, 0));  // no extent on any axis: one cell
+        for (std::size_t k = 0; k < n; ++k) flat[k].min[0] = flat[k].max[0] = static_cast<float>(k % 5);
+        EXPECT_EQ(counter.count_by_grid(flat), count_pairs_brute_force(flat)) << "flat n=" << n;
+    }
+    EXPECT_GT(checked, 10000u);
+}
+
 }  // namespace
 }  // namespace cdvp
