@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -171,7 +172,8 @@ PciTransactionTiming::PciTransactionTiming(const PciConfig& config, const BusLoa
 
 std::string PciTransactionTiming::describe() const {
     std::ostringstream s;
-    s << "PCI " << bus_.config().width_bits << "-bit/" << bus_.config().clock_mhz << " MHz, transaction level";
+    s << "PCI " << bus_.config().width_bits << "-bit/" << std::setprecision(3) << bus_.config().clock_mhz
+      << " MHz, transaction level";
     if (load_.active()) s << ", background " << load_.bytes_per_s / 1e6 << " MB/s";
     return s.str();
 }

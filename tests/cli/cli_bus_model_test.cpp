@@ -36,7 +36,7 @@ TEST_F(CliBusModel, LoadNeedsTheTransactionLevelAndBadValuesNameTheSetting) {
                    "cdvp run: -c bus.load_bytes_per_s: expected 0 with bus.model formula (it times an idle bus; give "
                    "--bus-model transaction)\n");
     expect_refusal(run("run --scene spheres --objects 50 --board adm-xrc-ii --bus-model exact"),
-                   "cdvp run: --bus-model: expected formula or transaction, got 'exact'\n");
+                   "cdvp run: --bus-model: expected formula or transaction, got 'exact' (see cdvp run --help)\n");
     expect_refusal(run("run --scene spheres --objects 50 --board pcie-gen3-x8 --bus-model transaction "
                        "-c bus.read_completion_boundary_bytes=96"),
                    "cdvp run: -c bus.read_completion_boundary_bytes: expected 64 or 128, got 96\n");
