@@ -12,12 +12,16 @@
 #include <vector>
 
 #include "models/board_spec/board_engine.h"
+#include "models/pci/background_traffic.h"
 #include "platform/driver/driver_config.h"
 
 namespace cdvp {
 
 // The host bus (bus.type): none, or the bus whose bus.* keys apply.
 enum class BusType : uint8_t { kIdeal, kPci, kPcie };
+// The level the host bus is timed at (bus.model): the closed formula, or
+// transaction by transaction against background traffic (docs/bus_models.md).
+enum class BusModel : uint8_t { kFormula, kTransaction };
 // Where the boxes live (board.memory; platform/memory_plan.h resolves kAuto).
 enum class BoxMemory : uint8_t { kAuto, kBlockRam, kSsram };
 // The FPGA family whose synthesis results cost the board (device.family).
@@ -38,6 +42,19 @@ template <>
 struct Choices<BusType> {
     static constexpr ChoiceName<BusType> names[] = {
         {BusType::kIdeal, "ideal"}, {BusType::kPci, "pci"}, {BusType::kPcie, "pcie"}};
+};
+template <>
+struct Choices<BusModel> {
+    static constexpr ChoiceName<BusModel> names[] = {{BusModel::kFormula, "formula"}, {BusModel::kTransaction, "transaction"}};
+};
+// A background master's direction (bus.load_direction): it reads or writes host memory.
+template <>
+struct Choices<Direction> {
+    static constexpr ChoiceName<Direction> names[] = {{Direction::kToHost, "to_host"}, {Direction::kToBoard, "to_board"}};
+};
+template <>
+struct Choices<LoadArrivals> {
+    static constexpr ChoiceName<LoadArrivals> names[] = {{LoadArrivals::kPeriodic, "periodic"}, {LoadArrivals::kRandom, "random"}};
 };
 template <>
 struct Choices<BoxMemory> {

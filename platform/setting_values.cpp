@@ -98,7 +98,7 @@ void SettingValues::refuse_model_message(const std::string& message, const std::
                                          const std::string& suffix) const {
     const std::size_t colon = message.find(':');
     std::string key = colon == std::string::npos ? "" : message.substr(0, colon);
-    for (const char* model_prefix : {"pci.", "pcie."}) {  // the bus models name their keys "pci.KEY"
+    for (const char* model_prefix : {"pci.", "pcie.", "bus."}) {  // the bus models name their keys "pci.KEY", "bus.KEY"
         if (key.rfind(model_prefix, 0) == 0) key = key.substr(std::string(model_prefix).size());
     }
     if (key == "local_bus") key = "local_bus_*";

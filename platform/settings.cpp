@@ -6,6 +6,7 @@
 
 #include "models/common/number_text.h"
 #include "models/common/user_text.h"
+#include "models/pci/pci_transaction_bus.h"
 
 namespace cdvp {
 
@@ -22,9 +23,18 @@ std::string join(const std::vector<std::string>& words, const std::string& last)
 }  // namespace
 
 std::shared_ptr<const BusTiming> Settings::make_bus() const {
+    if (bus_type != BusType::kIdeal && bus_model == BusModel::kFormula && bus_load.active()) {
+        throw std::invalid_argument("bus.load_bytes_per_s: expected 0 with bus.model formula (it times an idle bus; "
+                                    "give --bus-model transaction)");
+    }
+    const bool detailed = bus_model == BusModel::kTransaction;
     switch (bus_type) {
-        case BusType::kPci: return std::make_shared<PciTiming>(pci);
-        case BusType::kPcie: return std::make_shared<PcieTiming>(pcie);
+        case BusType::kPci:
+            if (detailed) return std::make_shared<PciTransactionTiming>(pci, bus_load);
+            return std::make_shared<PciTiming>(pci);
+        case BusType::kPcie:
+            if (detailed) return std::make_shared<PcieTlpTiming>(pcie, pcie_link, bus_load);
+            return std::make_shared<PcieTiming>(pcie);
         case BusType::kIdeal: break;
     }
     return nullptr;

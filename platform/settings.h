@@ -15,6 +15,7 @@
 
 #include "models/board_spec/board_config.h"
 #include "models/pci/bus_timing.h"
+#include "models/pci/pcie_tlp_link.h"
 #include "platform/setting_choices.h"
 #include "platform/driver/board_driver.h"
 
@@ -87,14 +88,17 @@ struct Settings {
     MemorySettings memory;
     DeviceSettings device;
     BusType bus_type = BusType::kIdeal;
+    BusModel bus_model = BusModel::kFormula;
     PciConfig pci;
     PcieConfig pcie;
+    PcieLinkConfig pcie_link;  // the TLP level's parameters (bus.model transaction)
+    BusLoad bus_load;          // background traffic (bus.model transaction)
     HostConfig host;
     DriverConfig driver;
     SceneSettings scene;
     RunSettings run;
 
-    // The bus bus_type names, built from its settings (null for ideal).
+    // The bus bus_type names at the level bus_model names, built from its settings (null for ideal).
     // Throws std::invalid_argument from the bus model's own rules.
     std::shared_ptr<const BusTiming> make_bus() const;
 };

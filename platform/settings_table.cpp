@@ -142,6 +142,19 @@ Setting both_buses(Setting s, Binding pcie) {
     s.set_pcie = std::move(pcie.set);
     return preset(std::move(s));
 }
+// A bus key that is the user's choice, never a preset's: of both buses, bound
+// to one member of Settings, or of PCIe only.
+Setting user_bus(Setting s) {
+    s.buses = kAnyBus;
+    s.get_pcie = s.get_pci;
+    s.set_pcie = s.set_pci;
+    return s;
+}
+Setting user_pcie(Setting s) {
+    s = pcie(std::move(s));
+    s.in_preset = false;
+    return s;
+}
 
 using S = Settings;
 using B = BoardConfig;
@@ -149,9 +162,12 @@ using C = PciConfig;
 using E = PcieConfig;
 using L = LocalBusConfig;
 using D = DriverConfig;
+using T = PcieLinkConfig;
+using W = BusLoad;
 
 constexpr const char* kPaperPci = "PCI 2.2 rules and the paper's host (platform/boards/adm-xrc-ii.json)";
 constexpr const char* kPcieWhatIf = "PCIe 3.0 and stated assumptions (platform/boards/pcie-gen3-x8.json)";
+constexpr const char* kNoLoad = "no load: the formula's idle bus (docs/bus_models.md)";
 
 std::vector<Setting> board_settings() {
     return {
@@ -301,6 +317,60 @@ std::vector<Setting> bus_settings() {
     };
 }
 
+// The transaction level (bus.model transaction): its background traffic and
+// the PCIe TLP level's parameters; none changes the formula.
+std::vector<Setting> bus_model_settings() {
+    return {
+        flag(user_bus(choice<BusModel>("bus.model", member(&S::bus_model),
+                                       "how the bus is timed: formula (closed form, an idle bus) or transaction "
+                                       "(PCI tenures or PCIe TLPs against background traffic; slower to set up)",
+                                       "formula: the fast level; docs/bus_models.md measures its error")),
+             "bus-model", "formula|transaction"),
+        user_bus(real("bus.load_bytes_per_s", "B/s", 0, 1e12, member(&S::bus_load, &W::bytes_per_s),
+                      "background traffic of another bus master (a NIC, a disk controller); transaction level only",
+                      kNoLoad)),
+        user_bus(count("bus.load_burst_bytes", "bytes", 4, 65536, member(&S::bus_load, &W::burst_bytes),
+                       "bytes the background master moves a request", "assumption: a disk controller's 512-byte sector")),
+        user_bus(choice<Direction>("bus.load_direction", member(&S::bus_load, &W::direction),
+                                   "the background master writes (to_host) or reads (to_board) host memory",
+                                   "to_host: a NIC receiving or a disk reading into memory")),
+        user_bus(choice<LoadArrivals>("bus.load_arrivals", member(&S::bus_load, &W::arrivals),
+                                      "background bursts evenly spaced, or seeded exponential gaps (Poisson)",
+                                      "periodic: every start phase sampled once")),
+        user_bus(count("bus.load_seed", "", 0, UINT64_MAX, member(&S::bus_load, &W::seed),
+                       "the seed of random background arrivals", "any fixed seed")),
+        user_pcie(count("bus.tlp_header_bytes", "bytes", 12, 16, member(&S::pcie_link, &T::tlp_header_bytes),
+                        "a request's header: 12 (3 DW, 32-bit addresses) or 16 (4 DW, 64-bit)",
+                        "PCIe: 64-bit host addresses need 4 DW")),
+        user_pcie(count("bus.read_completion_boundary_bytes", "bytes", 64, 128,
+                        member(&S::pcie_link, &T::read_completion_boundary_bytes),
+                        "the completer splits read completions at addresses aligned to it (64 or 128)",
+                        "a Xilinx VC709 reference design: 64 (REFERENCE.md)")),
+        user_pcie(count("bus.posted_header_credits", "credits", 1, 4096, member(&S::pcie_link, &T::posted_header_credits),
+                        "the root complex's posted-request header credits (DMA writes)", "assumption")),
+        user_pcie(count("bus.posted_data_credits", "16-byte credits", 1, 65536,
+                        member(&S::pcie_link, &T::posted_data_credits),
+                        "the root complex's posted data credits (at least one max payload)",
+                        "assumption: 16 KiB, more than the credit-return time at the link rate")),
+        user_pcie(count("bus.completion_header_credits", "credits", 1, 4096,
+                        member(&S::pcie_link, &T::completion_header_credits),
+                        "completions the board's read buffer holds (it issues a read only with room for all of them)",
+                        "assumption")),
+        user_pcie(count("bus.completion_data_credits", "16-byte credits", 1, 65536,
+                        member(&S::pcie_link, &T::completion_data_credits),
+                        "the board's read buffer (at least one read request)", "assumption: 16 KiB")),
+        user_pcie(real("bus.credit_return_ns", "ns", 0, 1e6, member(&S::pcie_link, &T::credit_return_ns),
+                       "a TLP consumed to its credits back at the sender (an UpdateFC DLLP)", "assumption")),
+        user_pcie(real("bus.bit_error_rate", "(per bit)", 0, 1e-4, member(&S::pcie_link, &T::bit_error_rate),
+                       "bit errors on the wire: a corrupt TLP is NAKed and replayed (deterministic draws)",
+                       "0: PCIe requires better than 1e-12")),
+        user_pcie(real("bus.replay_timer_ns", "ns", 0, 1e6, member(&S::pcie_link, &T::replay_timer_ns),
+                       "the replay when the NAK itself is lost", "assumption")),
+        user_pcie(count("bus.error_seed", "", 0, UINT64_MAX, member(&S::pcie_link, &T::error_seed),
+                        "the seed of the bit-error draws", "any fixed seed")),
+    };
+}
+
 // The modelled host's time on the reference workload for one baseline (a
 // preset gives it; docs/timing.md derives the shipped presets' values).
 Setting reference_time(const char* name, double HostConfig::*time) {
@@ -417,7 +487,7 @@ std::vector<Setting> host_and_run_settings() {
 const std::vector<Setting>& settings_table() {
     static const std::vector<Setting> table = [] {
         std::vector<Setting> all = board_settings();
-        for (auto* group : {device_settings, bus_settings, host_and_run_settings}) {
+        for (auto* group : {device_settings, bus_settings, bus_model_settings, host_and_run_settings}) {
             for (Setting& s : group()) all.push_back(std::move(s));
         }
         return all;

@@ -69,7 +69,7 @@ po::options_description run_options_description(RunOptions& o) {
     add_setting_flags(input, {"scene"}, o.layers.flags);
     po::options_description board("Board");
     add_board_option(board, o.layers.board_name);
-    add_setting_flags(board, {"board"}, o.layers.flags);
+    add_setting_flags(board, {"board", "bus"}, o.layers.flags);
     po::options_description host("Host, baselines and faults");
     add_setting_flags(host, {"host", "driver", "run"}, o.layers.flags);
     host.add_options()

@@ -21,6 +21,7 @@
 #include "platform/board_preset.h"
 #include "platform/config_file.h"
 #include "platform/platform_settings.h"
+#include "models/pci/pci_transaction_bus.h"
 #include "models/common/nesting_limit.h"
 #include "tests/platform/nested_text.h"
 
@@ -73,6 +74,26 @@ TEST(SettingsTable, EveryDedicatedFlagBindsExactlyOneSetting) {
     }
 }
 
+TEST(SettingsTable, BusModelPicksTheLevelAndTheDefaultIsTheFormula) {
+    Settings s;
+    s.bus_type = BusType::kPci;
+    EXPECT_NE(dynamic_cast<const PciTiming*>(s.make_bus().get()), nullptr);
+    s.bus_model = BusModel::kTransaction;
+    EXPECT_NE(dynamic_cast<const PciTransactionTiming*>(s.make_bus().get()), nullptr);
+    s.bus_type = BusType::kPcie;
+    EXPECT_NE(dynamic_cast<const PcieTlpTiming*>(s.make_bus().get()), nullptr);
+    s.bus_model = BusModel::kFormula;
+    EXPECT_NE(dynamic_cast<const PcieTiming*>(s.make_bus().get()), nullptr);
+    s.bus_load.bytes_per_s = 1e6;
+    EXPECT_THROW(s.make_bus(), std::invalid_argument) << "the formula cannot honour a load";
+    for (const char* name : {"bus.model", "bus.load_bytes_per_s", "bus.read_completion_boundary_bytes"}) {
+        ASSERT_NE(find_setting(name), nullptr) << name;
+        EXPECT_FALSE(find_setting(name)->in_preset) << name << " is the user's, not a board's";
+    }
+    EXPECT_EQ(to_text(find_setting("bus.model")->default_value()), "formula");
+    EXPECT_EQ(to_text(find_setting("bus.load_bytes_per_s")->default_value()), "0");
+}
+
 TEST(SettingsTable, ValuesBindTheirMembers) {
     Settings s;
     find_setting("board.fifo_depth")->set(s, SettingValue(uint64_t{77}));
@@ -112,9 +133,12 @@ TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     expect_choice_round_trip<WaitMode>("run.wait");
     expect_choice_round_trip<ModelLevel>("run.fidelity");
     expect_choice_round_trip<bool>("run.ignore_capacity");
+    expect_choice_round_trip<BusModel>("bus.model");
+    expect_choice_round_trip<Direction>("bus.load_direction");
+    expect_choice_round_trip<LoadArrivals>("bus.load_arrivals");
     int choices = 0;
     for (const Setting& s : settings_table()) choices += s.type == SettingType::kChoice ? 1 : 0;
-    EXPECT_EQ(7, choices) << "a new choice setting: add it above";
+    EXPECT_EQ(10, choices) << "a new choice setting: add it above";
     // The engines' own names are the setting's, and each level but the analytic one runs the engine of its name.
     for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) EXPECT_STREQ(c.name, to_string(c.value));
     for (const ChoiceName<ModelLevel>& c : Choices<ModelLevel>::names) {
@@ -131,6 +155,9 @@ TEST(SettingsTable, ChoiceDefaultsAreTheTypedDefaults) {
     EXPECT_EQ(WaitMode::kIrq, defaults.run.wait);
     EXPECT_EQ(ModelLevel::kFast, defaults.run.fidelity);
     EXPECT_FALSE(defaults.run.ignore_capacity);
+    EXPECT_EQ(BusModel::kFormula, defaults.bus_model);
+    EXPECT_EQ(Direction::kToHost, defaults.bus_load.direction);
+    EXPECT_EQ(LoadArrivals::kPeriodic, defaults.bus_load.arrivals);
     EXPECT_EQ(SettingValue(std::string("auto")), find_setting("board.memory")->default_value());
     EXPECT_EQ(SettingValue(std::string("no")), find_setting("run.ignore_capacity")->default_value());
     EXPECT_EQ(SettingValue(std::string("fast")), find_setting("run.fidelity")->default_value());
