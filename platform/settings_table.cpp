@@ -321,10 +321,13 @@ std::vector<Setting> bus_settings() {
 // the PCIe TLP level's parameters; none changes the formula.
 std::vector<Setting> bus_model_settings() {
     return {
-        flag(user_bus(choice<BusModel>("bus.model", member(&S::bus_model),
-                                       "how the bus is timed: formula (closed form, an idle bus) or transaction "
-                                       "(PCI tenures or PCIe TLPs against background traffic; slower to set up)",
-                                       "formula: the fast level; docs/bus_models.md measures its error")),
+        // Of every bus, the ideal one included: it costs nothing at either level,
+        // so a study may give --bus-model whatever the board's bus.
+        flag(choice<BusModel>("bus.model", member(&S::bus_model),
+                              "how the bus is timed: formula (closed form, an idle bus) or transaction "
+                              "(PCI tenures or PCIe TLPs against background traffic; slower to set up); "
+                              "the ideal bus costs nothing at either",
+                              "formula: the fast level; docs/bus_models.md measures its error"),
              "bus-model", "formula|transaction"),
         user_bus(real("bus.load_bytes_per_s", "B/s", 0, 1e12, member(&S::bus_load, &W::bytes_per_s),
                       "background traffic of another bus master (a NIC, a disk controller); transaction level only",

@@ -11,6 +11,8 @@
 #include "models/common/user_text.h"
 #include "sw/cli/forwarded_options.h"
 #include "sw/cli/run_budgets.h"
+#include "sw/cli/run_options.h"
+#include "sw/cli/run_setup.h"
 #include "sw/cli/run_command.h"
 #include "sw/scene/scene.h"
 #include "sw/study/child_runs.h"
@@ -26,21 +28,24 @@ constexpr const char* kHelp =
     "                     [board and host options of cdvp run] --out DIR [-q]\n"
     "\n"
     "Runs the scene at every modelling level: the clocked engine, the fast engine with the host CPU's\n"
-    "quantum at 0, 100 ns, 1 us, 10 us and 100 us, and the analytic level (closed forms). Writes DIR/fidelity.csv (per level: the\n"
-    "simulator's wall time per frame, the median over the frames after --warmup; the mean simulated\n"
-    "time of each phase over those frames, its error against the clocked engine at quantum 0 in\n"
-    "percent of that engine's mean frame time; and whether the pairs are identical) and\n"
-    "DIR/fidelity.png (wall time per frame against timing error, drawn by gnuplot).\n"
+    "quantum at 0, 100 ns, 1 us, 10 us and 100 us, and the analytic level (closed forms), each with the\n"
+    "host bus at its transaction level and as the formula (which drops a background load, from any\n"
+    "layer: the formula times an idle bus). Writes DIR/fidelity.csv (per level: the simulator's wall\n"
+    "time per frame, the median over the frames after --warmup; the mean simulated time of each phase\n"
+    "over those frames, its error against the reference, the clocked engine on the transaction-level\n"
+    "bus at quantum 0, in percent of the reference's mean frame time; and whether the pairs are\n"
+    "identical) and DIR/fidelity.png (wall time per frame against timing error, both axes log,\n"
+    "drawn by gnuplot).\n"
     "\n"
     "Every option of 'cdvp run' that sets the scene, board, bus or host is accepted and passed on,\n"
-    "--config FILE and -c NAME=VALUE included; --fidelity, --quantum-ns (and -c run.fidelity,\n"
-    "-c run.quantum_ns), --report, --pairs-out, --vcd, --inject and --baseline are set per level\n"
+    "--config FILE and -c NAME=VALUE included; --fidelity, --bus-model, --quantum-ns, --max-error (and\n"
+    "-c run.fidelity, ...), --report, --pairs-out, --vcd, --inject and --baseline are set per level\n"
     "or do not apply. -q prints nothing but errors; without it the table is printed and, on a terminal,\n"
     "the level being run.\n";
 
 // What fidelity sets for each level itself, or what does not apply to it.
 bool reserved(const std::string& key) {
-    for (const char* option : {"run.fidelity", "run.quantum_ns", "run.max_error_percent", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format",
+    for (const char* option : {"run.fidelity", "bus.model", "run.quantum_ns", "run.max_error_percent", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format",
                                "inject", "baseline"}) {
         if (key == option) return true;
     }
@@ -96,6 +101,22 @@ int write_outputs(const FidelityOptions& o, const std::vector<FidelityResult>& r
     return kExitDone;
 }
 
+// A background load, from whichever layer, is dropped at the formula levels
+// (which refuse one): the formula's idle-bus times against the loaded bus
+// are the error the ladder reports.
+std::vector<std::string> formula_extra(const std::vector<std::string>& forwarded) {
+    std::vector<std::string> words{"run"};
+    words.insert(words.end(), forwarded.begin(), forwarded.end());
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    RunOptions o;
+    const boost::program_options::variables_map vm = parse_run_options(static_cast<int>(argv.size()), argv.data(), o);
+    std::string board_name;
+    const SettingValues values = layered_settings(o.layers, vm, vm.count("scene") ? o.scene : "", board_name);
+    if (values.settings().bus_load.bytes_per_s == 0) return {};
+    return {"-c", "bus.load_bytes_per_s=0"};
+}
+
 int fidelity(int argc, char** argv) {
     for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
         if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return print_to_stdout("cdvp fidelity", kHelp);
@@ -120,7 +141,7 @@ int fidelity(int argc, char** argv) {
     }
     const bool show_progress = !o.quiet && isatty(STDERR_FILENO);
     std::vector<FidelityResult> results;
-    const std::optional<int> failed = run_fidelity(o.forwarded, spool ? &*spool : nullptr, results,
+    const std::optional<int> failed = run_fidelity(o.forwarded, formula_extra(o.forwarded), spool ? &*spool : nullptr, results,
                                                    [&](std::size_t k, const FidelityLevel& level, bool done) {
         if (!show_progress) return;
         if (done) {

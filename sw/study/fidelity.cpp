@@ -20,13 +20,22 @@ namespace cdvp {
 
 namespace {
 
-constexpr std::array<FidelityLevel, 7> kLevels{{{ModelLevel::kCycle, 0},
-                                                {ModelLevel::kFast, 0},
-                                                {ModelLevel::kFast, 100},
-                                                {ModelLevel::kFast, 1000},
-                                                {ModelLevel::kFast, 10000},
-                                                {ModelLevel::kFast, 100000},
-                                                {ModelLevel::kAnalytic, 0}}};
+constexpr const char* kTransaction = "transaction";
+constexpr const char* kFormula = "formula";
+constexpr std::array<FidelityLevel, kFidelityLevels> kLevels{{{ModelLevel::kCycle, kTransaction, 0},
+                                                             {ModelLevel::kCycle, kFormula, 0},
+                                                             {ModelLevel::kFast, kTransaction, 0},
+                                                             {ModelLevel::kFast, kFormula, 0},
+                                                             {ModelLevel::kFast, kTransaction, 100},
+                                                             {ModelLevel::kFast, kFormula, 100},
+                                                             {ModelLevel::kFast, kTransaction, 1000},
+                                                             {ModelLevel::kFast, kFormula, 1000},
+                                                             {ModelLevel::kFast, kTransaction, 10000},
+                                                             {ModelLevel::kFast, kFormula, 10000},
+                                                             {ModelLevel::kFast, kTransaction, 100000},
+                                                             {ModelLevel::kFast, kFormula, 100000},
+                                                             {ModelLevel::kAnalytic, kTransaction, 0},
+                                                             {ModelLevel::kAnalytic, kFormula, 0}}};
 
 const std::array<const char*, ReportSummary::kPhases>& kPhases = ReportSummary::kPhaseKeys;
 
@@ -52,7 +61,8 @@ std::variant<FidelityResult, int> run_level(const FidelityLevel& level, const st
     args.insert(args.end(), forwarded.begin(), forwarded.end());
     std::ostringstream quantum;
     quantum << level.quantum_ns;
-    args.insert(args.end(), {"--fidelity", level.fidelity(), "--quantum-ns", quantum.str(), "--report", report.path(),
+    args.insert(args.end(), {"--fidelity", level.fidelity(), "--bus-model", level.bus_model, "--quantum-ns", quantum.str(),
+                             "--report", report.path(),
                              "--pairs-out", pairs.path(), "-q"});
     ChildStreams streams;
     streams.err = errors.fd();
@@ -76,7 +86,7 @@ std::variant<FidelityResult, int> run_level(const FidelityLevel& level, const st
 std::string level_words(const FidelityLevel& level) {
     const double q = level.quantum_ns;
     std::ostringstream words;
-    words << level.fidelity() << ", quantum ";
+    words << level.fidelity() << ", " << level.bus_model << " bus, quantum ";
     if (q == 0) {
         words << 0;
     } else if (q >= 1000) {
@@ -94,7 +104,7 @@ std::string figure_context(const std::vector<FidelityResult>& results) {
     std::ostringstream words;
     words << config.value("board", std::string("no board")) << " (" << config.value("bus", std::string("untimed bus"))
           << "), " << config.value("source", std::string()) << ", m=" << config.value("m", 0) << ", "
-          << results.front().frames_in_means << " frames timed\nreference: the cycle engine at quantum 0; pairs ";
+          << results.front().frames_in_means << " frames timed\nreference: the cycle engine on the transaction-level bus at quantum 0; pairs ";
     const bool identical = std::all_of(results.begin(), results.end(),
                                        [&](const FidelityResult& r) { return r.pairs == results.front().pairs; });
     words << (identical ? "identical at every level" : "DIFFER at some level (fidelity.csv)");
@@ -105,13 +115,16 @@ std::string figure_context(const std::vector<FidelityResult>& results) {
 
 const char* FidelityLevel::fidelity() const { return name_of(level); }
 
-const std::array<FidelityLevel, 7>& fidelity_levels() { return kLevels; }
+const std::array<FidelityLevel, kFidelityLevels>& fidelity_levels() { return kLevels; }
 
-std::optional<int> run_fidelity(const std::vector<std::string>& forwarded, const TraceSpool* spool,
+std::optional<int> run_fidelity(const std::vector<std::string>& forwarded, const std::vector<std::string>& formula_extra,
+                                const TraceSpool* spool,
                                 std::vector<FidelityResult>& results, const FidelityProgress& progress) {
     for (std::size_t k = 0; k < kLevels.size(); ++k) {
         if (progress) progress(k, kLevels[k], false);
-        std::variant<FidelityResult, int> level = run_level(kLevels[k], forwarded, spool);
+        std::vector<std::string> options = forwarded;
+        if (kLevels[k].bus_model == kFormula) options.insert(options.end(), formula_extra.begin(), formula_extra.end());
+        std::variant<FidelityResult, int> level = run_level(kLevels[k], options, spool);
         if (progress) progress(k, kLevels[k], true);
         if (const int* status = std::get_if<int>(&level)) return *status;
         results.push_back(std::move(std::get<FidelityResult>(level)));
@@ -127,14 +140,15 @@ double fidelity_error_percent(const FidelityResult& level, const FidelityResult&
 
 std::string fidelity_csv(const std::vector<FidelityResult>& results) {
     std::ostringstream csv;
-    csv << "level,fidelity,quantum_ns,frames_in_means,p50_sim_wall_native_ns";
+    csv << "level,fidelity,bus_model,quantum_ns,frames_in_means,p50_sim_wall_native_ns";
     for (const char* phase : kPhases) csv << ",mean_" << phase;
     for (const char* phase : kPhases) csv << ",error_" << std::string(phase, std::strlen(phase) - 3) << "_percent";
     csv << ",pairs_identical\n";
     csv << std::setprecision(10);
     for (std::size_t k = 0; k < results.size(); ++k) {
         const FidelityResult& r = results[k];
-        csv << k << ',' << kLevels[k].fidelity() << ',' << kLevels[k].quantum_ns << ',' << r.frames_in_means << ','
+        csv << k << ',' << kLevels[k].fidelity() << ',' << kLevels[k].bus_model << ',' << kLevels[k].quantum_ns << ','
+            << r.frames_in_means << ','
             << r.p50_sim_wall_native_ns;
         for (double ns : r.mean_phase_ns) csv << ',' << ns;
         for (std::size_t p = 0; p < kPhases.size(); ++p) csv << ',' << fidelity_error_percent(r, results[0], p);
@@ -145,13 +159,13 @@ std::string fidelity_csv(const std::vector<FidelityResult>& results) {
 
 std::string fidelity_table(const std::vector<FidelityResult>& results) {
     std::ostringstream t;
-    t << "level           wall/frame   total (sim)     error   pairs\n"
-      << "                (p50)        (mean)\n";
+    t << "level                         wall/frame   total (sim)     error   pairs\n"
+      << "                              (p50)        (mean)\n";
     for (std::size_t k = 0; k < results.size(); ++k) {
         const FidelityResult& r = results[k];
         std::ostringstream name;
-        name << kLevels[k].fidelity() << " q=" << kLevels[k].quantum_ns << "ns";
-        t << std::left << std::setw(16) << name.str() << std::right << std::fixed << std::setprecision(3)
+        name << kLevels[k].fidelity() << ' ' << kLevels[k].bus_model << " q=" << kLevels[k].quantum_ns << "ns";
+        t << std::left << std::setw(30) << name.str() << std::right << std::fixed << std::setprecision(3)
           << std::setw(9) << r.p50_sim_wall_native_ns / 1e6 << " ms" << std::setw(11) << r.mean_phase_ns.back() / 1e3
           << " us" << std::setw(9) << std::setprecision(4)
           << fidelity_error_percent(r, results[0], kPhases.size() - 1) << " %   "

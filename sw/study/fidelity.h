@@ -1,7 +1,9 @@
 // Fidelity as a study: the scene run by `cdvp run` at every modelling level
-// (the clocked engine, and the fast engine at five host quanta), each level's
-// figures read back from its report's summary, and the error of each against
-// the clocked engine at quantum 0. `cdvp fidelity` parses its arguments and
+// (the clocked engine, the fast engine at five host quanta, the analytic
+// level; each with the bus at its transaction level and as the formula),
+// each level's figures read back from its report's summary, and the error of
+// each against the most detailed: the clocked engine on the transaction-level
+// bus at quantum 0. `cdvp fidelity` parses its arguments and
 // writes what this returns (docs/README: cdvp fidelity).
 #pragma once
 
@@ -23,12 +25,16 @@ namespace cdvp {
 
 struct FidelityLevel {
     ModelLevel level;
+    const char* bus_model;  // as --bus-model takes it
     double quantum_ns;
     const char* fidelity() const;  // the level's name, as --fidelity takes it
 };
 
-// The levels, the reference (the clocked engine at quantum 0) first.
-const std::array<FidelityLevel, 7>& fidelity_levels();
+// The levels: the clocked engine, the fast engine at five host quanta and the
+// analytic level, each on the transaction-level bus and on the formula; the
+// reference (the clocked engine, transaction level, quantum 0) first.
+constexpr std::size_t kFidelityLevels = 14;
+const std::array<FidelityLevel, kFidelityLevels>& fidelity_levels();
 
 // One level's figures, as its run's report summarises them: the simulator's
 // wall time per frame is the median over the frames after warm-up (wall
@@ -48,7 +54,11 @@ struct FidelityResult {
 // cdvp fidelity), else none. progress(k, level, done) before and after each.
 // Throws InputError when the scene has no frame to time.
 using FidelityProgress = std::function<void(std::size_t, const FidelityLevel&, bool)>;
-std::optional<int> run_fidelity(const std::vector<std::string>& forwarded, const TraceSpool* spool,
+// `formula_extra`: options the formula levels take after `forwarded` (the
+// command drops a background load there: the formula cannot time one, and
+// the difference is the error the ladder measures).
+std::optional<int> run_fidelity(const std::vector<std::string>& forwarded, const std::vector<std::string>& formula_extra,
+                                const TraceSpool* spool,
                                 std::vector<FidelityResult>& results, const FidelityProgress& progress);
 
 // Error of a phase against the reference, in percent of the reference's

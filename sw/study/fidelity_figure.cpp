@@ -10,24 +10,37 @@ Figure fidelity_figure(const std::vector<FidelityPoint>& levels, const std::stri
     Figure figure;
     figure.file = "fidelity.png";
     figure.template_name = "fidelity";
-    double worst = 0, fastest = INFINITY, slowest = 0;
+    double worst = 0, least = INFINITY, fastest = INFINITY, slowest = 0;
     for (const FidelityPoint& level : levels) {
         worst = std::max(worst, level.error_percent);
+        if (level.error_percent > 0) least = std::min(least, level.error_percent);
         fastest = std::min(fastest, level.wall_ms_per_frame);
         slowest = std::max(slowest, level.wall_ms_per_frame);
     }
-    // From 0, to a little past the worst error; 1 % when every level is exact.
-    figure.x.label = "error of the mean simulated frame time against the reference (%)";
-    figure.x.min = 0;
-    figure.x.max = worst > 0 ? worst * 1.6 : 1;
+    // Both axes logarithmic. An exact level (error 0, or below a millionth of
+    // a percent: summing order) sits on the error axis's floor, a decade below
+    // the least error shown, ticked "0".
+    const double floor = std::min(1e-3, std::isfinite(least) ? least / 10 : 1e-3);
+    const auto shown_error = [&](double error) { return error > 1e-6 && error > floor ? error : floor; };
+    figure.x.label = "error of the mean simulated frame time against the reference (%, log; 0: exact)";
+    figure.x.log = true;
+    figure.x.min = floor / 2;
+    // Room right of the worst point for its label (about 45 % of the axis).
+    const double data_decades = std::log10(std::max(worst, floor * 10) / figure.x.min);
+    figure.x.max = std::max(worst, floor * 10) * std::pow(10.0, 0.85 * data_decades);
+    for (const auto& tick : log_ticks(figure.x.min, figure.x.max)) {
+        // None far right of the worst error: that stretch is the labels'.
+        if (tick.first > floor * 3 && tick.first <= std::max(worst, floor * 10) * 10) figure.x.ticks.push_back(tick);
+    }
+    figure.x.ticks.insert(figure.x.ticks.begin(), {floor, "0"});
     figure.y.label = "simulator wall time per frame (ms, native; median over frames)";
     figure.y.log = true;
     std::tie(figure.y.min, figure.y.max) = padded_log_range(fastest, slowest, 2.5);
     // Labels a little right of their points, pushed apart upwards (in log
     // terms) where another label would run over them: one starting within
     // a label's length (about 45 % of the axis) to the left or right.
-    const double span = std::log10(figure.y.max / figure.y.min);
-    const double gap = 0.06 * span, near = 0.45 * figure.x.max;
+    const double span = std::log10(figure.y.max / figure.y.min), x_span = std::log10(figure.x.max / figure.x.min);
+    const double gap = 0.06 * span, near = 0.45 * x_span;
     std::vector<std::size_t> order(levels.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -38,9 +51,8 @@ Figure fidelity_figure(const std::vector<FidelityPoint>& levels, const std::stri
         const FidelityPoint& level = levels[order[k]];
         double at = std::log10(level.wall_ms_per_frame);
         for (std::size_t j = 0; j < k; ++j) {
-            if (std::fabs(levels[order[j]].error_percent - level.error_percent) < near) {
-                at = std::max(at, label_log[order[j]] + gap);
-            }
+            const double apart = std::log10(shown_error(levels[order[j]].error_percent) / shown_error(level.error_percent));
+            if (std::fabs(apart) < near) at = std::max(at, label_log[order[j]] + gap);
         }
         label_log[order[k]] = at;
     }
@@ -50,10 +62,11 @@ Figure fidelity_figure(const std::vector<FidelityPoint>& levels, const std::stri
         PlotSeries s;
         s.title = level.level;
         s.style = series_style(k, levels.size(), 0, 1);
-        SeriesPoint p{level.error_percent, level.wall_ms_per_frame};
-        p.label = level.level + ": " + short_number(level.wall_ms_per_frame) + " ms, error " +
-                  short_number(level.error_percent) + " %";
-        p.label_x = level.error_percent + 0.04 * figure.x.max;
+        const double x = shown_error(level.error_percent);
+        SeriesPoint p{x, level.wall_ms_per_frame};
+        p.label = level.level + ": " + short_number(level.wall_ms_per_frame) + " ms, " +
+                  (x == floor ? std::string("exact") : "error " + short_number(level.error_percent) + " %");
+        p.label_x = x * std::pow(10.0, 0.03 * x_span);
         p.label_y = std::pow(10.0, label_log[k]);
         highest = std::max(highest, p.label_y);
         s.points.push_back(p);
@@ -62,6 +75,8 @@ Figure fidelity_figure(const std::vector<FidelityPoint>& levels, const std::stri
     figure.y.max = std::max(figure.y.max, highest * std::pow(10.0, gap));
     figure.y.ticks = log_ticks(figure.y.min, figure.y.max);
     figure.title = "cdvp fidelity: simulator cost against timing error, one point per modelling level\n" + context;
+    figure.width = 1280;
+    figure.height = 800;
     return figure;
 }
 

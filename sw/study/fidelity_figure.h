@@ -16,8 +16,8 @@ struct FidelityPoint {
     double error_percent = 0;      // of the mean simulated frame time, >= 0
 };
 
-// One series per level. The error axis starts at 0 (an error is never
-// negative); the time axis is logarithmic; every label is placed so that
+// One series per level. Both axes are logarithmic; exact levels sit on the
+// error axis's floor, ticked 0; every label is placed so that
 // levels with the same error and nearly the same cost do not hide one
 // another. 'context' is the title's second line (board, scene, m, frames).
 Figure fidelity_figure(const std::vector<FidelityPoint>& levels, const std::string& context);

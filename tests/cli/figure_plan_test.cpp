@@ -208,27 +208,40 @@ TEST(FigurePlan, PhasesAreSharesOfTheFrameAndEveryBarNamesItsPoint) {
     }
 }
 
-TEST(FigurePlan, TheFidelityErrorAxisStartsAtZeroAndLabelsOfCoincidingLevelsStayApart) {
+TEST(FigurePlan, TheFidelityAxesAreLogExactLevelsSitOnTheFloorAndLabelsOfCoincidingLevelsStayApart) {
     const std::vector<FidelityPoint> levels{{"cycle, quantum 0", 3.38, 0}, {"fast, quantum 0", 0.140, 0},
                                             {"fast, quantum 100 ns", 0.142, 0}, {"fast, quantum 1 us", 0.141, 0},
-                                            {"fast, quantum 10 us", 0.153, 0}, {"fast, quantum 100 us", 0.147, 0}};
+                                            {"fast, quantum 10 us", 0.153, 0}, {"fast, quantum 100 us", 0.147, 0},
+                                            {"analytic, formula bus", 0.02, 0.35}, {"analytic", 0.021, 2e-9}};
     const Figure figure = fidelity_figure(levels, "adm-xrc-ii, spheres objects=500, m=24, 30 frames");
-    EXPECT_EQ(figure.x.min, 0) << "an error is never negative";
-    EXPECT_GT(figure.x.max, 0);
+    EXPECT_TRUE(figure.x.log);
     EXPECT_TRUE(figure.y.log);
+    ASSERT_FALSE(figure.x.ticks.empty());
+    EXPECT_EQ(figure.x.ticks.front().second, "0") << "the floor stands for exact";
+    const double floor = figure.x.ticks.front().first;
+    EXPECT_GT(floor, figure.x.min);
+    EXPECT_LT(floor, 0.35 / 5) << "a decade below the least error";
+    EXPECT_GT(figure.x.max, 0.35);
+    EXPECT_EQ(figure.series[0].points[0].x, floor);
+    EXPECT_EQ(figure.series[7].points[0].x, floor) << "below a millionth of a percent is summing order: exact";
+    EXPECT_EQ(figure.series[6].points[0].x, 0.35);
+    EXPECT_NE(figure.series[0].points[0].label.find("exact"), std::string::npos);
+    EXPECT_NE(figure.series[6].points[0].label.find("error 0.35 %"), std::string::npos) << figure.series[6].points[0].label;
     ASSERT_EQ(figure.series.size(), levels.size()) << "one series per level";
     std::set<SeriesStyle> styles;
     std::vector<double> label_logs;
     for (const PlotSeries& s : figure.series) {
         styles.insert(s.style);
         ASSERT_EQ(s.points.size(), 1u);
-        EXPECT_GE(s.points[0].x, 0);
-        label_logs.push_back(std::log10(s.points[0].label_y));
+        EXPECT_GE(s.points[0].x, figure.x.min);
+        // The exact levels share one error: their labels must not share a line.
+        if (s.points[0].x == floor) label_logs.push_back(std::log10(s.points[0].label_y));
         EXPECT_GE(s.points[0].label_y, figure.y.min);
         EXPECT_LE(s.points[0].label_y, figure.y.max);
     }
     EXPECT_EQ(styles.size(), levels.size());
     std::sort(label_logs.begin(), label_logs.end());
+    ASSERT_EQ(label_logs.size(), 7u);
     for (std::size_t k = 1; k < label_logs.size(); ++k) {
         EXPECT_GT(label_logs[k] - label_logs[k - 1], 0.03) << "two labels on one line";
     }

@@ -142,7 +142,9 @@ TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     // The engines' own names are the setting's, and each level but the analytic one runs the engine of its name.
     for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) EXPECT_STREQ(c.name, to_string(c.value));
     for (const ChoiceName<ModelLevel>& c : Choices<ModelLevel>::names) {
-        if (c.value == ModelLevel::kCycle || c.value == ModelLevel::kFast) EXPECT_STREQ(c.name, to_string(engine_of(c.value)));
+        if (c.value == ModelLevel::kCycle || c.value == ModelLevel::kFast) {
+            EXPECT_STREQ(c.name, to_string(engine_of(c.value)));
+        }
     }
 }
 
