@@ -203,12 +203,14 @@ PcieOutcome PcieTlpLink::dma(uint64_t bytes, Direction direction, double start_n
         // room in its completion buffer for all of its completions, which the
         // completer splits at RCB-aligned addresses.
         CreditPool credits(link_.completion_header_credits, link_.completion_data_credits);
-        std::deque<std::pair<double, uint64_t>> completions;  // ready at the completer, payload
+        // Ready at the completer, payload, DLLP bytes sent before it: the ACK of
+        // its request goes down the same wire (one a request, not coalesced).
+        std::deque<std::tuple<double, uint64_t, uint64_t>> completions;
         double local_free = start_ns;
         auto deliver_one = [&] {
-            const auto [ready, payload] = completions.front();
+            const auto [ready, payload, dllp] = completions.front();
             completions.pop_front();
-            const double received = down.send(ready, payload + kCompletionHeaderBytes + kTlpLinkBytes);
+            const double received = down.send(ready, dllp + payload + kCompletionHeaderBytes + kTlpLinkBytes);
             local_free = std::max(local_free, received) + payload / local;  // drained into the FPGA
             credits.give_back(local_free + link_.credit_return_ns, 1, data_credits(payload));
             ++out.completions;
@@ -230,7 +232,10 @@ PcieOutcome PcieTlpLink::dma(uint64_t bytes, Direction direction, double start_n
             out.credit_stall_ns += std::max(0.0, ready - std::max(start_ns, up.free_at()));
             credits.take(ready, headers, data);
             const double received = up.send(ready, link_.tlp_header_bytes + kTlpLinkBytes);
-            for (auto& piece : pieces) completions.emplace_back(received + pcie_.read_round_trip_ns, piece.second);
+            for (const auto& piece : pieces) {
+                completions.emplace_back(received + pcie_.read_round_trip_ns, piece.second,
+                                         &piece == &pieces.front() ? kDllpBytes : 0);
+            }
             ++out.requests;
             at += request;
         }
