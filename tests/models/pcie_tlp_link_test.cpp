@@ -144,7 +144,12 @@ TEST(PcieTlpLink, RefusesBadValuesNamingTheSetting) {
     }
     link = PcieLinkConfig{};
     link.posted_data_credits = 8;
-    EXPECT_THROW(PcieTlpLink(PcieConfig{}, link, BusLoad{}), std::invalid_argument) << "less than one max payload";
+    try {
+        PcieTlpLink(PcieConfig{}, link, BusLoad{});
+        FAIL() << "accepted less than one max payload of credits";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "bus.posted_data_credits: expected at least 16 (one max payload of 256 bytes), got 8");
+    }
 }
 
 }  // namespace
