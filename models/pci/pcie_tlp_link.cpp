@@ -139,15 +139,20 @@ void PcieLinkConfig::validate(const PcieConfig& pcie) const {
     require(tlp_header_bytes == 12 || tlp_header_bytes == 16, "bus.tlp_header_bytes: expected 12 or 16", tlp_header_bytes);
     require(read_completion_boundary_bytes == 64 || read_completion_boundary_bytes == 128,
             "bus.read_completion_boundary_bytes: expected 64 or 128", read_completion_boundary_bytes);
-    require(posted_header_credits >= 1, "bus.posted_header_credits: expected at least 1", posted_header_credits);
-    require(posted_data_credits >= data_credits(pcie.max_payload_bytes),
-            "bus.posted_data_credits: expected at least one max payload (max_payload_bytes / 16)", posted_data_credits);
-    require(completion_header_credits >= pcie.max_read_request_bytes / read_completion_boundary_bytes,
-            "bus.completion_header_credits: expected at least the completions of one read request "
-            "(max_read_request_bytes / read_completion_boundary_bytes)", completion_header_credits);
-    require(completion_data_credits >= data_credits(pcie.max_read_request_bytes),
-            "bus.completion_data_credits: expected at least one read request (max_read_request_bytes / 16)",
-            completion_data_credits);
+    // A pool must hold the largest TLP (or read) that needs it, or the link would wait forever.
+    auto at_least = [](const char* key, uint64_t got, uint64_t least, const std::string& what) {
+        if (got >= least) return;
+        throw std::invalid_argument(std::string(key) + ": expected at least " + std::to_string(least) + " (" + what +
+                                    "), got " + std::to_string(got));
+    };
+    const uint64_t completions = pcie.max_read_request_bytes / read_completion_boundary_bytes;
+    at_least("bus.posted_header_credits", posted_header_credits, 1, "one write");
+    at_least("bus.posted_data_credits", posted_data_credits, data_credits(pcie.max_payload_bytes),
+             "one max payload of " + std::to_string(pcie.max_payload_bytes) + " bytes");
+    at_least("bus.completion_header_credits", completion_header_credits, completions,
+             "the completions of one " + std::to_string(pcie.max_read_request_bytes) + "-byte read");
+    at_least("bus.completion_data_credits", completion_data_credits, data_credits(pcie.max_read_request_bytes),
+             "one " + std::to_string(pcie.max_read_request_bytes) + "-byte read");
     require(credit_return_ns >= 0 && credit_return_ns <= 1e6, "bus.credit_return_ns: expected 0 to 1e6", credit_return_ns);
     require(bit_error_rate >= 0 && bit_error_rate <= 1e-4, "bus.bit_error_rate: expected 0 to 1e-4", bit_error_rate);
     require(replay_timer_ns >= 0 && replay_timer_ns <= 1e6, "bus.replay_timer_ns: expected 0 to 1e6", replay_timer_ns);
@@ -203,12 +208,14 @@ PcieOutcome PcieTlpLink::dma(uint64_t bytes, Direction direction, double start_n
         // room in its completion buffer for all of its completions, which the
         // completer splits at RCB-aligned addresses.
         CreditPool credits(link_.completion_header_credits, link_.completion_data_credits);
-        std::deque<std::pair<double, uint64_t>> completions;  // ready at the completer, payload
+        // Ready at the completer, payload, DLLP bytes sent before it: the ACK of
+        // its request goes down the same wire (one a request, not coalesced).
+        std::deque<std::tuple<double, uint64_t, uint64_t>> completions;
         double local_free = start_ns;
         auto deliver_one = [&] {
-            const auto [ready, payload] = completions.front();
+            const auto [ready, payload, dllp] = completions.front();
             completions.pop_front();
-            const double received = down.send(ready, payload + kCompletionHeaderBytes + kTlpLinkBytes);
+            const double received = down.send(ready, dllp + payload + kCompletionHeaderBytes + kTlpLinkBytes);
             local_free = std::max(local_free, received) + payload / local;  // drained into the FPGA
             credits.give_back(local_free + link_.credit_return_ns, 1, data_credits(payload));
             ++out.completions;
@@ -230,7 +237,10 @@ PcieOutcome PcieTlpLink::dma(uint64_t bytes, Direction direction, double start_n
             out.credit_stall_ns += std::max(0.0, ready - std::max(start_ns, up.free_at()));
             credits.take(ready, headers, data);
             const double received = up.send(ready, link_.tlp_header_bytes + kTlpLinkBytes);
-            for (auto& piece : pieces) completions.emplace_back(received + pcie_.read_round_trip_ns, piece.second);
+            for (const auto& piece : pieces) {
+                completions.emplace_back(received + pcie_.read_round_trip_ns, piece.second,
+                                         &piece == &pieces.front() ? kDllpBytes : 0);
+            }
             ++out.requests;
             at += request;
         }
