@@ -81,7 +81,9 @@ TEST(PciTransactionTiming, CostRisesWithBackgroundLoad) {
             }
             // A PIO read waits for at most one cut tenure: 64 samples of a random
             // load are too few to order neighbouring loads, so only periodic ones are held to it.
-            if (arrivals == LoadArrivals::kPeriodic) EXPECT_GE(bus.pio_read_ns(), previous_pio) << fraction;
+            if (arrivals == LoadArrivals::kPeriodic) {
+                EXPECT_GE(bus.pio_read_ns(), previous_pio) << fraction;
+            }
             previous_pio = bus.pio_read_ns();
         }
         BusLoad heavy = load_of(0.6);
