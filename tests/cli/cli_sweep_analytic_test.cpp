@@ -6,22 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "sw/study/sweep_csv.h"
 #include "tests/cli/cli_support.h"
+#include "tests/cli/sweep_rows.h"
 
 namespace cdvp::test {
 namespace {
 
-std::vector<std::map<std::string, std::string>> rows_of(const std::string& csv) {
-    const auto lines = parse_csv(csv, "sweep.csv");
-    std::vector<std::map<std::string, std::string>> rows;
-    for (std::size_t k = 1; k < lines.size(); ++k) {
-        std::map<std::string, std::string> row;
-        for (std::size_t c = 0; c < lines[0].size() && c < lines[k].size(); ++c) row[lines[0][c]] = lines[k][c];
-        rows.push_back(row);
-    }
-    return rows;
-}
+std::vector<std::map<std::string, std::string>> rows_of(const std::string& csv) { return sweep_rows(csv, false); }
 
 TEST_F(Cli, SweepAnalyticPointsMatchTheFastEnginesPairsAndExactPhases) {
     const Result r = run("sweep --board adm-xrc-ii --fidelity fast,analytic --set m=1,8 --set objects=40,300 --frames 2 "

@@ -13,6 +13,7 @@
 #include "sw/study/sweep_csv.h"
 #include "sw/study/sweep_table.h"
 #include "tests/cli/cli_support.h"
+#include "tests/cli/sweep_rows.h"
 
 namespace cdvp::test {
 namespace {
@@ -21,18 +22,7 @@ namespace {
 const std::string kGrid = "sweep --board adm-xrc-ii --set m=1,2 --set objects=20:40:x2 --frames 2 --baseline soa ";
 
 // The CSV as rows of column -> value, timing columns left out.
-std::vector<std::map<std::string, std::string>> untimed_rows(const std::string& csv) {
-    const auto lines = parse_csv(csv, "sweep.csv");
-    std::vector<std::map<std::string, std::string>> rows;
-    for (std::size_t k = 1; k < lines.size(); ++k) {
-        std::map<std::string, std::string> row;
-        for (std::size_t c = 0; c < lines[0].size() && c < lines[k].size(); ++c) {
-            if (!is_measured_column(lines[0][c])) row[lines[0][c]] = lines[k][c];
-        }
-        rows.push_back(row);
-    }
-    return rows;
-}
+std::vector<std::map<std::string, std::string>> untimed_rows(const std::string& csv) { return sweep_rows(csv, true); }
 
 std::vector<std::string> leftovers(const fs::path& dir) {
     std::vector<std::string> found;
