@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/address_generator/sweep_schedule.h"
 #include "platform/driver/quantiser.h"
 
 namespace cdvp {
@@ -34,7 +35,9 @@ AnalyticPlatform::AnalyticPlatform(const PlatformConfig& config, uint32_t capaci
       format_(config.board.format),
       bus_(bus_or_ideal(config.bus)),
       frame_(config.driver, *bus_, analytic_board(config.board)),
-      finder_(config.board.format, config.pair_budget) {
+      finder_(config.board.format, config.pair_budget),
+      m_(config.board.m),
+      tiles_(config.board.tiles) {
     if (!config.faults.empty()) throw std::invalid_argument("the analytic level has no engine to inject faults into");
 }
 
@@ -66,6 +69,10 @@ const FrameResult* AnalyticPlatform::try_run_frame(const std::vector<FloatBox>& 
         fault.message = e.what();
         fault.pairs_found = e.found();
         return nullptr;
+    }
+    // In the order the board finds them, as the engines give them.
+    if (tiles_.tiled() && objects > tiles_.boxes) {
+        SweepSchedule(m_, tiles_, objects).order_by_block(result_.pairs, by_block_, block_ends_);
     }
     result_.phases = frame_.estimate(objects, result_.pairs.size());
     return &result_;

@@ -45,7 +45,11 @@ private:
     std::shared_ptr<const BusTiming> bus_;
     AnalyticFrame frame_;
     PairFinder finder_;
+    uint32_t m_;
+    TileConfig tiles_;
     std::vector<uint32_t> words_[kCoordinates];
+    PairList by_block_;                 // scratch: a tiled board's order
+    std::vector<uint64_t> block_ends_;
     FrameResult result_;
 };
 

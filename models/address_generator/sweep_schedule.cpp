@@ -149,4 +149,13 @@ ScheduleWalker::Slot ScheduleWalker::next(uint64_t ready_blocks) {
     return step([ready_blocks](const SweepSchedule::Block&, uint64_t k) { return k < ready_blocks; });
 }
 
+void SweepSchedule::order_by_block(PairList& pairs, PairList& scratch, std::vector<uint64_t>& block_ends) const {
+    block_ends.assign(blocks().size() + 1, 0);
+    for (const IndexPair& p : pairs) ++block_ends[block_of(p.first, p.second) + 1];
+    for (std::size_t k = 1; k < block_ends.size(); ++k) block_ends[k] += block_ends[k - 1];
+    scratch.resize(pairs.size());
+    for (const IndexPair& p : pairs) scratch[block_ends[block_of(p.first, p.second)]++] = p;
+    pairs.swap(scratch);
+}
+
 }  // namespace cdvp

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "models/address_generator/port_window.h"
+#include "models/common/aabb.h"
 
 #include <cstdint>
 #include <vector>
@@ -59,6 +60,10 @@ public:
 
     // Block of the pair (i, j), i < j: its index in blocks().
     uint64_t block_of(uint32_t i, uint32_t j) const;
+    // Pairs in BoardCore's (i, j) order put in the order this schedule finds
+    // them: a stable counting sort by block, O(pairs + blocks). The scratch
+    // vectors are the caller's, kept between frames.
+    void order_by_block(PairList& pairs, PairList& scratch, std::vector<uint64_t>& block_ends) const;
     // The slot that compares the pair (i, j), i < j < objects.
     uint64_t pair_slot(uint32_t i, uint32_t j) const;
 

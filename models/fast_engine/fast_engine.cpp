@@ -16,13 +16,7 @@ void FastEngine::start(uint32_t objects, const CoordinateWords& words) {
 void FastEngine::resume() { timeline_.resume(); }
 
 void FastEngine::order_by_block(uint32_t objects) {
-    const SweepSchedule schedule(config_.m, config_.tiles, objects);
-    block_ends_.assign(schedule.blocks().size() + 1, 0);
-    for (const IndexPair& p : pairs_) ++block_ends_[schedule.block_of(p.first, p.second) + 1];
-    for (std::size_t k = 1; k < block_ends_.size(); ++k) block_ends_[k] += block_ends_[k - 1];
-    by_block_.resize(pairs_.size());
-    for (const IndexPair& p : pairs_) by_block_[block_ends_[schedule.block_of(p.first, p.second)]++] = p;
-    pairs_.swap(by_block_);
+    SweepSchedule(config_.m, config_.tiles, objects).order_by_block(pairs_, by_block_, block_ends_);
 }
 
 }  // namespace cdvp
