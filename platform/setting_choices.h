@@ -74,6 +74,21 @@ template <>
 struct Choices<WaitMode> {
     static constexpr ChoiceName<WaitMode> names[] = {{WaitMode::kIrq, "irq"}, {WaitMode::kPoll, "poll"}};
 };
+template <>
+struct Choices<UploadMode> {
+    static constexpr ChoiceName<UploadMode> names[] = {
+        {UploadMode::kFull, "full"}, {UploadMode::kDelta, "delta"}, {UploadMode::kAuto, "auto"}};
+};
+template <>
+struct Choices<PairFormat> {
+    static constexpr ChoiceName<PairFormat> names[] = {
+        {PairFormat::kList, "list"}, {PairFormat::kCounted, "counted"}, {PairFormat::kBitmap, "bitmap"}};
+};
+template <>
+struct Choices<InterruptPolicy> {
+    static constexpr ChoiceName<InterruptPolicy> names[] = {{InterruptPolicy::kEvery, "every"},
+                                                            {InterruptPolicy::kBoard, "board"}};
+};
 // The board's engine; the model's to_string(Fidelity) gives the same names.
 template <>
 struct Choices<Fidelity> {

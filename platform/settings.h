@@ -41,6 +41,7 @@ struct SceneSettings {
     uint64_t objects = 500;
     uint64_t frames = 1;
     uint64_t seed = 1;
+    double moving_fraction = 1.0;  // SpheresConfig::moving_fraction
 };
 
 struct RunSettings {

@@ -417,6 +417,29 @@ std::vector<Setting> host_and_run_settings() {
              "assumption: twice the worst case"),
         real("driver.timeout_floor_ns", "ns", 1000, 1e9, member(&S::driver, &D::timeout_floor_ns),
              "added to every wait's bound", "assumption: 100 us"),
+        flag(choice<UploadMode>("driver.upload", member(&S::driver, &D::upload),
+                                "how boxes reach the board: all six arrays each frame; only the boxes whose words "
+                                "changed, as 28-byte records (index and six words) of the board's delta stream; or "
+                                "per frame whichever the bus formula says is quicker",
+                                "the paper's driver uploads every box (docs/communication.md)"),
+             "upload", "full|delta|auto"),
+        flag(choice<PairFormat>("driver.pair_format", member(&S::driver, &D::pair_format),
+                                "how the pair buffer reads back: 8 bytes a pair; per row its index, count and "
+                                "partners (4 bytes a pair, 8 a row); or a bitmap of the rows the pairs span "
+                                "(N/8 bytes a row, sweeps of up to 11,584 boxes)",
+                                "the paper's board returns a list of pairs (docs/communication.md)"),
+             "pair-format", "list|counted|bitmap"),
+        flag(choice<InterruptPolicy>("driver.interrupts", member(&S::driver, &D::interrupts),
+                                     "with --wait irq, which completions interrupt: every DMA's and the board's, or "
+                                     "only the board's (the DMA completions polled)",
+                                     "the paper's driver takes every interrupt"),
+             "interrupts", "every|board"),
+        real("driver.poll_backoff", "x", 1, 16, member(&S::driver, &D::poll_backoff),
+             "polling back-off: each gap between two polls is this x the one before (from driver.poll_gap_ns, or a "
+             "board period), up to driver.poll_gap_max_ns; 1: a constant gap",
+             "assumption: a constant gap"),
+        real("driver.poll_gap_max_ns", "ns", 0, 1e9, member(&S::driver, &D::poll_gap_max_ns),
+             "the largest gap between two polls under back-off", "assumption: 100 us, a tenth of a 1 ms frame"),
         flag(count("scene.objects", "objects", 0, address_map::kMaxObjects, member(&S::scene, &SceneSettings::objects),
                    "objects in a generated scene: spheres, or the bodies a Bullet scene is built around (a Bullet "
                    "scene's default is its own: cdvp bullet --help)",
@@ -428,6 +451,11 @@ std::vector<Setting> host_and_run_settings() {
         flag(count("scene.seed", "", 0, UINT64_MAX, member(&S::scene, &SceneSettings::seed),
                    "a generated scene's random seed (same seed, same scene)", "any fixed seed"),
              "seed", "S"),
+        flag(real("scene.moving_fraction", "", 0, 1, member(&S::scene, &SceneSettings::moving_fraction),
+                  "the share of a spheres scene's spheres that move; the rest are static bodies the moving ones "
+                  "bounce off (a physics scene's level geometry)",
+                  "1: every sphere moves, as in the paper"),
+             "moving", "F"),
         flag(choice<Transfer>("run.transfer", member(&S::run, &RunSettings::transfer),
                     "how the driver moves boxes and pairs: bridge DMA or programmed I/O",
                     "the paper's driver uses the bridge's DMA"),

@@ -31,7 +31,7 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
       board_("board", config.board, capacity, config.fidelity, config.pair_budget),
       bridge_("bridge", bus_or_ideal(config.bus)),
       bus_("pci", bus_or_ideal(config.bus)),
-      memory_("memory", BoardDriver::host_memory_bytes(capacity, config.board.collector.buffer_depth)),
+      memory_("memory", BoardDriver::host_memory_bytes(capacity, config.board.collector.buffer_depth, config.driver)),
       cpu_("cpu", memory_, bus_.interrupt_event(), board_.period(), driver_for(config), bus_or_ideal(config.bus),
            sc_time(config.quantum_ns, SC_NS)),
       fpga_irq_("fpga_irq"),

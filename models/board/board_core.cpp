@@ -63,6 +63,17 @@ void BoardCore::declare_registers() {
                    constant(tiles.tiled() ? (tiles.load_latency_cycles & R::kTileTimingLatencyMask) |
                                                 tiles.cycles_per_box << R::kTileTimingCyclesShift
                                           : 0));
+    registers_.add("PAIR_FORMAT", R::kPairFormat, A::kReadWrite, [this] { return uint32_t{static_cast<uint8_t>(pair_format_)}; },
+                   [this](uint32_t v) {
+                       if (status().busy || v >= kPairFormats) {
+                           raise_error(status().busy ? R::kWriteWhileBusy : R::kBadPairFormat);
+                           return RegisterResult::kRefused;
+                       }
+                       pair_format_ = static_cast<PairFormat>(v);
+                       return RegisterResult::kDone;
+                   });
+    registers_.add("PAIR_WORDS", R::kPairWords, A::kReadOnly, [this] { return static_cast<uint32_t>(window_words()); });
+    registers_.add("DELTA_RECORDS", R::kDeltaRecords, A::kReadOnly, [this] { return delta_records_; });
 }
 
 bool BoardCore::read_register(uint32_t offset, uint32_t& value) {
@@ -98,6 +109,27 @@ RegisterResult BoardCore::write_coordinates(Coordinate coordinate, uint32_t firs
     return RegisterResult::kDone;
 }
 
+RegisterResult BoardCore::write_delta(const unsigned char* words, uint32_t count) {
+    if (status().busy) {
+        raise_error(ControlRegisters::kWriteWhileBusy);
+        return RegisterResult::kRefused;
+    }
+    const uint32_t mask = config_.format.word_mask();
+    for (uint32_t k = 0; k < count; ++k) {
+        std::memcpy(&delta_record_[delta_filled_], words + 4 * std::size_t{k}, 4);
+        if (++delta_filled_ < address_map::kDeltaRecordWords) continue;
+        delta_filled_ = 0;
+        const uint32_t index = delta_record_[0];
+        if (index >= capacity_) {
+            raise_error(ControlRegisters::kDeltaIndex);
+            continue;
+        }
+        for (uint32_t c = 0; c < kCoordinates; ++c) store_[c][index] = delta_record_[1 + c] & mask;
+        ++delta_records_;
+    }
+    return RegisterResult::kDone;
+}
+
 uint32_t BoardCore::Status::bits() const {
     using R = ControlRegisters;
     return (busy ? uint32_t{R::kBusy} : 0u) | (done ? uint32_t{R::kDone} : 0u) |
@@ -113,9 +145,30 @@ SweepCounters BoardCore::counters() { return running() ? engine_->counters_after
 
 uint32_t BoardCore::buffered_pairs() { return counters().buffered; }
 
-void BoardCore::copy_buffered_words(uint64_t first, uint64_t count, unsigned char* out) {
+const std::vector<uint32_t>& BoardCore::encoded_window() {
+    const uint32_t pairs = buffered_pairs();
+    const EncodedKey key{segments_started_, pairs, object_count_, pair_format_};
+    if (!encoded_key_ || !(*encoded_key_ == key)) {
+        encoded_.clear();
+        if (pairs > 0) encode_pairs(pair_format_, &engine_->buffer_entry(0), pairs, object_count_, encoded_);
+        encoded_key_ = key;
+    }
+    return encoded_;
+}
+
+uint64_t BoardCore::window_words() {
+    if (pair_format_ == PairFormat::kList) return 2 * uint64_t{buffered_pairs()};
+    return encoded_window().size();
+}
+
+void BoardCore::copy_window_words(uint64_t first, uint64_t count, unsigned char* out) {
     static_assert(sizeof(IndexPair) == 8, "a pair is two words, first then second");
     if (count == 0) return;
+    if (pair_format_ != PairFormat::kList) {
+        std::memcpy(out, encoded_window().data() + first, 4 * count);
+        return;
+    }
+    // The list is the buffer itself: no copy of it.
     const auto* pairs = reinterpret_cast<const unsigned char*>(&engine_->buffer_entry(static_cast<uint32_t>(first / 2)));
     std::memcpy(out, pairs + 4 * (first % 2), 4 * count);
 }
@@ -145,6 +198,7 @@ void BoardCore::abort() {
         engine_->abort(edges_);
     }
     phase_ = SweepState::kIdle;
+    delta_filled_ = 0;  // a record cut off by the abort is dropped
     error_ = irq_pending_ = false;
     error_cause_ = ControlRegisters::kNoError;
 }
@@ -152,10 +206,23 @@ void BoardCore::abort() {
 // START is refused (error bit) while a sweep is under way or when the object
 // count exceeds the memories' depth; the previous results stay readable then.
 void BoardCore::start() {
+    using R = ControlRegisters;
     if (status().busy || object_count_ > capacity_) {
-        raise_error(status().busy ? ControlRegisters::kStartWhileBusy : ControlRegisters::kTooManyObjects);
+        raise_error(status().busy ? R::kStartWhileBusy : R::kTooManyObjects);
         return;
     }
+    // The memories must hold whole records, and the window must hold the
+    // buffer's encoding at its fullest.
+    if (delta_filled_ != 0) {
+        raise_error(R::kDeltaIncomplete);
+        return;
+    }
+    const uint64_t worst = worst_encoded_words(pair_format_, config_.collector.buffer_depth, object_count_);
+    if (worst > address_map::kPairBufferSize / 4) {
+        raise_error(R::kPairWindowFull);
+        return;
+    }
+    delta_records_ = 0;
     engine_->start(store_, object_count_);
     edges_ = 0;
     error_ = irq_pending_ = false;

@@ -3,12 +3,16 @@
 #pragma once
 
 #include <cstdint>
+#include <array>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "models/board_spec/board_config.h"
 #include "models/board_spec/board_engine.h"
 #include "models/common/register_bank.h"
 #include "models/control_registers/control_registers.h"
+#include "models/pair_collector/pair_format.h"
 
 namespace cdvp {
 
@@ -41,12 +45,19 @@ public:
     // on: a burst's worth, checked once; refused whole while busy.
     RegisterResult write_coordinates(Coordinate coordinate, uint32_t first, const unsigned char* words, uint32_t count);
     uint32_t read_coordinate(Coordinate coordinate, uint32_t index) const { return store_[coordinate][index]; }
+    // `count` words of the delta stream (little-endian): they complete
+    // records (address_map::kDeltaRecordWords words each) in order, and each
+    // whole record is written into the memories. Refused whole while busy; a
+    // record whose index is past the capacity is dropped with ERROR.
+    RegisterResult write_delta(const unsigned char* words, uint32_t count);
     // The pair buffer as the host reads it now.
     uint32_t buffered_pairs();
     const IndexPair& buffered_pair(uint32_t index) { return engine_->buffer_entry(index); }
-    // The buffer as the host's words (first, second of each pair, in host
-    // order): `count` words from word `first` on, all within the buffered pairs.
-    void copy_buffered_words(uint64_t first, uint64_t count, unsigned char* out);
+    PairFormat pair_format() const { return pair_format_; }
+    // The pair buffer window: the buffered pairs in PAIR_FORMAT, as host
+    // words; `count` words from word `first` on, all within window_words().
+    uint64_t window_words();
+    void copy_window_words(uint64_t first, uint64_t count, unsigned char* out);
     // Reports an error status (ERROR with this cause, and the interrupt);
     // a sweep under way goes on.
     void raise_error(ControlRegisters::BoardError cause);
@@ -82,6 +93,9 @@ private:
     void start();
     void resume();
     void abort();
+    // The window's encoding of the buffer now (counted and bitmap formats),
+    // re-encoded only when the buffer or the format changed.
+    const std::vector<uint32_t>& encoded_window();
 
     BoardConfig config_;
     uint32_t capacity_;
@@ -94,6 +108,21 @@ private:
     bool error_ = false;
     uint32_t error_cause_ = ControlRegisters::kNoError;
     bool irq_pending_ = false;
+    PairFormat pair_format_ = PairFormat::kList;
+    // The delta stream's record being assembled, and the records written.
+    std::array<uint32_t, address_map::kDeltaRecordWords> delta_record_{};
+    uint32_t delta_filled_ = 0;
+    uint32_t delta_records_ = 0;
+    struct EncodedKey {
+        uint64_t segment = 0, pairs = 0;
+        uint32_t objects = 0;
+        PairFormat format = PairFormat::kList;
+        bool operator==(const EncodedKey& o) const {
+            return segment == o.segment && pairs == o.pairs && objects == o.objects && format == o.format;
+        }
+    };
+    std::optional<EncodedKey> encoded_key_;
+    std::vector<uint32_t> encoded_;
     uint64_t segments_started_ = 0;
     uint64_t edges_ = 0;
     // The counters while the clock is stopped (paused, done, aborted).

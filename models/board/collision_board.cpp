@@ -179,10 +179,14 @@ tlm::tlm_response_status CollisionBoard::access(tlm::tlm_command command, uint64
     if (range_within(address, length, am::kPairBuffer, am::kPairBufferSize)) {
         if (write) return tlm::TLM_COMMAND_ERROR_RESPONSE;
         const uint64_t first = (address - am::kPairBuffer) / 4;
-        // Only the pairs the buffer holds: reading more is an address error.
-        if ((first + words + 1) / 2 > core_.buffered_pairs()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
-        core_.copy_buffered_words(first, words, data);
+        // Only the words the buffer's pairs encode to: reading more is an address error.
+        if (first + words > core_.window_words()) return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+        core_.copy_window_words(first, words, data);
         return tlm::TLM_OK_RESPONSE;
+    }
+    if (range_within(address, length, am::kDeltaStream, am::kDeltaStreamSize)) {
+        if (!write) return tlm::TLM_COMMAND_ERROR_RESPONSE;
+        return response_for(core_.write_delta(data, static_cast<uint32_t>(words)));
     }
     return tlm::TLM_ADDRESS_ERROR_RESPONSE;
 }

@@ -17,6 +17,14 @@ constexpr uint64_t kWindowSize = 0x0100'0000;
 // low word, second in the high word.
 constexpr uint64_t kPairBuffer = 0x0700'0000;
 constexpr uint64_t kPairBufferSize = 0x0100'0000;
+// Delta stream, write-only: records of kDeltaRecordWords words (box index,
+// then its six coordinates in Coordinate order), written in order; the
+// board writes each whole record into all six memories (docs/communication.md).
+// The offset within the window is ignored: the window is a port, as a FIFO
+// is, so a record may be split across bursts.
+constexpr uint64_t kDeltaStream = 0x0900'0000;
+constexpr uint64_t kDeltaStreamSize = 0x0100'0000;
+constexpr uint32_t kDeltaRecordWords = 7;
 // The address map limits a board to 4M boxes and 2M buffered pairs.
 constexpr uint32_t kMaxObjects = kWindowSize / 4;
 constexpr uint32_t kMaxBufferedPairs = kPairBufferSize / 8;
@@ -46,6 +54,9 @@ struct ControlRegisters {
         kFormat = 0x3C,           // ro: the comparators' number format: 0 float32, K fixedK (NumberFormat)
         kTileBoxes = 0x40,        // ro: boxes per tile when the boxes sit in SSRAM; 0: block RAM holds them all
         kTileTiming = 0x44,       // ro: tiled boards: bits 15:0 SSRAM load latency, 31:16 cycles per box (kTileTiming*)
+        kPairFormat = 0x48,       // rw: how the pair buffer window reads (PairFormat: 0 list, 1 counted, 2 bitmap)
+        kPairWords = 0x4C,        // ro: words the pair buffer window holds now, in PAIR_FORMAT
+        kDeltaRecords = 0x50,     // ro: delta records written into the memories since the last START
     };
     // ABORT stops any sweep and clears every status bit: the board is idle,
     // ready for a new START (a driver's recovery after a fault).
@@ -59,8 +70,12 @@ struct ControlRegisters {
         kResumeNotPaused = 3,   // RESUME without an overflow pause
         kWriteWhileBusy = 4,    // OBJECT_COUNT or a coordinate written during a sweep
         kInjectedError = 5,     // an injected board-error fault (docs/faults.md)
+        kDeltaIndex = 6,        // a delta record's box index at or above the capacity
+        kDeltaIncomplete = 7,   // START with a delta record partly written
+        kBadPairFormat = 8,     // PAIR_FORMAT written with an unknown format
+        kPairWindowFull = 9,    // the buffered pairs' encoding outgrows the pair buffer window (a bitmap of too many boxes)
     };
-    static constexpr uint32_t kIdValue = 0xCD7B'0001;  // "cdvp", register map version 1
+    static constexpr uint32_t kIdValue = 0xCD7B'0002;  // "cdvp", register map version 2
     // TILE_TIMING's fields.
     static constexpr uint32_t kTileTimingLatencyMask = 0xFFFF;
     static constexpr uint32_t kTileTimingCyclesShift = 16;
@@ -73,6 +88,10 @@ struct ControlRegisters {
             case kResumeNotPaused: return "RESUME without an overflow pause";
             case kWriteWhileBusy: return "a write to OBJECT_COUNT or a coordinate memory during a sweep";
             case kInjectedError: return "the board reported an error (injected board-error)";
+            case kDeltaIndex: return "a delta record's box index at or above the capacity";
+            case kDeltaIncomplete: return "START with a delta record partly written";
+            case kBadPairFormat: return "PAIR_FORMAT written with an unknown format";
+            case kPairWindowFull: return "the pairs' encoding outgrew the pair buffer window";
             default: return "unknown cause";
         }
     }

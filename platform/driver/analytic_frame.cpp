@@ -115,6 +115,9 @@ FramePhases AnalyticFrame::estimate(uint32_t objects, uint64_t pairs) const {
     phases.compute_cycles = cycles;
     phases.stall_cycles = stalls;
     phases.overflow_pauses = static_cast<uint32_t>(pauses);
+    phases.boxes_sent = objects;
+    phases.upload_bytes = uint64_t{24} * objects;
+    phases.readback_bytes = 8 * pairs;
     return phases;
 }
 

@@ -1,6 +1,8 @@
 #include "platform/driver/board_driver.h"
 
+#include <algorithm>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -17,13 +19,26 @@ using R = ControlRegisters;
 using D = DmaRegisters;
 
 namespace {
-// Host RAM layout: the six coordinate arrays, the pair area, then the DMA
-// descriptors of the upload chain.
+// Host RAM layout: the six coordinate arrays, the pair area, the delta
+// records (when deltas may be uploaded), then the DMA descriptors.
 uint64_t coordinate_area(uint32_t capacity, uint32_t c) { return uint64_t{c} * 4 * capacity; }
-uint64_t pair_area(uint32_t capacity) { return (uint64_t{24} * capacity + 7) / 8 * 8; }
-uint64_t descriptor_area(uint32_t capacity, uint32_t buffer_depth) {
-    return pair_area(capacity) + uint64_t{8} * buffer_depth;
+uint64_t round8(uint64_t bytes) { return (bytes + 7) / 8 * 8; }
+uint64_t pair_area_at(uint32_t capacity) { return round8(uint64_t{24} * capacity); }
+// The pair words of a full buffer in the format, never more than the window.
+uint64_t pair_area_bytes(uint32_t capacity, uint32_t buffer_depth, const DriverConfig& config) {
+    const uint64_t words = worst_encoded_words(config.pair_format, buffer_depth, capacity);
+    return round8(std::min<uint64_t>(4 * words, address_map::kPairBufferSize));
 }
+uint64_t delta_area_bytes(uint32_t capacity, const DriverConfig& config) {
+    return config.upload == UploadMode::kFull ? 0 : round8(uint64_t{4} * address_map::kDeltaRecordWords * capacity);
+}
+uint64_t descriptor_area_at(uint32_t capacity, uint32_t buffer_depth, const DriverConfig& config) {
+    return pair_area_at(capacity) + pair_area_bytes(capacity, buffer_depth, config) + delta_area_bytes(capacity, config);
+}
+// A chain of the six arrays, or of the delta stream in window-sized pieces
+// (at most 7 for 4M boxes).
+constexpr uint32_t kChainDescriptors = 8;
+constexpr uint64_t kDeltaRecordBytes = 4 * address_map::kDeltaRecordWords;
 
 std::string hex(uint64_t value) {
     char text[24];
@@ -45,9 +60,13 @@ std::string microseconds(SimTime t) {
 
 }  // namespace
 
-uint64_t BoardDriver::host_memory_bytes(uint32_t capacity, uint32_t buffer_depth) {
-    return descriptor_area(capacity, buffer_depth) + kCoordinates * sizeof(DmaDescriptor);
+uint64_t BoardDriver::host_memory_bytes(uint32_t capacity, uint32_t buffer_depth, const DriverConfig& config) {
+    return descriptor_area_at(capacity, buffer_depth, config) + kChainDescriptors * sizeof(DmaDescriptor);
 }
+
+uint64_t BoardDriver::pair_area() const { return pair_area_at(capacity_); }
+uint64_t BoardDriver::delta_area() const { return pair_area() + pair_area_bytes(capacity_, buffer_depth_, config_); }
+uint64_t BoardDriver::descriptor_area() const { return descriptor_area_at(capacity_, buffer_depth_, config_); }
 
 BoardDriver::BoardDriver(HostPort& port, SimTime period_fs, const DriverConfig& config,
                          std::shared_ptr<const BusTiming> bus)
@@ -97,9 +116,15 @@ void BoardDriver::open() {
         tiles.cycles_per_box = timing >> R::kTileTimingCyclesShift;
     }
     time_.emplace(config_, *bus_, period_, parallelism_, buffer_depth_, tiles);
-    if (port_.memory_size() < host_memory_bytes(capacity_, buffer_depth_)) {
+    if (port_.memory_size() < host_memory_bytes(capacity_, buffer_depth_, config_)) {
         throw std::runtime_error("host memory too small for the board's capacity and pair buffer");
     }
+    // The pair format stays set across frames and aborts.
+    write(R::kPairFormat, static_cast<uint32_t>(config_.pair_format));
+    if (read(R::kPairFormat) != static_cast<uint32_t>(config_.pair_format)) {
+        throw std::runtime_error("the board refused pair format " + std::to_string(static_cast<int>(config_.pair_format)));
+    }
+    shadow_valid_ = false;
 }
 
 void BoardDriver::charge(Phase phase) {
@@ -113,10 +138,17 @@ void BoardDriver::cpu_work(double ns) {
 }
 
 // Between two polls: the configured gap, and never no time at all (on an
-// untimed bus a poll costs nothing, and the loop would not let time pass).
-void BoardDriver::poll_pause() {
+// untimed bus a poll costs nothing, and the loop would not let time pass);
+// with back-off, growing by the factor each poll up to the largest gap.
+void BoardDriver::poll_pause(uint32_t polls) {
     const SimTime gap = fs_from_ns(config_.poll_gap_ns);
-    port_.wait(gap > 0 ? gap : period_);
+    const SimTime base = gap > 0 ? gap : period_;
+    if (config_.poll_backoff <= 1.0) {
+        port_.wait(base);
+        return;
+    }
+    const double grown = ns_from_fs(base) * std::pow(config_.poll_backoff, std::min<uint32_t>(polls, 64));
+    port_.wait(fs_from_ns(std::max(ns_from_fs(base), std::min(grown, config_.poll_gap_max_ns))));
 }
 
 // Compared in ns before converting: a timeout too long for 64-bit
@@ -135,33 +167,37 @@ SimTime BoardDriver::timeout_for(double worst_ns) const {
 
 // By interrupt: each interrupt (the line is shared) or the timeout is
 // followed by one status read. By polling: status reads until the deadline.
-uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what) {
+uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what,
+                               bool by_interrupt) {
     const SimTime deadline = port_.now() + timeout;
-    for (;;) {
-        if (config_.wait == WaitMode::kIrq) port_.wait_for_interrupt(deadline - port_.now());
+    for (uint32_t polls = 0;; ++polls) {
+        if (by_interrupt) port_.wait_for_interrupt(deadline - port_.now());
         noticed_ = port_.now();  // the handler runs: the status read is readback work
         const uint32_t value = read(status_address);
-        if (config_.wait != WaitMode::kIrq) noticed_ = port_.now();  // a poll notices when its read returns
+        if (!by_interrupt) noticed_ = port_.now();  // a poll notices when its read returns
         const bool late = port_.now() >= deadline;
         if (value & bits) {
-            if (late && config_.wait == WaitMode::kIrq) ++timeouts_recovered_;  // the interrupt was lost
+            if (late && by_interrupt) ++timeouts_recovered_;  // the interrupt was lost
             return value;
         }
         if (late) {
             throw DeviceFault(std::string(what) + " timed out: no completion within " + microseconds(timeout) +
                               " of simulated time");
         }
-        if (config_.wait != WaitMode::kIrq) poll_pause();
+        if (!by_interrupt) poll_pause(polls);
     }
+}
+
+bool BoardDriver::dma_by_interrupt() const {
+    return config_.wait == WaitMode::kIrq && config_.interrupts == InterruptPolicy::kEvery;
 }
 
 // Starts the bridge's DMA engine (registers already set) and waits for it
 // by interrupt or polling; a fault the engine reports fails the frame.
 void BoardDriver::run_dma(uint32_t control, double worst_ns) {
     const SimTime timeout = timeout_for(worst_ns);
-    write(D::kBase + D::kControl,
-          control | D::kStart | (config_.wait == WaitMode::kIrq ? uint32_t{D::kInterruptOnDone} : 0u));
-    const uint32_t status = wait_for(D::kBase + D::kStatus, D::kDone | D::kError, timeout, "DMA");
+    write(D::kBase + D::kControl, control | D::kStart | (dma_by_interrupt() ? uint32_t{D::kInterruptOnDone} : 0u));
+    const uint32_t status = wait_for(D::kBase + D::kStatus, D::kDone | D::kError, timeout, "DMA", dma_by_interrupt());
     if (status & D::kError) dma_fault();
     write(D::kBase + D::kStatus, D::kDone);  // clear done: the shared line falls
 }
@@ -185,7 +221,13 @@ void BoardDriver::dma(uint64_t host_address, uint32_t local_address, uint32_t by
     run_dma(to_host ? uint32_t{D::kToHost} : 0u, time_->dma_worst_ns(bytes, direction));
 }
 
-void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
+namespace {
+uint32_t coordinate_window(uint32_t c) {
+    return static_cast<uint32_t>(address_map::kCoordinateBase + c * address_map::kWindowSize);
+}
+}  // namespace
+
+void BoardDriver::upload(const std::vector<FloatBox>& boxes, FramePhases& phases) {
     const auto n = static_cast<uint32_t>(boxes.size());
     if (n == 0) return;
     // In the board's format: float32 bit patterns, or fixed-point codes over
@@ -194,35 +236,131 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
     for (uint32_t c = 0; c < kCoordinates; ++c) {
         quantiser.write_column(boxes, c, reinterpret_cast<uint32_t*>(port_.memory(coordinate_area(capacity_, c))));
     }
-    auto local = [](uint32_t c) {
-        return static_cast<uint32_t>(address_map::kCoordinateBase + c * address_map::kWindowSize);
-    };
+    // Packing and comparing with the board's copy, done natively above.
+    cpu_work(config_.call_ns + config_.ns_per_box * n);
+    bool delta = false;
+    std::vector<uint32_t> changed;
+    if (config_.upload != UploadMode::kFull) {
+        changed = changed_boxes(n);
+        delta = config_.upload == UploadMode::kDelta || delta_upload_ns(changed.size()) < full_upload_ns(n);
+    }
+    if (delta) {
+        upload_delta(changed);
+        phases.boxes_sent = static_cast<uint32_t>(changed.size());
+        phases.upload_bytes = kDeltaRecordBytes * changed.size();
+    } else {
+        upload_full(n);
+        phases.boxes_sent = n;
+        phases.upload_bytes = uint64_t{24} * n;
+    }
+    charge(kUpload);
+    if (config_.upload == UploadMode::kFull) return;
+    // The board holds these words now (the frame's faults invalidate them).
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        const auto* words = reinterpret_cast<const uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
+        shadow_[c].assign(words, words + n);
+    }
+    shadow_objects_ = n;
+    shadow_valid_ = true;
+}
+
+std::vector<uint32_t> BoardDriver::changed_boxes(uint32_t objects) const {
+    std::vector<uint32_t> changed;
+    const uint32_t known = shadow_valid_ ? std::min(objects, shadow_objects_) : 0;
+    const uint32_t* words[kCoordinates];
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        words[c] = reinterpret_cast<const uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
+    }
+    for (uint32_t i = 0; i < objects; ++i) {
+        bool same = i < known;
+        for (uint32_t c = 0; same && c < kCoordinates; ++c) same = words[c][i] == shadow_[c][i];
+        if (!same) changed.push_back(i);
+    }
+    return changed;
+}
+
+// The bus time alone (the register accesses and the notice are the same
+// for both): six descriptor fetches and arrays, or the stream's pieces.
+double BoardDriver::full_upload_ns(uint32_t objects) const {
+    if (config_.transfer != Transfer::kDma) return kCoordinates * static_cast<double>(objects) * bus_->pio_write_ns();
+    return kCoordinates * (bus_->dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) +
+                           bus_->dma_ns(4 * uint64_t{objects}, Direction::kToBoard));
+}
+
+double BoardDriver::delta_upload_ns(uint64_t records) const {
+    const uint64_t bytes = kDeltaRecordBytes * records;
+    if (config_.transfer != Transfer::kDma) return static_cast<double>(bytes / 4) * bus_->pio_write_ns();
+    double ns = 0;
+    for (uint64_t left = bytes; left > 0;) {
+        const uint64_t piece = std::min<uint64_t>(left, address_map::kDeltaStreamSize);
+        ns += bus_->dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) + bus_->dma_ns(piece, Direction::kToBoard);
+        left -= piece;
+    }
+    return ns;
+}
+
+void BoardDriver::upload_full(uint32_t n) {
     if (config_.transfer != Transfer::kDma) {
-        cpu_work(config_.call_ns + config_.ns_per_box * n);  // packing, done natively above
         for (uint32_t c = 0; c < kCoordinates; ++c) {
-            pio_write(local(c), port_.memory(coordinate_area(capacity_, c)), 4 * n);
+            pio_write(coordinate_window(c), port_.memory(coordinate_area(capacity_, c)), 4 * n);
         }
-        charge(kUpload);
         return;
     }
     // One scatter-gather chain of six descriptors: one set-up, one interrupt.
-    const uint64_t chain = descriptor_area(capacity_, buffer_depth_);
+    const uint64_t chain = descriptor_area();
     auto* descriptors = reinterpret_cast<DmaDescriptor*>(port_.memory(chain));
     for (uint32_t c = 0; c < kCoordinates; ++c) {
         const uint64_t next = c + 1 < kCoordinates ? chain + (c + 1) * sizeof(DmaDescriptor) : 0;
-        descriptors[c] = DmaDescriptor{coordinate_area(capacity_, c), next, local(c), 4 * n};
+        descriptors[c] = DmaDescriptor{coordinate_area(capacity_, c), next, coordinate_window(c), 4 * n};
     }
-    cpu_work(config_.call_ns + config_.ns_per_box * n);  // packing and the chain, done natively above
     write(D::kBase + D::kChainLo, static_cast<uint32_t>(chain));
     write(D::kBase + D::kChainHi, static_cast<uint32_t>(chain >> 32));
     run_dma(D::kChain, time_->upload_worst_ns(n));
-    charge(kUpload);
+}
+
+// The records (index, six words) in host RAM, then one chain of
+// window-sized pieces into the stream, or programmed writes of them.
+void BoardDriver::upload_delta(const std::vector<uint32_t>& changed) {
+    if (changed.empty()) return;
+    auto* records = reinterpret_cast<uint32_t*>(port_.memory(delta_area()));
+    const uint32_t* words[kCoordinates];
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        words[c] = reinterpret_cast<const uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
+    }
+    for (std::size_t k = 0; k < changed.size(); ++k) {
+        uint32_t* record = records + address_map::kDeltaRecordWords * k;
+        record[0] = changed[k];
+        for (uint32_t c = 0; c < kCoordinates; ++c) record[1 + c] = words[c][changed[k]];
+    }
+    const uint64_t bytes = kDeltaRecordBytes * changed.size();
+    const auto stream = static_cast<uint32_t>(address_map::kDeltaStream);
+    if (config_.transfer != Transfer::kDma) {
+        for (uint64_t done = 0; done < bytes;) {
+            const auto piece = static_cast<uint32_t>(std::min<uint64_t>(bytes - done, address_map::kDeltaStreamSize));
+            pio_write(stream, port_.memory(delta_area() + done), piece);
+            done += piece;
+        }
+        return;
+    }
+    const uint64_t chain = descriptor_area();
+    auto* descriptors = reinterpret_cast<DmaDescriptor*>(port_.memory(chain));
+    uint32_t count = 0;
+    for (uint64_t done = 0; done < bytes; ++count) {
+        const auto piece = static_cast<uint32_t>(std::min<uint64_t>(bytes - done, address_map::kDeltaStreamSize));
+        descriptors[count] = DmaDescriptor{delta_area() + done, 0, stream, piece};
+        if (count > 0) descriptors[count - 1].next = chain + count * sizeof(DmaDescriptor);
+        done += piece;
+    }
+    write(D::kBase + D::kChainLo, static_cast<uint32_t>(chain));
+    write(D::kBase + D::kChainHi, static_cast<uint32_t>(chain >> 32));
+    run_dma(D::kChain, time_->delta_worst_ns(changed.size()));
 }
 
 uint32_t BoardDriver::wait_for_board(uint32_t objects) {
     const SimTime started = mark_;
     const SimTime timeout = timeout_for(time_->board_worst_ns(objects));
-    const uint32_t status = wait_for(R::kStatus, R::kDone | R::kOverflow | R::kError, timeout, "board");
+    const uint32_t status =
+        wait_for(R::kStatus, R::kDone | R::kOverflow | R::kError, timeout, "board", config_.wait == WaitMode::kIrq);
     mark_ = noticed_;
     if (config_.wait == WaitMode::kIrq) write(R::kControl, R::kAcknowledge);
     if (status & R::kError) {
@@ -239,19 +377,36 @@ uint32_t BoardDriver::wait_for_board(uint32_t objects) {
     return status;
 }
 
-void BoardDriver::read_pairs(PairList& pairs) {
+// PAIR_COUNT bounds the pairs before any is copied; in an encoded format
+// PAIR_WORDS gives the words to move, and the decoded pairs must be as many.
+void BoardDriver::read_pairs(PairList& pairs, uint32_t objects, FramePhases& phases) {
     const uint32_t count = read(R::kPairCount);
     if (count == 0) return;
     config_.pair_budget.check(uint64_t{pairs.size()} + count);
-    const uint64_t area = pair_area(capacity_);
+    const bool list = config_.pair_format == PairFormat::kList;
+    const uint64_t words = list ? 2 * uint64_t{count} : read(R::kPairWords);
+    if (4 * words > pair_area_bytes(capacity_, buffer_depth_, config_)) {
+        throw DeviceFault("the board's pair window holds " + std::to_string(words) + " words, more than " +
+                          std::to_string(count) + " pairs can encode to");
+    }
+    const uint64_t area = pair_area();
+    const auto bytes = static_cast<uint32_t>(4 * words);
     if (config_.transfer == Transfer::kDma) {
-        dma(area, static_cast<uint32_t>(address_map::kPairBuffer), 8 * count, true);
+        dma(area, static_cast<uint32_t>(address_map::kPairBuffer), bytes, true);
     } else {
-        pio_read(address_map::kPairBuffer, port_.memory(area), 8 * count);
+        pio_read(address_map::kPairBuffer, port_.memory(area), bytes);
     }
     charge(kReadback);
-    const auto* words = reinterpret_cast<const uint32_t*>(port_.memory(area));
-    for (uint32_t k = 0; k < count; ++k) pairs.push_back({words[2 * k], words[2 * k + 1]});
+    phases.readback_bytes += bytes;
+    const auto* data = reinterpret_cast<const uint32_t*>(port_.memory(area));
+    const std::size_t before = pairs.size();
+    if (list) {
+        for (uint32_t k = 0; k < count; ++k) pairs.push_back({data[2 * k], data[2 * k + 1]});
+    } else if (const std::string error = decode_pairs(config_.pair_format, data, words, objects, pairs);
+               !error.empty() || pairs.size() - before != count) {
+        throw DeviceFault("the pair read-back does not decode to the board's " + std::to_string(count) +
+                          " pairs: " + (error.empty() ? std::to_string(pairs.size() - before) + " pairs" : error));
+    }
     cpu_work(config_.ns_per_pair * count);
 }
 
@@ -264,6 +419,7 @@ FramePhases BoardDriver::run_frame(const std::vector<FloatBox>& boxes, PairList&
         return frame(boxes, pairs);
     } catch (const std::exception&) {
         pairs.clear();  // never a partial set
+        shadow_valid_ = false;  // what the board's memories hold is not known now
         recover();
         throw;
     }
@@ -290,13 +446,13 @@ FramePhases BoardDriver::frame(const std::vector<FloatBox>& boxes, PairList& pai
     timeouts_recovered_ = 0;
     FramePhases phases;
 
-    upload(boxes);
+    upload(boxes, phases);
     write(R::kObjectCount, static_cast<uint32_t>(boxes.size()));
     write(R::kControl, R::kStart);
     charge(kStart);
     for (;;) {
         const uint32_t status = wait_for_board(static_cast<uint32_t>(boxes.size()));
-        read_pairs(pairs);
+        read_pairs(pairs, static_cast<uint32_t>(boxes.size()), phases);
         if (status & R::kOverflow) {
             ++phases.overflow_pauses;
             write(R::kControl, R::kResume);

@@ -2,6 +2,7 @@
 // board over the PCI bus and stages data in host RAM, all through a HostPort.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "models/common/aabb.h"
+#include "models/comparison_unit/comparison_unit.h"
 #include "models/number_format/number_format.h"
 #include "models/pci/bus_timing.h"
 #include "platform/driver/driver_config.h"
@@ -45,6 +47,11 @@ struct FramePhases {
     double total_ns = 0;
     uint64_t compute_cycles = 0;
     uint64_t stall_cycles = 0;
+    // What moved over the bus: the boxes uploaded (all of them, or the
+    // changed ones of a delta upload), their bytes, and the pair words' bytes.
+    uint32_t boxes_sent = 0;
+    uint64_t upload_bytes = 0;
+    uint64_t readback_bytes = 0;
     uint32_t overflow_pauses = 0;
     uint32_t timeouts_recovered = 0;  // waits whose interrupt never came, finished by polling STATUS
 };
@@ -55,8 +62,10 @@ public:
     // bus: the timing the timeouts are derived from.
     BoardDriver(HostPort& port, SimTime period_fs, const DriverConfig& config, std::shared_ptr<const BusTiming> bus);
 
-    // Host RAM the driver needs for a board of this capacity and pair buffer.
-    static uint64_t host_memory_bytes(uint32_t capacity, uint32_t buffer_depth);
+    // Host RAM the driver needs for a board of this capacity and pair buffer
+    // (the pair area for config's pair format, the delta records' area when
+    // it may upload deltas).
+    static uint64_t host_memory_bytes(uint32_t capacity, uint32_t buffer_depth, const DriverConfig& config = {});
 
     // Checks the board's identity and reads its capacity and number format.
     void open();
@@ -76,7 +85,8 @@ private:
     enum Phase { kUpload, kStart, kCompute, kIrq, kReadback, kDriver, kPhases };
     void charge(Phase phase);  // the time since the last charge goes to phase
     void cpu_work(double ns);  // host CPU time, charged to the driver
-    void poll_pause();
+    // The pause after the polls-th poll of a wait (back-off).
+    void poll_pause(uint32_t polls);
 
     uint32_t read(uint64_t address);
     void write(uint64_t address, uint32_t value);
@@ -90,16 +100,30 @@ private:
     SimTime timeout_for(double worst_ns) const;
     // Waits for the interrupt or a poll to find any of bits in the register's
     // value, until the timeout; returns the value. what names the wait.
-    uint32_t wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what);
+    // by_interrupt: wait for the interrupt (else poll).
+    uint32_t wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what, bool by_interrupt);
+    bool dma_by_interrupt() const;
     void run_dma(uint32_t control, double worst_ns);
     void dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host);
     [[noreturn]] void dma_fault();
     uint64_t read_counter(uint32_t low_offset);
-    void upload(const std::vector<FloatBox>& boxes);
+    void upload(const std::vector<FloatBox>& boxes, FramePhases& phases);
+    // The chain of six arrays; the delta stream's records of `changed` boxes.
+    void upload_full(uint32_t objects);
+    void upload_delta(const std::vector<uint32_t>& changed);
+    // Boxes whose words differ from the board's copy (all when it is unknown).
+    std::vector<uint32_t> changed_boxes(uint32_t objects) const;
+    // The estimated bus time of each upload (the bus formula), for run.upload auto.
+    double full_upload_ns(uint32_t objects) const;
+    double delta_upload_ns(uint64_t records) const;
+    // Host RAM areas (byte offsets), from the capacity, pair buffer and config.
+    uint64_t pair_area() const;
+    uint64_t delta_area() const;
+    uint64_t descriptor_area() const;
     // Waits for the board after START or RESUME; returns its status (an
     // error status fails the frame).
     uint32_t wait_for_board(uint32_t objects);
-    void read_pairs(PairList& pairs);
+    void read_pairs(PairList& pairs, uint32_t objects, FramePhases& phases);
 
     HostPort& port_;
     SimTime period_;
@@ -115,6 +139,12 @@ private:
     std::shared_ptr<const BusTiming> bus_;
     std::optional<FrameTime> time_;  // from open(), once the board's m and pair buffer are known
     uint32_t timeouts_recovered_ = 0;
+    // The board's memories as the last upload left them (the words of each
+    // coordinate, boxes 0..shadow_objects_-1), for delta uploads; invalid
+    // until a frame succeeds, and after any fault.
+    std::array<std::vector<uint32_t>, kCoordinates> shadow_;
+    uint32_t shadow_objects_ = 0;
+    bool shadow_valid_ = false;
 };
 
 }  // namespace cdvp

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "models/common/pair_budget.h"
+#include "models/pair_collector/pair_format.h"
 
 namespace cdvp {
 
@@ -14,11 +15,27 @@ namespace cdvp {
 // (platform/setting_choices.h).
 enum class Transfer : uint8_t { kDma, kPio };
 enum class WaitMode : uint8_t { kIrq, kPoll };
+// How the boxes reach the board (run.upload): all six arrays every frame;
+// only the boxes whose words changed since the last upload, as records of
+// the delta stream; or per frame whichever the bus formula says is cheaper.
+enum class UploadMode : uint8_t { kFull, kDelta, kAuto };
+// Which completions interrupt the host (run.interrupts), when it waits by
+// interrupt: every DMA's and the board's, or only the board's (one a frame
+// without overflow pauses), the DMA completions then polled.
+enum class InterruptPolicy : uint8_t { kEvery, kBoard };
 
 struct DriverConfig {
     Transfer transfer = Transfer::kDma;  // kPio: boxes and pairs by programmed I/O
     WaitMode wait = WaitMode::kIrq;      // kPoll: poll the status register
     double poll_gap_ns = 0.0;     // CPU time between two status polls
+    // Polling with back-off: each gap is poll_backoff x the one before
+    // (from the poll gap, or a board period when it is 0), up to
+    // poll_gap_max_ns. 1: a constant gap.
+    double poll_backoff = 1.0;
+    double poll_gap_max_ns = 100000.0;
+    UploadMode upload = UploadMode::kFull;
+    PairFormat pair_format = PairFormat::kList;  // how the pair buffer reads back (the board's PAIR_FORMAT)
+    InterruptPolicy interrupts = InterruptPolicy::kEvery;
     // Host CPU work, per frame (assumptions of the host preset): packing a box
     // (six double-to-float conversions and stores), unpacking a pair, and a
     // call into the kernel driver per board operation.

@@ -6,6 +6,7 @@
 #include "models/address_generator/address_generator.h"
 #include "models/address_generator/sweep_schedule.h"
 #include "models/comparison_unit/comparison_unit.h"
+#include "models/control_registers/control_registers.h"
 #include "models/pci/dma_registers.h"
 
 namespace cdvp {
@@ -51,6 +52,27 @@ double FrameTime::upload_worst_ns(uint32_t objects) const {
            bus_.interrupt_ns();
 }
 
+double FrameTime::delta_worst_ns(uint64_t records) const {
+    const uint64_t bytes = 4 * uint64_t{address_map::kDeltaRecordWords} * records;
+    double ns = bus_.interrupt_ns();
+    for (uint64_t left = bytes; left > 0;) {
+        const uint64_t piece = std::min<uint64_t>(left, address_map::kDeltaStreamSize);
+        ns += bus_.dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) + bus_.dma_ns(piece, Direction::kToBoard);
+        left -= piece;
+    }
+    return ns;
+}
+
+double FrameTime::any_upload_worst_ns(uint32_t objects) const {
+    const double full = upload_worst_ns(objects);
+    return config_.upload == UploadMode::kFull ? full : std::max(full, delta_worst_ns(objects));
+}
+
+uint64_t FrameTime::readback_bytes(uint64_t pairs, uint32_t objects) const {
+    return std::min<uint64_t>(4 * worst_encoded_words(config_.pair_format, pairs, objects),
+                              address_map::kPairBufferSize);
+}
+
 double FrameTime::dma_worst_ns(uint64_t bytes, Direction direction) const {
     return bus_.dma_ns(bytes, direction) + bus_.interrupt_ns();
 }
@@ -68,18 +90,22 @@ double FrameTime::board_worst_ns(uint32_t objects) const {
 }
 
 double FrameTime::longest_timeout_ns(uint32_t objects) const {
-    const double worst = std::max({upload_worst_ns(objects), board_worst_ns(objects),
-                                   dma_worst_ns(8 * uint64_t{buffer_depth_}, Direction::kToHost)});
+    const double worst = std::max({any_upload_worst_ns(objects), board_worst_ns(objects),
+                                   dma_worst_ns(readback_bytes(buffer_depth_, objects), Direction::kToHost)});
     return timeout_ns(worst);
 }
 
 double FrameTime::access_ns() const { return std::max(bus_.pio_read_ns(), bus_.pio_write_ns()); }
 
-// A poll may just miss the event: one more gap and read, and the read that finds it.
+// A poll may just miss the event: one more gap (the largest, with
+// back-off) and read, and the read that finds it. Under run.interrupts
+// board the DMA completions are polled even when the board interrupts.
 double FrameTime::notice_ns() const {
-    const double notice = config_.wait == WaitMode::kIrq
-                              ? bus_.interrupt_ns()
-                              : 2 * bus_.pio_read_ns() + std::max(config_.poll_gap_ns, period_ns_);
+    const double gap = config_.poll_backoff > 1.0 ? std::max(config_.poll_gap_max_ns, config_.poll_gap_ns)
+                                                  : config_.poll_gap_ns;
+    const double poll = 2 * bus_.pio_read_ns() + std::max(gap, period_ns_);
+    double notice = config_.wait == WaitMode::kIrq ? bus_.interrupt_ns() : poll;
+    if (config_.wait == WaitMode::kIrq && config_.interrupts != InterruptPolicy::kEvery) notice = std::max(notice, poll);
     return notice + quantum_ns_;  // a CPU that ran ahead notices up to a quantum late
 }
 
@@ -89,18 +115,22 @@ double FrameTime::frame_bound_ns(uint32_t objects, uint64_t pairs) const {
     const uint64_t segments = this->segments(pairs);
     const double n = objects, p = static_cast<double>(pairs), s = static_cast<double>(segments);
     // Upload: the DMA chain and its notice, or every word by programmed I/O.
-    double ns = config_.transfer == Transfer::kDma ? upload_worst_ns(objects) + notice_ns() : kCoordinates * n * bus_.pio_write_ns();
+    double ns = config_.transfer == Transfer::kDma
+                    ? any_upload_worst_ns(objects) + notice_ns()
+                    : (kCoordinates + (config_.upload == UploadMode::kFull ? 0 : 1)) * n * bus_.pio_write_ns();
     // The board: every slot of the sweep, a stall a pair, each segment's tail.
     const double cycles = static_cast<double>(worst_run_cycles(objects) - buffer_depth_) + p +
                           s * static_cast<double>(kPipelineSlack);
     ns += cycles * period_ns_ + s * notice_ns();
     // Read-back: full buffers at each pause, then the rest.
+    const uint64_t last = std::min<uint64_t>(pairs, buffer_depth_);
+    const double full_bytes = static_cast<double>(readback_bytes(buffer_depth_, objects));
+    const double last_bytes = static_cast<double>(readback_bytes(last, objects));
     if (config_.transfer == Transfer::kDma) {
-        const uint64_t last = std::min<uint64_t>(pairs, buffer_depth_);
-        ns += (s - 1) * dma_worst_ns(8 * uint64_t{buffer_depth_}, Direction::kToHost) +
-              dma_worst_ns(8 * last, Direction::kToHost) + s * notice_ns();
+        ns += (s - 1) * dma_worst_ns(readback_bytes(buffer_depth_, objects), Direction::kToHost) +
+              dma_worst_ns(readback_bytes(last, objects), Direction::kToHost) + s * notice_ns();
     } else {
-        ns += 2 * p * bus_.pio_read_ns();
+        ns += ((s - 1) * full_bytes + last_bytes) / 4 * bus_.pio_read_ns();
     }
     // Registers, and the driver's own work.
     ns += (kAccessesPerFrame + kAccessesPerSegment * s) * access_ns();

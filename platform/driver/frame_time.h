@@ -46,6 +46,12 @@ public:
     // buffer's drain, the pipeline's tail) and its interrupt.
     double upload_worst_ns(uint32_t objects) const;
     double dma_worst_ns(uint64_t bytes, Direction direction) const;
+    // A delta upload of `records` boxes: its chain and its interrupt; the
+    // worse of the uploads run.upload may choose.
+    double delta_worst_ns(uint64_t records) const;
+    double any_upload_worst_ns(uint32_t objects) const;
+    // The most bytes a read-back of `pairs` pairs moves in the pair format.
+    uint64_t readback_bytes(uint64_t pairs, uint32_t objects) const;
     double board_worst_ns(uint32_t objects) const;
     // The longest timeout any wait of a frame of `objects` boxes gets.
     double longest_timeout_ns(uint32_t objects) const;

@@ -129,12 +129,14 @@ StepStats BouncingSpheres::step(const PairList& candidates) {
 void BouncingSpheres::resolve(const Contact& c) {
     SphereState& a = spheres_[c.a];
     SphereState& b = spheres_[c.b];
+    if (a.fixed && b.fixed) return;
     double ma = mass(a);
     double mb = mass(b);
     // Shares of the exchange: a moves by mb / (ma + mb), b by ma / (ma + mb),
-    // which keeps the momentum and the centre of mass.
-    double share_a = mb / (ma + mb);
-    double share_b = ma / (ma + mb);
+    // which keeps the momentum and the centre of mass. A static body's mass
+    // is infinite: the other takes the whole exchange.
+    double share_a = a.fixed ? 0.0 : b.fixed ? 1.0 : mb / (ma + mb);
+    double share_b = b.fixed ? 0.0 : a.fixed ? 1.0 : ma / (ma + mb);
 
     const std::array<double, 3>& n = c.normal;
     double approach = 0.0;  // normal relative velocity; < 0 when closing

@@ -36,6 +36,10 @@ SettingValues layered_settings(const SettingLayers& layers, const po::variables_
 BoardSetup board_setup(const SettingLayers& layers, const po::variables_map& vm, const std::string& scene) {
     BoardSetup setup;
     setup.values = layered_settings(layers, vm, scene, setup.board);
+    if (const Setting& moving = *find_setting("scene.moving_fraction"); setup.values.settings().scene.moving_fraction != 1.0 && scene != "spheres") {
+        throw InputError(setup.values.where(moving) + ": only --scene spheres holds some of its spheres still; " +
+                         (scene.empty() ? "a trace's boxes move as recorded" : "--scene " + scene + " is Bullet's"));
+    }
     setup.platform = platform_config(setup.values);
     return setup;
 }

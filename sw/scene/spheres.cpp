@@ -79,6 +79,7 @@ SpheresPlacement place_spheres(const SpheresConfig& c) {
           "expected volume_fraction in (0, 1)");
     check(std::isfinite(c.max_speed) && c.max_speed >= 0.0, "expected max_speed >= 0");
     check(std::isfinite(c.dt) && c.dt >= 0.0, "expected dt >= 0");
+    check(c.moving_fraction >= 0.0 && c.moving_fraction <= 1.0, "expected moving_fraction in [0, 1]");
 
     // E[r^3] for r uniform in [a, b] is (b^4 - a^4) / (4 (b - a)).
     double a = c.radius_min;
@@ -109,6 +110,14 @@ SpheresPlacement place_spheres(const SpheresConfig& c) {
         for (double& v : s.velocity) {
             v *= c.max_speed;
         }
+    }
+    // Sphere k moves when floor((k + 1) f) > floor(k f): floor(N f) of them,
+    // evenly spread; the draws above stay the same whatever f is.
+    for (std::size_t k = 0; k < placement.spheres.size(); ++k) {
+        const double f = c.moving_fraction;
+        SphereState& s = placement.spheres[k];
+        s.fixed = std::floor(static_cast<double>(k + 1) * f) == std::floor(static_cast<double>(k) * f);
+        if (s.fixed) s.velocity = {0.0, 0.0, 0.0};
     }
     return placement;
 }

@@ -21,6 +21,10 @@ struct SpheresConfig {
     double volume_fraction = 0.15;  // sphere volume / cube volume, in (0, 1)
     double max_speed = 4.0;         // velocities uniform in the ball of this radius
     double dt = 1.0 / 60.0;         // time between frames
+    // The share of spheres that move, spread evenly over the indices; the
+    // rest are static bodies (no velocity, and, in the bouncing
+    // application, infinite mass), as a physics scene's level geometry is.
+    double moving_fraction = 1.0;
 };
 
 // The pieces below are shared with the bouncing-spheres application
@@ -31,6 +35,7 @@ struct SphereState {
     double radius = 0.0;
     std::array<double, 3> centre{};
     std::array<double, 3> velocity{};
+    bool fixed = false;  // a static body: never moves (SpheresConfig::moving_fraction)
 };
 
 // The cube's edge and the spheres placed in it, all inside [0, edge]^3.

@@ -330,7 +330,7 @@ TEST(BoardCore, BufferedWordsAreThePairsFirstThenSecond) {
         for (uint64_t first : {0u, 1u, 9u}) {
             const uint64_t count = expected.size() - first;
             std::vector<uint32_t> words(count);
-            core.copy_buffered_words(first, count, reinterpret_cast<unsigned char*>(words.data()));
+            core.copy_window_words(first, count, reinterpret_cast<unsigned char*>(words.data()));
             EXPECT_TRUE(std::equal(words.begin(), words.end(), expected.begin() + first)) << to_string(fidelity) << " from word " << first;
         }
     }

@@ -136,9 +136,12 @@ TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     expect_choice_round_trip<BusModel>("bus.model");
     expect_choice_round_trip<Direction>("bus.load_direction");
     expect_choice_round_trip<LoadArrivals>("bus.load_arrivals");
+    expect_choice_round_trip<UploadMode>("driver.upload");
+    expect_choice_round_trip<PairFormat>("driver.pair_format");
+    expect_choice_round_trip<InterruptPolicy>("driver.interrupts");
     int choices = 0;
     for (const Setting& s : settings_table()) choices += s.type == SettingType::kChoice ? 1 : 0;
-    EXPECT_EQ(10, choices) << "a new choice setting: add it above";
+    EXPECT_EQ(13, choices) << "a new choice setting: add it above";
     // The engines' own names are the setting's, and each level but the analytic one runs the engine of its name.
     for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) EXPECT_STREQ(c.name, to_string(c.value));
     for (const ChoiceName<ModelLevel>& c : Choices<ModelLevel>::names) {
