@@ -17,6 +17,9 @@ struct TileConfig {
     uint32_t cycles_per_box = 1;
 
     bool tiled() const { return boxes != 0; }
+    // The runs a row's pairs may come in over a sweep of `objects` boxes:
+    // one in block RAM, one a column tile when tiled.
+    uint64_t row_pieces(uint32_t objects) const { return tiled() ? (uint64_t{objects} + boxes - 1) / boxes : 1; }
     friend bool operator==(const TileConfig& a, const TileConfig& b) {
         return a.boxes == b.boxes && a.load_latency_cycles == b.load_latency_cycles &&
                a.cycles_per_box == b.cycles_per_box;

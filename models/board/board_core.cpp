@@ -217,7 +217,8 @@ void BoardCore::start() {
         raise_error(R::kDeltaIncomplete);
         return;
     }
-    const uint64_t worst = worst_encoded_words(pair_format_, config_.collector.buffer_depth, object_count_);
+    const uint64_t worst = worst_encoded_words(pair_format_, config_.collector.buffer_depth, object_count_,
+                                               config_.tiles.row_pieces(object_count_));
     if (worst > address_map::kPairBufferSize / 4) {
         raise_error(R::kPairWindowFull);
         return;

@@ -38,11 +38,14 @@ uint64_t encoded_words(PairFormat format, const IndexPair* pairs, uint64_t count
     return 0;
 }
 
-uint64_t worst_encoded_words(PairFormat format, uint64_t pairs, uint32_t objects) {
+uint64_t worst_encoded_words(PairFormat format, uint64_t pairs, uint32_t objects, uint64_t row_pieces) {
     if (pairs == 0) return 0;
     switch (format) {
         case PairFormat::kList: return 2 * pairs;
-        case PairFormat::kCounted: return 3 * pairs;  // every pair a run of its own
+        case PairFormat::kCounted: {
+            const uint64_t runs = row_pieces == 0 ? pairs : std::min(pairs, uint64_t{objects} * row_pieces);
+            return 2 * runs + pairs;
+        }
         case PairFormat::kBitmap: return 2 + uint64_t{objects} * row_words(objects);
     }
     return 0;

@@ -35,8 +35,10 @@ uint64_t encoded_words(PairFormat format, const IndexPair* pairs, uint64_t count
 // Appends the encoding to out.
 void encode_pairs(PairFormat format, const IndexPair* pairs, uint64_t count, uint32_t objects,
                   std::vector<uint32_t>& out);
-// The most words `pairs` buffered pairs of a sweep of `objects` boxes can take.
-uint64_t worst_encoded_words(PairFormat format, uint64_t pairs, uint32_t objects);
+// The most words `pairs` buffered pairs of a sweep of `objects` boxes can
+// take, when a row's pairs come in at most `row_pieces` runs (1 in block
+// RAM; a tiled board's column tiles); 0 row_pieces: any number.
+uint64_t worst_encoded_words(PairFormat format, uint64_t pairs, uint32_t objects, uint64_t row_pieces = 0);
 
 // Decodes `count` words of a read-back of a sweep of `objects` boxes,
 // appending the pairs. Returns an empty string, or what is wrong with the

@@ -69,7 +69,7 @@ double FrameTime::any_upload_worst_ns(uint32_t objects) const {
 }
 
 uint64_t FrameTime::readback_bytes(uint64_t pairs, uint32_t objects) const {
-    return std::min<uint64_t>(4 * worst_encoded_words(config_.pair_format, pairs, objects),
+    return std::min<uint64_t>(4 * worst_encoded_words(config_.pair_format, pairs, objects, tiles_.row_pieces(objects)),
                               address_map::kPairBufferSize);
 }
 

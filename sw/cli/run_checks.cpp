@@ -253,9 +253,31 @@ void check_device_fits(const FrameOrigin& origin, const SettingValues& values, u
 
 }  // namespace
 
+namespace {
+// A full pair buffer's encoding must fit the 16 MiB pair window: a bitmap
+// of more than 11,584 boxes, or per-row counts of a deep buffer on a tiled
+// board, may not (the board would refuse START).
+void check_pair_window(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects,
+                       const MemoryPlan& plan) {
+    const Settings& settings = values.settings();
+    const PairFormat format = settings.driver.pair_format;
+    const auto objects = static_cast<uint32_t>(max_objects);
+    const uint64_t depth = settings.board.collector.buffer_depth;
+    const uint64_t words = worst_encoded_words(format, depth, objects, plan.tiles.row_pieces(objects));
+    const uint64_t window = address_map::kPairBufferSize / 4;
+    if (words <= window) return;
+    throw InputError(values.where(*find_setting("driver.pair_format")) + ": a full pair buffer of " +
+                     std::to_string(depth) + " pairs (" + values.where(*find_setting("board.pair_buffer_depth")) +
+                     ") at " + objects_origin(origin, values, max_objects) + " can encode to " +
+                     std::to_string(words) + " words, more than the pair window's " + std::to_string(window) +
+                     "; expected a smaller scene or buffer, or --pair-format list");
+}
+}  // namespace
+
 void check_scene_fits(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects,
                       uint64_t frame_count, RunBudgets& budgets) {
     const MemoryPlan plan = plan_memory(values.settings(), max_objects);
+    check_pair_window(origin, values, max_objects, plan);
     if (plan.ssram) check_ssram(origin, values, max_objects, plan);
     budgets.check_scene(max_objects, frame_count);
     check_device_fits(origin, values, max_objects);
