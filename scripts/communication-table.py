@@ -98,6 +98,7 @@ def moving_table(out):
         w.writerow(["board", "moving", "full_upload_ns", "delta_upload_ns", "delta_over_full"])
         print("\n| board | moving share | full upload | delta upload | delta / full |")
         print("|---|---:|---:|---:|---:|")
+        notes = []
         for bd in boards:
             for m in shares:
                 full, delta = upload[(bd, "full", m)], upload[(bd, "delta", m)]
@@ -108,7 +109,9 @@ def moving_table(out):
                 ra = upload[(bd, "delta", a)] / upload[(bd, "full", a)]
                 rb = upload[(bd, "delta", b)] / upload[(bd, "full", b)]
                 if ra < 1 <= rb:
-                    print(f"\n{bd}: delta breaks even at a moving share of {a + (1 - ra) / (rb - ra) * (b - a):.2f}")
+                    notes.append(f"{bd}: delta breaks even at a moving share of {a + (1 - ra) / (rb - ra) * (b - a):.2f}")
+        for note in notes or ["delta is the quicker upload at every share"]:
+            print("\n" + note)
 
 
 out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "communication")
