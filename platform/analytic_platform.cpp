@@ -1,5 +1,6 @@
 #include "platform/analytic_platform.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -37,7 +38,9 @@ AnalyticPlatform::AnalyticPlatform(const PlatformConfig& config, uint32_t capaci
       frame_(config.driver, *bus_, analytic_board(config.board)),
       finder_(config.board.format, config.pair_budget),
       m_(config.board.m),
-      tiles_(config.board.tiles) {
+      tiles_(config.board.tiles),
+      pair_format_(config.driver.pair_format),
+      buffer_depth_(std::max<uint32_t>(config.board.collector.buffer_depth, 1)) {
     if (!config.faults.empty()) throw std::invalid_argument("the analytic level has no engine to inject faults into");
 }
 
@@ -62,9 +65,20 @@ const FrameResult* AnalyticPlatform::try_run_frame(const std::vector<FloatBox>& 
         view[c] = words_[c].data();
     }
     fault = FrameFault{};
+    // The boxes whose words differ from what the board holds (every one when unknown).
+    uint64_t changed = objects;
+    if (shadow_valid_) {
+        changed = 0;
+        for (uint32_t i = 0; i < objects; ++i) {
+            bool same = i < shadow_objects_;
+            for (uint32_t c = 0; same && c < kCoordinates; ++c) same = words_[c][i] == shadow_[c][i];
+            changed += !same;
+        }
+    }
     try {
         finder_.find(objects, view, result_.pairs);
     } catch (const PairBudgetExceeded& e) {
+        shadow_valid_ = false;  // the driver fails the frame and forgets the board's words
         fault.kind = FrameFault::Kind::kPairBudget;
         fault.message = e.what();
         fault.pairs_found = e.found();
@@ -74,7 +88,19 @@ const FrameResult* AnalyticPlatform::try_run_frame(const std::vector<FloatBox>& 
     if (tiles_.tiled() && objects > tiles_.boxes) {
         SweepSchedule(m_, tiles_, objects).order_by_block(result_.pairs, by_block_, block_ends_);
     }
-    result_.phases = frame_.estimate(objects, result_.pairs.size());
+    result_.phases = frame_.estimate(objects, result_.pairs, changed);
+    // A bitmap read-back hands each segment's pairs over sorted by row.
+    if (pair_format_ == PairFormat::kBitmap) {
+        for (std::size_t k = 0; k < result_.pairs.size(); k += buffer_depth_) {
+            const auto first = result_.pairs.begin() + static_cast<std::ptrdiff_t>(k);
+            std::sort(first, first + static_cast<std::ptrdiff_t>(std::min<std::size_t>(buffer_depth_, result_.pairs.size() - k)));
+        }
+    }
+    if (objects > 0) {
+        for (uint32_t c = 0; c < kCoordinates; ++c) shadow_[c].assign(words_[c].begin(), words_[c].end());
+        shadow_objects_ = objects;
+        shadow_valid_ = true;
+    }
     return &result_;
 }
 

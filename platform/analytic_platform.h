@@ -47,10 +47,16 @@ private:
     PairFinder finder_;
     uint32_t m_;
     TileConfig tiles_;
+    PairFormat pair_format_;
+    uint32_t buffer_depth_;
     std::vector<uint32_t> words_[kCoordinates];
     PairList by_block_;                 // scratch: a tiled board's order
     std::vector<uint64_t> block_ends_;
     FrameResult result_;
+    // The words the board holds from the last frame, for delta uploads (as the driver keeps them).
+    std::vector<uint32_t> shadow_[kCoordinates];
+    uint32_t shadow_objects_ = 0;
+    bool shadow_valid_ = false;
 };
 
 }  // namespace cdvp

@@ -1,10 +1,12 @@
 #include "platform/driver/analytic_frame.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "models/address_generator/address_generator.h"
 #include "models/address_generator/sweep_schedule.h"
 #include "models/comparison_unit/comparison_unit.h"
+#include "models/control_registers/control_registers.h"
 #include "models/pci/dma_registers.h"
 
 namespace cdvp {
@@ -28,25 +30,48 @@ SimTime AnalyticFrame::write_fs(uint64_t words) const {
     return fs_from_ns(static_cast<double>(words) * bus_.pio_write_ns());
 }
 
-// Polls read at R, R + (R + g), ... after the command; a read sees the
-// state at its end. Between two polls the driver waits the poll gap, or a
-// board period on an untimed gap.
-SimTime AnalyticFrame::notice_fs(SimTime event_fs) const {
-    if (driver_.wait == WaitMode::kIrq) return event_fs + fs_from_ns(bus_.interrupt_ns());
+SimTime AnalyticFrame::poll_gap_fs(uint32_t k) const {
     const SimTime gap_fs = fs_from_ns(driver_.poll_gap_ns);
-    const SimTime read = read_fs(), period = read + (gap_fs > 0 ? gap_fs : board_.period_fs);
-    return read + (event_fs > read ? ceil_div(event_fs - read, period) : 0) * period;
+    const SimTime base = gap_fs > 0 ? gap_fs : board_.period_fs;
+    if (driver_.poll_backoff <= 1.0) return base;
+    const double grown = ns_from_fs(base) * std::pow(driver_.poll_backoff, std::min<uint32_t>(k, 64));
+    return fs_from_ns(std::max(ns_from_fs(base), std::min(grown, driver_.poll_gap_max_ns)));
+}
+
+// Polls read at R, R + (g0 + R), R + (g0 + R) + (g1 + R), ... after the
+// command; a read sees the state at its end. Between two polls the driver
+// waits the poll gap (a board period on an untimed gap), growing under
+// back-off until it stops growing, from where the polls are evenly spaced.
+SimTime AnalyticFrame::notice_fs(SimTime event_fs, bool by_interrupt) const {
+    if (by_interrupt) return event_fs + fs_from_ns(bus_.interrupt_ns());
+    const SimTime read = read_fs();
+    SimTime t = read;
+    for (uint32_t k = 0; t < event_fs; ++k) {
+        const SimTime gap = poll_gap_fs(k);
+        if (k >= 64 || gap == poll_gap_fs(k + 1)) {
+            const SimTime period = gap + read;
+            return t + ceil_div(event_fs - t, period) * period;
+        }
+        t += gap + read;
+    }
+    return t;
 }
 
 // Four set-up registers and the control write, the wait, the status read
 // and the write that clears it (BoardDriver::dma and run_dma).
 SimTime AnalyticFrame::dma_fs(uint64_t bytes, Direction direction) const {
-    return 5 * write_fs() + notice_fs(fs_from_ns(bus_.dma_ns(bytes, direction))) + status_read_fs() + write_fs();
+    return 5 * write_fs() + notice_fs(fs_from_ns(bus_.dma_ns(bytes, direction)), dma_by_interrupt()) +
+           status_read_fs(dma_by_interrupt()) + write_fs();
+}
+
+SimTime AnalyticFrame::chain_fs(double bus_ns) const {
+    return 3 * write_fs() + notice_fs(fs_from_ns(bus_ns), dma_by_interrupt()) + status_read_fs(dma_by_interrupt()) +
+           write_fs();
 }
 
 // DMA: one chain of six descriptors, each fetched (a 24-byte read) before
-// its array moves; the chain registers, control, wait, status, clear.
-// PIO: each coordinate array is one access of `objects` words.
+// its array moves, summed in the bridge's order. PIO: each coordinate array
+// is one access of `objects` words.
 SimTime AnalyticFrame::upload_fs(uint32_t objects) const {
     if (objects == 0) return 0;
     if (driver_.transfer != Transfer::kDma) return kCoordinates * write_fs(objects);
@@ -55,7 +80,24 @@ SimTime AnalyticFrame::upload_fs(uint32_t objects) const {
         chain_ns += bus_.dma_ns(sizeof(DmaDescriptor), Direction::kToBoard);
         chain_ns += bus_.dma_ns(4 * uint64_t{objects}, Direction::kToBoard);
     }
-    return 3 * write_fs() + notice_fs(fs_from_ns(chain_ns)) + status_read_fs() + write_fs();
+    return chain_fs(chain_ns);
+}
+
+// The delta stream in window-sized pieces: one access each by PIO, one
+// descriptor each in the DMA chain.
+SimTime AnalyticFrame::delta_fs(uint64_t records) const {
+    if (records == 0) return 0;
+    const uint64_t words = uint64_t{address_map::kDeltaRecordWords} * records;
+    if (driver_.transfer != Transfer::kDma) {
+        SimTime fs = 0;
+        for (uint64_t left = words; left > 0;) {
+            const uint64_t piece = std::min<uint64_t>(left, address_map::kDeltaStreamSize / 4);
+            fs += write_fs(piece);
+            left -= piece;
+        }
+        return fs;
+    }
+    return chain_fs(delta_upload_bus_ns(bus_, Transfer::kDma, records));
 }
 
 uint64_t AnalyticFrame::sweep_slots(uint32_t objects) const {
@@ -73,6 +115,20 @@ FramePhases AnalyticFrame::estimate(const std::vector<FloatBox>& boxes) {
 }
 
 FramePhases AnalyticFrame::estimate(uint32_t objects, uint64_t pairs) const {
+    return estimate_with(objects, pairs, false, objects, [](uint64_t, uint64_t count) { return 2 * count; });
+}
+
+FramePhases AnalyticFrame::estimate(uint32_t objects, const PairList& pairs, uint64_t changed) const {
+    const bool delta = objects > 0 && upload_as_delta(driver_, bus_, objects, changed);
+    const uint64_t depth = board_.buffer_depth;
+    return estimate_with(objects, pairs.size(), delta, delta ? changed : objects, [&](uint64_t k, uint64_t count) {
+        return encoded_words(driver_.pair_format, pairs.data() + k * depth, count, objects);
+    });
+}
+
+template <class Words>
+FramePhases AnalyticFrame::estimate_with(uint32_t objects, uint64_t pairs, bool delta, uint64_t sent,
+                                         Words words_of) const {
     const uint64_t depth = board_.buffer_depth;
     // Each pause comes when a pair must move into a full buffer: every
     // segment but the last reads a full buffer back.
@@ -84,20 +140,26 @@ FramePhases AnalyticFrame::estimate(uint32_t objects, uint64_t pairs) const {
 
     SimTime upload = 0, start = 0, compute = 0, irq = 0, readback = 0, driver = 0;
     if (objects > 0) driver += cpu_fs(driver_.call_ns + driver_.ns_per_box * objects);
-    upload += upload_fs(objects);
+    upload += delta ? delta_fs(sent) : upload_fs(objects);
     start += 2 * write_fs();  // the object count and START
-    const SimTime board_ack = driver_.wait == WaitMode::kIrq ? write_fs() : 0;
+    const bool board_irq = board_by_interrupt();
+    const SimTime board_ack = board_irq ? write_fs() : 0;
+    const bool list = driver_.pair_format == PairFormat::kList;
+    uint64_t readback_bytes = 0;
     for (uint64_t k = 0; k < segments; ++k) {
         // The segments' cycles are not known one by one: spread evenly.
         const uint64_t segment_cycles = cycles / segments + (k + 1 == segments ? cycles % segments : 0);
         const SimTime busy = segment_cycles * board_.period_fs;
         compute += busy;
-        irq += notice_fs(busy) - busy;
+        irq += notice_fs(busy, board_irq) - busy;
         // Status, acknowledge, the CYCLES counter, PAIR_COUNT.
-        readback += status_read_fs() + board_ack + 2 * read_fs() + read_fs();
+        readback += status_read_fs(board_irq) + board_ack + 2 * read_fs() + read_fs();
         const uint64_t count = k + 1 < segments ? depth : pairs - pauses * depth;
         if (count > 0) {
-            readback += driver_.transfer == Transfer::kDma ? dma_fs(8 * count, Direction::kToHost) : read_fs(2 * count);
+            const uint64_t words = words_of(k, count);
+            if (!list) readback += read_fs();  // PAIR_WORDS
+            readback += driver_.transfer == Transfer::kDma ? dma_fs(4 * words, Direction::kToHost) : read_fs(words);
+            readback_bytes += 4 * words;
             driver += cpu_fs(driver_.ns_per_pair * static_cast<double>(count));
         }
         if (k + 1 < segments) readback += write_fs();  // RESUME
@@ -115,9 +177,9 @@ FramePhases AnalyticFrame::estimate(uint32_t objects, uint64_t pairs) const {
     phases.compute_cycles = cycles;
     phases.stall_cycles = stalls;
     phases.overflow_pauses = static_cast<uint32_t>(pauses);
-    phases.boxes_sent = objects;
-    phases.upload_bytes = uint64_t{24} * objects;
-    phases.readback_bytes = 8 * pairs;
+    phases.boxes_sent = static_cast<uint32_t>(sent);
+    phases.upload_bytes = (delta ? 4 * uint64_t{address_map::kDeltaRecordWords} : 24) * sent;
+    phases.readback_bytes = readback_bytes;
     return phases;
 }
 

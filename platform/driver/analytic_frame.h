@@ -38,8 +38,13 @@ public:
     // quantum's late notices are not modelled.
     AnalyticFrame(const DriverConfig& driver, const BusTiming& bus, const AnalyticBoard& board);
 
-    // A frame of `objects` boxes whose sweep finds `pairs` pairs.
+    // A frame of `objects` boxes whose sweep finds `pairs` pairs, its upload
+    // full and its pairs read back as a list.
     FramePhases estimate(uint32_t objects, uint64_t pairs) const;
+    // The same for any upload mode and pair format: `changed` boxes differ
+    // from the board's copy (all of them when it holds none), and the
+    // pairs in board order give each read-back's encoded words.
+    FramePhases estimate(uint32_t objects, const PairList& pairs, uint64_t changed) const;
     // The same, counting the pairs first (PairCounter: sort and sweep).
     FramePhases estimate(const std::vector<FloatBox>& boxes);
 
@@ -55,13 +60,24 @@ private:
     SimTime read_fs(uint64_t words = 1) const;
     SimTime write_fs(uint64_t words = 1) const;
     // From a command's end to the driver noticing an event `event_fs` after
-    // it: the interrupt handler running, or the poll whose read finds it.
-    SimTime notice_fs(SimTime event_fs) const;
+    // it: the interrupt handler running, or the poll whose read finds it
+    // (with the driver's back-off).
+    SimTime notice_fs(SimTime event_fs, bool by_interrupt) const;
+    // The k-th pause between two polls of a wait.
+    SimTime poll_gap_fs(uint32_t k) const;
     // The status read after noticing: its own under interrupts, the poll's already.
-    SimTime status_read_fs() const { return driver_.wait == WaitMode::kIrq ? read_fs() : 0; }
+    SimTime status_read_fs(bool by_interrupt) const { return by_interrupt ? read_fs() : 0; }
+    bool board_by_interrupt() const { return driver_.wait == WaitMode::kIrq; }
+    bool dma_by_interrupt() const { return board_by_interrupt() && driver_.interrupts == InterruptPolicy::kEvery; }
     // A DMA in register mode, from setting its registers to clearing its status.
     SimTime dma_fs(uint64_t bytes, Direction direction) const;
+    // A chain's registers, its bus time, the wait, status and clear.
+    SimTime chain_fs(double bus_ns) const;
     SimTime upload_fs(uint32_t objects) const;
+    SimTime delta_fs(uint64_t records) const;
+    // words_of(k, count): the k-th read-back's words for its `count` pairs.
+    template <class Words>
+    FramePhases estimate_with(uint32_t objects, uint64_t pairs, bool delta, uint64_t sent, Words words_of) const;
     static SimTime cpu_fs(double ns) { return ns > 0 ? fs_from_ns(ns) : 0; }
 
     DriverConfig driver_;

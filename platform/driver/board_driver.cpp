@@ -242,7 +242,7 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes, FramePhases& phases
     std::vector<uint32_t> changed;
     if (config_.upload != UploadMode::kFull) {
         changed = changed_boxes(n);
-        delta = config_.upload == UploadMode::kDelta || delta_upload_ns(changed.size()) < full_upload_ns(n);
+        delta = upload_as_delta(config_, *bus_, n, changed.size());
     }
     if (delta) {
         upload_delta(changed);
@@ -277,26 +277,6 @@ std::vector<uint32_t> BoardDriver::changed_boxes(uint32_t objects) const {
         if (!same) changed.push_back(i);
     }
     return changed;
-}
-
-// The bus time alone (the register accesses and the notice are the same
-// for both): six descriptor fetches and arrays, or the stream's pieces.
-double BoardDriver::full_upload_ns(uint32_t objects) const {
-    if (config_.transfer != Transfer::kDma) return kCoordinates * static_cast<double>(objects) * bus_->pio_write_ns();
-    return kCoordinates * (bus_->dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) +
-                           bus_->dma_ns(4 * uint64_t{objects}, Direction::kToBoard));
-}
-
-double BoardDriver::delta_upload_ns(uint64_t records) const {
-    const uint64_t bytes = kDeltaRecordBytes * records;
-    if (config_.transfer != Transfer::kDma) return static_cast<double>(bytes / 4) * bus_->pio_write_ns();
-    double ns = 0;
-    for (uint64_t left = bytes; left > 0;) {
-        const uint64_t piece = std::min<uint64_t>(left, address_map::kDeltaStreamSize);
-        ns += bus_->dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) + bus_->dma_ns(piece, Direction::kToBoard);
-        left -= piece;
-    }
-    return ns;
 }
 
 void BoardDriver::upload_full(uint32_t n) {

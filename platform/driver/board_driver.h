@@ -113,9 +113,6 @@ private:
     void upload_delta(const std::vector<uint32_t>& changed);
     // Boxes whose words differ from the board's copy (all when it is unknown).
     std::vector<uint32_t> changed_boxes(uint32_t objects) const;
-    // The estimated bus time of each upload (the bus formula), for run.upload auto.
-    double full_upload_ns(uint32_t objects) const;
-    double delta_upload_ns(uint64_t records) const;
     // Host RAM areas (byte offsets), from the capacity, pair buffer and config.
     uint64_t pair_area() const;
     uint64_t delta_area() const;

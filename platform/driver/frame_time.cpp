@@ -46,21 +46,36 @@ double FrameTime::timeout_ns(double worst_ns) const {
     return config_.timeout_floor_ns + config_.timeout_factor * worst_ns;
 }
 
-double FrameTime::upload_worst_ns(uint32_t objects) const {
-    return kCoordinates * (bus_.dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) +
-                           bus_.dma_ns(4 * uint64_t{objects}, Direction::kToBoard)) +
-           bus_.interrupt_ns();
+double full_upload_bus_ns(const BusTiming& bus, Transfer transfer, uint32_t objects) {
+    if (transfer != Transfer::kDma) return kCoordinates * static_cast<double>(objects) * bus.pio_write_ns();
+    return kCoordinates * (bus.dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) +
+                           bus.dma_ns(4 * uint64_t{objects}, Direction::kToBoard));
 }
 
-double FrameTime::delta_worst_ns(uint64_t records) const {
+double delta_upload_bus_ns(const BusTiming& bus, Transfer transfer, uint64_t records) {
     const uint64_t bytes = 4 * uint64_t{address_map::kDeltaRecordWords} * records;
-    double ns = bus_.interrupt_ns();
+    if (transfer != Transfer::kDma) return static_cast<double>(bytes / 4) * bus.pio_write_ns();
+    double ns = 0;
     for (uint64_t left = bytes; left > 0;) {
         const uint64_t piece = std::min<uint64_t>(left, address_map::kDeltaStreamSize);
-        ns += bus_.dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) + bus_.dma_ns(piece, Direction::kToBoard);
+        ns += bus.dma_ns(sizeof(DmaDescriptor), Direction::kToBoard) + bus.dma_ns(piece, Direction::kToBoard);
         left -= piece;
     }
     return ns;
+}
+
+bool upload_as_delta(const DriverConfig& config, const BusTiming& bus, uint32_t objects, uint64_t changed) {
+    if (config.upload == UploadMode::kFull) return false;
+    return config.upload == UploadMode::kDelta ||
+           delta_upload_bus_ns(bus, config.transfer, changed) < full_upload_bus_ns(bus, config.transfer, objects);
+}
+
+double FrameTime::upload_worst_ns(uint32_t objects) const {
+    return full_upload_bus_ns(bus_, Transfer::kDma, objects) + bus_.interrupt_ns();
+}
+
+double FrameTime::delta_worst_ns(uint64_t records) const {
+    return bus_.interrupt_ns() + delta_upload_bus_ns(bus_, Transfer::kDma, records);
 }
 
 double FrameTime::any_upload_worst_ns(uint32_t objects) const {

@@ -26,6 +26,16 @@ constexpr SimTime kSimulatedTimeLimit = SimTime{1} << 63;
 // ("9223.372 s").
 std::string simulated_seconds(double ns);
 
+// The bus time of an upload alone, by the bus formula (no register accesses,
+// no notice): the six arrays, each after its descriptor, by DMA, or every
+// word by programmed I/O; the delta stream's records likewise, a descriptor
+// a window-sized piece. run.upload auto takes the smaller, in the driver and
+// at the analytic level alike.
+double full_upload_bus_ns(const BusTiming& bus, Transfer transfer, uint32_t objects);
+double delta_upload_bus_ns(const BusTiming& bus, Transfer transfer, uint64_t records);
+// Whether run.upload sends the `changed` boxes of a frame of `objects` as deltas.
+bool upload_as_delta(const DriverConfig& config, const BusTiming& bus, uint32_t objects, uint64_t changed);
+
 // What a frame's waits and work cost on one board and bus. All times in ns.
 class FrameTime {
 public:

@@ -100,20 +100,8 @@ struct Setup : BoardSetup {
     std::pair<uint64_t, uint64_t> trace_window{0, UINT64_MAX};  // --vcd-frames
 };
 
-// The communication settings the analytic level does not model (it times
-// the paper's driver: full uploads, a pair list, every interrupt, a
-// constant poll gap): the first one set, as "where: name value", or empty.
-std::string unmodelled_by_analytic(const SettingValues& values) {
-    for (const char* name : {"driver.upload", "driver.pair_format", "driver.interrupts", "driver.poll_backoff"}) {
-        const Setting& setting = *find_setting(name);
-        if (!values.is_default(setting)) return values.where(setting);
-    }
-    return {};
-}
-
-// What the analytic level cannot model is refused, not silently ignored
-// (auto runs the fast engine instead, and says why).
-void check_analytic_run(Setup& setup, const RunOptions& o) {
+// What the analytic level cannot model is refused, not silently ignored.
+void check_analytic_run(const Setup& setup, const RunOptions& o) {
     const SettingValues& values = setup.values;
     const std::string level = std::string("the ") + name_of(values.settings().run.fidelity) + " level (" +
                               values.where(*find_setting("run.fidelity")) + ")";
@@ -125,15 +113,6 @@ void check_analytic_run(Setup& setup, const RunOptions& o) {
         throw InputError(values.where(quantum) + ": " + level +
                          " times a host that synchronises at every access; expected 0 (docs/analytic.md)");
     }
-    const std::string unmodelled = unmodelled_by_analytic(values);
-    if (unmodelled.empty()) return;
-    if (values.settings().run.fidelity == ModelLevel::kAuto) {
-        setup.analytic_unmodelled = unmodelled;
-        return;
-    }
-    throw InputError(unmodelled + ": " + level +
-                     " times the paper's full upload, pair list, interrupts and constant poll gap only; use "
-                     "--fidelity fast or cycle (docs/communication.md)");
 }
 
 Setup make_setup(const RunOptions& o, const po::variables_map& vm) {

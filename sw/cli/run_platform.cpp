@@ -26,7 +26,6 @@ std::string LevelChoice::words() const {
                   static_cast<unsigned long long>(analytic_frames), static_cast<unsigned long long>(frames),
                   static_cast<unsigned long long>(bounded_frames));
     std::string text = line;
-    if (!unmodelled.empty()) text += "; the fast engine on every frame: the analytic level does not model " + unmodelled;
     if (measured) {
         std::snprintf(line, sizeof line, "; measured on frame %llu against the fast engine: %s off by %.3g%%, %s --max-error %g%%",
                       static_cast<unsigned long long>(measured_frame), measured_phase, measured_error_percent,
@@ -42,7 +41,6 @@ nlohmann::json LevelChoice::to_json() const {
                              {"analytic_frames", analytic_frames},
                              {"exact_by_bound_frames", bounded_frames},
                              {"fast_frames", fast_frames}};
-    if (!unmodelled.empty()) choice["unmodelled"] = unmodelled;
     if (measured) {
         choice["measured_frame"] = measured_frame;
         choice["measured_error_percent"] = measured_error_percent;
@@ -58,8 +56,6 @@ RunPlatform::RunPlatform(const BoardSetup& setup, uint32_t capacity, const std::
         board_ = std::make_unique<VirtualBoard>("platform", setup.platform, capacity, trace_base);
     }
     choice_.max_error_percent = setup.values.settings().run.max_error_percent;
-    choice_.unmodelled = setup.analytic_unmodelled;
-    if (!choice_.unmodelled.empty()) decided_ = Decided::kFast;
 }
 
 const FrameResult* RunPlatform::try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) {

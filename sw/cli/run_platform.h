@@ -31,7 +31,6 @@ struct LevelChoice {
     uint64_t measured_frame = 0;
     double measured_error_percent = 0;
     const char* measured_phase = "";
-    std::string unmodelled;  // a setting the analytic level does not model: the fast engine on every frame
     std::string words() const;        // "analytic on 18 of 20 frames: ...", for the summary
     nlohmann::json to_json() const;   // the report's "fidelity_choice"
 };

@@ -30,9 +30,6 @@ struct BoardSetup {
     std::string board = "ideal";  // the preset's name
     ModelLevel level = ModelLevel::kFast;  // as the run goes: --vcd picks cycle (model_level)
     HostTiming host;              // from native to modelled-host time
-    // Under --fidelity auto: the setting the analytic level does not model,
-    // and so why every frame runs on the fast engine; empty when it models all.
-    std::string analytic_unmodelled;
 };
 
 // The settings, each layer over the last. scene: the generated --scene

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "models/common/fault_plan.h"
+#include "platform/analytic_platform.h"
 #include "platform/virtual_board.h"
 #include "tests/support/core_driver.h"
 #include "tests/support/preset_platform.h"
@@ -49,8 +50,8 @@ PlatformConfig platform_for(const Strategy& s, Fidelity fidelity) {
 }
 
 // Frames where a fifth of the boxes move and the scene grows once.
-std::vector<std::vector<FloatBox>> moving_frames(uint32_t n, std::mt19937& rng) {
-    std::vector<std::vector<FloatBox>> frames{testing::random_boxes(n, 9.0f, 2.5f, rng)};
+std::vector<std::vector<FloatBox>> moving_frames(uint32_t n, std::mt19937& rng, float extent = 9.0f) {
+    std::vector<std::vector<FloatBox>> frames{testing::random_boxes(n, extent, 2.5f, rng)};
     std::uniform_real_distribution<float> step(-0.3f, 0.3f);
     for (int f = 1; f < 5; ++f) {
         std::vector<FloatBox> next = frames.back();
@@ -148,6 +149,63 @@ TEST(Communication, AfterAFaultTheNextFrameUploadsEveryBox) {
     EXPECT_EQ(frames[3].size(), after.phases.boxes_sent);
     EXPECT_EQ(sorted(reference.run_frame(frames[3], 3).pairs), sorted(after.pairs));
     EXPECT_EQ(changed(frames[3], frames[4]), board.run_frame(frames[4], 4).phases.boxes_sent);
+}
+
+// The analytic level times every strategy as the platform does: where the
+// board does not stall, every phase is exact (polling through pauses aside,
+// whose notices depend on segment lengths it spreads evenly), and the
+// pairs, boxes sent and bytes moved are the platform's.
+TEST(Communication, TheAnalyticLevelTimesEveryStrategyPhaseByPhase) {
+    const std::vector<Strategy> strategies = {
+        {"paper", UploadMode::kFull, PairFormat::kList, InterruptPolicy::kEvery},
+        {"delta_counted", UploadMode::kDelta, PairFormat::kCounted, InterruptPolicy::kEvery},
+        {"auto_bitmap_board", UploadMode::kAuto, PairFormat::kBitmap, InterruptPolicy::kBoard},
+        {"delta_list_board_poll", UploadMode::kDelta, PairFormat::kList, InterruptPolicy::kBoard, WaitMode::kPoll,
+         Transfer::kDma, 1.0},
+        {"delta_pio_backoff", UploadMode::kDelta, PairFormat::kCounted, InterruptPolicy::kEvery, WaitMode::kPoll,
+         Transfer::kPio, 2.0},
+        {"auto_bitmap_backoff_tiles", UploadMode::kAuto, PairFormat::kBitmap, InterruptPolicy::kBoard, WaitMode::kPoll,
+         Transfer::kDma, 1.5, 64},
+    };
+    std::vector<std::unique_ptr<VirtualBoard>> platforms;
+    for (const Strategy& s : strategies) {
+        platforms.push_back(std::make_unique<VirtualBoard>((std::string(s.name) + "_platform").c_str(),
+                                                           platform_for(s, Fidelity::kFast), 301));
+    }
+    std::mt19937 rng(93);
+    const auto frames = moving_frames(300, rng, 16.0f);
+    int paused = 0;
+    for (std::size_t k = 0; k < strategies.size(); ++k) {
+        AnalyticPlatform analytic(platform_for(strategies[k], Fidelity::kFast), 301);
+        for (std::size_t f = 0; f < frames.size(); ++f) {
+            const std::string where = std::string(strategies[k].name) + ", frame " + std::to_string(f);
+            const FrameResult& exact = platforms[k]->run_frame(frames[f]);
+            FrameFault fault;
+            const FrameResult* estimated = analytic.try_run_frame(frames[f], f, fault);
+            ASSERT_NE(estimated, nullptr) << where;
+            ASSERT_EQ(exact.phases.stall_cycles, exact.phases.overflow_pauses) << where << ": no FIFO stalls";
+            EXPECT_EQ(estimated->pairs, exact.pairs) << where;
+            const FramePhases& a = estimated->phases;
+            const FramePhases& b = exact.phases;
+            EXPECT_EQ(a.boxes_sent, b.boxes_sent) << where;
+            EXPECT_EQ(a.upload_bytes, b.upload_bytes) << where;
+            EXPECT_EQ(a.readback_bytes, b.readback_bytes) << where;
+            const bool notices_exact = strategies[k].wait == WaitMode::kIrq || b.overflow_pauses == 0;
+            for (const auto& [x, y, phase, claimed] :
+                 {std::tuple{a.upload_ns, b.upload_ns, "upload", true}, std::tuple{a.start_ns, b.start_ns, "start", true},
+                  std::tuple{a.compute_ns, b.compute_ns, "compute", true},
+                  std::tuple{a.irq_ns, b.irq_ns, "irq", notices_exact},
+                  std::tuple{a.readback_ns, b.readback_ns, "readback", true},
+                  std::tuple{a.driver_ns, b.driver_ns, "driver", true},
+                  std::tuple{a.total_ns, b.total_ns, "total", notices_exact}}) {
+                if (claimed) {
+                    EXPECT_NEAR(x, y, 1e-6 * std::max(1.0, y)) << where << ": " << phase;
+                }
+            }
+            paused += b.overflow_pauses > 0;
+        }
+    }
+    EXPECT_GT(paused, 5) << "frames that pause, so the read-back of every segment is checked";
 }
 
 }  // namespace
