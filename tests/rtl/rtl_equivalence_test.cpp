@@ -6,7 +6,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -19,7 +22,9 @@
 #include <vector>
 
 #include "models/address_generator/address_generator.h"
+#include "models/board/board_core.h"
 #include "models/comparison_unit/comparison_unit.h"
+#include "models/control_registers/control_registers.h"
 
 namespace cdvp {
 namespace {
@@ -39,10 +44,14 @@ public:
         if (made == nullptr) throw std::runtime_error("mkdtemp failed");
         dir_ = made;
     }
-    ~Simulation() { std::system(("rm -rf '" + dir_ + "'").c_str()); }
+    // CDVP_RTL_KEEP=1 keeps the directory (commands, results) for a look.
+    ~Simulation() {
+        if (std::getenv("CDVP_RTL_KEEP") == nullptr) std::system(("rm -rf '" + dir_ + "'").c_str());
+    }
+    const std::string& dir() const { return dir_; }
 
-    void write_vectors(const std::vector<std::string>& lines) const {
-        std::ofstream out(dir_ + "/vectors.hex");
+    void write_vectors(const std::vector<std::string>& lines, const std::string& name = "vectors.hex") const {
+        std::ofstream out(dir_ + "/" + name);
         for (const std::string& line : lines) out << line << '\n';
     }
     // Compiles the testbench 'top' with 'sources' and parameters, runs it
@@ -294,6 +303,343 @@ TEST(PairCollectorRtl, PassesEveryPairOnInRowThenColumnOrderUnderBackPressure) {
                     "+count=" + std::to_string(lines.size()));
         ASSERT_EQ(results, expected) << "m = " << m;
     }
+}
+
+
+// ---------------------------------------------------------------------------
+// The whole board (models/board/rtl/collision_board_top.v) against BoardCore
+// with the clocked engine. A host script (writes, reads, waits for the board
+// to stop) is applied to the model as it is written; the testbench runs the
+// same script on the RTL and every read must return the model's word: the
+// pairs in board order through every overflow pause, CYCLES, STALLS,
+// TOTAL_PAIRS, PAIR_COUNT, STATUS and ERROR_CAUSE.
+
+// One board: the RTL's parameters and the model's configuration from them.
+struct TopBoard {
+    uint32_t m = 2;
+    uint32_t address_bits = 9;    // capacity 2^address_bits boxes
+    uint32_t fixed_bits = 0;      // 0: float32
+    uint32_t compare_latency = 2;
+    uint32_t fifo_depth = 16;
+    uint32_t buffer_depth = 64;
+    uint32_t tile_boxes = 0;
+    uint32_t tile_latency = 2;
+
+    uint32_t capacity() const { return 1u << address_bits; }
+    BoardConfig config() const {
+        BoardConfig c;
+        c.m = m;
+        c.format = fixed_bits == 0 ? NumberFormat::float32() : NumberFormat::fixed(fixed_bits);
+        c.compare.latency_cycles = compare_latency;
+        c.collector.fifo_depth = fifo_depth;
+        c.collector.buffer_depth = buffer_depth;
+        c.tiles.boxes = tile_boxes;
+        c.tiles.load_latency_cycles = tile_latency;
+        c.tiles.cycles_per_box = 1;
+        return c;
+    }
+    std::vector<std::pair<std::string, std::string>> parameters() const {
+        return {{"M", std::to_string(m)},
+                {"AW", std::to_string(address_bits)},
+                {"FLOAT", fixed_bits == 0 ? "1" : "0"},
+                {"WIDTH", std::to_string(fixed_bits == 0 ? 32 : fixed_bits)},
+                {"COMPARE_LATENCY", std::to_string(compare_latency)},
+                {"FIFO_DEPTH", std::to_string(fifo_depth)},
+                {"BUFFER_DEPTH", std::to_string(buffer_depth)},
+                {"TILE_BOXES", std::to_string(tile_boxes)},
+                {"TILE_LATENCY", std::to_string(tile_latency)}};
+    }
+};
+
+// Boxes as the host writes them: six words each, in Coordinate order.
+using Boxes = std::vector<std::array<uint32_t, kCoordinates>>;
+
+// n boxes in a cube of side `side` with half-extents in [0.5, 1.5), some
+// touching exactly, some at -0 / +0 (float32); or the same scaled by 100 in
+// K-bit integers, with junk above bit K that the memories drop.
+Boxes random_boxes(uint32_t n, double side, uint32_t fixed_bits, uint32_t seed) {
+    std::mt19937 random(seed);
+    const double scale = fixed_bits == 0 ? 1.0 : 100.0;
+    std::uniform_real_distribution<double> where(0.0, side * scale), half(0.5 * scale, 1.5 * scale);
+    Boxes boxes(n);
+    for (uint32_t i = 0; i < n; ++i) {
+        for (uint32_t axis = 0; axis < 3; ++axis) {
+            double lo = where(random), hi = 0;
+            if (i > 0 && random() % 8 == 0) {
+                // touch the previous box's max on this axis
+                lo = fixed_bits == 0 ? ComparisonUnit::as_float(boxes[i - 1][axis + 3])
+                                     : static_cast<double>(boxes[i - 1][axis + 3]);
+            }
+            hi = lo + 2 * half(random);
+            if (fixed_bits == 0) {
+                float flo = static_cast<float>(lo), fhi = static_cast<float>(hi);
+                if (random() % 16 == 0) { flo = -0.0f; fhi = std::max(fhi, 0.5f); }
+                boxes[i][axis] = ComparisonUnit::as_bits(flo);
+                boxes[i][axis + 3] = ComparisonUnit::as_bits(fhi);
+            } else {
+                const uint32_t top = fixed_bits == 32 ? ~0u : (1u << fixed_bits) - 1;
+                const uint32_t junk = static_cast<uint32_t>(random()) & ~top;  // bits the memories drop
+                const auto code = [&](double v) { return static_cast<uint32_t>(std::min<double>(v, top)); };
+                boxes[i][axis] = junk | code(std::floor(lo));
+                boxes[i][axis + 3] = junk | code(std::ceil(hi));
+            }
+        }
+    }
+    return boxes;
+}
+
+// The script and what every read must return, built against the model.
+class HostScript {
+public:
+    explicit HostScript(const TopBoard& board) : core_(board.config(), board.capacity(), Fidelity::kCycle) {}
+
+    BoardCore& core() { return core_; }
+    void write(uint32_t address, uint32_t data) {
+        add(1, address, data);
+        const uint32_t region = address >> 24, offset = address & 0xFFFFFF;
+        if (region == 0) {
+            core_.write_register(offset, data);
+        } else if (region >= 1 && region <= 6) {
+            core_.write_coordinate(static_cast<Coordinate>(region - 1), offset / 4, data);
+        } else if (region == 9) {
+            unsigned char bytes[4];
+            std::memcpy(bytes, &data, 4);
+            core_.write_delta(bytes, 1);
+        }
+    }
+    uint32_t read(uint32_t address) {
+        add(2, address, 0);
+        uint32_t value = 0;
+        const uint32_t region = address >> 24, offset = address & 0xFFFFFF;
+        if (region == 0) {
+            if (!core_.read_register(offset, value)) value = 0;
+        } else if (region == 7) {
+            unsigned char bytes[4];
+            core_.copy_window_words(offset / 4, 1, bytes);
+            std::memcpy(&value, bytes, 4);
+        }
+        expected_.push_back(hex32(value));
+        return value;
+    }
+    void wait() {
+        add(3, 0, 0);
+        if (core_.running()) core_.advance_to(core_.segment_edges());
+    }
+    void write_register(uint32_t offset, uint32_t data) { write(offset, data); }
+    uint32_t read_register(uint32_t offset) { return read(offset); }
+    void write_box(uint32_t i, const std::array<uint32_t, kCoordinates>& box) {
+        for (uint32_t c = 0; c < kCoordinates; ++c) write(0x0100'0000u * (c + 1) + 4 * i, box[c]);
+    }
+    void write_delta_record(uint32_t i, const std::array<uint32_t, kCoordinates>& box) {
+        write(0x0900'0000u, i);
+        for (uint32_t c = 0; c < kCoordinates; ++c) write(0x0900'0000u, box[c]);
+    }
+
+    // One sweep as a driver runs it: START, wait, read the buffer and RESUME
+    // on every overflow, read the buffer and the counters when done.
+    // Returns the overflow pauses.
+    uint32_t sweep(uint32_t objects) {
+        using R = ControlRegisters;
+        write_register(R::kObjectCount, objects);
+        write_register(R::kControl, R::kStart);
+        uint32_t pauses = 0;
+        for (;;) {
+            wait();
+            const uint32_t status = read_register(R::kStatus);
+            const uint32_t words = read_register(R::kPairWords);
+            const uint32_t pairs = read_register(R::kPairCount);
+            EXPECT_EQ(words, 2 * pairs);
+            for (uint32_t w = 0; w < words; ++w) read(0x0700'0000u + 4 * w);
+            if ((status & R::kOverflow) == 0) break;
+            ++pauses;
+            write_register(R::kControl, R::kResume);
+        }
+        for (uint32_t offset : {R::kStatus, R::kCyclesLo, R::kCyclesHi, R::kStallsLo, R::kStallsHi,
+                                R::kTotalPairsLo, R::kTotalPairsHi, R::kErrorCause, R::kDeltaRecords}) {
+            read_register(offset);
+        }
+        write_register(R::kControl, R::kAcknowledge);
+        return pauses;
+    }
+
+    // The testbench's results against the model's.
+    void run_and_compare(const TopBoard& board, const std::string& what) {
+        add(0, 0, 0);
+        Simulation sim;
+        sim.write_vectors(lines_, "commands.txt");
+        const std::vector<std::string> results =
+            sim.run("tb_board_top",
+                    {"models/board/rtl/collision_board_top.v", "models/board/rtl/board_ram.v",
+                     "models/board/rtl/tile_walker.v", "models/address_generator/rtl/address_generator.v",
+                     "models/comparison_unit/rtl/float_le.v", "models/comparison_unit/rtl/compare_lane.v",
+                     "models/pair_collector/rtl/pair_collector.v", "models/control_registers/rtl/board_control.v"},
+                    board.parameters(), "");
+        if (std::getenv("CDVP_RTL_KEEP") != nullptr) {
+            std::ofstream keep(sim.dir() + "/expected.txt");
+            for (const std::string& line : expected_) keep << line << '\n';
+        }
+        ASSERT_EQ(results.size(), expected_.size()) << what;
+        for (std::size_t k = 0; k < results.size(); ++k) {
+            ASSERT_EQ(results[k], expected_[k]) << what << ": read " << k << " of " << results.size()
+                                                << " (address " << std::hex << read_addresses_[k] << ")";
+        }
+    }
+
+private:
+    void add(int op, uint32_t address, uint32_t data) {
+        std::ostringstream line;
+        line << std::hex << op << ' ' << address << ' ' << data;
+        lines_.push_back(line.str());
+        if (op == 2) read_addresses_.push_back(address);
+    }
+    BoardCore core_;
+    std::vector<std::string> lines_;
+    std::vector<std::string> expected_;
+    std::vector<uint32_t> read_addresses_;
+};
+
+// The board's identity registers, then the scene's sweeps at the given sizes.
+struct TopScene {
+    TopBoard board;
+    std::vector<uint32_t> sweeps;  // object counts, swept in turn over one scene
+    double side;                   // the scene's cube
+    bool delta = false;            // boxes written as delta records
+};
+
+void run_top_scene(const TopScene& scene, uint32_t seed, bool expect_stalls, bool expect_pauses) {
+    using R = ControlRegisters;
+    const TopBoard& board = scene.board;
+    std::ostringstream what;
+    what << "m=" << board.m << " AW=" << board.address_bits << " fixed=" << board.fixed_bits
+         << " Lc=" << board.compare_latency << " fifo=" << board.fifo_depth << " buffer=" << board.buffer_depth
+         << " tile=" << board.tile_boxes;
+    HostScript script(board);
+    for (uint32_t offset : {R::kId, R::kParallelism, R::kCapacity, R::kPairBufferDepth, R::kFormat, R::kTileBoxes,
+                            R::kTileTiming, R::kStatus}) {
+        script.read_register(offset);
+    }
+    const uint32_t most = *std::max_element(scene.sweeps.begin(), scene.sweeps.end());
+    const Boxes boxes = random_boxes(most, scene.side, board.fixed_bits, seed);
+    for (uint32_t i = 0; i < most; ++i) {
+        if (scene.delta) script.write_delta_record(i, boxes[i]);
+        else script.write_box(i, boxes[i]);
+    }
+    uint64_t stalls = 0, pauses = 0, pairs = 0;
+    for (const uint32_t n : scene.sweeps) {
+        pauses += script.sweep(n);
+        const SweepCounters counters = script.core().counters();
+        stalls += counters.stalls;
+        pairs += counters.total_pairs;
+        // The model's own account: S + L edges and the stalls.
+        EXPECT_EQ(counters.cycles, board.config().sweep_cycles(n) + board.config().pipeline_latency() + counters.stalls)
+            << what.str() << " N=" << n;
+    }
+    EXPECT_GT(pairs, 0u) << what.str();
+    if (expect_stalls) {
+        EXPECT_GT(stalls, 0u) << what.str();
+    }
+    if (expect_pauses) {
+        EXPECT_GT(pauses, 0u) << what.str();
+    }
+    script.run_and_compare(board, what.str());
+}
+
+TEST(BoardTopRtl, OneLaneFloat32MatchesTheModel) {
+    TopScene scene;
+    scene.board = {1, 9, 0, 2, 512, 512, 0, 2};
+    scene.sweeps = {0, 1, 2, 3, 200};
+    scene.side = 25;
+    run_top_scene(scene, 101, false, false);
+}
+
+TEST(BoardTopRtl, TwoBlockRamsDeepWithFifoStallsAndOverflowPauses) {
+    TopScene scene;
+    scene.board = {2, 10, 0, 2, 3, 24, 0, 2};  // the smallest FIFO (2m-1) and a small buffer
+    scene.sweeps = {600};                       // across the 512-box block RAM border
+    scene.side = 45;
+    run_top_scene(scene, 102, true, true);
+}
+
+TEST(BoardTopRtl, ThreeLanePairsFixed16WithDeltaRecords) {
+    TopScene scene;
+    scene.board = {3, 9, 16, 1, 8, 40, 0, 2};
+    scene.sweeps = {512, 37};   // the full capacity, then a few
+    scene.side = 40;
+    scene.delta = true;
+    run_top_scene(scene, 103, true, true);
+}
+
+TEST(BoardTopRtl, EightLanePairsFloat32CombinationalCompare) {
+    TopScene scene;
+    scene.board = {8, 10, 0, 0, 16, 100, 0, 2};
+    scene.sweeps = {513, 700};  // one past a block RAM, and well into the second
+    scene.side = 45;
+    run_top_scene(scene, 104, true, true);
+}
+
+TEST(BoardTopRtl, TiledSceneFromSsramMatchesTheModel) {
+    TopScene scene;
+    scene.board = {2, 10, 0, 2, 6, 32, 64, 2};
+    scene.sweeps = {300, 129, 64, 1};  // a partial last tile, a one-box last tile, one tile, none
+    scene.side = 30;
+    run_top_scene(scene, 105, true, true);
+}
+
+TEST(BoardTopRtl, TiledFixed12WithoutSsramLatencyMatchesTheModel) {
+    TopScene scene;
+    scene.board = {3, 9, 12, 0, 5, 16, 32, 0};
+    scene.sweeps = {161, 70};
+    scene.side = 20;
+    run_top_scene(scene, 106, true, true);
+}
+
+// Refused commands set ERROR with the model's cause and the sweep goes on;
+// ABORT clears them.
+TEST(BoardTopRtl, ErrorCausesAndAbortMatchTheModel) {
+    using R = ControlRegisters;
+    TopBoard board{2, 9, 0, 2, 8, 32, 0, 2};
+    HostScript script(board);
+    const Boxes boxes = random_boxes(300, 20, 0, 107);
+    for (uint32_t i = 0; i < 300; ++i) script.write_box(i, boxes[i]);
+    const auto status = [&] {
+        script.read_register(R::kStatus);
+        script.read_register(R::kErrorCause);
+    };
+    script.write_register(R::kControl, R::kResume);  // not paused
+    status();
+    script.write_register(R::kObjectCount, 513);     // above the capacity
+    script.write_register(R::kControl, R::kStart);
+    status();
+    script.write_register(R::kControl, R::kAbort);
+    status();
+    script.write_register(R::kPairFormat, 7);        // no such format
+    status();
+    script.write(0x0900'0000u, 3);                   // a delta record begun
+    script.write_register(R::kObjectCount, 300);
+    script.write_register(R::kControl, R::kStart);   // refused: the record is incomplete
+    status();
+    for (uint32_t c = 0; c < kCoordinates; ++c) script.write(0x0900'0000u, boxes[3][c]);
+    script.write(0x0900'0000u, 600);                 // a record past the capacity
+    for (uint32_t c = 0; c < kCoordinates; ++c) script.write(0x0900'0000u, 0);
+    status();
+    script.read_register(R::kDeltaRecords);
+    script.write_register(R::kControl, R::kAbort);
+    script.write_register(R::kControl, R::kStart);   // runs
+    script.write_box(5, boxes[5]);                   // refused while busy
+    script.write_register(R::kObjectCount, 3);       // refused while busy
+    script.write_register(R::kControl, R::kStart);   // refused while busy
+    script.read_register(R::kObjectCount);
+    status();
+    script.wait();
+    status();
+    script.read_register(R::kPairCount);
+    script.write_register(R::kControl, R::kResume);  // paused: accepted
+    script.wait();
+    script.write_register(R::kControl, R::kAbort);   // the board stops, the counters stay
+    status();
+    script.read_register(R::kPairCount);
+    script.read_register(R::kTotalPairsLo);
+    script.run_and_compare(board, "errors");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@ module board_control #(
     parameter CW = 32  // counter bits
 ) (
     input  wire          clk,
+    input  wire          abort,          // host writes ABORT (or reset): back to idle
     input  wire          start,          // host writes START
     input  wire          resume,         // host writes RESUME after draining the buffer
     input  wire          sweeping,       // the address generator has addresses
@@ -22,7 +23,9 @@ module board_control #(
     assign enable = running & fifo_room & ~buffer_full;
     assign irq = state[DONE] | state[PAUSED];
     always @(posedge clk) begin
-        if (start) begin
+        if (abort) begin
+            state <= 5'b1 << IDLE;
+        end else if (start) begin
             state <= 5'b1 << SWEEP;
             cycles <= 0;
             stalls <= 0;
@@ -32,9 +35,12 @@ module board_control #(
                 if (!enable) stalls <= stalls + 1;
             end
             if (running && buffer_full) state <= 5'b1 << PAUSED;
-            else if (state[PAUSED] && resume) state <= 5'b1 << SWEEP;
+            // A pause after the last address resumes into the drain.
+            else if (state[PAUSED] && resume) state <= 5'b1 << (sweeping ? SWEEP : DRAIN);
+            // Done as soon as the pipeline has emptied after the last address,
+            // even on the edge that would otherwise move SWEEP to DRAIN.
+            else if (running && !sweeping && pipeline_empty) state <= 5'b1 << DONE;
             else if (state[SWEEP] && !sweeping) state <= 5'b1 << DRAIN;
-            else if (state[DRAIN] && pipeline_empty) state <= 5'b1 << DONE;
             else if (state == 0) state <= 5'b1 << IDLE;
         end
     end

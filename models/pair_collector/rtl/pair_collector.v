@@ -10,7 +10,9 @@ module pair_collector #(
     parameter M = 8,
     parameter AW = 9,
     parameter DEPTH = 512,   // pairs (and entries: an entry holds at least one)
-    parameter DISTRIBUTED = 0  // 1: entries in LUTs (distributed RAM), 0: in block RAM
+    parameter DISTRIBUTED = 0, // 1: entries in LUTs (distributed RAM), 0: in block RAM
+    parameter DRAIN_FIRST = 0  // 1: the pair leaving this cycle frees its place for this
+                               // cycle's hits (the C++ model drains before it pushes)
 ) (
     input  wire            clk,
     input  wire            clear,
@@ -20,7 +22,8 @@ module pair_collector #(
     input  wire            drain_ready,  // the pair buffer takes a pair
     output wire            room,         // this cycle's hits fit
     output reg             out_valid,
-    output reg  [2*AW-1:0] out_pair      // {row, column}
+    output reg  [2*AW-1:0] out_pair,     // {row, column}
+    output wire [$clog2(DEPTH+1)-1:0] level  // pairs held (before this cycle's move)
 );
     localparam LANES = 2 * M - 1;
     localparam EW = 2 * AW + LANES;  // entry: row, first, mask
@@ -41,8 +44,6 @@ module pair_collector #(
         taken = 0;
         for (k = 0; k < LANES; k = k + 1) taken = taken + hits[k];
     end
-    assign room = pairs + taken <= DEPTH;
-    wire write = room && (|hits);
     wire [EW-1:0] entry = {row, first, hits};
 
     // The lowest hit of the head entry not yet passed on.
@@ -56,6 +57,10 @@ module pair_collector #(
     wire [LANES-1:0] bit_taken = {{(LANES-1){1'b0}}, 1'b1} << lane;
     wire take = (|left) && drain_ready;
     wire advance = take && (left & ~bit_taken) == 0;  // the head's last pair leaves
+    // Room counts the pair leaving this cycle when DRAIN_FIRST is set.
+    assign room = pairs + taken <= DEPTH + (DRAIN_FIRST != 0 && take ? 1 : 0);
+    wire write = room && (|hits);
+    assign level = pairs;
     wire [PW-1:0] read_next = advance ? (read_at + 1 == DEPTH ? 0 : read_at + 1) : read_at;
 
     pair_fifo_memory #(.W(EW), .DEPTH(DEPTH), .AW(PW), .DISTRIBUTED(DISTRIBUTED)) entries (
