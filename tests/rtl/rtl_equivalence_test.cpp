@@ -356,7 +356,9 @@ using Boxes = std::vector<std::array<uint32_t, kCoordinates>>;
 
 // n boxes in a cube of side `side` with half-extents in [0.5, 1.5), some
 // touching exactly, some at -0 / +0 (float32); or the same scaled by 100 in
-// K-bit integers, with junk above bit K that the memories drop.
+// K-bit integers, with junk above bit K that the memories drop. Boxes 0-7,
+// 64-71, ... sit in a corner where all overlap: runs of hits on every lane
+// that fill the FIFO and hold the pipeline.
 Boxes random_boxes(uint32_t n, double side, uint32_t fixed_bits, uint32_t seed) {
     std::mt19937 random(seed);
     const double scale = fixed_bits == 0 ? 1.0 : 100.0;
@@ -364,7 +366,7 @@ Boxes random_boxes(uint32_t n, double side, uint32_t fixed_bits, uint32_t seed) 
     Boxes boxes(n);
     for (uint32_t i = 0; i < n; ++i) {
         for (uint32_t axis = 0; axis < 3; ++axis) {
-            double lo = where(random), hi = 0;
+            double lo = i % 64 < 8 ? where(random) / side : where(random), hi = 0;
             if (i > 0 && random() % 8 == 0) {
                 // touch the previous box's max on this axis
                 lo = fixed_bits == 0 ? ComparisonUnit::as_float(boxes[i - 1][axis + 3])
