@@ -83,6 +83,7 @@ module collision_board_top #(
     wire done = state[4];
     wire busy = running | paused;
     wire enable;            // the pipeline advances this edge (a slot)
+    wire control_irq;       // board_control's own line; the host's interrupt is irq_pending (cleared by ACK)
 
     // ------------------------------------------------------------------
     // Host writes
@@ -312,7 +313,8 @@ module collision_board_top #(
     reg [BAW:0] buffered;                   // PAIR_COUNT
     reg [BAW-1:0] buffer_write_at;
     reg [63:0] total_pairs;
-    wire buffer_full = buffered == BUFFER_DEPTH;
+    localparam [BAW:0] BUFFER_FULL = BUFFER_DEPTH[BAW:0];
+    wire buffer_full = buffered == BUFFER_FULL;
     wire [FW-1:0] fifo_level;
     wire room;
     wire drain_ready = running && !buffer_full;
@@ -331,13 +333,13 @@ module collision_board_top #(
     board_control #(.CW(64)) control (
         .clk(clk), .abort(cmd_abort), .start(start_go), .resume(resume_go), .sweeping(src_sweeping),
         .pipeline_empty(done_now), .fifo_room(room && !end_seen), .buffer_full(pause_now),
-        .enable(enable), .state(state), .cycles(cycles), .stalls(stalls), .irq());
+        .enable(enable), .state(state), .cycles(cycles), .stalls(stalls), .irq(control_irq));
 
     reg [LANES:0] pushed_count;
     integer h;
     always @* begin
         pushed_count = 0;
-        for (h = 0; h < LANES; h = h + 1) pushed_count = pushed_count + pushed_hits[h];
+        for (h = 0; h < LANES; h = h + 1) pushed_count = pushed_count + {{LANES{1'b0}}, pushed_hits[h]};
     end
 
     // Host reads of the pair buffer: pair k at 8k, first index in the low word.
@@ -365,7 +367,7 @@ module collision_board_top #(
             else if (take) buffered <= buffered + 1'b1;
             if (resume_go) buffer_write_at <= 0;
             else if (out_valid) buffer_write_at <= buffer_write_at + 1'b1;
-            if (enable) total_pairs <= total_pairs + pushed_count;
+            if (enable) total_pairs <= total_pairs + {{(63-LANES){1'b0}}, pushed_count};
         end
     end
 
@@ -417,7 +419,7 @@ module collision_board_top #(
             12'h000: register_value = ID_VALUE;
             12'h008: register_value = {28'b0, error, paused, done, busy};
             12'h00C: register_value = object_count;
-            12'h010: register_value = buffered;
+            12'h010: register_value = {{(31-BAW){1'b0}}, buffered};
             12'h014: register_value = cycles[31:0];
             12'h018: register_value = cycles[63:32];
             12'h01C: register_value = stalls[31:0];
@@ -432,7 +434,7 @@ module collision_board_top #(
             12'h040: register_value = TILE_BOXES;
             12'h044: register_value = TILED ? (TILE_LATENCY & 32'hFFFF) | (32'd1 << 16) : 0;
             12'h048: register_value = 0;
-            12'h04C: register_value = {buffered, 1'b0};
+            12'h04C: register_value = {{(30-BAW){1'b0}}, buffered, 1'b0};
             12'h050: register_value = delta_records;
             default: register_value = 0;
         endcase
@@ -446,7 +448,7 @@ module collision_board_top #(
         register_q <= re && reg_access ? register_value : 0;
     end
     always @* begin
-        if (read_pair) rdata = read_high ? pair_word[AW-1:0] : pair_word[2*AW-1 -: AW];  // {row, column}
+        if (read_pair) rdata = {{(32-AW){1'b0}}, read_high ? pair_word[AW-1:0] : pair_word[2*AW-1 -: AW]};  // {row, column}
         else rdata = register_q;
     end
 endmodule

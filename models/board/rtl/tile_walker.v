@@ -189,30 +189,26 @@ module tile_walker #(
         end
     end
 
-    // The SSRAM's words arrive LAT clocks after their read.
-    reg [LAT:0] land_valid;
-    reg [TAW-1:0] land_at [0:LAT];
-    reg [LAT:0] land_col_par, land_row_par, land_rows;
-    always @* begin
-        land_valid[0] = read_now;
-        land_at[0] = read_j[TAW-1:0];
-        land_col_par[0] = read_col_par;
-        land_row_par[0] = read_row_par;
-        land_rows[0] = read_with_row;
-    end
-    genvar s;
+    // The SSRAM's words arrive LAT clocks after their read: stage 0 is this
+    // cycle's read, stage s the read s cycles ago.
+    localparam LW = TAW + 4;  // valid, column buffer, row buffer, with row, address
+    wire [LW-1:0] land_now = {read_now, read_col_par, read_row_par, read_with_row, read_j[TAW-1:0]};
+    wire [LW-1:0] landing;
     generate
-        for (s = 1; s <= LAT; s = s + 1) begin : g_land
+        if (LAT == 0) begin : g_now
+            assign landing = land_now;
+        end else begin : g_delayed
+            reg [LW-1:0] land_q [1:LAT];
+            integer s;
             always @(posedge clk) begin
-                land_valid[s] <= start ? 1'b0 : land_valid[s-1];
-                land_at[s] <= land_at[s-1];
-                land_col_par[s] <= land_col_par[s-1];
-                land_row_par[s] <= land_row_par[s-1];
-                land_rows[s] <= land_rows[s-1];
+                land_q[1] <= start ? {LW{1'b0}} : land_now;
+                for (s = 2; s <= LAT; s = s + 1) land_q[s] <= start ? {LW{1'b0}} : land_q[s-1];
             end
+            assign landing = land_q[LAT];
         end
     endgenerate
-    assign land_column = land_valid[LAT] ? (land_col_par[LAT] ? 2'b10 : 2'b01) : 2'b00;
-    assign land_row = land_valid[LAT] && land_rows[LAT] ? (land_row_par[LAT] ? 2'b10 : 2'b01) : 2'b00;
-    assign land_addr = land_at[LAT];
+    wire land_valid = landing[LW-1];
+    assign land_column = land_valid ? (landing[LW-2] ? 2'b10 : 2'b01) : 2'b00;
+    assign land_row = land_valid && landing[LW-4] ? (landing[LW-3] ? 2'b10 : 2'b01) : 2'b00;
+    assign land_addr = landing[TAW-1:0];
 endmodule

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Lints the whole-board RTL (models/board/rtl/collision_board_top.v and the
+# pieces it uses) with Verilator 5 (-Wall, waivers in
+# models/board/rtl/verilator.vlt) in several configurations: block RAM and
+# tiled, float32 and fixed point, combinational and piped compare lanes.
+# Exit status 0 when every configuration is clean.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+command -v verilator >/dev/null || { echo "lint-rtl.sh: verilator not found (scripts/setup.sh installs it)" >&2; exit 2; }
+sources=(
+  "$root/models/board/rtl/verilator.vlt"
+  "$root"/models/board/rtl/*.v
+  "$root/models/address_generator/rtl/address_generator.v"
+  "$root/models/comparison_unit/rtl/float_le.v"
+  "$root/models/comparison_unit/rtl/compare_lane.v"
+  "$root/models/pair_collector/rtl/pair_collector.v"
+  "$root/models/control_registers/rtl/board_control.v"
+)
+configurations=(
+  ""
+  "-GM=1 -GFLOAT=0 -GWIDTH=16"
+  "-GM=8 -GAW=10 -GCOMPARE_LATENCY=0 -GFIFO_DISTRIBUTED=1"
+  "-GM=24 -GCOMPARE_LATENCY=2 -GBUFFER_DEPTH=262144"
+  "-GM=2 -GAW=10 -GTILE_BOXES=64"
+  "-GM=3 -GTILE_BOXES=32 -GTILE_LATENCY=0 -GCOMPARE_LATENCY=1 -GFLOAT=0 -GWIDTH=12"
+)
+status=0
+for g in "${configurations[@]}"; do
+  # shellcheck disable=SC2086
+  if ! verilator --lint-only -Wall --top-module collision_board_top $g "${sources[@]}"; then
+    echo "lint-rtl.sh: not clean with '${g:-defaults}'" >&2
+    status=1
+  fi
+done
+[[ $status -eq 0 ]] && echo "lint-rtl.sh: ${#configurations[@]} configurations clean"
+exit $status
