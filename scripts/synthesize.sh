@@ -9,6 +9,13 @@
 #                                          xc2v pair_collector distributed 8)
 #   scripts/synthesize.sh --check FAMILY PIECE FORMAT M
 #                                          re-synthesises one row and compares it with the stored one
+#   scripts/synthesize.sh --board FAMILY M [FORMAT]
+#                                          the whole board (models/board/rtl/collision_board_top.v)
+#                                          as one design, a row of piece "board" (FORMAT float32 or
+#                                          fixedK, default float32); BOARD_ADDRESS_BITS (default 9:
+#                                          512 boxes, one block RAM deep) and BOARD_BUFFER_DEPTH
+#                                          (default 512 pairs, on chip) set its memories. Slow at
+#                                          large m (minutes); not part of the full table or ctest.
 #
 # Needs yosys (Debian: yosys 0.23) and, for the full table, GNU parallel.
 set -euo pipefail
@@ -91,6 +98,29 @@ row() {
     echo "$family,$piece,$format,$m,$bits,$depth,$(count_cells "$family" <"$log")"
 }
 
+# The whole board: FAMILY M FORMAT.
+board_row() {
+    local family=$1 m=$2 format=${3:-float32} params
+    local bits=${BOARD_ADDRESS_BITS:-9} buffer=${BOARD_BUFFER_DEPTH:-512}
+    case $format in
+        float32) params="-set FLOAT 1 -set WIDTH 32" ;;
+        fixed*) params="-set FLOAT 0 -set WIDTH ${format#fixed}" ;;
+        *) die "unknown format '$format'" ;;
+    esac
+    params="$params -set M $m -set AW $bits -set FIFO_DEPTH $fifo_depth -set BUFFER_DEPTH $buffer -set COMPARE_LATENCY 2"
+    local sources="$root/models/board/rtl/collision_board_top.v $root/models/board/rtl/board_ram.v"
+    sources+=" $root/models/board/rtl/tile_walker.v $root/models/address_generator/rtl/address_generator.v"
+    sources+=" $root/models/comparison_unit/rtl/float_le.v $root/models/comparison_unit/rtl/compare_lane.v"
+    sources+=" $root/models/pair_collector/rtl/pair_collector.v $root/models/control_registers/rtl/board_control.v"
+    local log
+    log=$(mktemp)
+    trap 'rm -f "$log"' RETURN
+    # shellcheck disable=SC2086
+    yosys -q -p "read_verilog -sv $sources; chparam $params collision_board_top; synth_xilinx -family $family -top collision_board_top -flatten -noiopad; tee -q -o $log stat" \
+        >/dev/null 2>&1 || die "yosys failed on the board ($family, $format, m=$m)"
+    echo "$family,board,$format,$m,$bits,$fifo_depth,$(count_cells "$family" <"$log")"
+}
+
 all_rows() {
     for family in $families; do
         echo "$family board_control - -"
@@ -106,6 +136,7 @@ all_rows() {
 
 case "${1:-}" in
     --row) shift; [[ $# -eq 4 ]] || die "--row needs FAMILY PIECE FORMAT M"; row "$@" ;;
+    --board) shift; [[ $# -eq 2 || $# -eq 3 ]] || die "--board needs FAMILY M [FORMAT]"; board_row "$@" ;;
     --check)
         shift; [[ $# -eq 4 ]] || die "--check needs FAMILY PIECE FORMAT M"
         fresh=$(row "$@")

@@ -425,7 +425,10 @@ public:
     }
     void wait() {
         add(3, 0, 0);
-        if (core_.running()) core_.advance_to(core_.segment_edges());
+        if (core_.running()) {
+            longest_segment_ = std::max(longest_segment_, core_.segment_edges());
+            core_.advance_to(core_.segment_edges());
+        }
     }
     void write_register(uint32_t offset, uint32_t data) { write(offset, data); }
     uint32_t read_register(uint32_t offset) { return read(offset); }
@@ -467,6 +470,9 @@ public:
     // The testbench's results against the model's.
     void run_and_compare(const TopBoard& board, const std::string& what) {
         add(0, 0, 0);
+        // A board that never stops fails in twice the model's longest segment.
+        auto parameters = board.parameters();
+        parameters.emplace_back("MAX_WAIT", std::to_string(2 * longest_segment_ + 1000));
         Simulation sim;
         sim.write_vectors(lines_, "commands.txt");
         const std::vector<std::string> results =
@@ -475,7 +481,7 @@ public:
                      "models/board/rtl/tile_walker.v", "models/address_generator/rtl/address_generator.v",
                      "models/comparison_unit/rtl/float_le.v", "models/comparison_unit/rtl/compare_lane.v",
                      "models/pair_collector/rtl/pair_collector.v", "models/control_registers/rtl/board_control.v"},
-                    board.parameters(), "");
+                    parameters, "");
         if (std::getenv("CDVP_RTL_KEEP") != nullptr) {
             std::ofstream keep(sim.dir() + "/expected.txt");
             for (const std::string& line : expected_) keep << line << '\n';
@@ -495,6 +501,7 @@ private:
         if (op == 2) read_addresses_.push_back(address);
     }
     BoardCore core_;
+    uint64_t longest_segment_ = 0;
     std::vector<std::string> lines_;
     std::vector<std::string> expected_;
     std::vector<uint32_t> read_addresses_;

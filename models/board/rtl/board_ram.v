@@ -1,31 +1,3 @@
-// An inferred block RAM with two ports on one clock: port A reads or writes,
-// port B reads. Each port's enable gates its output register, so a held
-// pipeline keeps its words (the block RAM's EN pin); a write on port A
-// loads the old word into q_a (read-first), which nothing uses.
-module board_ram #(
-    parameter W = 32,
-    parameter AW = 9
-) (
-    input  wire          clk,
-    input  wire          en_a,
-    input  wire          we_a,
-    input  wire [AW-1:0] addr_a,
-    input  wire [W-1:0]  d_a,
-    output reg  [W-1:0]  q_a,
-    input  wire          en_b,
-    input  wire [AW-1:0] addr_b,
-    output reg  [W-1:0]  q_b
-);
-    (* ram_style = "block" *) reg [W-1:0] cells [0:(1<<AW)-1];
-    always @(posedge clk) begin
-        if (en_a) begin
-            if (we_a) cells[addr_a] <= d_a;
-            q_a <= cells[addr_a];
-        end
-    end
-    always @(posedge clk) if (en_b) q_b <= cells[addr_b];
-endmodule
-
 // A simple dual-port memory (one write port, one synchronous read port):
 // the pair buffer, written by the collector, read by the host.
 module board_sdp_ram #(
