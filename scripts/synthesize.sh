@@ -13,8 +13,9 @@
 #                                          the whole board (models/board/rtl/collision_board_top.v)
 #                                          as one design, a row of piece "board" (FORMAT float32 or
 #                                          fixedK, default float32); BOARD_ADDRESS_BITS (default 9:
-#                                          512 boxes, one block RAM deep) and BOARD_BUFFER_DEPTH
-#                                          (default 512 pairs, on chip) set its memories. Slow at
+#                                          512 boxes, one block RAM deep), BOARD_BUFFER_DEPTH
+#                                          (default 512 pairs, on chip) and BOARD_FIFO_DISTRIBUTED
+#                                          (default 0; 1: the pair FIFO in LUTs) set its memories. Slow at
 #                                          large m (minutes); not part of the full table or ctest.
 #
 # Needs yosys (Debian: yosys 0.23) and, for the full table, GNU parallel.
@@ -108,6 +109,7 @@ board_row() {
         *) die "unknown format '$format'" ;;
     esac
     params="$params -set M $m -set AW $bits -set FIFO_DEPTH $fifo_depth -set BUFFER_DEPTH $buffer -set COMPARE_LATENCY 2"
+    params="$params -set FIFO_DISTRIBUTED ${BOARD_FIFO_DISTRIBUTED:-0}"
     local sources="$root/models/board/rtl/collision_board_top.v $root/models/board/rtl/board_ram.v"
     sources+=" $root/models/board/rtl/tile_walker.v $root/models/address_generator/rtl/address_generator.v"
     sources+=" $root/models/comparison_unit/rtl/float_le.v $root/models/comparison_unit/rtl/compare_lane.v"

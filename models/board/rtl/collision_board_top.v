@@ -330,7 +330,7 @@ module collision_board_top #(
         .clk(clk), .clear(start_go), .hits(pushed_hits), .row(row_q[D-1]), .first(first_q[D-1]),
         .drain_ready(drain_ready), .room(room), .out_valid(out_valid), .out_pair(out_pair), .level(fifo_level));
 
-    board_control #(.CW(64)) control (
+    board_control #(.CW(64), .MODEL_TIMING(1)) control (
         .clk(clk), .abort(cmd_abort), .start(start_go), .resume(resume_go), .sweeping(src_sweeping),
         .pipeline_empty(done_now), .fifo_room(room && !end_seen), .buffer_full(pause_now),
         .enable(enable), .state(state), .cycles(cycles), .stalls(stalls), .irq(control_irq));

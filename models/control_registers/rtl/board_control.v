@@ -2,7 +2,13 @@
 // variable (idle, sweeping, draining, paused on a full pair buffer, done),
 // the cycle and stall counters the host reads, and the interrupt.
 module board_control #(
-    parameter CW = 32  // counter bits
+    parameter CW = 32,       // counter bits
+    // 1: the whole board's controller (models/board/rtl): ABORT returns to
+    // idle, a pause after the last address resumes into the drain, and the
+    // board is done on the edge the pipeline empties after the last address
+    // even if that edge would move SWEEP to DRAIN, as the C++ model. 0: the
+    // piece as the resource model's table synthesised it (abort unused).
+    parameter MODEL_TIMING = 0
 ) (
     input  wire          clk,
     input  wire          abort,          // host writes ABORT (or reset): back to idle
@@ -23,7 +29,7 @@ module board_control #(
     assign enable = running & fifo_room & ~buffer_full;
     assign irq = state[DONE] | state[PAUSED];
     always @(posedge clk) begin
-        if (abort) begin
+        if (MODEL_TIMING && abort) begin
             state <= 5'b1 << IDLE;
         end else if (start) begin
             state <= 5'b1 << SWEEP;
@@ -35,12 +41,11 @@ module board_control #(
                 if (!enable) stalls <= stalls + 1;
             end
             if (running && buffer_full) state <= 5'b1 << PAUSED;
-            // A pause after the last address resumes into the drain.
-            else if (state[PAUSED] && resume) state <= 5'b1 << (sweeping ? SWEEP : DRAIN);
-            // Done as soon as the pipeline has emptied after the last address,
-            // even on the edge that would otherwise move SWEEP to DRAIN.
-            else if (running && !sweeping && pipeline_empty) state <= 5'b1 << DONE;
+            else if (MODEL_TIMING && state[PAUSED] && resume) state <= 5'b1 << (sweeping ? SWEEP : DRAIN);
+            else if (state[PAUSED] && resume) state <= 5'b1 << SWEEP;
+            else if (MODEL_TIMING && running && !sweeping && pipeline_empty) state <= 5'b1 << DONE;
             else if (state[SWEEP] && !sweeping) state <= 5'b1 << DRAIN;
+            else if (!MODEL_TIMING && state[DRAIN] && pipeline_empty) state <= 5'b1 << DONE;
             else if (state == 0) state <= 5'b1 << IDLE;
         end
     end

@@ -44,6 +44,16 @@ module pair_collector #(
         taken = 0;
         for (k = 0; k < LANES; k = k + 1) taken = taken + hits[k];
     end
+    wire take;
+    // Room counts the pair leaving this cycle when DRAIN_FIRST is set.
+    generate
+        if (DRAIN_FIRST) begin : g_drain_first
+            assign room = pairs + taken <= DEPTH + take;
+        end else begin : g_push_first
+            assign room = pairs + taken <= DEPTH;
+        end
+    endgenerate
+    wire write = room && (|hits);
     wire [EW-1:0] entry = {row, first, hits};
 
     // The lowest hit of the head entry not yet passed on.
@@ -55,11 +65,8 @@ module pair_collector #(
         for (l = LANES - 1; l >= 0; l = l - 1) if (left[l]) lane = l;
     end
     wire [LANES-1:0] bit_taken = {{(LANES-1){1'b0}}, 1'b1} << lane;
-    wire take = (|left) && drain_ready;
+    assign take = (|left) && drain_ready;
     wire advance = take && (left & ~bit_taken) == 0;  // the head's last pair leaves
-    // Room counts the pair leaving this cycle when DRAIN_FIRST is set.
-    assign room = pairs + taken <= DEPTH + (DRAIN_FIRST != 0 && take ? 1 : 0);
-    wire write = room && (|hits);
     assign level = pairs;
     wire [PW-1:0] read_next = advance ? (read_at + 1 == DEPTH ? 0 : read_at + 1) : read_at;
 
