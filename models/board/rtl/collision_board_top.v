@@ -32,7 +32,10 @@
 //  - A pair reaches the pair buffer's memory one edge after PAIR_COUNT
 //    counts it (the collector's output register); the host reads the buffer
 //    only once the board has stopped, so it never sees the difference.
-//  - Unmapped reads return 0 (the model's bus answers with an error).
+//  - Unmapped reads return 0 (the model's bus answers with an error);
+//    coordinate windows are write-only.
+//  - The pair buffer is on chip (BUFFER_DEPTH pairs of block RAM); the
+//    presets put it in an SSRAM bank. One pair moves a cycle (drain_per_cycle 1).
 module collision_board_top #(
     parameter M = 2,                 // 2m-port coordinate memories, 2m-1 lanes
     parameter AW = 9,                // capacity: 2^AW boxes (block RAM, or SSRAM when tiled)
