@@ -39,6 +39,12 @@ class RunPlatform {
 public:
     RunPlatform(const BoardSetup& setup, uint32_t capacity, const std::string& trace_base);
     const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    // Frames pipelined on a board with two box banks: VirtualBoard's.
+    bool pipelined() const { return board_ && board_->pipelined(); }
+    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) {
+        return board_->try_submit_frame(boxes, number, fault);
+    }
+    const FrameResult* try_finish_frames(FrameFault& fault) { return board_->try_finish_frames(fault); }
     const BusTiming& bus_timing() const { return board_ ? board_->bus_timing() : analytic_->bus_timing(); }
     // The SystemC platform, or null at the analytic level (which has no waveforms).
     VirtualBoard* board() { return board_.get(); }
