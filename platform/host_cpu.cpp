@@ -75,7 +75,10 @@ void HostCpu::wait_for_interrupt(SimTime timeout) {
 }
 
 void HostCpu::wait_for_interrupt_since(SimTime since, SimTime timeout) {
-    if (last_interrupt_ != sc_max_time() && last_interrupt_.value() >= since) return;
+    if (last_interrupt_ != sc_max_time() && last_interrupt_.value() >= since && last_interrupt_ != taken_interrupt_) {
+        taken_interrupt_ = last_interrupt_;
+        return;
+    }
     wait_for_interrupt(timeout);
 }
 

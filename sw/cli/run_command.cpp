@@ -109,7 +109,7 @@ void check_analytic_run(const Setup& setup, const RunOptions& o) {
         throw InputError("--inject: " + level + " has no engine to inject faults into; use --fidelity fast or cycle");
     }
     const Setting& banks = *find_setting("board.box_banks");
-    if (values.settings().board.box_banks > 1) {
+    if (values.settings().board.box_banks > 1 && setup.level == ModelLevel::kAnalytic) {
         throw InputError(values.where(banks) + ": " + level +
                          " times one frame at a time; expected 1, or --fidelity fast or cycle to pipeline frames");
     }

@@ -227,6 +227,7 @@ ReportSummary RunTotals::summary(const HostTiming& host) const {
     s.load_average_end = load_average();
     s.extra = extra();
     s.total_ns = board.spread;
+    s.latency_ns = latency_figures().spread;
     s.sim_wall_native_ns = sim_wall_figures().spread;
     for (int k = 0; k < kPhases; ++k) s.mean_phase_ns[static_cast<std::size_t>(k)] = mean_phase(k);
     return s;

@@ -2,7 +2,8 @@
 // scene's trace gives the same pairs file as one frame at a time, on both
 // engines; the report gives each frame's overlap and latency, and the host's
 // time a frame falls; a closed-loop scene, a Bullet world or the analytic
-// level is refused on one line naming the setting.
+// level is refused on one line naming the setting, and auto says why it
+// runs the fast engine.
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.h"
@@ -53,6 +54,13 @@ TEST_F(Cli, PipeliningWhatCannotBePipelinedIsRefused) {
     const Result analytic = run("run --trace t.csv --fidelity analytic --box-banks 2 -q");
     EXPECT_EQ(analytic.status, 2);
     EXPECT_NE(analytic.err.find("one frame at a time"), std::string::npos) << analytic.err;
+    const Result chosen = run("run --trace t.csv --fidelity auto --box-banks 2 --report r.json");
+    ASSERT_EQ(chosen.status, 0) << chosen.err;
+    EXPECT_NE(chosen.out.find("auto: the fast engine on every frame"), std::string::npos) << chosen.out;
+    const auto choice = report_of(dir_ / "r.json")["fidelity_choice"];
+    EXPECT_EQ(choice["fast_frames"], 2);
+    EXPECT_EQ(choice["analytic_frames"], 0);
+    EXPECT_TRUE(choice.contains("reason")) << choice.dump();
     const Result banks = run("run --trace t.csv --box-banks 3 -q");
     EXPECT_EQ(banks.status, 2);
     EXPECT_NE(banks.err.find("--box-banks"), std::string::npos) << banks.err;

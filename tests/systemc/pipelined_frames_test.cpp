@@ -177,6 +177,26 @@ TEST(PipelinedFrames, ASweepHidesBehindTheNextUploadAndLatencyGrows) {
     EXPECT_EQ(0.0, one.run_frame(frames.back(), 9).phases.overlap_ns) << "one frame at a time hides nothing";
 }
 
+// On an ideal bus no time passes between two status reads: an interrupt
+// already seen must not end the wait for the next one (each is taken once).
+TEST(PipelinedFrames, AnIdealBusPipelinesToo) {
+    std::mt19937 rng(44);
+    const auto frames = moving_frames(60, rng);
+    BoardConfig two;
+    two.box_banks = 2;
+    BoardConfig one = two;
+    one.box_banks = 1;
+    VirtualBoard pipelined_board("two", two, 61);
+    VirtualBoard single("one", one, 61);
+    const std::vector<FrameResult> results = pipelined(pipelined_board, frames);
+    ASSERT_EQ(frames.size(), results.size());
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        const FrameResult reference = single.run_frame(frames[f], f);
+        EXPECT_EQ(reference.pairs, results[f].pairs) << "frame " << f;
+        EXPECT_EQ(reference.phases.compute_cycles, results[f].phases.compute_cycles) << "frame " << f;
+    }
+}
+
 // A fault ends both frames in flight; the next submission starts afresh
 // (nothing comes back) and uploads every box, as after any fault.
 TEST(PipelinedFrames, AFaultEndsTheFramesInFlightAndTheNextStartsAfresh) {
