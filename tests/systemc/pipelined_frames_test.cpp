@@ -22,6 +22,12 @@
 namespace cdvp {
 namespace {
 
+// A different fifth of the boxes moves each frame, over six frames.
+std::vector<std::vector<FloatBox>> moving_frames(uint32_t n, std::mt19937& rng) {
+    return testing::moving_frames(n, rng, 9.0f, 6, true);
+}
+constexpr auto changed = testing::changed_boxes;
+
 struct Strategy {
     const char* name;
     UploadMode upload = UploadMode::kFull;
@@ -45,30 +51,6 @@ PlatformConfig platform_for(const Strategy& s, Fidelity fidelity, uint32_t banks
     config.driver.poll_gap_ns = 200;
     config.fidelity = fidelity;
     return config;
-}
-
-// Frames where a fifth of the boxes move, and the scene grows once.
-std::vector<std::vector<FloatBox>> moving_frames(uint32_t n, std::mt19937& rng) {
-    std::vector<std::vector<FloatBox>> frames{testing::random_boxes(n, 9.0f, 2.5f, rng)};
-    std::uniform_real_distribution<float> step(-0.3f, 0.3f);
-    for (int f = 1; f < 6; ++f) {
-        std::vector<FloatBox> next = frames.back();
-        for (uint32_t i = f % 5; i < n; i += 5) {
-            const float d = step(rng);
-            for (int a = 0; a < 3; ++a) next[i].min[a] += d, next[i].max[a] += d;
-        }
-        if (f == 3) next.push_back(FloatBox{{1, 1, 1}, {2, 2, 2}});
-        frames.push_back(next);
-    }
-    return frames;
-}
-
-uint32_t changed(const std::vector<FloatBox>& before, const std::vector<FloatBox>& now) {
-    uint32_t count = 0;
-    for (std::size_t i = 0; i < now.size(); ++i) {
-        count += i >= before.size() || std::memcmp(&before[i], &now[i], sizeof(FloatBox)) != 0;
-    }
-    return count;
 }
 
 // Every frame through a pipelined board: results in frame order.
