@@ -74,8 +74,18 @@ void HostCpu::wait_for_interrupt(SimTime timeout) {
     sc_module::wait(limit - waited, interrupt_);
 }
 
-void HostCpu::submit(const std::vector<FloatBox>& boxes) {
+void HostCpu::wait_for_interrupt_since(SimTime since, SimTime timeout) {
+    if (last_interrupt_ != sc_max_time() && last_interrupt_.value() >= since && last_interrupt_ != taken_interrupt_) {
+        taken_interrupt_ = last_interrupt_;
+        return;
+    }
+    wait_for_interrupt(timeout);
+}
+
+void HostCpu::submit(const std::vector<FloatBox>& boxes, HostRequest request) {
     boxes_ = &boxes;
+    request_ = request;
+    completed_ = false;
     pending_ = true;
     fault_ = FrameFault{};
     internal_error_ = nullptr;
@@ -93,7 +103,18 @@ void HostCpu::run() {
                 driver_.open();
                 opened_ = true;
             }
-            result_.phases = driver_.run_frame(*boxes_, result_.pairs);
+            switch (request_) {
+                case HostRequest::kFrame:
+                    result_.phases = driver_.run_frame(*boxes_, result_.pairs);
+                    completed_ = true;
+                    break;
+                case HostRequest::kSubmit:
+                    completed_ = driver_.submit(*boxes_, result_.pairs, result_.phases);
+                    break;
+                case HostRequest::kFinish:
+                    completed_ = driver_.finish(result_.pairs, result_.phases);
+                    break;
+            }
         } catch (const DeviceFault& e) {
             fault_ = FrameFault{FrameFault::Kind::kDevice, e.what()};
         } catch (const SimulatedTimeLimit& e) {
@@ -104,6 +125,9 @@ void HostCpu::run() {
             internal_error_ = std::current_exception();
         }
         pending_ = false;
+        // The frame started sweeps on: stop the kernel now, not when it
+        // starves, so that the next frame's upload overlaps the sweep.
+        if (request_ == HostRequest::kSubmit) sc_core::sc_pause();
     }
 }
 

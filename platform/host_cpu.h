@@ -23,6 +23,11 @@ struct FrameResult {
     FramePhases phases;
 };
 
+// What the CPU thread does with the next request: one whole frame; with
+// frames pipelined (two box banks), start a frame and finish the one before
+// it; or finish the frame in flight.
+enum class HostRequest : uint8_t { kFrame, kSubmit, kFinish };
+
 // Why a frame did not complete. Faults travel by value from the CPU thread to
 // the caller: an exception rethrown on the main stack after the coroutines
 // have run trips AddressSanitizer's stale stack bounds (docs/testing.md).
@@ -70,9 +75,15 @@ public:
             const sc_core::sc_time& period, const DriverConfig& config, std::shared_ptr<const BusTiming> bus,
             const sc_core::sc_time& quantum = sc_core::SC_ZERO_TIME);
 
-    // Queues a frame for the CPU thread; run the simulation to process it.
-    void submit(const std::vector<FloatBox>& boxes);
+    // Queues a request for the CPU thread; run the simulation to process it.
+    // kSubmit pauses the kernel when the frame has started (the board sweeps
+    // on while the caller prepares the next one); the others run until the
+    // simulation starves. boxes is not used by kFinish.
+    void submit(const std::vector<FloatBox>& boxes, HostRequest request = HostRequest::kFrame);
     bool finished() const { return !pending_; }
+    // Whether the last request gave a frame's result (kSubmit's first does not).
+    bool completed() const { return completed_; }
+    bool pipelined() const { return driver_.pipelined(); }
     // The fault that ended the frame (none when it completed).
     const FrameFault& fault() const { return fault_; }
     // Anything else the driver threw (a defect, not a simulated fault).
@@ -90,17 +101,24 @@ private:
     SimTime now() const override;
     void wait(SimTime duration) override;
     void wait_for_interrupt(SimTime timeout) override;
+    void wait_for_interrupt_since(SimTime since, SimTime timeout) override;
     std::string transport(tlm::tlm_command command, uint64_t address, void* data, uint32_t length);
     void note_interrupt() { last_interrupt_ = sc_core::sc_time_stamp(); }
 
     HostMemory& memory_;
     HostQuantumKeeper quantum_keeper_;
     sc_core::sc_time last_interrupt_ = sc_core::sc_max_time();
+    // The interrupt wait_for_interrupt_since last returned for without
+    // waiting: each is taken once (on an untimed bus no time passes between
+    // two status reads, and the same interrupt would be taken forever).
+    sc_core::sc_time taken_interrupt_ = sc_core::sc_max_time();
     const sc_core::sc_event& interrupt_;
     BoardDriver driver_;
     bool opened_ = false;
     const std::vector<FloatBox>* boxes_ = nullptr;
     bool pending_ = false;
+    HostRequest request_ = HostRequest::kFrame;
+    bool completed_ = false;
     sc_core::sc_event submitted_;
     FrameResult result_;
     FrameFault fault_;

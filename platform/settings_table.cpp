@@ -204,6 +204,12 @@ std::vector<Setting> board_settings() {
                           "pair buffer depth in pairs before the host drains it",
                           "assumption: one 2 MiB ZBT SSRAM bank of 64-bit entries (the ADM-XRC-II has six)")),
              "pair-buffer", "P"),
+        flag(count("board.box_banks", "banks", 1, BoardConfig::kMaxBoxBanks, member(&S::board, &B::box_banks),
+                   "banks of box memory: 2 double-buffers the coordinate memories and the pair buffer, and the "
+                   "driver pipelines frames (frame k+1 uploads while frame k sweeps, frame k's pairs read back "
+                   "while frame k+1 sweeps; a trace's frames, known ahead; twice the box memory)",
+                   "1: the paper's board has one bank (docs/communication.md)"),
+             "box-banks", "B"),
         flag(choice<BoxMemory>("board.memory", member(&S::memory, &MemorySettings::memory),
                     "where the boxes live: block_ram, ssram (off-chip, swept in tiles; docs/tiles.md) or auto "
                     "(block RAM while the boxes fit it or --ignore-capacity is given, else SSRAM)",

@@ -95,6 +95,22 @@ const FrameResult& VirtualBoard::run_frame(const std::vector<FloatBox>& boxes, u
 
 const FrameResult* VirtualBoard::try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number,
                                                FrameFault& fault) {
+    return run_request(boxes, number, HostRequest::kFrame, fault);
+}
+
+const FrameResult* VirtualBoard::try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number,
+                                                  FrameFault& fault) {
+    if (!pipelined()) throw std::logic_error("try_submit_frame: the board has one box bank; use try_run_frame");
+    return run_request(boxes, number, HostRequest::kSubmit, fault);
+}
+
+const FrameResult* VirtualBoard::try_finish_frames(FrameFault& fault) {
+    static const std::vector<FloatBox> none;
+    return run_request(none, frames_, HostRequest::kFinish, fault);
+}
+
+const FrameResult* VirtualBoard::run_request(const std::vector<FloatBox>& boxes, uint64_t number,
+                                             HostRequest request, FrameFault& fault) {
     if (boxes.size() > board_.core().capacity()) {
         throw std::invalid_argument("frame of " + std::to_string(boxes.size()) +
                                     " boxes exceeds the board's capacity of " +
@@ -104,16 +120,18 @@ const FrameResult* VirtualBoard::try_run_frame(const std::vector<FloatBox>& boxe
     if (trace_ != nullptr) set_tracing(traced);
     const bool first_traced = traced && !first_traced_begin_;
     if (first_traced) first_traced_begin_ = sc_time_stamp();
-    faults_.begin_frame(number);
-    ++frames_;
-    cpu_.submit(boxes);
-    sc_start();  // returns when no activity is left: the frame is complete
+    if (request != HostRequest::kFinish) {
+        faults_.begin_frame(number);
+        ++frames_;
+    }
+    cpu_.submit(boxes, request);
+    sc_start();  // returns when no activity is left (or, kSubmit, when the frame has started)
     after_kernel_returns();
     if (first_traced) first_traced_end_ = sc_time_stamp();
     if (!cpu_.finished()) throw std::runtime_error("the simulation stopped before the frame completed");
     if (cpu_.internal_error()) std::rethrow_exception(cpu_.internal_error());
     fault = cpu_.fault();
-    return fault ? nullptr : &cpu_.result();
+    return fault || !cpu_.completed() ? nullptr : &cpu_.result();
 }
 
 void VirtualBoard::set_trace_window(uint64_t first, uint64_t last) {

@@ -65,6 +65,17 @@ public:
     // stack, such as tests). Without a number, frames are numbered 0, 1, 2, ...
     const FrameResult& run_frame(const std::vector<FloatBox>& boxes);
     const FrameResult& run_frame(const std::vector<FloatBox>& boxes, uint64_t number);
+
+    // Frames pipelined, on a board with two box banks (config.board.box_banks
+    // = 2): try_submit_frame runs the host until frame `number` has started
+    // and the frame before it is read back, and returns that frame's result
+    // (null, fault unset, on the first call; null with fault set for a
+    // fault, which ends every frame in flight); the board sweeps on between
+    // calls. try_finish_frames completes the frame in flight (null, fault
+    // unset, when none is). A trace window counts the calls' numbers.
+    bool pipelined() const { return board_.core().config().box_banks > 1; }
+    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    const FrameResult* try_finish_frames(FrameFault& fault);
     const FaultPlan& faults() const { return faults_; }
     // Flushes and closes the waveform file (also done by the destructor).
     void close_trace();
@@ -98,6 +109,9 @@ private:
     sc_core::sc_signal<bool> inta_;
     void show_interrupts();
     void set_tracing(bool on);
+    // Runs the CPU thread on a request for frame `number`; the result as try_run_frame's.
+    const FrameResult* run_request(const std::vector<FloatBox>& boxes, uint64_t number, HostRequest request,
+                                   FrameFault& fault);
 
     sc_core::sc_trace_file* trace_ = nullptr;
     std::vector<TracedSignal> traced_;

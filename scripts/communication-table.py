@@ -114,6 +114,7 @@ def moving_table(out):
             print("\n" + note)
 
 
-out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "communication")
-strategies_table(out)
-moving_table(out)
+if __name__ == "__main__":
+    out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "communication")
+    strategies_table(out)
+    moving_table(out)

@@ -16,7 +16,10 @@ BoardCore::BoardCore(const BoardConfig& config, uint32_t capacity, Fidelity fide
                                     std::to_string(address_map::kMaxObjects) + " boxes");
     }
     engine_ = make_engine(fidelity, config_, capacity, budget);
-    for (auto& words : store_) words.assign(capacity, 0);
+    banks_.resize(config_.box_banks);
+    for (CoordinateStore& bank : banks_) {
+        for (auto& words : bank) words.assign(capacity, 0);
+    }
     declare_registers();
 }
 
@@ -74,6 +77,16 @@ void BoardCore::declare_registers() {
                    });
     registers_.add("PAIR_WORDS", R::kPairWords, A::kReadOnly, [this] { return static_cast<uint32_t>(window_words()); });
     registers_.add("DELTA_RECORDS", R::kDeltaRecords, A::kReadOnly, [this] { return delta_records_; });
+    registers_.add("BOX_BANKS", R::kBoxBanks, A::kReadOnly, constant(config_.box_banks));
+    registers_.add("HOST_BANK", R::kHostBank, A::kReadOnly, [this] { return host_bank_; });
+    registers_.add("PAIR_BANK", R::kPairBank, A::kReadWrite, [this] { return pair_bank_; }, [this](uint32_t v) {
+        if (v > R::kPreviousPairs) {
+            raise_error(R::kBadPairBank);
+            return RegisterResult::kRefused;
+        }
+        pair_bank_ = v;
+        return RegisterResult::kDone;
+    });
 }
 
 bool BoardCore::read_register(uint32_t offset, uint32_t& value) {
@@ -84,22 +97,22 @@ RegisterResult BoardCore::write_register(uint32_t offset, uint32_t value) { retu
 
 RegisterResult BoardCore::write_coordinate(Coordinate coordinate, uint32_t index, uint32_t word) {
     if (index >= capacity_) return RegisterResult::kUnmapped;
-    if (status().busy) {
+    if (host_bank_busy()) {
         raise_error(ControlRegisters::kWriteWhileBusy);
         return RegisterResult::kRefused;
     }
-    store_[coordinate][index] = word & config_.format.word_mask();
+    banks_[host_bank_][coordinate][index] = word & config_.format.word_mask();
     return RegisterResult::kDone;
 }
 
 RegisterResult BoardCore::write_coordinates(Coordinate coordinate, uint32_t first, const unsigned char* words,
                                              uint32_t count) {
     if (first > capacity_ || count > capacity_ - first) return RegisterResult::kUnmapped;
-    if (status().busy) {
+    if (host_bank_busy()) {
         raise_error(ControlRegisters::kWriteWhileBusy);
         return RegisterResult::kRefused;
     }
-    uint32_t* stored = store_[coordinate].data() + first;
+    uint32_t* stored = banks_[host_bank_][coordinate].data() + first;
     std::memcpy(stored, words, std::size_t{count} * sizeof(uint32_t));
     // The memories are as wide as the format: they keep a word's low bits.
     const uint32_t mask = config_.format.word_mask();
@@ -110,7 +123,7 @@ RegisterResult BoardCore::write_coordinates(Coordinate coordinate, uint32_t firs
 }
 
 RegisterResult BoardCore::write_delta(const unsigned char* words, uint32_t count) {
-    if (status().busy) {
+    if (host_bank_busy()) {
         raise_error(ControlRegisters::kWriteWhileBusy);
         return RegisterResult::kRefused;
     }
@@ -124,7 +137,7 @@ RegisterResult BoardCore::write_delta(const unsigned char* words, uint32_t count
             raise_error(ControlRegisters::kDeltaIndex);
             continue;
         }
-        for (uint32_t c = 0; c < kCoordinates; ++c) store_[c][index] = delta_record_[1 + c] & mask;
+        for (uint32_t c = 0; c < kCoordinates; ++c) banks_[host_bank_][c][index] = delta_record_[1 + c] & mask;
         ++delta_records_;
     }
     return RegisterResult::kDone;
@@ -133,24 +146,37 @@ RegisterResult BoardCore::write_delta(const unsigned char* words, uint32_t count
 uint32_t BoardCore::Status::bits() const {
     using R = ControlRegisters;
     return (busy ? uint32_t{R::kBusy} : 0u) | (done ? uint32_t{R::kDone} : 0u) |
-           (overflow ? uint32_t{R::kOverflow} : 0u) | (error ? uint32_t{R::kError} : 0u);
+           (overflow ? uint32_t{R::kOverflow} : 0u) | (error ? uint32_t{R::kError} : 0u) |
+           (interrupt ? uint32_t{R::kInterrupt} : 0u);
 }
 
 BoardCore::Status BoardCore::status() const {
     return Status{phase_ == SweepState::kRunning || phase_ == SweepState::kPaused, phase_ == SweepState::kDone,
-                  phase_ == SweepState::kPaused, error_, error_cause_};
+                  phase_ == SweepState::kPaused, error_, error_cause_, irq_pending_};
 }
 
 SweepCounters BoardCore::counters() { return running() ? engine_->counters_after(edges_) : held_; }
 
-uint32_t BoardCore::buffered_pairs() { return counters().buffered; }
+uint32_t BoardCore::buffered_pairs() {
+    if (pair_bank_ == ControlRegisters::kPreviousPairs) return static_cast<uint32_t>(previous_pairs_.size());
+    return counters().buffered;
+}
+
+const IndexPair* BoardCore::shown_pairs() {
+    if (pair_bank_ == ControlRegisters::kPreviousPairs) return previous_pairs_.data();
+    return &engine_->buffer_entry(0);
+}
+
+uint32_t BoardCore::shown_objects() const {
+    return pair_bank_ == ControlRegisters::kPreviousPairs ? previous_objects_ : object_count_;
+}
 
 const std::vector<uint32_t>& BoardCore::encoded_window() {
     const uint32_t pairs = buffered_pairs();
-    const EncodedKey key{segments_started_, pairs, object_count_, pair_format_};
+    const EncodedKey key{segments_started_, pairs, shown_objects(), pair_bank_, pair_format_};
     if (!encoded_key_ || !(*encoded_key_ == key)) {
         encoded_.clear();
-        if (pairs > 0) encode_pairs(pair_format_, &engine_->buffer_entry(0), pairs, object_count_, encoded_);
+        if (pairs > 0) encode_pairs(pair_format_, shown_pairs(), pairs, shown_objects(), encoded_);
         encoded_key_ = key;
     }
     return encoded_;
@@ -169,7 +195,7 @@ void BoardCore::copy_window_words(uint64_t first, uint64_t count, unsigned char*
         return;
     }
     // The list is the buffer itself: no copy of it.
-    const auto* pairs = reinterpret_cast<const unsigned char*>(&engine_->buffer_entry(static_cast<uint32_t>(first / 2)));
+    const auto* pairs = reinterpret_cast<const unsigned char*>(shown_pairs() + first / 2);
     std::memcpy(out, pairs + 4 * (first % 2), 4 * count);
 }
 
@@ -224,7 +250,21 @@ void BoardCore::start() {
         return;
     }
     delta_records_ = 0;
-    engine_->start(store_, object_count_);
+    const uint32_t swept = host_bank_;
+    if (config_.box_banks > 1) {
+        // The pair buffers swap: the last sweep's pairs stay readable in the
+        // previous one while this sweep fills the other; the host's box
+        // writes go to the other bank from now on.
+        previous_pairs_.clear();
+        if (held_.buffered > 0) {
+            const IndexPair* first = &engine_->buffer_entry(0);
+            previous_pairs_.assign(first, first + held_.buffered);
+        }
+        previous_objects_ = last_objects_;
+        host_bank_ = 1 - host_bank_;
+    }
+    last_objects_ = object_count_;
+    engine_->start(banks_[swept], object_count_);
     edges_ = 0;
     error_ = irq_pending_ = false;
     error_cause_ = ControlRegisters::kNoError;

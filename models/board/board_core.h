@@ -44,15 +44,21 @@ public:
     // A run of `count` words (little-endian, as on the bus) from box `first`
     // on: a burst's worth, checked once; refused whole while busy.
     RegisterResult write_coordinates(Coordinate coordinate, uint32_t first, const unsigned char* words, uint32_t count);
-    uint32_t read_coordinate(Coordinate coordinate, uint32_t index) const { return store_[coordinate][index]; }
+    // A word of the host's bank (HOST_BANK), as the host reads it back.
+    uint32_t read_coordinate(Coordinate coordinate, uint32_t index) const {
+        return banks_[host_bank_][coordinate][index];
+    }
+    // With two banks: the bank the host writes, which START sweeps and then
+    // hands over, the other becoming the host's.
+    uint32_t host_bank() const { return host_bank_; }
     // `count` words of the delta stream (little-endian): they complete
     // records (address_map::kDeltaRecordWords words each) in order, and each
     // whole record is written into the memories. Refused whole while busy; a
     // record whose index is past the capacity is dropped with ERROR.
     RegisterResult write_delta(const unsigned char* words, uint32_t count);
-    // The pair buffer as the host reads it now.
+    // The pair buffer as the host reads it now (PAIR_BANK's).
     uint32_t buffered_pairs();
-    const IndexPair& buffered_pair(uint32_t index) { return engine_->buffer_entry(index); }
+    const IndexPair& buffered_pair(uint32_t index) { return shown_pairs()[index]; }
     PairFormat pair_format() const { return pair_format_; }
     // The pair buffer window: the buffered pairs in PAIR_FORMAT, as host
     // words; `count` words from word `first` on, all within window_words().
@@ -66,6 +72,7 @@ public:
     struct Status {
         bool busy, done, overflow, error;
         uint32_t error_cause;
+        bool interrupt;
         uint32_t bits() const;
     };
     Status status() const;
@@ -96,12 +103,24 @@ private:
     // The window's encoding of the buffer now (counted and bitmap formats),
     // re-encoded only when the buffer or the format changed.
     const std::vector<uint32_t>& encoded_window();
+    // The first of the buffered pairs PAIR_BANK shows, and the boxes of their sweep.
+    const IndexPair* shown_pairs();
+    uint32_t shown_objects() const;
+    // Whether the host may write box memory now: not into a bank being swept.
+    bool host_bank_busy() const { return status().busy && config_.box_banks == 1; }
 
     BoardConfig config_;
     uint32_t capacity_;
     std::unique_ptr<BoardEngine> engine_;
     RegisterBank registers_;
-    CoordinateStore store_;
+    std::vector<CoordinateStore> banks_;  // box_banks of them
+    uint32_t host_bank_ = 0;
+    // Two banks: the pairs of the sweep before the current one (the previous
+    // pair buffer), its boxes, and which buffer PAIR_BANK shows.
+    std::vector<IndexPair> previous_pairs_;
+    uint32_t previous_objects_ = 0;
+    uint32_t last_objects_ = 0;  // the boxes of the last START's sweep
+    uint32_t pair_bank_ = ControlRegisters::kCurrentPairs;
 
     SweepState phase_ = SweepState::kIdle;
     uint32_t object_count_ = 0;
@@ -115,10 +134,11 @@ private:
     uint32_t delta_records_ = 0;
     struct EncodedKey {
         uint64_t segment = 0, pairs = 0;
-        uint32_t objects = 0;
+        uint32_t objects = 0, bank = 0;
         PairFormat format = PairFormat::kList;
         bool operator==(const EncodedKey& o) const {
-            return segment == o.segment && pairs == o.pairs && objects == o.objects && format == o.format;
+            return segment == o.segment && pairs == o.pairs && objects == o.objects && bank == o.bank &&
+                   format == o.format;
         }
     };
     std::optional<EncodedKey> encoded_key_;

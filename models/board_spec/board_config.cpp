@@ -24,12 +24,13 @@ uint64_t BoardConfig::memory_depth(uint64_t capacity) const {
 
 uint64_t BoardConfig::block_rams(uint64_t capacity) const {
     const uint64_t depth = memory_depth(capacity);
-    return memory_copies() * format.block_ram_layout(depth).primitives(depth);
+    return block_ram_banks() * memory_copies() * format.block_ram_layout(depth).primitives(depth);
 }
 
 uint64_t BoardConfig::block_ram_bytes(uint64_t capacity) const {
     // The model keeps each coordinate's words apart (packing changes the count
-    // of primitives, not the words): six columns of whole primitives a copy.
+    // of primitives, not the words): six columns of whole primitives a copy,
+    // for the bank being swept (the host's bank is the board's store).
     const uint64_t depth = memory_depth(capacity);
     const BlockRamLayout layout = format.block_ram_layout(depth);
     const uint64_t cascaded = (depth + layout.depth - 1) / layout.depth;
@@ -63,6 +64,8 @@ void BoardConfig::validate() const {
     require(collector.buffer_depth >= 1 && collector.buffer_depth <= address_map::kMaxBufferedPairs,
             "pair_buffer_depth: expected 1 to " + std::to_string(address_map::kMaxBufferedPairs) +
                 " pairs, got " + std::to_string(collector.buffer_depth));
+    require(box_banks >= 1 && box_banks <= kMaxBoxBanks,
+            "box_banks: expected 1 or 2 banks of box memory, got " + std::to_string(box_banks));
     require(tiles.load_latency_cycles <= 64,
             "ssram_latency_cycles: expected at most 64 cycles, got " + std::to_string(tiles.load_latency_cycles));
     require(tiles.cycles_per_box >= 1 && tiles.cycles_per_box <= kCoordinates,

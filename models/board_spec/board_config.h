@@ -23,6 +23,13 @@ struct BoardConfig {
     PairCollectorConfig collector;
     // Block RAM (the seed's board) or SSRAM tiles (platform/memory_plan.h picks it).
     TileConfig tiles;
+    // Banks of box memory: 1, the paper's board; 2 double-buffers the
+    // coordinate memories (and the pair buffer), so that the host uploads
+    // frame k+1 into one bank while the board sweeps frame k in the other,
+    // and reads frame k's pairs back while frame k+1 sweeps
+    // (docs/communication.md). Two banks cost twice the box memory.
+    uint32_t box_banks = 1;
+    static constexpr uint32_t kMaxBoxBanks = 2;
 
     static constexpr uint32_t kMaxM = (ComparisonUnit::kMaxLanes + 1) / 2;  // 32
     // Cycles of the collector stage: the FIFO write to the pair buffer write.
@@ -36,19 +43,23 @@ struct BoardConfig {
     // its blocks: the address generator's slots for N boxes (S(N,m) on a
     // board in block RAM, the tiled schedule's slots on one in SSRAM:
     // SweepSchedule); the block RAM primitives of the coordinate memories
-    // for `capacity` boxes (G x m x ceil(N/D)), or of the tile buffers
-    // (G x (2m+2) x ceil(min(T,N)/D)), G primitives side by side for the six
-    // coordinates and D boxes a primitive in the number format's cheapest
-    // block RAM layout (NumberFormat::block_ram_layout; float32: 6 and 512);
-    // and the bytes of block RAM words the clocked model keeps for them.
+    // for `capacity` boxes (G x m x ceil(N/D) a bank, times box_banks), or
+    // of the tile buffers (G x (2m+2) x ceil(min(T,N)/D)), G primitives side
+    // by side for the six coordinates and D boxes a primitive in the number
+    // format's cheapest block RAM layout (NumberFormat::block_ram_layout;
+    // float32: 6 and 512); and the bytes of block RAM words the clocked
+    // model keeps for them (the bank being swept).
     uint64_t sweep_cycles(uint64_t objects) const;
     uint64_t block_rams(uint64_t capacity) const;
     uint64_t block_ram_bytes(uint64_t capacity) const;
     // Boxes each coordinate memory holds: all `capacity`, or one tile.
     uint64_t memory_depth(uint64_t capacity) const;
-    // Copies of each coordinate memory: m (2m ports); tiled, a double-buffered
+    // Copies of each coordinate memory in a bank: m (2m ports); tiled, a double-buffered
     // 2m-port column memory and a double-buffered row memory for port 0: 2m + 2.
     uint64_t memory_copies() const { return tiles.tiled() ? 2ull * m + 2 : m; }
+    // Banks of those copies in block RAM: box_banks, or 1 on a tiled board
+    // (it keeps its banks in SSRAM; its tile buffers stay as they are).
+    uint64_t block_ram_banks() const { return tiles.tiled() ? 1 : box_banks; }
     // Clock period in picoseconds (the simulation's time resolution).
     double period_ps() const { return 1e6 / clock_mhz; }
     // Throws std::invalid_argument with one line "SETTING: expected ..., got ...",

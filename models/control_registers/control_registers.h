@@ -57,11 +57,26 @@ struct ControlRegisters {
         kPairFormat = 0x48,       // rw: how the pair buffer window reads (PairFormat: 0 list, 1 counted, 2 bitmap)
         kPairWords = 0x4C,        // ro: words the pair buffer window holds now, in PAIR_FORMAT
         kDeltaRecords = 0x50,     // ro: delta records written into the memories since the last START
+        kBoxBanks = 0x54,         // ro: banks of box memory (1, or 2: double-buffered boxes and pair buffers)
+        kHostBank = 0x58,         // ro: the bank the host's coordinate writes and delta records go to
+        kPairBank = 0x5C,         // rw: which pair buffer PAIR_COUNT, PAIR_WORDS and the window show (PairBank)
     };
+    // PAIR_BANK's values. With two banks, START keeps the pairs of the sweep
+    // before it in the previous pair buffer, to be read during the new sweep.
+    enum PairBank : uint32_t { kCurrentPairs = 0, kPreviousPairs = 1 };
     // ABORT stops any sweep and clears every status bit: the board is idle,
     // ready for a new START (a driver's recovery after a fault).
     enum ControlBit : uint32_t { kStart = 1u << 0, kResume = 1u << 1, kAcknowledge = 1u << 2, kAbort = 1u << 3 };
-    enum StatusBit : uint32_t { kBusy = 1u << 0, kDone = 1u << 1, kOverflow = 1u << 2, kError = 1u << 3 };
+    // kInterrupt: the board holds its interrupt line (from done, overflow or
+    // an error until ACKNOWLEDGE): a shared line's handler tells by it
+    // whether the board interrupted.
+    enum StatusBit : uint32_t {
+        kBusy = 1u << 0,
+        kDone = 1u << 1,
+        kOverflow = 1u << 2,
+        kError = 1u << 3,
+        kInterrupt = 1u << 4
+    };
     // ERROR's causes. An error raises the interrupt like done or overflow.
     enum BoardError : uint32_t {
         kNoError = 0,
@@ -74,8 +89,9 @@ struct ControlRegisters {
         kDeltaIncomplete = 7,   // START with a delta record partly written
         kBadPairFormat = 8,     // PAIR_FORMAT written with an unknown format
         kPairWindowFull = 9,    // the buffered pairs' encoding outgrows the pair buffer window (a bitmap of too many boxes)
+        kBadPairBank = 10,      // PAIR_BANK written with a value other than 0 or 1
     };
-    static constexpr uint32_t kIdValue = 0xCD7B'0002;  // "cdvp", register map version 2
+    static constexpr uint32_t kIdValue = 0xCD7B'0003;  // "cdvp", register map version 3
     // TILE_TIMING's fields.
     static constexpr uint32_t kTileTimingLatencyMask = 0xFFFF;
     static constexpr uint32_t kTileTimingCyclesShift = 16;
@@ -92,6 +108,7 @@ struct ControlRegisters {
             case kDeltaIncomplete: return "START with a delta record partly written";
             case kBadPairFormat: return "PAIR_FORMAT written with an unknown format";
             case kPairWindowFull: return "the pairs' encoding outgrew the pair buffer window";
+            case kBadPairBank: return "PAIR_BANK written with a value other than 0 or 1";
             default: return "unknown cause";
         }
     }

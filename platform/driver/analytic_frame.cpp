@@ -174,6 +174,7 @@ FramePhases AnalyticFrame::estimate_with(uint32_t objects, uint64_t pairs, bool 
     phases.readback_ns = ns_from_fs(readback);
     phases.driver_ns = ns_from_fs(driver);
     phases.total_ns = ns_from_fs(upload + start + compute + irq + readback + driver);
+    phases.latency_ns = phases.total_ns;  // one frame at a time
     phases.compute_cycles = cycles;
     phases.stall_cycles = stalls;
     phases.overflow_pauses = static_cast<uint32_t>(pauses);

@@ -119,17 +119,33 @@ void BoardDriver::open() {
     if (port_.memory_size() < host_memory_bytes(capacity_, buffer_depth_, config_)) {
         throw std::runtime_error("host memory too small for the board's capacity and pair buffer");
     }
+    // Two banks pipeline frames; the host's bank is where the next upload goes.
+    box_banks_ = read(R::kBoxBanks);
+    host_bank_ = read(R::kHostBank);
+    if (box_banks_ < 1 || box_banks_ > shadow_.size() || host_bank_ >= box_banks_) {
+        throw std::runtime_error("the board reports " + std::to_string(box_banks_) + " box banks and host bank " +
+                                 std::to_string(host_bank_));
+    }
+    pair_bank_ = read(R::kPairBank);
+    show_pair_bank(R::kCurrentPairs);
+    in_flight_.reset();
     // The pair format stays set across frames and aborts.
     write(R::kPairFormat, static_cast<uint32_t>(config_.pair_format));
     if (read(R::kPairFormat) != static_cast<uint32_t>(config_.pair_format)) {
         throw std::runtime_error("the board refused pair format " + std::to_string(static_cast<int>(config_.pair_format)));
     }
-    shadow_valid_ = false;
+    forget_shadows();
 }
 
 void BoardDriver::charge(Phase phase) {
-    spent_[phase] += ns_from_fs(port_.now() - mark_);
+    account_->spent[phase] += ns_from_fs(port_.now() - mark_);
     mark_ = port_.now();
+}
+
+void BoardDriver::show_pair_bank(uint32_t bank) {
+    if (pair_bank_ == bank) return;
+    write(R::kPairBank, bank);
+    pair_bank_ = bank;
 }
 
 void BoardDriver::cpu_work(double ns) {
@@ -168,16 +184,30 @@ SimTime BoardDriver::timeout_for(double worst_ns) const {
 // By interrupt: each interrupt (the line is shared) or the timeout is
 // followed by one status read. By polling: status reads until the deadline.
 uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what,
-                               bool by_interrupt) {
+                               bool by_interrupt, bool check_first) {
     const SimTime deadline = port_.now() + timeout;
+    // A sweep in flight shares the line with a DMA: an event of the board's
+    // that came while the host was busy keeps the line up, and the DMA's
+    // completion would raise no edge. The handler acknowledges it first.
+    const bool shared_with_sweep = by_interrupt && in_flight_ && status_address != R::kStatus;
+    if (shared_with_sweep) acknowledge_board_event();
+    bool look_now = check_first;
+    SimTime looked = port_.now();
     for (uint32_t polls = 0;; ++polls) {
-        if (by_interrupt) port_.wait_for_interrupt(deadline - port_.now());
+        // An interrupt that came during the last status read was for what
+        // the read could not see yet: look again instead of waiting for one.
+        if (by_interrupt && !look_now) {
+            if (check_first || in_flight_) port_.wait_for_interrupt_since(looked, deadline - port_.now());
+            else port_.wait_for_interrupt(deadline - port_.now());
+        }
+        look_now = false;
         noticed_ = port_.now();  // the handler runs: the status read is readback work
+        looked = port_.now();
         const uint32_t value = read(status_address);
         if (!by_interrupt) noticed_ = port_.now();  // a poll notices when its read returns
         const bool late = port_.now() >= deadline;
         if (value & bits) {
-            if (late && by_interrupt) ++timeouts_recovered_;  // the interrupt was lost
+            if (late && by_interrupt) ++account_->timeouts_recovered;  // the interrupt was lost
             return value;
         }
         if (late) {
@@ -185,7 +215,16 @@ uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, SimTime t
                               " of simulated time");
         }
         if (!by_interrupt) poll_pause(polls);
+        // Woken by the board's event, not the DMA's: acknowledge it and look
+        // at the DMA again.
+        if (shared_with_sweep) look_now = acknowledge_board_event();
     }
+}
+
+bool BoardDriver::acknowledge_board_event() {
+    if (!(read(R::kStatus) & R::kInterrupt)) return false;
+    write(R::kControl, R::kAcknowledge);
+    return true;
 }
 
 bool BoardDriver::dma_by_interrupt() const {
@@ -227,7 +266,8 @@ uint32_t coordinate_window(uint32_t c) {
 }
 }  // namespace
 
-void BoardDriver::upload(const std::vector<FloatBox>& boxes, FramePhases& phases) {
+void BoardDriver::upload(const std::vector<FloatBox>& boxes) {
+    FramePhases& phases = account_->phases;
     const auto n = static_cast<uint32_t>(boxes.size());
     if (n == 0) return;
     // In the board's format: float32 bit patterns, or fixed-point codes over
@@ -255,25 +295,27 @@ void BoardDriver::upload(const std::vector<FloatBox>& boxes, FramePhases& phases
     }
     charge(kUpload);
     if (config_.upload == UploadMode::kFull) return;
-    // The board holds these words now (the frame's faults invalidate them).
+    // The host's bank holds these words now (the frame's faults invalidate them).
+    BankShadow& bank = shadow_[host_bank_];
     for (uint32_t c = 0; c < kCoordinates; ++c) {
         const auto* words = reinterpret_cast<const uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
-        shadow_[c].assign(words, words + n);
+        bank.words[c].assign(words, words + n);
     }
-    shadow_objects_ = n;
-    shadow_valid_ = true;
+    bank.objects = n;
+    bank.valid = true;
 }
 
 std::vector<uint32_t> BoardDriver::changed_boxes(uint32_t objects) const {
     std::vector<uint32_t> changed;
-    const uint32_t known = shadow_valid_ ? std::min(objects, shadow_objects_) : 0;
+    const BankShadow& bank = shadow_[host_bank_];
+    const uint32_t known = bank.valid ? std::min(objects, bank.objects) : 0;
     const uint32_t* words[kCoordinates];
     for (uint32_t c = 0; c < kCoordinates; ++c) {
         words[c] = reinterpret_cast<const uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
     }
     for (uint32_t i = 0; i < objects; ++i) {
         bool same = i < known;
-        for (uint32_t c = 0; same && c < kCoordinates; ++c) same = words[c][i] == shadow_[c][i];
+        for (uint32_t c = 0; same && c < kCoordinates; ++c) same = words[c][i] == bank.words[c][i];
         if (!same) changed.push_back(i);
     }
     return changed;
@@ -336,30 +378,37 @@ void BoardDriver::upload_delta(const std::vector<uint32_t>& changed) {
     run_dma(D::kChain, time_->delta_worst_ns(changed.size()));
 }
 
-uint32_t BoardDriver::wait_for_board(uint32_t objects) {
-    const SimTime started = mark_;
+uint32_t BoardDriver::wait_for_board(uint32_t objects, bool check_first) {
+    const SimTime waiting_from = mark_;
     const SimTime timeout = timeout_for(time_->board_worst_ns(objects));
-    const uint32_t status =
-        wait_for(R::kStatus, R::kDone | R::kOverflow | R::kError, timeout, "board", config_.wait == WaitMode::kIrq);
+    const uint32_t status = wait_for(R::kStatus, R::kDone | R::kOverflow | R::kError, timeout, "board",
+                                     config_.wait == WaitMode::kIrq, check_first);
     mark_ = noticed_;
     if (config_.wait == WaitMode::kIrq) write(R::kControl, R::kAcknowledge);
     if (status & R::kError) {
         throw DeviceFault(std::string("board error status: ") + R::describe(read(R::kErrorCause)));
     }
-    // The segment from the command to noticing the board is its compute time
-    // (cycles x period) plus the notification's lag.
+    // The segment ran cycles x period from its command. The host waited
+    // from waiting_from to noticing it: the part of the sweep within that
+    // is compute, the rest the notification's lag; the sweep before it ran
+    // beside the host's work on other frames (pipelined), hidden.
     const uint64_t cycles = read_counter(R::kCyclesLo);
-    const double segment = ns_from_fs(mark_ - started);
-    const double compute = ns_from_fs(period_ * (cycles - cycles_seen_));
-    cycles_seen_ = cycles;
-    spent_[kCompute] += compute;
-    spent_[kIrq] += segment - compute;
+    FrameAccount& account = *account_;
+    const double compute = ns_from_fs(period_ * (cycles - account.cycles_seen));
+    account.cycles_seen = cycles;
+    const double waited = ns_from_fs(mark_ - waiting_from);
+    const double ran_before = waiting_from > account.segment_start ? ns_from_fs(waiting_from - account.segment_start) : 0;
+    const double exposed = std::clamp(compute - ran_before, 0.0, waited);
+    account.spent[kCompute] += exposed;
+    account.spent[kIrq] += waited - exposed;
+    account.phases.overlap_ns += compute - exposed;
     return status;
 }
 
 // PAIR_COUNT bounds the pairs before any is copied; in an encoded format
 // PAIR_WORDS gives the words to move, and the decoded pairs must be as many.
-void BoardDriver::read_pairs(PairList& pairs, uint32_t objects, FramePhases& phases) {
+void BoardDriver::read_pairs(PairList& pairs, uint32_t objects) {
+    FramePhases& phases = account_->phases;
     const uint32_t count = read(R::kPairCount);
     if (count == 0) return;
     config_.pair_budget.check(uint64_t{pairs.size()} + count);
@@ -395,14 +444,21 @@ FramePhases BoardDriver::run_frame(const std::vector<FloatBox>& boxes, PairList&
         throw std::invalid_argument("frame of " + std::to_string(boxes.size()) + " boxes exceeds the board's capacity of " +
                                     std::to_string(capacity_));
     }
+    if (in_flight_) throw std::logic_error("run_frame with a pipelined frame in flight: finish() it first");
     try {
         return frame(boxes, pairs);
     } catch (const std::exception&) {
-        pairs.clear();  // never a partial set
-        shadow_valid_ = false;  // what the board's memories hold is not known now
-        recover();
+        fail_frames(pairs);
         throw;
     }
+}
+
+void BoardDriver::fail_frames(PairList& pairs) {
+    pairs.clear();  // never a partial set
+    in_flight_.reset();
+    in_flight_pairs_.clear();
+    forget_shadows();  // what the board's memories hold is not known now
+    recover();
 }
 
 void BoardDriver::recover() {
@@ -412,53 +468,88 @@ void BoardDriver::recover() {
         // Let an aborted transfer's engine settle before the next frame.
         port_.wait(0);
         port_.wait(0);
+        if (box_banks_ > 1) host_bank_ = read(R::kHostBank);
     } catch (const DeviceFault&) {
         // The next frame's accesses report the board's state.
     }
 }
 
-FramePhases BoardDriver::frame(const std::vector<FloatBox>& boxes, PairList& pairs) {
-    pairs.clear();
-    for (double& s : spent_) s = 0;
-    const SimTime frame_start = port_.now();
-    mark_ = frame_start;
-    cycles_seen_ = 0;
-    timeouts_recovered_ = 0;
-    FramePhases phases;
+void BoardDriver::open_account(FrameAccount& account, uint32_t objects) {
+    account = FrameAccount{};
+    account.objects = objects;
+    account.began = port_.now();
+    account_ = &account;
+    mark_ = account.began;
+}
 
-    upload(boxes, phases);
-    write(R::kObjectCount, static_cast<uint32_t>(boxes.size()));
+FramePhases BoardDriver::close_account(FrameAccount& account, bool pipelined_frame) {
+    FramePhases phases = account.phases;
+    phases.upload_ns = account.spent[kUpload];
+    phases.start_ns = account.spent[kStart];
+    phases.compute_ns = account.spent[kCompute];
+    phases.irq_ns = account.spent[kIrq];
+    phases.readback_ns = account.spent[kReadback];
+    phases.driver_ns = account.spent[kDriver];
+    phases.latency_ns = ns_from_fs(port_.now() - account.began);
+    // One frame at a time, the host worked on it throughout; pipelined, the
+    // host's time on it is what was charged to it.
+    double charged = 0;
+    for (double spent : account.spent) charged += spent;
+    phases.total_ns = pipelined_frame ? charged : phases.latency_ns;
+    phases.timeouts_recovered = account.timeouts_recovered;
+    return phases;
+}
+
+void BoardDriver::start_sweep(FrameAccount& account) {
+    write(R::kObjectCount, account.objects);
     write(R::kControl, R::kStart);
     charge(kStart);
-    for (;;) {
-        const uint32_t status = wait_for_board(static_cast<uint32_t>(boxes.size()));
-        read_pairs(pairs, static_cast<uint32_t>(boxes.size()), phases);
+    account.segment_start = mark_;
+    account.cycles_seen = 0;
+    if (box_banks_ > 1) host_bank_ = 1 - host_bank_;  // START hands the bank over
+}
+
+uint64_t BoardDriver::finish_sweep(FrameAccount& account, PairList& pairs, bool check_first, bool defer_last) {
+    for (bool first = true;; first = false) {
+        const uint32_t status = wait_for_board(account.objects, check_first && first);
         if (status & R::kOverflow) {
-            ++phases.overflow_pauses;
+            show_pair_bank(R::kCurrentPairs);
+            read_pairs(pairs, account.objects);
+            ++account.phases.overflow_pauses;
             write(R::kControl, R::kResume);
             charge(kReadback);
+            account.segment_start = mark_;
             continue;
         }
-        if (status & R::kDone) break;
-        throw DeviceFault("board interrupt with unexpected status " + hex(status));
+        if (!(status & R::kDone)) throw DeviceFault("board interrupt with unexpected status " + hex(status));
+        if (!defer_last) {
+            show_pair_bank(R::kCurrentPairs);
+            read_pairs(pairs, account.objects);
+        }
+        break;
     }
-    phases.compute_cycles = cycles_seen_;
-    phases.stall_cycles = read_counter(R::kStallsLo);
-    const uint64_t found = read_counter(R::kTotalPairsLo);
-    charge(kReadback);
+    account.phases.compute_cycles = account.cycles_seen;
+    account.phases.stall_cycles = read_counter(R::kStallsLo);
+    return read_counter(R::kTotalPairsLo);
+}
+
+void BoardDriver::check_found(uint64_t found, const PairList& pairs) {
     if (found != pairs.size()) {
         throw DeviceFault("the board found " + std::to_string(found) + " pairs but " + std::to_string(pairs.size()) +
                           " were read back");
     }
-    phases.upload_ns = spent_[kUpload];
-    phases.start_ns = spent_[kStart];
-    phases.compute_ns = spent_[kCompute];
-    phases.irq_ns = spent_[kIrq];
-    phases.readback_ns = spent_[kReadback];
-    phases.driver_ns = spent_[kDriver];
-    phases.total_ns = ns_from_fs(port_.now() - frame_start);
-    phases.timeouts_recovered = timeouts_recovered_;
-    return phases;
+}
+
+FramePhases BoardDriver::frame(const std::vector<FloatBox>& boxes, PairList& pairs) {
+    pairs.clear();
+    FrameAccount account;
+    open_account(account, static_cast<uint32_t>(boxes.size()));
+    upload(boxes);
+    start_sweep(account);
+    const uint64_t found = finish_sweep(account, pairs, false, false);
+    charge(kReadback);
+    check_found(found, pairs);
+    return close_account(account, false);
 }
 
 }  // namespace cdvp

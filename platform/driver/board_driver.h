@@ -54,6 +54,13 @@ struct FramePhases {
     uint64_t readback_bytes = 0;
     uint32_t overflow_pauses = 0;
     uint32_t timeouts_recovered = 0;  // waits whose interrupt never came, finished by polling STATUS
+    // On a board with two box banks (frames pipelined): the frame's sweep
+    // time hidden behind the host's work on the frames beside it (not in
+    // total_ns, which is the host's time on this frame), and the frame's
+    // latency, from the start of its upload to its last pair in host memory.
+    // One frame at a time: overlap 0 and latency = total.
+    double overlap_ns = 0;
+    double latency_ns = 0;
 };
 
 class BoardDriver {
@@ -81,9 +88,33 @@ public:
     // next frame starts clean.
     FramePhases run_frame(const std::vector<FloatBox>& boxes, PairList& pairs);
 
+    // Frames pipelined, on a board with two box banks (BOX_BANKS = 2): two
+    // frames in flight. submit() uploads `boxes` into the host's bank while
+    // the board sweeps the frame before, waits for that frame's end, starts
+    // the new frame and reads the finished frame's pairs back during the new
+    // sweep: it returns true with them (pairs, *phases) when a frame
+    // finished, false on the first call. finish() completes the frame in
+    // flight the same way (false when none is). Faults are run_frame's; after
+    // one no frame is in flight.
+    bool pipelined() const { return box_banks_ > 1; }
+    bool submit(const std::vector<FloatBox>& boxes, PairList& pairs, FramePhases& phases);
+    bool finish(PairList& pairs, FramePhases& phases);
+    bool frame_in_flight() const { return in_flight_.has_value(); }
+
 private:
     enum Phase { kUpload, kStart, kCompute, kIrq, kReadback, kDriver, kPhases };
-    void charge(Phase phase);  // the time since the last charge goes to phase
+    // One frame's book while the driver works on it: the host time charged
+    // to it by phase, what it moved, and where its sweep stands.
+    struct FrameAccount {
+        double spent[kPhases] = {};
+        FramePhases phases;
+        SimTime began = 0;          // its upload began: its latency counts from here
+        SimTime segment_start = 0;  // its last START or RESUME
+        uint64_t cycles_seen = 0;
+        uint32_t objects = 0;
+        uint32_t timeouts_recovered = 0;
+    };
+    void charge(Phase phase);  // the time since the last charge goes to phase of the current account
     void cpu_work(double ns);  // host CPU time, charged to the driver
     // The pause after the polls-th poll of a wait (back-off).
     void poll_pause(uint32_t polls);
@@ -101,26 +132,52 @@ private:
     // Waits for the interrupt or a poll to find any of bits in the register's
     // value, until the timeout; returns the value. what names the wait.
     // by_interrupt: wait for the interrupt (else poll).
-    uint32_t wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what, bool by_interrupt);
+    // check_first: read the status before any wait (the event may have come
+    // while the host was busy: frames pipelined).
+    uint32_t wait_for(uint64_t status_address, uint32_t bits, SimTime timeout, const char* what, bool by_interrupt,
+                      bool check_first = false);
+    // The shared line's handler while a sweep runs beside a DMA: an
+    // interrupt that was not the DMA's is the board's; it is acknowledged so
+    // that the line can rise for the DMA. Returns whether it was the board's.
+    bool acknowledge_board_event();
     bool dma_by_interrupt() const;
     void run_dma(uint32_t control, double worst_ns);
     void dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host);
     [[noreturn]] void dma_fault();
     uint64_t read_counter(uint32_t low_offset);
-    void upload(const std::vector<FloatBox>& boxes, FramePhases& phases);
+    void upload(const std::vector<FloatBox>& boxes);
     // The chain of six arrays; the delta stream's records of `changed` boxes.
     void upload_full(uint32_t objects);
     void upload_delta(const std::vector<uint32_t>& changed);
-    // Boxes whose words differ from the board's copy (all when it is unknown).
+    // Boxes whose words differ from the host bank's copy (all when it is unknown).
     std::vector<uint32_t> changed_boxes(uint32_t objects) const;
+    // Starts an account; the frame's phases from it, ending now.
+    void open_account(FrameAccount& account, uint32_t objects);
+    // pipelined_frame: its total is the host time charged to it, not the
+    // time from its start (frames overlapped).
+    FramePhases close_account(FrameAccount& account, bool pipelined_frame);
+    // Fails the frame unless the pairs read back are as many as the board found.
+    static void check_found(uint64_t found, const PairList& pairs);
+    // START of the account's frame (its boxes uploaded), the banks swapping.
+    void start_sweep(FrameAccount& account);
+    // Waits for the account's sweep to end, reading its pairs at each
+    // overflow pause and resuming; returns with it done, counters read.
+    // defer_last: leave the last segment's pairs in the buffer (pipelined:
+    // they are read from the previous pair buffer during the next sweep).
+    // Returns the pairs the board found (TOTAL_PAIRS).
+    uint64_t finish_sweep(FrameAccount& account, PairList& pairs, bool check_first, bool defer_last);
+    // Shows the current or the previous pair buffer (PAIR_BANK), written only on a change.
+    void show_pair_bank(uint32_t bank);
+    // Fails with what recover() leaves: no pairs, no frame in flight.
+    void fail_frames(PairList& pairs);
     // Host RAM areas (byte offsets), from the capacity, pair buffer and config.
     uint64_t pair_area() const;
     uint64_t delta_area() const;
     uint64_t descriptor_area() const;
     // Waits for the board after START or RESUME; returns its status (an
     // error status fails the frame).
-    uint32_t wait_for_board(uint32_t objects);
-    void read_pairs(PairList& pairs, uint32_t objects, FramePhases& phases);
+    uint32_t wait_for_board(uint32_t objects, bool check_first = false);
+    void read_pairs(PairList& pairs, uint32_t objects);
 
     HostPort& port_;
     SimTime period_;
@@ -129,19 +186,29 @@ private:
     uint32_t buffer_depth_ = 0;
     uint32_t parallelism_ = 1;
     NumberFormat format_;
-    uint64_t cycles_seen_ = 0;
-    double spent_[kPhases] = {};
+    uint32_t box_banks_ = 1;
+    uint32_t host_bank_ = 0;   // the bank the next upload goes to
+    uint32_t pair_bank_ = 0;   // what PAIR_BANK shows
+    FrameAccount* account_ = nullptr;  // the frame the host works on now
+    // Pipelined: the frame the board sweeps (uploaded and started), and its pairs so far.
+    std::optional<FrameAccount> in_flight_;
+    PairList in_flight_pairs_;
     SimTime mark_ = 0;
     SimTime noticed_ = 0;  // when the last wait_for noticed its event
     std::shared_ptr<const BusTiming> bus_;
     std::optional<FrameTime> time_;  // from open(), once the board's m and pair buffer are known
-    uint32_t timeouts_recovered_ = 0;
-    // The board's memories as the last upload left them (the words of each
-    // coordinate, boxes 0..shadow_objects_-1), for delta uploads; invalid
+    // Each bank's memories as the last upload into it left them (the words
+    // of each coordinate, boxes 0..objects-1), for delta uploads; invalid
     // until a frame succeeds, and after any fault.
-    std::array<std::vector<uint32_t>, kCoordinates> shadow_;
-    uint32_t shadow_objects_ = 0;
-    bool shadow_valid_ = false;
+    struct BankShadow {
+        std::array<std::vector<uint32_t>, kCoordinates> words;
+        uint32_t objects = 0;
+        bool valid = false;
+    };
+    std::array<BankShadow, 2> shadow_;
+    void forget_shadows() {
+        for (BankShadow& bank : shadow_) bank.valid = false;
+    }
 };
 
 }  // namespace cdvp

@@ -105,6 +105,11 @@ Setup make_setup(const BulletOptions& o, const po::variables_map& vm) {
         throw InputError(setup.values.where(*find_setting("run.fidelity")) +
                          " analytic: cdvp bullet runs Bullet's world on the platform's engines; expected cycle or fast");
     }
+    if (setup.values.settings().board.box_banks > 1) {
+        throw InputError(setup.values.where(*find_setting("board.box_banks")) +
+                         ": two box banks pipeline frames, but a Bullet world steps on each frame's pairs, so its next "
+                         "frame is not known ahead; expected 1 (cdvp record, then cdvp run --trace, pipelines its frames)");
+    }
     setup.platform.fidelity = engine_of(setup.level);
     setup.trace_window = vcd_window(o.vcd_frames, vm);
     // Bullet's times are whole worlds, not the reference workload's

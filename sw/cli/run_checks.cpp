@@ -233,8 +233,10 @@ void check_device_fits(const FrameOrigin& origin, const SettingValues& values, u
         throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(block_rams) +
                          " block RAMs are too few for " + at + ": they need " +
                          std::to_string(board.format.block_ram_layout(max_objects).word_groups()) + " x m x ceil(N/" +
-                         std::to_string(board.format.block_ram_layout(max_objects).depth) + ") = " +
-                         std::to_string(needed) +
+                         std::to_string(board.format.block_ram_layout(max_objects).depth) + ")" +
+                         (board.block_ram_banks() > 1 ? " x " + std::to_string(board.block_ram_banks()) + " box banks"
+                                                      : std::string()) +
+                         " = " + std::to_string(needed) +
                          (largest > 0 ? " (largest m that fits: " + std::to_string(largest) + explore + ")"
                                       : " (not even m=1 fits: use fewer objects or a larger device" + explore + ")"));
     }

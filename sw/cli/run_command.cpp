@@ -108,6 +108,11 @@ void check_analytic_run(const Setup& setup, const RunOptions& o) {
     if (!o.inject.empty()) {
         throw InputError("--inject: " + level + " has no engine to inject faults into; use --fidelity fast or cycle");
     }
+    const Setting& banks = *find_setting("board.box_banks");
+    if (values.settings().board.box_banks > 1 && setup.level == ModelLevel::kAnalytic) {
+        throw InputError(values.where(banks) + ": " + level +
+                         " times one frame at a time; expected 1, or --fidelity fast or cycle to pipeline frames");
+    }
     const Setting& quantum = *find_setting("run.quantum_ns");
     if (values.settings().run.quantum_ns != 0) {
         throw InputError(values.where(quantum) + ": " + level +
@@ -122,6 +127,13 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     setup.level = model_level(setup.values, vm);
     setup.platform.fidelity = engine_of(setup.level);
     if (setup.level == ModelLevel::kAnalytic || setup.level == ModelLevel::kAuto) check_analytic_run(setup, o);
+    // Pipelined frames must be known ahead; an application's next frame
+    // comes from this frame's pairs.
+    if (setup.values.settings().board.box_banks > 1 && vm.count("scene")) {
+        throw InputError(setup.values.where(*find_setting("board.box_banks")) + ": two box banks pipeline frames, " +
+                         "but --scene " + o.scene + " steps on each frame's pairs, so its next frame is not known " +
+                         "ahead; expected --trace (cdvp record writes a Bullet scene's frames to one)");
+    }
     setup.trace_window = vcd_window(o.vcd_frames, vm);
     setup.host = resolve_host_timing(setup.values);
     setup.baselines = BaselineTimer(o.baselines, setup.host);
@@ -186,40 +198,35 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     const auto seconds_since = [](std::chrono::steady_clock::time_point start) {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
-    while (std::optional<Frame> frame = source.next()) {
-        const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
-        // A simulated fault comes back by value, so the platform is torn down
-        // by an ordinary return (see OutputFile::try_finish); the outputs'
-        // destructors discard their temporaries.
-        FrameFault fault;
-        const auto sim_start = std::chrono::steady_clock::now();
-        const FrameResult* frame_result = platform.try_run_frame(boxes, frame->number, fault);
-        const double sim_wall_native_ns = seconds_since(sim_start) * 1e9;
-        wall.simulator_s += sim_wall_native_ns * 1e-9;
+    // One frame's result: checked against the reference, written, timed
+    // against the baselines and fed to the application. An exit status
+    // when the run must end.
+    const auto take_result = [&](const Frame& frame, const std::vector<FloatBox>& boxes, const FrameResult* frame_result,
+                                 const FrameFault& fault, double sim_wall_native_ns) -> std::optional<int> {
         if (frame_result == nullptr) {
             std::cerr << "cdvp run: "
                       << (fault.kind == FrameFault::Kind::kPairBudget
-                              ? budgets.pair_budget_refusal(frame->number, fault.pairs_found)
-                              : "frame " + std::to_string(frame->number) + ": " + printable(fault.message))
+                              ? budgets.pair_budget_refusal(frame.number, fault.pairs_found)
+                              : "frame " + std::to_string(frame.number) + ": " + printable(fault.message))
                       << '\n';
             return fault.kind == FrameFault::Kind::kDevice ? kExitDeviceFault : kExitBadInput;
         }
         const FrameResult& result = *frame_result;
         const FormatReference::Check check =
-            within_budget(budgets, frame->number, [&] { return reference.check(boxes, result.pairs, result.phases); });
+            within_budget(budgets, frame.number, [&] { return reference.check(boxes, result.pairs, result.phases); });
         if (check.missing) {
-            std::cerr << "cdvp run: frame " << frame->number << ": "
-                      << lost_pair_message(run.config.format, *frame, *check.missing) << '\n';
+            std::cerr << "cdvp run: frame " << frame.number << ": "
+                      << lost_pair_message(run.config.format, frame, *check.missing) << '\n';
             return kExitDeviceFault;
         }
-        if (out.pairs) write_frame_pairs(out.pairs->stream(), frame->number, to_id_pairs(*frame, result.pairs));
-        FrameStats stats{frame->number, boxes.size(), result.pairs.size(),
+        if (out.pairs) write_frame_pairs(out.pairs->stream(), frame.number, to_id_pairs(frame, result.pairs));
+        FrameStats stats{frame.number, boxes.size(), result.pairs.size(),
                          run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_native_ns, check.extra};
         stats.load_wait_slots = load_wait_slots(run, boxes.size());
         if (!setup.baselines.empty()) {
             const auto baselines_start = std::chrono::steady_clock::now();
-            stats.baselines = within_budget(budgets, frame->number, [&] {
-                return setup.baselines.time_frame(boxes, sorted(reference.kept(check, result.pairs)), frame->number);
+            stats.baselines = within_budget(budgets, frame.number, [&] {
+                return setup.baselines.time_frame(boxes, sorted(reference.kept(check, result.pairs)), frame.number);
             });
             wall.baselines_s += seconds_since(baselines_start);
         }
@@ -228,6 +235,50 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         // The application gets the pairs the host keeps once it has dropped the extra ones.
         source.feed(reference.kept(check, result.pairs));
         progress.update(totals.frames());
+        return std::nullopt;
+    };
+    // A simulated fault comes back by value, so the platform is torn down
+    // by an ordinary return (see OutputFile::try_finish); the outputs'
+    // destructors discard their temporaries. Pipelined (two box banks), a
+    // frame's result comes with the next frame's submission; the frame in
+    // flight when the fault came is the one named.
+    std::optional<Frame> in_flight;
+    std::vector<FloatBox> in_flight_boxes;
+    while (std::optional<Frame> frame = source.next()) {
+        std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
+        FrameFault fault;
+        const auto sim_start = std::chrono::steady_clock::now();
+        const FrameResult* frame_result = platform.pipelined()
+                                              ? platform.try_submit_frame(boxes, frame->number, fault)
+                                              : platform.try_run_frame(boxes, frame->number, fault);
+        const double sim_wall_native_ns = seconds_since(sim_start) * 1e9;
+        wall.simulator_s += sim_wall_native_ns * 1e-9;
+        if (!platform.pipelined()) {
+            if (const std::optional<int> status = take_result(*frame, boxes, frame_result, fault, sim_wall_native_ns)) {
+                return *status;
+            }
+            continue;
+        }
+        if (in_flight || fault) {
+            if (const std::optional<int> status =
+                    take_result(in_flight ? *in_flight : *frame, in_flight ? in_flight_boxes : boxes, frame_result,
+                                fault, sim_wall_native_ns)) {
+                return *status;
+            }
+        }
+        in_flight = std::move(frame);
+        in_flight_boxes = std::move(boxes);
+    }
+    if (in_flight) {
+        FrameFault fault;
+        const auto sim_start = std::chrono::steady_clock::now();
+        const FrameResult* frame_result = platform.try_finish_frames(fault);
+        const double sim_wall_native_ns = seconds_since(sim_start) * 1e9;
+        wall.simulator_s += sim_wall_native_ns * 1e-9;
+        if (const std::optional<int> status =
+                take_result(*in_flight, in_flight_boxes, frame_result, fault, sim_wall_native_ns)) {
+            return *status;
+        }
     }
     std::size_t frames_done = totals.frames();
     if (!setup.baselines.empty()) {

@@ -31,6 +31,7 @@ struct LevelChoice {
     uint64_t measured_frame = 0;
     double measured_error_percent = 0;
     const char* measured_phase = "";
+    bool pipelined = false;  // two box banks: the analytic level does not time pipelined frames
     std::string words() const;        // "analytic on 18 of 20 frames: ...", for the summary
     nlohmann::json to_json() const;   // the report's "fidelity_choice"
 };
@@ -39,6 +40,12 @@ class RunPlatform {
 public:
     RunPlatform(const BoardSetup& setup, uint32_t capacity, const std::string& trace_base);
     const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    // Frames pipelined on a board with two box banks: VirtualBoard's.
+    bool pipelined() const { return board_ && board_->pipelined(); }
+    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) {
+        return counted(board_->try_submit_frame(boxes, number, fault));
+    }
+    const FrameResult* try_finish_frames(FrameFault& fault) { return counted(board_->try_finish_frames(fault)); }
     const BusTiming& bus_timing() const { return board_ ? board_->bus_timing() : analytic_->bus_timing(); }
     // The SystemC platform, or null at the analytic level (which has no waveforms).
     VirtualBoard* board() { return board_.get(); }
@@ -46,6 +53,11 @@ public:
     const LevelChoice* choice() const { return auto_ ? &choice_ : nullptr; }
 
 private:
+    // Under auto, a pipelined frame the fast engine gave.
+    const FrameResult* counted(const FrameResult* result) {
+        if (auto_ && result != nullptr) ++choice_.fast_frames;
+        return result;
+    }
     const FrameResult* run_auto(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
 
     std::unique_ptr<VirtualBoard> board_;

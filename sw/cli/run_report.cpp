@@ -155,6 +155,8 @@ nlohmann::json frame_json(const FrameStats& f) {
             {"readback_ns", p.readback_ns},
             {"driver_ns", p.driver_ns},
             {"total_ns", p.total_ns},
+            {"overlap_ns", p.overlap_ns},
+            {"latency_ns", p.latency_ns},
             {"sim_wall_native_ns", f.sim_wall_native_ns},
             {"baselines", baselines}};
     add_extra(frame, f.extra);
@@ -168,6 +170,7 @@ void RunTotals::add(const FrameStats& frame) {
     for (int k = 0; k < kPhases; ++k) sums.phases[k] += phase_value(frame.phases, k);
     for (const auto& [name, t] : frame.baselines) baseline_samples(name).add(t.native_ns);
     board_total_.add(frame.phases.total_ns);
+    latency_.add(frame.phases.latency_ns);
     sim_wall_.add(frame.sim_wall_native_ns);
     ++frames_;
     pairs_ += frame.pairs;
@@ -224,6 +227,7 @@ ReportSummary RunTotals::summary(const HostTiming& host) const {
     s.load_average_end = load_average();
     s.extra = extra();
     s.total_ns = board.spread;
+    s.latency_ns = latency_figures().spread;
     s.sim_wall_native_ns = sim_wall_figures().spread;
     for (int k = 0; k < kPhases; ++k) s.mean_phase_ns[static_cast<std::size_t>(k)] = mean_phase(k);
     return s;

@@ -118,6 +118,9 @@ public:
     // board's simulated frame time, the simulator's wall time, each
     // baseline's native time (scale by its host factor for the modelled host).
     TimingFigures board_figures() const { return board_total_.figures(); }
+    // Frames pipelined: the frames' latencies, from upload to pairs (the
+    // board's figures are then the host's time a frame: the throughput).
+    TimingFigures latency_figures() const { return latency_.figures(); }
     TimingFigures sim_wall_figures() const { return sim_wall_.figures(); }
     std::map<std::string, TimingFigures> baseline_figures() const;
     // The report's summary: these figures, each baseline's on the host too.
@@ -133,7 +136,7 @@ private:
     uint64_t frames_ = 0, pairs_ = 0, cycles_ = 0, stalls_ = 0, last_objects_ = 0;
     ExtraPairs extra_;
     Sums warmup_, rest_;
-    FrameSamples board_total_{warmup_frames_}, sim_wall_{warmup_frames_};
+    FrameSamples board_total_{warmup_frames_}, sim_wall_{warmup_frames_}, latency_{warmup_frames_};
     std::map<std::string, FrameSamples> baselines_;
     std::vector<FrameStats> shown_;
 };

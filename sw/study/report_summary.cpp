@@ -81,6 +81,7 @@ nlohmann::json to_json(const ReportSummary& s) {
                            {"extra_readback_ns", s.extra.extra_readback_ns},
                            {"extra_driver_ns", s.extra.extra_driver_ns}};
     put_spread(json, "total_ns", s.total_ns);
+    put_spread(json, "latency_ns", s.latency_ns);
     put_spread(json, "sim_wall_native_ns", s.sim_wall_native_ns);
     // After the spread: mean_total_ns is the phases' mean, summed as they are.
     for (std::size_t k = 0; k < ReportSummary::kPhases; ++k) {
@@ -104,6 +105,8 @@ ReportSummary summary_from_json(const nlohmann::json& json, const std::string& s
     s.extra.extra_readback_ns = r.get<double>("extra_readback_ns");
     s.extra.extra_driver_ns = r.get<double>("extra_driver_ns");
     s.total_ns = r.spread("total_ns");
+    // Reports from before frames were pipelined ran one frame at a time.
+    s.latency_ns = json.contains("mean_latency_ns") ? r.spread("latency_ns") : s.total_ns;
     s.sim_wall_native_ns = r.spread("sim_wall_native_ns");
     for (std::size_t k = 0; k < ReportSummary::kPhases; ++k) {
         s.mean_phase_ns[k] = r.get<double>(std::string("mean_") + ReportSummary::kPhaseKeys[k]);

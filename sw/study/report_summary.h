@@ -38,7 +38,8 @@ struct ReportSummary {
     uint64_t pairs = 0;
     std::array<double, 3> load_average_end{};  // 1, 5 and 15 minutes, when the run ended
     ExtraPairs extra;  // against the float32 reference
-    Spread total_ns;   // the board's simulated frame time
+    Spread total_ns;   // the board's simulated frame time (pipelined: the host's time a frame)
+    Spread latency_ns; // a frame's from its upload to its pairs (one frame at a time: total_ns)
     Spread sim_wall_native_ns;  // the simulator's own wall time per frame
     std::array<double, kPhases> mean_phase_ns{};  // upload .. total, means over frames_in_means
 };

@@ -18,7 +18,7 @@ using nlohmann::json;
 // platform's phases (cdvp bullet's board too), what extra pairs cost, and
 // the settings of the model given in ns.
 const std::set<std::string> kSimulatedTimeFields = {
-    "upload_ns", "start_ns", "compute_ns", "irq_ns", "readback_ns", "driver_ns", "total_ns",
+    "upload_ns", "start_ns", "compute_ns", "irq_ns", "readback_ns", "driver_ns", "total_ns", "overlap_ns", "latency_ns",
     "extra_readback_ns", "extra_driver_ns", "quantum_ns", "interrupt_ns", "host_pio_overhead_ns",
     "read_round_trip_ns", "posted_write_ns", "ns_per_box", "ns_per_pair", "call_ns", "poll_gap_ns", "poll_gap_max_ns",
     "timeout_floor_ns"};

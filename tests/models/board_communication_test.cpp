@@ -16,12 +16,7 @@ namespace cdvp {
 namespace {
 
 using R = ControlRegisters;
-
-uint32_t reg(BoardCore& core, uint32_t offset) {
-    uint32_t value = 0;
-    EXPECT_TRUE(core.read_register(offset, value));
-    return value;
-}
+constexpr auto reg = testing::read_register;
 
 std::vector<uint32_t> record(uint32_t index, uint32_t base) {
     std::vector<uint32_t> words{index};

@@ -1,6 +1,8 @@
 #include "tests/support/core_driver.h"
 
+#include <cstring>
 #include <stdexcept>
+#include <string>
 
 namespace cdvp::testing {
 
@@ -50,6 +52,35 @@ std::vector<FloatBox> random_boxes(std::size_t n, float extent, float size, std:
         }
     }
     return boxes;
+}
+
+std::vector<std::vector<FloatBox>> moving_frames(uint32_t n, std::mt19937& rng, float extent, int frames, bool rotate) {
+    std::vector<std::vector<FloatBox>> out{random_boxes(n, extent, 2.5f, rng)};
+    std::uniform_real_distribution<float> step(-0.3f, 0.3f);
+    for (int f = 1; f < frames; ++f) {
+        std::vector<FloatBox> next = out.back();
+        for (uint32_t i = rotate ? f % 5 : 0; i < n; i += 5) {
+            const float d = step(rng);
+            for (int a = 0; a < 3; ++a) next[i].min[a] += d, next[i].max[a] += d;
+        }
+        if (f == 3) next.push_back(FloatBox{{1, 1, 1}, {2, 2, 2}});
+        out.push_back(next);
+    }
+    return out;
+}
+
+uint32_t changed_boxes(const std::vector<FloatBox>& before, const std::vector<FloatBox>& now) {
+    uint32_t count = 0;
+    for (std::size_t i = 0; i < now.size(); ++i) {
+        count += i >= before.size() || std::memcmp(&before[i], &now[i], sizeof(FloatBox)) != 0;
+    }
+    return count;
+}
+
+uint32_t read_register(BoardCore& core, uint32_t offset) {
+    uint32_t value = 0;
+    if (!core.read_register(offset, value)) throw std::runtime_error("no register at " + std::to_string(offset));
+    return value;
 }
 
 }  // namespace cdvp::testing

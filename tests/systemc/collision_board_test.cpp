@@ -81,7 +81,7 @@ TEST(CollisionBoard, InterruptRisesOnDoneAndCycleCounterMatchesTime) {
         EXPECT_EQ(b.read(R::kStatus) & R::kBusy, uint32_t{R::kBusy});
         wait(b.irq.posedge_event());
         const uint32_t cycles = b.read(R::kCyclesLo);
-        EXPECT_EQ(b.read(R::kStatus), uint32_t{R::kDone});
+        EXPECT_EQ(b.read(R::kStatus), uint32_t{R::kDone | R::kInterrupt}) << "done, holding the line";
         EXPECT_EQ(cycles, AddressGenerator::sweep_cycles(16, 2) + config.pipeline_latency() + b.read(R::kStallsLo));
         // The interrupt comes with the last clock edge: cycles periods after start.
         EXPECT_EQ(sc_time_stamp() - started, b.board.period() * cycles);
@@ -121,7 +121,9 @@ TEST(CollisionBoard, OverflowInterruptsAndResumes) {
                 b.write(R::kControl, R::kResume);
                 continue;
             }
-            EXPECT_EQ(status, uint32_t{R::kDone});
+            EXPECT_EQ(status, uint32_t{R::kDone | R::kInterrupt});
+            b.write(R::kControl, R::kAcknowledge);
+            EXPECT_EQ(b.read(R::kStatus), uint32_t{R::kDone}) << "ACKNOWLEDGE lowers the line, done stays";
             break;
         }
         EXPECT_EQ(pairs, 66u);

@@ -21,6 +21,9 @@
 namespace cdvp {
 namespace {
 
+using testing::moving_frames;
+constexpr auto changed = testing::changed_boxes;
+
 struct Strategy {
     const char* name;
     UploadMode upload;
@@ -47,30 +50,6 @@ PlatformConfig platform_for(const Strategy& s, Fidelity fidelity) {
     config.driver.poll_gap_max_ns = 5000;
     config.fidelity = fidelity;
     return config;
-}
-
-// Frames where a fifth of the boxes move and the scene grows once.
-std::vector<std::vector<FloatBox>> moving_frames(uint32_t n, std::mt19937& rng, float extent = 9.0f) {
-    std::vector<std::vector<FloatBox>> frames{testing::random_boxes(n, extent, 2.5f, rng)};
-    std::uniform_real_distribution<float> step(-0.3f, 0.3f);
-    for (int f = 1; f < 5; ++f) {
-        std::vector<FloatBox> next = frames.back();
-        for (uint32_t i = 0; i < n; i += 5) {
-            const float d = step(rng);
-            for (int a = 0; a < 3; ++a) next[i].min[a] += d, next[i].max[a] += d;
-        }
-        if (f == 3) next.push_back(FloatBox{{1, 1, 1}, {2, 2, 2}});
-        frames.push_back(next);
-    }
-    return frames;
-}
-
-uint32_t changed(const std::vector<FloatBox>& before, const std::vector<FloatBox>& now) {
-    uint32_t count = 0;
-    for (std::size_t i = 0; i < now.size(); ++i) {
-        count += i >= before.size() || std::memcmp(&before[i], &now[i], sizeof(FloatBox)) != 0;
-    }
-    return count;
 }
 
 TEST(Communication, EveryStrategyFindsThePairsAndBothEnginesAgree) {

@@ -1,0 +1,70 @@
+// Frames pipelined from the command line (--box-banks 2): a recorded
+// scene's trace gives the same pairs file as one frame at a time, on both
+// engines; the report gives each frame's overlap and latency, and the host's
+// time a frame falls; a closed-loop scene, a Bullet world or the analytic
+// level is refused on one line naming the setting, and auto says why it
+// runs the fast engine.
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+nlohmann::json report_of(const fs::path& path) { return nlohmann::json::parse(slurp(path)); }
+
+TEST_F(Cli, TwoBoxBanksPipelineATraceToTheSamePairsInLessHostTime) {
+    ASSERT_EQ(run("record --scene bullet-spheres --objects 300 --frames 5 --out trace.csv -q").status, 0);
+    const std::string trace = "run --trace trace.csv --board adm-xrc-ii --m 4 -q ";
+    ASSERT_EQ(run(trace + "--pairs-out one.csv --report one.json").status, 0);
+    for (const std::string fidelity : {"fast", "cycle"}) {
+        const Result r = run(trace + "--box-banks 2 --fidelity " + fidelity + " --pairs-out two.csv --report two.json");
+        ASSERT_EQ(r.status, 0) << fidelity << ": " << r.err;
+        EXPECT_EQ(slurp(dir_ / "one.csv"), slurp(dir_ / "two.csv")) << fidelity << ": the same pairs, frame by frame";
+        const auto one = report_of(dir_ / "one.json")["frames"], two = report_of(dir_ / "two.json")["frames"];
+        ASSERT_EQ(two.size(), 5u);
+        double one_total = 0, two_total = 0;
+        for (std::size_t k = 0; k < two.size(); ++k) {
+            EXPECT_EQ(two[k]["frame"], one[k]["frame"]);
+            EXPECT_EQ(two[k]["pairs"], one[k]["pairs"]) << k;
+            EXPECT_EQ(two[k]["compute_cycles"], one[k]["compute_cycles"]) << k;
+            EXPECT_EQ(one[k]["overlap_ns"], 0.0) << k;
+            EXPECT_EQ(one[k]["latency_ns"], one[k]["total_ns"]) << k;
+            EXPECT_GE(two[k]["latency_ns"].get<double>(), two[k]["total_ns"].get<double>()) << k;
+            one_total += one[k]["total_ns"].get<double>();
+            two_total += two[k]["total_ns"].get<double>();
+        }
+        EXPECT_GT(two[0]["overlap_ns"].get<double>(), 0.0) << "frame 0 sweeps while frame 1 uploads";
+        EXPECT_LT(two_total, one_total) << fidelity;
+    }
+    const Result summary = run("run --trace trace.csv --board adm-xrc-ii --m 4 --box-banks 2");
+    ASSERT_EQ(summary.status, 0) << summary.err;
+    EXPECT_NE(summary.out.find("pipelined (two box banks)"), std::string::npos) << summary.out;
+}
+
+TEST_F(Cli, PipeliningWhatCannotBePipelinedIsRefused) {
+    const Result scene = run("run --scene spheres --objects 50 --box-banks 2 -q");
+    EXPECT_EQ(scene.status, 2);
+    EXPECT_NE(scene.err.find("--box-banks"), std::string::npos) << scene.err;
+    EXPECT_NE(scene.err.find("--trace"), std::string::npos) << scene.err;
+    const Result bullet = run("bullet --scene pyramid --objects 20 --frames 2 --box-banks 2 -q");
+    EXPECT_EQ(bullet.status, 2);
+    EXPECT_NE(bullet.err.find("Bullet world"), std::string::npos) << bullet.err;
+    ASSERT_EQ(run("record --scene bullet-spheres --objects 40 --frames 2 --out t.csv -q").status, 0);
+    const Result analytic = run("run --trace t.csv --fidelity analytic --box-banks 2 -q");
+    EXPECT_EQ(analytic.status, 2);
+    EXPECT_NE(analytic.err.find("one frame at a time"), std::string::npos) << analytic.err;
+    const Result chosen = run("run --trace t.csv --fidelity auto --box-banks 2 --report r.json");
+    ASSERT_EQ(chosen.status, 0) << chosen.err;
+    EXPECT_NE(chosen.out.find("auto: the fast engine on every frame"), std::string::npos) << chosen.out;
+    const auto choice = report_of(dir_ / "r.json")["fidelity_choice"];
+    EXPECT_EQ(choice["fast_frames"], 2);
+    EXPECT_EQ(choice["analytic_frames"], 0);
+    EXPECT_TRUE(choice.contains("reason")) << choice.dump();
+    const Result banks = run("run --trace t.csv --box-banks 3 -q");
+    EXPECT_EQ(banks.status, 2);
+    EXPECT_NE(banks.err.find("--box-banks"), std::string::npos) << banks.err;
+}
+
+}  // namespace
+}  // namespace cdvp::test
