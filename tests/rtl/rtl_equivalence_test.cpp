@@ -524,7 +524,7 @@ void run_top_scene(const TopScene& scene, uint32_t seed, bool expect_stalls, boo
          << " tile=" << board.tile_boxes;
     HostScript script(board);
     for (uint32_t offset : {R::kId, R::kParallelism, R::kCapacity, R::kPairBufferDepth, R::kFormat, R::kTileBoxes,
-                            R::kTileTiming, R::kStatus}) {
+                            R::kTileTiming, R::kStatus, R::kBoxBanks, R::kHostBank, R::kPairBank}) {
         script.read_register(offset);
     }
     const uint32_t most = *std::max_element(scene.sweeps.begin(), scene.sweeps.end());
@@ -649,6 +649,93 @@ TEST(BoardTopRtl, ErrorCausesAndAbortMatchTheModel) {
     script.read_register(R::kPairCount);
     script.read_register(R::kTotalPairsLo);
     script.run_and_compare(board, "errors");
+}
+
+// STATUS's INTERRUPT bit follows the line: set by done, an overflow pause or
+// an error, cleared by ACKNOWLEDGE, START, RESUME and ABORT.
+TEST(BoardTopRtl, InterruptBitFollowsTheLineUntilAcknowledge) {
+    using R = ControlRegisters;
+    TopBoard board{2, 9, 0, 2, 8, 32, 0, 2};
+    HostScript script(board);
+    const Boxes boxes = random_boxes(300, 20, 0, 108);
+    for (uint32_t i = 0; i < 300; ++i) script.write_box(i, boxes[i]);
+    const auto interrupt = [&] { return (script.read_register(R::kStatus) & R::kInterrupt) != 0; };
+    EXPECT_FALSE(interrupt());                        // after reset
+    script.write_register(R::kObjectCount, 300);
+    script.write_register(R::kControl, R::kStart);
+    EXPECT_FALSE(interrupt());                        // sweeping
+    script.wait();                                    // an overflow pause
+    ASSERT_NE(script.read_register(R::kStatus) & R::kOverflow, 0u);
+    EXPECT_TRUE(interrupt());
+    script.write_register(R::kControl, R::kAcknowledge);
+    EXPECT_FALSE(interrupt());                        // still paused, the line low
+    script.write_register(R::kControl, R::kResume);
+    uint32_t status = 0;
+    for (;;) {                                        // RESUME through every pause to done
+        script.wait();
+        status = script.read_register(R::kStatus);
+        EXPECT_NE(status & R::kInterrupt, 0u);
+        if ((status & R::kOverflow) == 0) break;
+        script.write_register(R::kControl, R::kResume);
+        EXPECT_FALSE(interrupt());                    // RESUME drops the line
+    }
+    EXPECT_NE(status & R::kDone, 0u);
+    script.write_register(R::kControl, R::kAcknowledge);
+    EXPECT_FALSE(interrupt());                        // done, the line low
+    script.write_register(R::kControl, R::kResume);   // refused: an error raises the line
+    EXPECT_TRUE(interrupt());
+    script.read_register(R::kErrorCause);
+    script.write_register(R::kControl, R::kAcknowledge);
+    EXPECT_FALSE(interrupt());                        // ERROR stays, the line drops
+    script.write_register(R::kPairBank, 5);           // refused: the line rises again
+    EXPECT_TRUE(interrupt());
+    script.write_register(R::kControl, R::kAbort);
+    EXPECT_FALSE(interrupt());
+    script.run_and_compare(board, "interrupt");
+}
+
+// PAIR_BANK: 1 shows the previous pair buffer, which a one-bank board never
+// fills (PAIR_COUNT 0); 0 shows the sweep's pairs again; 2 is refused with
+// kBadPairBank and leaves the bank as it was.
+TEST(BoardTopRtl, PairBankShowsTheEmptyPreviousBufferOnOneBank) {
+    using R = ControlRegisters;
+    TopBoard board{2, 9, 0, 2, 16, 512, 0, 2};
+    HostScript script(board);
+    const Boxes boxes = random_boxes(100, 20, 0, 109);
+    for (uint32_t i = 0; i < 100; ++i) script.write_box(i, boxes[i]);
+    for (uint32_t offset : {R::kBoxBanks, R::kHostBank, R::kPairBank}) script.read_register(offset);
+    script.sweep(100);                                // the pairs now in the current buffer
+    const uint32_t pairs = script.read_register(R::kPairCount);
+    EXPECT_GT(pairs, 0u);
+    script.write_register(R::kPairBank, R::kPreviousPairs);
+    EXPECT_EQ(script.read_register(R::kPairBank), 1u);
+    EXPECT_EQ(script.read_register(R::kPairCount), 0u);
+    EXPECT_EQ(script.read_register(R::kPairWords), 0u);
+    script.read_register(R::kHostBank);
+    EXPECT_EQ(script.read_register(R::kStatus) & R::kError, 0u);
+    script.write_register(R::kPairBank, 2);           // no such bank
+    EXPECT_NE(script.read_register(R::kStatus) & R::kError, 0u);
+    EXPECT_EQ(script.read_register(R::kErrorCause), uint32_t{R::kBadPairBank});
+    EXPECT_EQ(script.read_register(R::kPairBank), 1u);
+    script.write_register(R::kPairBank, R::kCurrentPairs);
+    EXPECT_EQ(script.read_register(R::kPairCount), pairs);
+    for (uint32_t w = 0; w < 2 * pairs; ++w) script.read(0x0700'0000u + 4 * w);
+    // A sweep with PAIR_BANK at 1 runs as any other; its pairs show at 0.
+    script.write_register(R::kControl, R::kAbort);
+    script.write_register(R::kPairBank, R::kPreviousPairs);
+    script.write_register(R::kObjectCount, 60);
+    script.write_register(R::kControl, R::kStart);
+    script.write_register(R::kPairBank, R::kPreviousPairs);  // accepted while busy
+    script.read_register(R::kStatus);
+    script.wait();
+    script.read_register(R::kStatus);
+    EXPECT_EQ(script.read_register(R::kPairCount), 0u);
+    script.write_register(R::kPairBank, R::kCurrentPairs);
+    const uint32_t later = script.read_register(R::kPairCount);
+    EXPECT_GT(later, 0u);
+    for (uint32_t w = 0; w < 2 * later; ++w) script.read(0x0700'0000u + 4 * w);
+    script.read_register(R::kTotalPairsLo);
+    script.run_and_compare(board, "pair bank");
 }
 
 }  // namespace

@@ -5,6 +5,9 @@
 // clocked engine (models/board/board_core.*, models/clocked_engine/) edge
 // for edge: the same pairs in the same order, the same CYCLES, STALLS,
 // TOTAL_PAIRS, PAIR_COUNT, STATUS and ERROR_CAUSE (tests/rtl checks it).
+// Register map version 3 (ID 0xCD7B0003): STATUS bit 4 INTERRUPT (the irq
+// line: from done, overflow or an error until ACKNOWLEDGE, START, RESUME or
+// ABORT), BOX_BANKS, HOST_BANK and PAIR_BANK.
 //
 // Cycle semantics (the model's ClockedEngine::step, per clock edge while
 // running): a pause when the FIFO holds pairs and the pair buffer is full
@@ -27,6 +30,12 @@
 // Where it departs from the model (docs/rtl.md):
 //  - PAIR_FORMAT takes only 0 (the list); counted and bitmap read-backs are
 //    refused with kBadPairFormat, and kPairWindowFull cannot occur.
+//  - One box bank only (BOX_BANKS is a localparam fixed at 1): no frame
+//    pipelining. BOX_BANKS reads 1 and HOST_BANK 0; PAIR_BANK takes 0
+//    (current) or 1 (previous; any other value is refused with
+//    kBadPairBank), and with 1 it shows the previous pair buffer, which on a
+//    one-bank board holds no pairs (PAIR_COUNT and PAIR_WORDS read 0, the
+//    pair window reads 0), as the model's does.
 //  - No injected board error (kInjectedError) and no fault hooks.
 //  - Tiled boards read a box in one cycle (six SSRAM banks: cycles_per_box 1).
 //  - A pair reaches the pair buffer's memory one edge after PAIR_COUNT
@@ -71,11 +80,12 @@ module collision_board_top #(
     localparam TAW = TILE_BOXES > 1 ? $clog2(TILE_BOXES) : 1;
     localparam BAW = BUFFER_DEPTH > 1 ? $clog2(BUFFER_DEPTH) : 1;
     localparam [31:0] CAPACITY = 32'd1 << AW;
-    localparam [31:0] ID_VALUE = 32'hCD7B_0002;
+    localparam [31:0] ID_VALUE = 32'hCD7B_0003;   // register map version 3
+    localparam [31:0] BOX_BANKS = 1;               // one box bank: no double buffering
     localparam [1:0] BUBBLE = 0, WINDOW = 1, END = 2;
     // BoardError causes
     localparam [31:0] E_START_BUSY = 1, E_TOO_MANY = 2, E_RESUME = 3, E_WRITE_BUSY = 4,
-                      E_DELTA_INDEX = 6, E_DELTA_INCOMPLETE = 7, E_PAIR_FORMAT = 8;
+                      E_DELTA_INDEX = 6, E_DELTA_INCOMPLETE = 7, E_PAIR_FORMAT = 8, E_PAIR_BANK = 10;
 
     // ------------------------------------------------------------------
     // Controller
@@ -108,6 +118,7 @@ module collision_board_top #(
     reg [31:0] delta_words [0:5];   // the record so far: index, then coordinates
     reg [31:0] delta_records;
     reg end_seen;
+    reg pair_bank;                  // PAIR_BANK: 0 current pairs, 1 the previous (none: one bank)
 
     wire start_go = cmd_start && !busy && object_count <= CAPACITY && delta_filled == 0;
     wire resume_go = cmd_resume && paused;
@@ -152,6 +163,7 @@ module collision_board_top #(
             if (busy) begin raise = 1; cause = E_WRITE_BUSY; end
             else if (wdata != 0) begin raise = 1; cause = E_PAIR_FORMAT; end
         end
+        if (reg_write && offset == 12'h05C && wdata > 1) begin raise = 1; cause = E_PAIR_BANK; end
         if ((coordinate_write || delta_write) && busy) begin raise = 1; cause = E_WRITE_BUSY; end
         if (delta_complete && !delta_in_range) begin raise = 1; cause = E_DELTA_INDEX; end
     end
@@ -380,6 +392,9 @@ module collision_board_top #(
         if (reset) begin
             object_count <= 0;
             delta_records <= 0;
+            pair_bank <= 0;
+        end else if (reg_write && offset == 12'h05C && wdata <= 1) begin
+            pair_bank <= wdata[0];      // accepted while busy too, as the model's
         end
         if (cmd_abort) begin
             error <= 0;
@@ -420,9 +435,9 @@ module collision_board_top #(
     always @* begin
         case (offset)
             12'h000: register_value = ID_VALUE;
-            12'h008: register_value = {28'b0, error, paused, done, busy};
+            12'h008: register_value = {27'b0, irq_pending, error, paused, done, busy};
             12'h00C: register_value = object_count;
-            12'h010: register_value = {{(31-BAW){1'b0}}, buffered};
+            12'h010: register_value = pair_bank ? 0 : {{(31-BAW){1'b0}}, buffered};
             12'h014: register_value = cycles[31:0];
             12'h018: register_value = cycles[63:32];
             12'h01C: register_value = stalls[31:0];
@@ -437,21 +452,26 @@ module collision_board_top #(
             12'h040: register_value = TILE_BOXES;
             12'h044: register_value = TILED ? (TILE_LATENCY & 32'hFFFF) | (32'd1 << 16) : 0;
             12'h048: register_value = 0;
-            12'h04C: register_value = {{(30-BAW){1'b0}}, buffered, 1'b0};
+            12'h04C: register_value = pair_bank ? 0 : {{(30-BAW){1'b0}}, buffered, 1'b0};
             12'h050: register_value = delta_records;
+            12'h054: register_value = BOX_BANKS;
+            12'h058: register_value = 0;                        // HOST_BANK: the one bank
+            12'h05C: register_value = {31'b0, pair_bank};
             default: register_value = 0;
         endcase
     end
-    reg read_pair, read_high;
+    reg read_pair, read_high, read_previous;
     reg [31:0] register_q;
     always @(posedge clk) begin
         rvalid <= re;
         read_pair <= pair_read;
         read_high <= addr[2];
+        read_previous <= pair_bank;
         register_q <= re && reg_access ? register_value : 0;
     end
     always @* begin
-        if (read_pair) rdata = {{(32-AW){1'b0}}, read_high ? pair_word[AW-1:0] : pair_word[2*AW-1 -: AW]};  // {row, column}
+        if (read_pair && read_previous) rdata = 0;   // the previous pair buffer: empty
+        else if (read_pair) rdata = {{(32-AW){1'b0}}, read_high ? pair_word[AW-1:0] : pair_word[2*AW-1 -: AW]};  // {row, column}
         else rdata = register_q;
     end
 endmodule
