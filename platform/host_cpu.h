@@ -83,7 +83,6 @@ public:
     bool finished() const { return !pending_; }
     // Whether the last request gave a frame's result (kSubmit's first does not).
     bool completed() const { return completed_; }
-    bool pipelined() const { return driver_.pipelined(); }
     // The fault that ended the frame (none when it completed).
     const FrameFault& fault() const { return fault_; }
     // Anything else the driver threw (a defect, not a simulated fault).

@@ -194,10 +194,11 @@ uint32_t BoardDriver::wait_for(uint64_t status_address, uint32_t bits, SimTime t
     bool look_now = check_first;
     SimTime looked = port_.now();
     for (uint32_t polls = 0;; ++polls) {
-        // An interrupt that came during the last status read was for what
-        // the read could not see yet: look again instead of waiting for one.
+        // After a status read that did not show the event, an interrupt
+        // that came during it was for what it could not see yet: look again
+        // instead of waiting for another.
         if (by_interrupt && !look_now) {
-            if (check_first || in_flight_) port_.wait_for_interrupt_since(looked, deadline - port_.now());
+            if (polls > 0 || check_first) port_.wait_for_interrupt_since(looked, deadline - port_.now());
             else port_.wait_for_interrupt(deadline - port_.now());
         }
         look_now = false;
@@ -439,11 +440,15 @@ void BoardDriver::read_pairs(PairList& pairs, uint32_t objects) {
     cpu_work(config_.ns_per_pair * count);
 }
 
-FramePhases BoardDriver::run_frame(const std::vector<FloatBox>& boxes, PairList& pairs) {
+void BoardDriver::check_capacity(const std::vector<FloatBox>& boxes) const {
     if (boxes.size() > capacity_) {
         throw std::invalid_argument("frame of " + std::to_string(boxes.size()) + " boxes exceeds the board's capacity of " +
                                     std::to_string(capacity_));
     }
+}
+
+FramePhases BoardDriver::run_frame(const std::vector<FloatBox>& boxes, PairList& pairs) {
+    check_capacity(boxes);
     if (in_flight_) throw std::logic_error("run_frame with a pipelined frame in flight: finish() it first");
     try {
         return frame(boxes, pairs);

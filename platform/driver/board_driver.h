@@ -99,7 +99,6 @@ public:
     bool pipelined() const { return box_banks_ > 1; }
     bool submit(const std::vector<FloatBox>& boxes, PairList& pairs, FramePhases& phases);
     bool finish(PairList& pairs, FramePhases& phases);
-    bool frame_in_flight() const { return in_flight_.has_value(); }
 
 private:
     enum Phase { kUpload, kStart, kCompute, kIrq, kReadback, kDriver, kPhases };
@@ -168,6 +167,8 @@ private:
     uint64_t finish_sweep(FrameAccount& account, PairList& pairs, bool check_first, bool defer_last);
     // Shows the current or the previous pair buffer (PAIR_BANK), written only on a change.
     void show_pair_bank(uint32_t bank);
+    // Refuses a frame of more boxes than the board holds (invalid_argument).
+    void check_capacity(const std::vector<FloatBox>& boxes) const;
     // Fails with what recover() leaves: no pairs, no frame in flight.
     void fail_frames(PairList& pairs);
     // Host RAM areas (byte offsets), from the capacity, pair buffer and config.

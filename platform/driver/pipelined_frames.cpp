@@ -16,10 +16,7 @@ using R = ControlRegisters;
 
 bool BoardDriver::submit(const std::vector<FloatBox>& boxes, PairList& pairs, FramePhases& phases) {
     if (!pipelined()) throw std::logic_error("submit: the board has one box bank; use run_frame");
-    if (boxes.size() > capacity_) {
-        throw std::invalid_argument("frame of " + std::to_string(boxes.size()) + " boxes exceeds the board's capacity of " +
-                                    std::to_string(capacity_));
-    }
+    check_capacity(boxes);
     try {
         FrameAccount next;
         open_account(next, static_cast<uint32_t>(boxes.size()));
