@@ -448,7 +448,7 @@ module collision_board_top #(
             12'h030: register_value = CAPACITY;
             12'h034: register_value = BUFFER_DEPTH;
             12'h038: register_value = error_cause;
-            12'h03C: register_value = FLOAT ? 0 : WIDTH;
+            12'h03C: register_value = FLOAT != 0 ? 0 : WIDTH;
             12'h040: register_value = TILE_BOXES;
             12'h044: register_value = TILED ? (TILE_LATENCY & 32'hFFFF) | (32'd1 << 16) : 0;
             12'h048: register_value = 0;

@@ -26,7 +26,7 @@ module compare_lane #(
             wire [WIDTH-1:0] max_i = box_i[(axis+3)*WIDTH +: WIDTH];
             wire [WIDTH-1:0] min_j = box_j[axis*WIDTH +: WIDTH];
             wire [WIDTH-1:0] max_j = box_j[(axis+3)*WIDTH +: WIDTH];
-            if (FLOAT) begin : g_float
+            if (FLOAT != 0) begin : g_float
                 float_le i_le_j (.a(min_i), .b(max_j), .le(le[2*axis]));
                 float_le j_le_i (.a(min_j), .b(max_i), .le(le[2*axis+1]));
             end else begin : g_fixed

@@ -27,7 +27,7 @@ module pair_collector #(
 );
     localparam LANES = 2 * M - 1;
     localparam EW = 2 * AW + LANES;  // entry: row, first, mask
-    localparam PW = $clog2(DEPTH);
+    localparam PW = DEPTH > 1 ? $clog2(DEPTH) : 1;  // a one-pair FIFO (m = 1) still has an address bit
     localparam CW = $clog2(DEPTH + 1);
     localparam LW = LANES > 1 ? $clog2(LANES) : 1;
 
