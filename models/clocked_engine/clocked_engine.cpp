@@ -4,6 +4,8 @@
 
 namespace cdvp {
 
+const ClockedEngine::Slot ClockedEngine::kNoSlot{};
+
 ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
     : config_(config),
       comparison_unit_(config.lanes(), config.compare, config.format),
@@ -41,23 +43,17 @@ void ClockedEngine::start(const CoordinateStore& store, uint32_t objects) {
     collector_.reset();
     for (auto& slot : line_) slot = Slot{};
     head_ = 0;
-    end_issued_ = end_seen_ = stalled_ = false;
-    at_segment_start_ = SweepCounters{};
+    end_issued_ = end_seen_ = stalled_ = issued_ = false;
+    pushed_hits_ = 0;
     edges_ = 0;
-    buffered_at_.clear();
-    pushed_at_.clear();
-    stall_runs_.clear();
+    history_.start();
     state_ = SweepState::kRunning;
 }
 
 void ClockedEngine::resume() {
-    at_segment_start_ = counters_after(edges_);
-    at_segment_start_.buffered = 0;
+    history_.resume(edges_);
     collector_.clear_buffer();
     edges_ = 0;
-    buffered_at_.clear();
-    pushed_at_.clear();
-    stall_runs_.clear();
     state_ = SweepState::kRunning;
 }
 
@@ -81,27 +77,9 @@ void ClockedEngine::advance_to(uint64_t edges) {
     while (state_ == SweepState::kRunning && edges_ < edges) step();
 }
 
-uint64_t ClockedEngine::stalls_through(uint64_t edges) const {
-    // The last run that began at or before `edges`.
-    auto after = std::upper_bound(stall_runs_.begin(), stall_runs_.end(), edges,
-                                  [](uint64_t e, const StallRun& run) { return e < run.first_edge; });
-    if (after == stall_runs_.begin()) return 0;
-    const StallRun& run = *(after - 1);
-    return run.stalls_before + std::min(run.length, edges - run.first_edge + 1);
-}
-
 SweepCounters ClockedEngine::counters_after(uint64_t edges) {
     advance_to(edges);
-    edges = std::min(edges, edges_);
-    auto through = [edges](const std::vector<uint64_t>& at) {
-        return static_cast<uint64_t>(std::upper_bound(at.begin(), at.end(), edges) - at.begin());
-    };
-    SweepCounters c = at_segment_start_;
-    c.cycles += edges;
-    c.stalls += stalls_through(edges);
-    c.buffered = static_cast<uint32_t>(through(buffered_at_));
-    c.total_pairs += through(pushed_at_);
-    return c;
+    return history_.counters_after(std::min(edges, edges_));
 }
 
 uint32_t ClockedEngine::tile_of(bool column) const {
@@ -152,18 +130,15 @@ ClockedEngine::Slot ClockedEngine::issue() {
 
 void ClockedEngine::stall() {
     stalled_ = true;
-    if (!stall_runs_.empty() && stall_runs_.back().first_edge + stall_runs_.back().length == edges_) {
-        ++stall_runs_.back().length;
-        return;
-    }
-    const uint64_t before = stall_runs_.empty() ? 0 : stall_runs_.back().stalls_before + stall_runs_.back().length;
-    stall_runs_.push_back({edges_, 1, before});
+    history_.stall(edges_);
 }
 
 // One clock edge; every edge counts as a cycle. An edge that finds the pair
 // buffer full pauses the board (and counts as a stall).
 void ClockedEngine::step() {
     ++edges_;
+    issued_ = false;
+    pushed_hits_ = 0;
     if (collector_.drain_blocked()) {
         // A pair must move and the buffer is full: this edge does no work
         // (a stall) and the clock stops until the host drains and resumes.
@@ -173,7 +148,7 @@ void ClockedEngine::step() {
     }
     const uint32_t before = collector_.buffer_count();
     collector_.drain();
-    buffered_at_.insert(buffered_at_.end(), collector_.buffer_count() - before, edges_);
+    history_.buffered(edges_, collector_.buffer_count() - before);
     if (end_seen_) {
         // Only the FIFO's last pairs are left to move: every such cycle is
         // beyond S + L, so it counts as a stall.
@@ -189,12 +164,15 @@ void ClockedEngine::step() {
             return;
         }
         collector_.push(leaving.window.row, leaving.window.first_column, leaving.hits);
-        pushed_at_.insert(pushed_at_.end(), hits, edges_);
+        pushed_hits_ = leaving.hits;
+        history_.pushed(edges_, hits);
     } else if (leaving.kind == Slot::kEnd) {
         end_seen_ = true;
     }
     stalled_ = false;
     leaving = issue();
+    issued_ = true;
+    issued_at_ = head_;
     head_ = head_ + 1 == line_.size() ? 0 : head_ + 1;
     if (end_seen_ && collector_.fifo_level() == 0) state_ = SweepState::kDone;
 }

@@ -8,6 +8,7 @@
 #include "models/address_generator/address_generator.h"
 #include "models/address_generator/sweep_schedule.h"
 #include "models/board_spec/board_engine.h"
+#include "models/board_spec/segment_history.h"
 #include "models/coordinate_memory/coordinate_memory.h"
 #include "models/pair_collector/pair_collector.h"
 #include "models/tile_loader/tile_loader.h"
@@ -66,6 +67,12 @@ public:
     bool waiting() const { return waiting_; }
     const Slot& compare_output() const { return line_[head_]; }
     bool stalled() const { return stalled_; }
+    // The last edge's slot issued into the pipeline (a bubble when none was)
+    // and the lane hits it pushed into the FIFO (0 when none).
+    const Slot& issued() const { return issued_ ? line_[issued_at_] : kNoSlot; }
+    uint64_t pushed_hits() const { return pushed_hits_; }
+    SweepState state() const { return state_; }
+    uint64_t edges() const { return edges_; }
     uint32_t fifo_level() const { return collector_.fifo_level(); }
     // Block RAM primitives of the six coordinate memories (or tile buffers).
     uint32_t block_rams() const;
@@ -74,7 +81,6 @@ private:
     void step();
     Slot issue();
     void stall();
-    uint64_t stalls_through(uint64_t edges) const;
     uint32_t tile_of(bool column) const;
 
     BoardConfig config_;
@@ -98,21 +104,15 @@ private:
     bool end_issued_ = false;  // the address generator sent its end marker
     bool end_seen_ = false;    // the end marker reached the collector
     bool stalled_ = false;
+    bool issued_ = false;
+    uint32_t issued_at_ = 0;
+    uint64_t pushed_hits_ = 0;
+    static const Slot kNoSlot;
     PortWindow last_issue_{};
 
-    // The segment so far: edges run, and the edge (1-based) at which each
-    // buffer entry was written, each pair entered the FIFO and each run of
-    // stall edges began (with its length).
+    // The segment so far: edges run, and what each showed the host.
     uint64_t edges_ = 0;
-    SweepCounters at_segment_start_;
-    std::vector<uint64_t> buffered_at_;
-    std::vector<uint64_t> pushed_at_;
-    struct StallRun {
-        uint64_t first_edge;
-        uint64_t length;
-        uint64_t stalls_before;  // stall edges of the segment before this run
-    };
-    std::vector<StallRun> stall_runs_;
+    SegmentHistory history_;
 };
 
 }  // namespace cdvp
