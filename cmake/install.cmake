@@ -39,6 +39,7 @@ set(cdvp_package_libraries
     cdvp_models_blocks      blocks         # the board's blocks
     cdvp_models_board_spec  board_spec     # BoardConfig, BoardEngine
     cdvp_models_engines     engines        # the clocked and fast engines
+    cdvp_models_rtl         rtl_engine     # the RTL engine and the list of built RTL variants
     cdvp_models             board_core     # BoardCore and the engine factory, no SystemC
     cdvp_models_systemc     board          # CollisionBoard, PciBus, PciBridge: the board as SystemC IP
     cdvp_driver             driver         # BoardDriver against a HostPort
@@ -50,6 +51,9 @@ set(cdvp_package_libraries
     cdvp_bullet             bullet         # BoardBroadphase for btDiscreteDynamicsWorld
     cdvp_study_output       study_output   # transactional output files
     cdvp_study              study)         # child runs, reports, sweeps, merges, fidelity
+if(TARGET cdvp_models_rtl_verilated)
+  list(APPEND cdvp_package_libraries cdvp_models_rtl_verilated rtl_verilated)  # the Verilator-built board RTL
+endif()
 set(cdvp_package_targets "")
 set(cdvp_package_list ${cdvp_package_libraries})
 while(cdvp_package_list)
@@ -80,5 +84,9 @@ install(FILES ${CMAKE_BINARY_DIR}/cdvpConfig.cmake ${CMAKE_BINARY_DIR}/cdvpConfi
         DESTINATION ${cdvp_cmake_dir})
 # The prefix relative to the .pc file, so that a moved prefix still works.
 file(RELATIVE_PATH cdvp_pc_up "/p/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/p")
+set(cdvp_pc_rtl_verilated "")
+if(TARGET cdvp_models_rtl_verilated)
+  set(cdvp_pc_rtl_verilated " -lcdvp_models_rtl_verilated")
+endif()
 configure_file(${CMAKE_SOURCE_DIR}/cmake/cdvp.pc.in ${CMAKE_BINARY_DIR}/cdvp.pc @ONLY)
 install(FILES ${CMAKE_BINARY_DIR}/cdvp.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

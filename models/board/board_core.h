@@ -32,6 +32,7 @@ public:
     // Block RAM primitives of the six coordinate memories.
     uint32_t block_rams() const;
     BoardEngine& engine() { return *engine_; }
+    const BoardEngine& engine() const { return *engine_; }
     const RegisterBank& register_bank() const { return registers_; }
 
     // Host side. A read returns false for an unmapped offset.

@@ -4,6 +4,8 @@
 
 #include "models/clocked_engine/clocked_engine.h"
 #include "models/fast_engine/fast_board_engine.h"
+#include "models/rtl_engine/lockstep_engine.h"
+#include "models/rtl_engine/rtl_engine.h"
 
 namespace cdvp {
 
@@ -12,6 +14,8 @@ std::unique_ptr<BoardEngine> make_engine(Fidelity fidelity, const BoardConfig& c
     switch (fidelity) {
         case Fidelity::kCycle: return std::make_unique<ClockedEngine>(config, capacity);
         case Fidelity::kFast: return std::make_unique<FastBoardEngine>(config, budget);
+        case Fidelity::kRtl: return std::make_unique<RtlEngine>(config, capacity);
+        case Fidelity::kLockstep: return std::make_unique<LockstepEngine>(config, capacity);
     }
     throw std::invalid_argument("unknown fidelity");
 }

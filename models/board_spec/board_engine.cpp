@@ -6,6 +6,8 @@ const char* to_string(Fidelity fidelity) {
     switch (fidelity) {
         case Fidelity::kCycle: return "cycle";
         case Fidelity::kFast: return "fast";
+        case Fidelity::kRtl: return "rtl";
+        case Fidelity::kLockstep: return "rtl-lockstep";
     }
     return "unknown";
 }

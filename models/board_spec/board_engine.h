@@ -71,10 +71,17 @@ public:
     // valid entries lie one after another in memory, so the host's burst
     // reads copy them at once.
     virtual const IndexPair& buffer_entry(uint32_t k) = 0;
+    // An engine that checks itself against another as it steps (lockstep)
+    // names the first difference here, in one line; empty while they agree.
+    // It keeps answering as its reference does, so the simulation ends
+    // cleanly and the platform reports the difference after the frame.
+    virtual std::string divergence() const { return {}; }
 };
 
 // Which engine computes a board's sweeps (models/board/engine_factory.h makes it).
-enum class Fidelity : uint8_t { kCycle, kFast };
+// kRtl: the whole-board RTL under Verilator (models/rtl_engine), the reference;
+// kLockstep: the RTL with the clocked engine compared after every edge.
+enum class Fidelity : uint8_t { kCycle, kFast, kRtl, kLockstep };
 const char* to_string(Fidelity fidelity);
 
 }  // namespace cdvp

@@ -1,0 +1,51 @@
+#include "models/rtl_engine/rtl_waves.h"
+
+#include <string>
+
+namespace cdvp {
+
+namespace {
+int log2_ceiling(uint64_t value) {  // Verilog's $clog2
+    int bits = 0;
+    while ((uint64_t{1} << bits) < value) ++bits;
+    return bits;
+}
+}  // namespace
+
+std::vector<TracedSignal> rtl_waves(const RtlVariant& v) {
+    const std::string top = "board.collision_board_top.";
+    const int aw = static_cast<int>(v.address_bits);
+    const int lanes = static_cast<int>(2 * v.m - 1);
+    const int buffer_bits = (v.buffer_depth > 1 ? log2_ceiling(v.buffer_depth) : 1) + 1;
+    const int fifo_bits = log2_ceiling(uint64_t{v.fifo_depth} + 1);
+    using F = WaveFormat;
+    std::vector<TracedSignal> waves{
+        {"board: host bus", "board.clk", 1, F::kBit},
+        {"board: host bus", "board.addr", 28, F::kHex},
+        {"board: host bus", "board.wdata", 32, F::kHex},
+        {"board: host bus", "board.we", 1, F::kBit},
+        {"board: host bus", "board.irq", 1, F::kBit},
+        // One-hot: 1 idle, 2 sweep, 4 drain, 8 paused, 16 done.
+        {"board: control", top + "state", 5, F::kBinary},
+        {"board: control", top + "enable", 1, F::kBit},
+        {"board: control", top + "cycles", 64, F::kDecimal},
+        {"board: control", top + "stalls", 64, F::kDecimal},
+        {"board: address generator", top + "src_window", 1, F::kBit},
+        {"board: address generator", top + "src_row", aw, F::kDecimal},
+        {"board: address generator", top + "src_first", aw, F::kDecimal},
+        {"board: comparison unit", top + "src_valid", lanes, F::kBinary},
+        {"board: comparison unit", top + "pushed_hits", lanes, F::kBinary},
+        {"board: pair collector", top + "fifo_level", fifo_bits, F::kDecimal},
+        {"board: pair collector", top + "out_valid", 1, F::kBit},
+        {"board: pair collector", top + "out_pair", 2 * aw, F::kHex},
+        {"board: pair collector", top + "buffered", buffer_bits, F::kDecimal},
+        {"board: pair collector", top + "total_pairs", 64, F::kDecimal},
+    };
+    if (v.tile_boxes != 0) {
+        waves.push_back({"board: tile loader", "board.ssram_re", 1, F::kBit});
+        waves.push_back({"board: tile loader", "board.ssram_addr", aw, F::kDecimal});
+    }
+    return waves;
+}
+
+}  // namespace cdvp
