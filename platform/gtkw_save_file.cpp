@@ -8,7 +8,6 @@ namespace {
 
 // SystemC's VCD writer puts every signal under a top scope of this name, and
 // GTKWave looks a save file's signals up by their whole path.
-constexpr const char* kVcdTopScope = "SystemC";
 
 // GTKWave's trace flags (its analyzer.h), written in hex after '@'.
 constexpr uint64_t kHex = 1u << 1, kDecimal = 1u << 2, kBinary = 1u << 3, kRightJustify = 1u << 5,
@@ -66,8 +65,8 @@ void write_view(std::ostream& out, const WaveView& framed) {
 
 }  // namespace
 
-std::string viewer_name(const TracedSignal& signal) {
-    std::string name = std::string(kVcdTopScope) + "." + signal.name;
+std::string viewer_name(const TracedSignal& signal, const std::string& top_scope) {
+    std::string name = top_scope.empty() ? signal.name : top_scope + "." + signal.name;
     if (signal.format != WaveFormat::kBit) name += "[" + std::to_string(signal.width - 1) + ":0]";
     return name;
 }
@@ -99,7 +98,7 @@ void write_save_file(std::ostream& out, const SaveFile& save) {
             const int number = filter_numbers.emplace(table, static_cast<int>(filter_numbers.size()) + 1).first->second;
             out << '^' << number << ' ' << save.filter_paths.at(table) << '\n';
         }
-        out << viewer_name(signal) << '\n';
+        out << viewer_name(signal, save.top_scope) << '\n';
     }
     close();
 }

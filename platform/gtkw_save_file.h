@@ -12,8 +12,9 @@
 
 namespace cdvp {
 
-// Where the viewer opens: a span of simulated time in femtoseconds (the
-// VCD's unit), with named markers at moments inside it.
+// Where the viewer opens: a span of simulated time in the dump's unit
+// (femtoseconds in the platform's VCD, picoseconds in the RTL's), with named
+// markers at moments inside it.
 struct WaveView {
     uint64_t begin_fs = 0;
     uint64_t end_fs = 0;  // begin_fs == end_fs: nothing to frame, the viewer's default view
@@ -30,6 +31,9 @@ struct SaveFile {
     WaveView view;
     // A translate filter file for each named-state table, by table name.
     std::map<std::string, std::string> filter_paths;
+    // The dump's root scope before each signal's name: SystemC's VCD nests
+    // everything in "SystemC"; empty where the names are full (the RTL's VCD).
+    std::string top_scope = "SystemC";
 };
 
 // The window the save file asks for, in pixels, and the width of its
@@ -40,7 +44,7 @@ constexpr int kSaveFileSignalsWidth = 300;
 
 // A signal's full name as GTKWave resolves it in the VCD (and in an FST
 // made from it): "SystemC.platform.board.control.state[1:0]".
-std::string viewer_name(const TracedSignal& signal);
+std::string viewer_name(const TracedSignal& signal, const std::string& top_scope = "SystemC");
 // The zoom (GTKWave's "*" line) at which a span of fs fills the wave pane
 // of the save file's window, or a little less than it.
 double viewer_zoom(uint64_t span_fs);

@@ -11,7 +11,7 @@ PlatformConfig platform_config(const SettingValues& values) {
     platform.driver = settings.driver;
     platform.driver.transfer = settings.run.transfer;
     platform.driver.wait = settings.run.wait;
-    platform.fidelity = engine_of(settings.run.fidelity);
+    platform.fidelity = engine_of(settings.run.fidelity, settings.run.lockstep);
     platform.quantum_ns = settings.run.quantum_ns;
     return platform;
 }

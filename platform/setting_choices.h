@@ -92,23 +92,28 @@ struct Choices<InterruptPolicy> {
 // The board's engine; the model's to_string(Fidelity) gives the same names.
 template <>
 struct Choices<Fidelity> {
-    static constexpr ChoiceName<Fidelity> names[] = {{Fidelity::kCycle, "cycle"}, {Fidelity::kFast, "fast"}};
+    static constexpr ChoiceName<Fidelity> names[] = {{Fidelity::kCycle, "cycle"}, {Fidelity::kFast, "fast"}, {Fidelity::kRtl, "rtl"},
+                                                     {Fidelity::kLockstep, "rtl-lockstep"}};
 };
 // The modelling level of a run (run.fidelity): one of the engines on the
 // SystemC platform, or the analytic level's closed forms without a kernel
 // (platform/analytic_platform.h).
 // auto: the analytic level where its error is bounded or measured within
 // run.max_error_percent, the fast engine elsewhere (sw/cli/run_platform.h).
-enum class ModelLevel : uint8_t { kCycle, kFast, kAnalytic, kAuto };
+enum class ModelLevel : uint8_t { kCycle, kFast, kAnalytic, kAuto, kRtl };
 template <>
 struct Choices<ModelLevel> {
-    static constexpr ChoiceName<ModelLevel> names[] = {{ModelLevel::kCycle, "cycle"},
+    static constexpr ChoiceName<ModelLevel> names[] = {{ModelLevel::kRtl, "rtl"},
+                                                       {ModelLevel::kCycle, "cycle"},
                                                        {ModelLevel::kFast, "fast"},
                                                        {ModelLevel::kAnalytic, "analytic"},
                                                        {ModelLevel::kAuto, "auto"}};
 };
 // The engine a level runs on the platform (the analytic level runs none; auto the fast one beside it).
-inline Fidelity engine_of(ModelLevel level) { return level == ModelLevel::kCycle ? Fidelity::kCycle : Fidelity::kFast; }
+inline Fidelity engine_of(ModelLevel level, bool lockstep = false) {
+    if (level == ModelLevel::kRtl) return lockstep ? Fidelity::kLockstep : Fidelity::kRtl;
+    return level == ModelLevel::kCycle ? Fidelity::kCycle : Fidelity::kFast;
+}
 // A switch (run.ignore_capacity).
 template <>
 struct Choices<bool> {

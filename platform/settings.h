@@ -53,6 +53,7 @@ struct RunSettings {
     uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
     uint32_t repeat = 1;
     bool ignore_capacity = false;
+    bool lockstep = false;  // run.fidelity rtl: the clocked engine compared after every edge
     // Budgets, checked before any work (sw/cli/run_budgets.h). 0: derived
     // (from this machine's memory; from the memory budget).
     uint64_t max_memory_mib = 0;

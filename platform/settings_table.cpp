@@ -471,12 +471,13 @@ std::vector<Setting> host_and_run_settings() {
              "wait", "irq|poll"),
         flag(choice<ModelLevel>("run.fidelity", member(&S::run, &RunSettings::fidelity),
                     "the modelling level: fast computes pairs and cycles from the schedule, cycle clocks the datapath "
-                    "edge by edge (the same pairs, cycles and times; --vcd needs cycle, and picks it when the "
-                    "fidelity is not given); analytic finds the same pairs and times the frame from closed forms "
+                    "edge by edge (the same pairs, cycles and times; --vcd needs cycle or rtl, and picks cycle when "
+                    "the fidelity is not given); rtl clocks the board's Verilog under Verilator, the reference the "
+                    "others answer to (only the parameter sets built in: cdvp rtl-variants); analytic finds the same pairs and times the frame from closed forms "
                     "without the SystemC kernel (FIFO stalls estimated, the host quantum not modelled); auto takes "
                     "the analytic level where its error is bounded or measured within --max-error, fast elsewhere",
-                    "fast: exact, faster (docs/fast_engine.md); analytic: docs/analytic.md"),
-             "fidelity", "cycle|fast|analytic|auto"),
+                    "fast: exact, faster (docs/fast_engine.md); rtl: docs/rtl.md; analytic: docs/analytic.md"),
+             "fidelity", "rtl|cycle|fast|analytic|auto"),
         flag(real("run.max_error_percent", "%", 0, 100, member(&S::run, &RunSettings::max_error_percent),
                   "--fidelity auto: the largest error of any phase, in percent of the frame time, the analytic level "
                   "may have where it is measured against the fast engine",
@@ -501,6 +502,12 @@ std::vector<Setting> host_and_run_settings() {
                            "device would give",
                            "no: a board that does not fit is refused naming the resource"),
                     "ignore-capacity"),
+        switch_flag(choice<bool>("run.lockstep", member(&S::run, &RunSettings::lockstep),
+                           "--fidelity rtl: clock the clocked engine beside the RTL and compare them after every edge "
+                           "(addresses, lane hits, FIFO level, pairs, registers, state); the run stops at the first "
+                           "difference, naming the cycle and the signal",
+                           "no: the RTL alone (docs/rtl.md)"),
+                    "lockstep"),
         flag(count("run.max_memory", "MiB", 0, uint64_t{1} << 30, member(&S::run, &RunSettings::max_memory_mib),
                    "memory budget: a run whose estimate (boxes, board model, engine, pairs, baselines, frames) "
                    "exceeds it is refused before any work; 0: half of this machine's memory, or of a cgroup's "

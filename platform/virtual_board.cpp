@@ -50,7 +50,11 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const PlatformConfig& con
         bridge_.set_fault_plan(&faults_);
         bus_.set_fault_plan(&faults_);
     }
-    if (!vcd_base.empty()) {
+    if (!vcd_base.empty() && (config.fidelity == Fidelity::kRtl || config.fidelity == Fidelity::kLockstep)) {
+        // The RTL's own signals, from Verilator, in place of the platform's.
+        traced_ = board_.trace_rtl(vcd_base + ".vcd");
+        rtl_traced_ = true;
+    } else if (!vcd_base.empty()) {
         trace_ = sc_create_vcd_trace_file(vcd_base.c_str());
         if (trace_ == nullptr) throw std::runtime_error(vcd_base + ".vcd: cannot create waveform file");
         trace_->set_time_unit(1, SC_FS);  // the kernel's resolution: every edge lands exactly
@@ -74,6 +78,7 @@ VirtualBoard::VirtualBoard(const sc_module_name& name, const BoardConfig& board,
 VirtualBoard::~VirtualBoard() { close_trace(); }
 
 void VirtualBoard::close_trace() {
+    board_.close_rtl_trace();
     if (trace_ != nullptr) {
         sc_close_vcd_trace_file(trace_);
         trace_ = nullptr;
@@ -116,8 +121,9 @@ const FrameResult* VirtualBoard::run_request(const std::vector<FloatBox>& boxes,
                                     " boxes exceeds the board's capacity of " +
                                     std::to_string(board_.core().capacity()));
     }
-    const bool traced = trace_ != nullptr && number >= trace_first_ && number <= trace_last_;
-    if (trace_ != nullptr) set_tracing(traced);
+    const bool tracing = trace_ != nullptr || rtl_traced_;
+    const bool traced = tracing && number >= trace_first_ && number <= trace_last_;
+    if (tracing) set_tracing(traced);
     const bool first_traced = traced && !first_traced_begin_;
     if (first_traced) first_traced_begin_ = sc_time_stamp();
     if (request != HostRequest::kFinish) {
@@ -130,6 +136,10 @@ const FrameResult* VirtualBoard::run_request(const std::vector<FloatBox>& boxes,
     if (first_traced) first_traced_end_ = sc_time_stamp();
     if (!cpu_.finished()) throw std::runtime_error("the simulation stopped before the frame completed");
     if (cpu_.internal_error()) std::rethrow_exception(cpu_.internal_error());
+    // A lockstep engine's models parted: the run is wrong from there on (a cdvp bug).
+    if (std::string divergence = board_.core().engine().divergence(); !divergence.empty()) {
+        throw std::runtime_error(std::move(divergence));
+    }
     fault = cpu_.fault();
     return fault || !cpu_.completed() ? nullptr : &cpu_.result();
 }
@@ -156,7 +166,7 @@ std::vector<const StateNames*> VirtualBoard::state_tables() {
 }
 
 namespace {
-// Femtoseconds, the VCD's unit, whatever the kernel's resolution.
+// Femtoseconds, the platform's VCD unit, whatever the kernel's resolution.
 uint64_t in_fs(const sc_time& t) {
     return t.value() * static_cast<uint64_t>(std::llround(sc_get_time_resolution().to_seconds() * 1e15));
 }
@@ -165,11 +175,23 @@ uint64_t in_fs(const sc_time& t) {
 void VirtualBoard::write_gtkw(std::ostream& out, const std::string& dump_path,
                               const std::map<std::string, std::string>& filter_paths) const {
     SaveFile save{dump_path, traced_, {}, filter_paths};
+    if (rtl_traced_) save.top_scope.clear();  // the RTL's names are full
+    // The save file's times are in its dump's unit: Verilator's VCD counts picoseconds.
+    const uint64_t per_unit = rtl_traced_ ? 1000 : 1;
+    auto at = [&](const sc_time& t) { return in_fs(t) / per_unit; };
     if (first_traced_begin_ && first_traced_end_) {
-        save.view.begin_fs = in_fs(*first_traced_begin_);
-        save.view.end_fs = in_fs(*first_traced_end_);
-        if (const auto& start = board_.first_traced_start()) save.view.markers.push_back({"START", in_fs(*start)});
-        if (const auto& done = board_.first_traced_done()) save.view.markers.push_back({"DONE", in_fs(*done)});
+        save.view.begin_fs = at(*first_traced_begin_);
+        save.view.end_fs = at(*first_traced_end_);
+        if (const auto& start = board_.first_traced_start()) save.view.markers.push_back({"START", at(*start)});
+        if (const auto& done = board_.first_traced_done()) save.view.markers.push_back({"DONE", at(*done)});
+        // The RTL's dump holds the board alone: open on its first sweep, a
+        // twentieth of it either side, not on the bus transfers around it.
+        if (rtl_traced_ && save.view.markers.size() == 2) {
+            const uint64_t start = save.view.markers[0].at_fs, done = save.view.markers[1].at_fs;
+            const uint64_t margin = (done - start) / 20;
+            save.view.begin_fs = start > margin ? start - margin : 0;
+            save.view.end_fs = done + margin;
+        }
     }
     write_save_file(out, save);
 }

@@ -114,6 +114,7 @@ private:
                                    FrameFault& fault);
 
     sc_core::sc_trace_file* trace_ = nullptr;
+    bool rtl_traced_ = false;  // the RTL's waveforms (Verilator's VCD) instead
     std::vector<TracedSignal> traced_;
     uint64_t trace_first_ = 0;
     uint64_t trace_last_ = UINT64_MAX;

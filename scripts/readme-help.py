@@ -12,7 +12,7 @@ root = pathlib.Path(__file__).resolve().parent.parent
 binary = sys.argv[1] if len(sys.argv) > 1 else str(root / "build/sw/cli/cdvp")
 readme = root / "README.md"
 text = readme.read_text()
-for command in ["", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record", "calibrate"]:
+for command in ["", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record", "calibrate", "rtl-variants"]:
     args = [binary] + ([command] if command else []) + ["--help"]
     help_text = subprocess.run(args, check=True, capture_output=True, text=True).stdout
     usage = help_text.split("\n", 1)[0]

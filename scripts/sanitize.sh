@@ -6,7 +6,8 @@
 #
 #   scripts/sanitize.sh [ctest arguments...]     e.g. -R TraceCsv
 # Environment: SANITIZERS (default address,undefined), BUILD_DIR (build-asan),
-# JOBS (nproc).
+# JOBS (nproc), RTL_VARIANTS (the board RTL's Verilator builds: by default the
+# few the command-line and waveform tests name, not the whole default list).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -26,8 +27,12 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_stack_use_after_return=0:detect_leak
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 export SYSTEMC_MEMPOOL_DONT_USE=1
 
+paper="format=float32,latency=2,fifo=512,buffer=262144,capacity=512"
+rtl_variants="${RTL_VARIANTS-m=8,$paper;m=8,fifo=15,buffer=128,capacity=1024;m=2,buffer=40,capacity=512;m=2,format=fixed16,latency=1,fifo=3,buffer=64,capacity=1024;m=2,fifo=8,buffer=64,tile=64,tile_latency=2,capacity=1024}"
+
 start=$SECONDS
-run cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCDVP_SANITIZE=$sanitizers" "${launcher[@]}"
+run cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCDVP_SANITIZE=$sanitizers" \
+  "-DCDVP_RTL_VARIANTS=$rtl_variants" "${launcher[@]}"
 run cmake --build "$build_dir" -j "$jobs"
 built=$SECONDS
 status=0

@@ -110,7 +110,7 @@ Setup make_setup(const BulletOptions& o, const po::variables_map& vm) {
                          ": two box banks pipeline frames, but a Bullet world steps on each frame's pairs, so its next "
                          "frame is not known ahead; expected 1 (cdvp record, then cdvp run --trace, pipelines its frames)");
     }
-    setup.platform.fidelity = engine_of(setup.level);
+    setup.platform.fidelity = engine_of(setup.level, setup.values.settings().run.lockstep);
     setup.trace_window = vcd_window(o.vcd_frames, vm);
     // Bullet's times are whole worlds, not the reference workload's
     // baselines: they all take the overall factor.

@@ -27,25 +27,26 @@ constexpr const char* kHelp =
     "Usage: cdvp fidelity (--trace FILE | --scene spheres [--objects N] [--frames F] [--seed S])\n"
     "                     [board and host options of cdvp run] --out DIR [-q]\n"
     "\n"
-    "Runs the scene at every modelling level: the clocked engine, the fast engine with the host CPU's\n"
-    "quantum at 0, 100 ns, 1 us, 10 us and 100 us, and the analytic level (closed forms), each with the\n"
-    "host bus at its transaction level and as the formula (which drops a background load, from any\n"
-    "layer: the formula times an idle bus). Writes DIR/fidelity.csv (per level: the simulator's wall\n"
-    "time per frame, the median over the frames after --warmup; the mean simulated time of each phase\n"
-    "over those frames, its error against the reference, the clocked engine on the transaction-level\n"
-    "bus at quantum 0, in percent of the reference's mean frame time; and whether the pairs are\n"
-    "identical) and DIR/fidelity.png (wall time per frame against timing error, both axes log,\n"
+    "Runs the scene at every modelling level: the clocked engine, the board RTL under Verilator (where a\n"
+    "built variant serves the board, else its rows say 'not run' and why: cdvp rtl-variants), the fast\n"
+    "engine with the host CPU's quantum at 0, 100 ns, 1 us, 10 us and 100 us, and the analytic level\n"
+    "(closed forms), each with the host bus at its transaction level and as the formula (which drops a\n"
+    "background load, from any layer: the formula times an idle bus). Writes DIR/fidelity.csv (per level:\n"
+    "the simulator's wall time per frame, the median over the frames after --warmup; the mean simulated\n"
+    "time of each phase over those frames, its error against the reference, the clocked engine on the\n"
+    "transaction-level bus at quantum 0, in percent of the reference's mean frame time; and whether the\n"
+    "pairs are identical) and DIR/fidelity.png (wall time per frame against timing error, both axes log,\n"
     "drawn by gnuplot).\n"
     "\n"
     "Every option of 'cdvp run' that sets the scene, board, bus or host is accepted and passed on,\n"
-    "--config FILE and -c NAME=VALUE included; --fidelity, --bus-model, --quantum-ns, --max-error (and\n"
-    "-c run.fidelity, ...), --report, --pairs-out, --vcd, --inject and --baseline are set per level\n"
-    "or do not apply. -q prints nothing but errors; without it the table is printed and, on a terminal,\n"
-    "the level being run.\n";
+    "--config FILE and -c NAME=VALUE included; --fidelity, --bus-model, --quantum-ns, --max-error,\n"
+    "--lockstep (and -c run.fidelity, ...), --report, --pairs-out, --vcd, --inject and --baseline are set\n"
+    "per level or do not apply. -q prints nothing but errors; without it the table is printed and, on a\n"
+    "terminal, the level being run.\n";
 
 // What fidelity sets for each level itself, or what does not apply to it.
 bool reserved(const std::string& key) {
-    for (const char* option : {"run.fidelity", "bus.model", "run.quantum_ns", "run.max_error_percent", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format",
+    for (const char* option : {"run.fidelity", "bus.model", "run.quantum_ns", "run.max_error_percent", "run.lockstep", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format",
                                "inject", "baseline"}) {
         if (key == option) return true;
     }

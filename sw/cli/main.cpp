@@ -10,6 +10,7 @@
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/calibrate_command.h"
 #include "sw/cli/fidelity_command.h"
+#include "sw/cli/rtl_variants_command.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/settings_command.h"
 #include "sw/study/version.h"
@@ -36,6 +37,7 @@ constexpr const char* kUsage =
     "  record    write a Bullet scene's AABBs as a trace for 'cdvp run --trace'\n"
     "  calibrate time the reference workload on this machine and write a host profile, from\n"
     "            which runs take their host factors (docs/timing.md)\n"
+    "  rtl-variants  list the board RTL's parameter sets built in for --fidelity rtl (docs/rtl.md)\n"
     "\n"
     "Run 'cdvp <command> --help' (or 'cdvp help <command>') for a command's options; 'cdvp --version'\n"
     "prints the version.\n"
@@ -82,12 +84,13 @@ int sc_main(int argc, char** argv) {
     const std::pair<const char*, Command> commands[] = {
         {"run", cdvp::run_command},       {"fidelity", cdvp::fidelity_command}, {"settings", cdvp::settings_command},
         {"sweep", cdvp::sweep_command},   {"merge", cdvp::merge_command},       {"bullet", cdvp::bullet_command},
-        {"record", cdvp::record_command}, {"calibrate", cdvp::calibrate_command}};
+        {"record", cdvp::record_command}, {"calibrate", cdvp::calibrate_command},
+        {"rtl-variants", cdvp::rtl_variants_command}};
     for (const auto& [name, run] : commands) {
         if (command == name) return run(command_argc, command_argv);
     }
     std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
-              << "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, calibrate, help (see cdvp --help)\n";
+              << "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, calibrate, rtl-variants, help (see cdvp --help)\n";
     return 2;
 }
 

@@ -14,6 +14,7 @@
 #include "platform/memory_plan.h"
 #include "platform/fault_injection.h"
 #include "models/common/user_text.h"
+#include "models/rtl_engine/rtl_variant.h"
 #include "sw/bullet/scenes.h"
 #include "sw/scene/scene.h"
 
@@ -276,8 +277,23 @@ void check_pair_window(const FrameOrigin& origin, const SettingValues& values, u
 }
 }  // namespace
 
+namespace {
+// The rtl level runs only the parameter sets compiled in (models/rtl_engine):
+// one that is not is refused before anything is elaborated.
+void check_rtl_built(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects) {
+    if (values.settings().run.fidelity != ModelLevel::kRtl) return;
+    try {
+        rtl_variant_for(planned_board(values.settings(), max_objects), static_cast<uint32_t>(max_objects));
+    } catch (const std::invalid_argument& e) {
+        throw InputError(values.value_and_origin(setting("run.fidelity")) + " at " +
+                         objects_origin(origin, values, max_objects) + ": " + e.what());
+    }
+}
+}  // namespace
+
 void check_scene_fits(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects,
                       uint64_t frame_count, RunBudgets& budgets) {
+    check_rtl_built(origin, values, max_objects);
     const MemoryPlan plan = plan_memory(values.settings(), max_objects);
     check_pair_window(origin, values, max_objects, plan);
     if (plan.ssram) check_ssram(origin, values, max_objects, plan);

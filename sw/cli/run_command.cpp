@@ -125,7 +125,7 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     static_cast<BoardSetup&>(setup) = board_setup(o.layers, vm, vm.count("scene") ? o.scene : "");
     setup.platform.faults = fault_specs(o.inject, setup.platform.driver);
     setup.level = model_level(setup.values, vm);
-    setup.platform.fidelity = engine_of(setup.level);
+    setup.platform.fidelity = engine_of(setup.level, setup.values.settings().run.lockstep);
     if (setup.level == ModelLevel::kAnalytic || setup.level == ModelLevel::kAuto) check_analytic_run(setup, o);
     // Pipelined frames must be known ahead; an application's next frame
     // comes from this frame's pairs.

@@ -51,12 +51,16 @@ ModelLevel model_level(const SettingValues& values, const po::variables_map& vm)
     if (!values.is_default(max_error) && level != ModelLevel::kAuto) {
         throw InputError(values.where(max_error) + ": only --fidelity auto picks a level by its error; give --fidelity auto");
     }
+    if (const Setting& lockstep = *find_setting("run.lockstep"); values.settings().run.lockstep && level != ModelLevel::kRtl) {
+        throw InputError(values.where(lockstep) + ": compares the RTL with the clocked engine edge by edge, but the run is on " +
+                         values.value_and_origin(setting) + ": give --fidelity rtl");
+    }
     if (vm.count("vcd") != 0) {
-        if (!values.is_default(setting) && level != ModelLevel::kCycle) {
-            throw InputError("--vcd: waveforms need the clocked engine; " + values.where(setting) + " asks for " +
-                             name_of(level) + ": use --fidelity cycle (or leave the fidelity out)");
+        if (!values.is_default(setting) && level != ModelLevel::kCycle && level != ModelLevel::kRtl) {
+            throw InputError("--vcd: waveforms need the clocked engine or the RTL; " + values.where(setting) +
+                             " asks for " + name_of(level) + ": use --fidelity cycle or rtl (or leave the fidelity out)");
         }
-        return ModelLevel::kCycle;
+        return level == ModelLevel::kRtl ? ModelLevel::kRtl : ModelLevel::kCycle;
     }
     return level;
 }

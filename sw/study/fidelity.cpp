@@ -13,6 +13,7 @@
 #include "models/common/user_text.h"
 #include "platform/setting_choices.h"
 #include "sw/scene/scene.h"
+#include "sw/study/exit_codes.h"
 #include "sw/study/fidelity_figure.h"
 #include "sw/study/figure_plan.h"
 
@@ -24,6 +25,8 @@ constexpr const char* kTransaction = "transaction";
 constexpr const char* kFormula = "formula";
 constexpr std::array<FidelityLevel, kFidelityLevels> kLevels{{{ModelLevel::kCycle, kTransaction, 0},
                                                              {ModelLevel::kCycle, kFormula, 0},
+                                                             {ModelLevel::kRtl, kTransaction, 0},
+                                                             {ModelLevel::kRtl, kFormula, 0},
                                                              {ModelLevel::kFast, kTransaction, 0},
                                                              {ModelLevel::kFast, kFormula, 0},
                                                              {ModelLevel::kFast, kTransaction, 100},
@@ -69,6 +72,14 @@ std::variant<FidelityResult, int> run_level(const FidelityLevel& level, const st
     if (spool != nullptr && spool->descriptor() >= 0) streams.inherited = {spool->descriptor()};
     const int wait_status = run_child(args, streams);
     if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
+    if (WEXITSTATUS(wait_status) == kExitBadInput && level.level == ModelLevel::kRtl) {
+        // The scene and flags ran at the reference level before: what the
+        // rtl level refuses is the board (no built variant serves it).
+        FidelityResult skipped;
+        skipped.not_run = renamed_message(errors.text(64 * 1024), "cdvp fidelity");
+        while (!skipped.not_run.empty() && skipped.not_run.back() == '\n') skipped.not_run.pop_back();
+        return skipped;
+    }
     if (WEXITSTATUS(wait_status) != 0) {
         const std::string message = renamed_message(errors.text(64 * 1024), "cdvp fidelity");
         std::cerr << (spool != nullptr ? spool->restore_names(message) : message);
@@ -105,8 +116,9 @@ std::string figure_context(const std::vector<FidelityResult>& results) {
     words << config.value("board", std::string("no board")) << " (" << config.value("bus", std::string("untimed bus"))
           << "), " << config.value("source", std::string()) << ", m=" << config.value("m", 0) << ", "
           << results.front().frames_in_means << " frames timed\nreference: the cycle engine on the transaction-level bus at quantum 0; pairs ";
-    const bool identical = std::all_of(results.begin(), results.end(),
-                                       [&](const FidelityResult& r) { return r.pairs == results.front().pairs; });
+    const bool identical = std::all_of(results.begin(), results.end(), [&](const FidelityResult& r) {
+        return !r.not_run.empty() || r.pairs == results.front().pairs;
+    });
     words << (identical ? "identical at every level" : "DIFFER at some level (fidelity.csv)");
     return words.str();
 }
@@ -147,8 +159,12 @@ std::string fidelity_csv(const std::vector<FidelityResult>& results) {
     csv << std::setprecision(10);
     for (std::size_t k = 0; k < results.size(); ++k) {
         const FidelityResult& r = results[k];
-        csv << k << ',' << kLevels[k].fidelity() << ',' << kLevels[k].bus_model << ',' << kLevels[k].quantum_ns << ','
-            << r.frames_in_means << ','
+        csv << k << ',' << kLevels[k].fidelity() << ',' << kLevels[k].bus_model << ',' << kLevels[k].quantum_ns << ',';
+        if (!r.not_run.empty()) {  // empty figures, and why in the last column
+            csv << std::string(2 + 2 * kPhases.size(), ',') << "not run\n";
+            continue;
+        }
+        csv << r.frames_in_means << ','
             << r.p50_sim_wall_native_ns;
         for (double ns : r.mean_phase_ns) csv << ',' << ns;
         for (std::size_t p = 0; p < kPhases.size(); ++p) csv << ',' << fidelity_error_percent(r, results[0], p);
@@ -165,6 +181,10 @@ std::string fidelity_table(const std::vector<FidelityResult>& results) {
         const FidelityResult& r = results[k];
         std::ostringstream name;
         name << kLevels[k].fidelity() << ' ' << kLevels[k].bus_model << " q=" << kLevels[k].quantum_ns << "ns";
+        if (!r.not_run.empty()) {
+            t << std::left << std::setw(30) << name.str() << "not run: " << r.not_run << '\n';
+            continue;
+        }
         t << std::left << std::setw(30) << name.str() << std::right << std::fixed << std::setprecision(3)
           << std::setw(9) << r.p50_sim_wall_native_ns / 1e6 << " ms" << std::setw(11) << r.mean_phase_ns.back() / 1e3
           << " us" << std::setw(9) << std::setprecision(4)
@@ -177,6 +197,7 @@ std::string fidelity_table(const std::vector<FidelityResult>& results) {
 std::string fidelity_plot_script(const std::vector<FidelityResult>& results, const std::string& png_path) {
     std::vector<FidelityPoint> points;
     for (std::size_t k = 0; k < results.size(); ++k) {
+        if (!results[k].not_run.empty()) continue;
         points.push_back({level_words(kLevels[k]), results[k].p50_sim_wall_native_ns / 1e6,
                           fidelity_error_percent(results[k], results[0], kPhases.size() - 1)});
     }

@@ -1,6 +1,7 @@
 // Fidelity as a study: the scene run by `cdvp run` at every modelling level
-// (the clocked engine, the fast engine at five host quanta, the analytic
-// level; each with the bus at its transaction level and as the formula),
+// (the clocked engine, the board RTL under Verilator, the fast engine at five
+// host quanta, the analytic level; each with the bus at its transaction
+// level and as the formula),
 // each level's figures read back from its report's summary, and the error of
 // each against the most detailed: the clocked engine on the transaction-level
 // bus at quantum 0. `cdvp fidelity` parses its arguments and
@@ -30,10 +31,13 @@ struct FidelityLevel {
     const char* fidelity() const;  // the level's name, as --fidelity takes it
 };
 
-// The levels: the clocked engine, the fast engine at five host quanta and the
-// analytic level, each on the transaction-level bus and on the formula; the
-// reference (the clocked engine, transaction level, quantum 0) first.
-constexpr std::size_t kFidelityLevels = 14;
+// The levels: the clocked engine, the RTL, the fast engine at five host
+// quanta and the analytic level, each on the transaction-level bus and on
+// the formula; the reference (the clocked engine, transaction level, quantum
+// 0) first. The reference is the clocked engine, not the RTL, because the RTL
+// runs only the parameter sets built in (cdvp rtl-variants); where it runs,
+// lockstep holds the two equal edge by edge and its error is 0.
+constexpr std::size_t kFidelityLevels = 16;
 const std::array<FidelityLevel, kFidelityLevels>& fidelity_levels();
 
 // One level's figures, as its run's report summarises them: the simulator's
@@ -46,6 +50,9 @@ struct FidelityResult {
     std::string pairs;  // the pairs CSV, to compare with the reference's
     uint64_t frames_in_means = 0;
     nlohmann::json config;  // the report's, for the figure's title
+    // Not empty: the level did not run on this board, and why (the rtl level
+    // on a board no built variant serves); its figures are absent.
+    std::string not_run;
 };
 
 // Runs every level with `forwarded` (options of cdvp run) and the trace

@@ -43,7 +43,7 @@ TEST_F(Cli, AnalyticRefusesWhatItCannotModel) {
     expect_refusal(run(scene + "--quantum-ns 100"),
                    "cdvp run: --quantum-ns: the analytic level (--fidelity) times a host that synchronises at every "
                    "access; expected 0");
-    expect_refusal(run(scene + "--vcd w.vcd"), "cdvp run: --vcd: waveforms need the clocked engine; --fidelity asks for "
+    expect_refusal(run(scene + "--vcd w.vcd"), "cdvp run: --vcd: waveforms need the clocked engine or the RTL; --fidelity asks for "
                                                "analytic");
     expect_refusal(run("bullet --scene stack --frames 2 --fidelity analytic"),
                    "cdvp bullet: --fidelity analytic: cdvp bullet runs Bullet's world on the platform's engines");

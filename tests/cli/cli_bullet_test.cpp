@@ -58,6 +58,10 @@ TEST_F(Bullet, EverySettingsFlagIsAcceptedWithItsOriginAndABadValueRefused) {
         if (flag != "objects") scene += "--objects 10 ";
         const std::string name = s["name"].get<std::string>();
         const bool is_switch = s["type"] == "choice" && s["choices"] == nlohmann::json{"no", "yes"};
+        if (name == "run.lockstep") {  // the rtl level's alone
+            expect_refusal(run(scene + "--lockstep"), "cdvp bullet: --lockstep: compares the RTL with the clocked engine");
+            scene += "--fidelity rtl ";
+        }
         if (name == "run.max_error_percent") {  // bounds --fidelity auto, which cdvp bullet does not run
             expect_refusal(run(scene + "--max-error 1"), "cdvp bullet: --max-error: only --fidelity auto picks a level");
             ++tried;
@@ -81,10 +85,10 @@ TEST_F(Bullet, EverySettingsFlagIsAcceptedWithItsOriginAndABadValueRefused) {
     // board (m, format, clock-mhz, compare-latency, fifo-depth, drain-rate,
     // pair-buffer, box-banks at its default, memory, tile-boxes), scene (objects, frames, seed), host
     // (host-factor, host-profile) and run (transfer, wait, fidelity,
-    // quantum-ns, max-error, warmup, repeat, ignore-capacity, max-memory, max-pairs),
+    // quantum-ns, max-error, warmup, repeat, ignore-capacity, lockstep, max-memory, max-pairs),
     // the driver's communication (upload, pair-format, interrupts) and the
     // spheres scene's moving share (its default only: Bullet's scenes refuse another).
-    EXPECT_EQ(tried, 29u) << "the flags bullet shares with run";
+    EXPECT_EQ(tried, 30u) << "the flags bullet shares with run";
 }
 
 TEST_F(Bullet, LayersPresetThenConfigThenOverridesThenFlagsAsRunDoes) {

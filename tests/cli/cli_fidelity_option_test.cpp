@@ -45,8 +45,8 @@ TEST_F(Cli, FidelityAndQuantumRefuseWhatTheyCannotDo) {
         const char* args;
         const char* message;
     } cases[] = {
-        {"--fidelity fast --vcd w.vcd", "cdvp run: --vcd: waveforms need the clocked engine"},
-        {"--fidelity exact", "cdvp run: --fidelity: expected cycle, fast, analytic or auto, got 'exact'"},
+        {"--fidelity fast --vcd w.vcd", "cdvp run: --vcd: waveforms need the clocked engine or the RTL"},
+        {"--fidelity exact", "cdvp run: --fidelity: expected rtl, cycle, fast, analytic or auto, got 'exact'"},
         {"--quantum-ns -1", "cdvp run: --quantum-ns: expected"},
         {"--quantum-ns 2e9", "cdvp run: --quantum-ns: expected"},
     };

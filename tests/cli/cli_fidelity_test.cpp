@@ -36,7 +36,7 @@ TEST_F(Cli, FidelityRunsEveryLevelAndWritesTheTableAndThePlot) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
     const auto rows = csv_rows(slurp(dir_ / "results" / "fidelity" / "fidelity.csv"));
-    ASSERT_EQ(rows.size(), 15u) << "a header and fourteen levels";
+    ASSERT_EQ(rows.size(), 17u) << "a header and sixteen levels";
     const std::vector<std::string>& header = rows[0];
     auto column = [&](const std::string& name) {
         const auto at = static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
@@ -60,10 +60,13 @@ TEST_F(Cli, FidelityRunsEveryLevelAndWritesTheTableAndThePlot) {
             EXPECT_GT(error(k), 1.0) << "level " << k << ": the formula times an idle bus";
         }
     }
-    EXPECT_EQ(rows[13][column("fidelity")], "analytic");
-    EXPECT_GT(error(13), 0.0) << "the analytic level's polls between pauses are estimated";
-    EXPECT_LT(error(13), 5.0);
-    EXPECT_EQ(std::stod(rows[13][column("error_upload_percent")]), 0.0) << "the upload is exact at the analytic level";
+    // The RTL (a built variant: m=2, buffer=40) runs next to the clocked engine, exact.
+    EXPECT_EQ(rows[3][column("fidelity")], "rtl");
+    EXPECT_EQ(rows[3][column("bus_model")], "transaction");
+    EXPECT_EQ(rows[15][column("fidelity")], "analytic");
+    EXPECT_GT(error(15), 0.0) << "the analytic level's polls between pauses are estimated";
+    EXPECT_LT(error(15), 5.0);
+    EXPECT_EQ(std::stod(rows[15][column("error_upload_percent")]), 0.0) << "the upload is exact at the analytic level";
     const std::string png = slurp(dir_ / "results" / "fidelity" / "fidelity.png");
     ASSERT_GT(png.size(), 1000u);
     EXPECT_EQ(png.substr(1, 3), "PNG");
@@ -81,8 +84,14 @@ TEST_F(Cli, FidelityTakesEachLevelsFiguresFromItsRunsSummaryAfterTheWarmup) {
     ASSERT_EQ(r.status, 0) << r.err;
     const nlohmann::json summary = nlohmann::json::parse(slurp(dir_ / "r.json"))["summary"];
     const auto rows = csv_rows(slurp(dir_ / "fid" / "fidelity.csv"));
-    ASSERT_EQ(rows.size(), 15u);
+    ASSERT_EQ(rows.size(), 17u);
     const std::vector<std::string>& header = rows[0];
+    // No built RTL variant has m = 2 with the preset's 262,144-pair buffer: the rtl rows say so.
+    for (std::size_t k : {3u, 4u}) {
+        EXPECT_EQ(rows[k][1], "rtl");
+        EXPECT_EQ(rows[k].back(), "not run") << "row " << k;
+    }
+    EXPECT_NE(slurp(dir_ / "fid" / "fidelity.csv").find(",0" + std::string(17, ',') + "not run\n"), std::string::npos);
     for (const char* name : {"frames_in_means", "mean_total_ns", "mean_compute_ns", "mean_upload_ns"}) {
         const auto at = static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
         ASSERT_LT(at, header.size()) << name;
@@ -115,7 +124,7 @@ TEST_F(Cli, FidelityReadsATraceFromAPipeOnce) {
                          "(cat '" + trace("small.csv") + "' > pipe &) ;");
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string csv = slurp(dir_ / "r" / "fidelity.csv");
-    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 15) << csv;
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 17) << csv;
     EXPECT_EQ(csv.find(",no\n"), std::string::npos) << "every level saw the same frames: " << csv;
 }
 

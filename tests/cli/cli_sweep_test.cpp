@@ -129,7 +129,7 @@ TEST_F(Cli, SweepRefusesBadAxesAndOptionsBeforeAnyPointRuns) {
         {"sweep --set objects=50,--help --out res",
          "cdvp sweep: --set objects: expected an integer from 0 to 4194304, got '--help'"},
         {"sweep --set m=0,1 --out res", "cdvp sweep: --set m: expected an integer from 1 to 32, got '0'"},
-        {"sweep --fidelity fast,slow --out res", "cdvp sweep: --fidelity: expected cycle, fast, analytic or auto, got 'slow'"},
+        {"sweep --fidelity fast,slow --out res", "cdvp sweep: --fidelity: expected rtl, cycle, fast, analytic or auto, got 'slow'"},
         {"sweep --board adm-xrc-ii,nosuch --out res", "cdvp sweep: --board: "},
         {"sweep --set m=1 --frames 2 --frames 3 --out res", "cdvp sweep: option '--frames' cannot be specified more"},
         {"sweep --set m=1 --out res -- --frames 2", "cdvp sweep: unexpected argument '--frames'"},

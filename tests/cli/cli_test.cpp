@@ -82,7 +82,7 @@ TEST_F(Cli, ReadmeCarriesEveryCommandsHelpVerbatim) {
     std::stringstream readme;
     readme << in.rdbuf();
     ASSERT_FALSE(readme.str().empty());
-    for (const char* command : {"", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record", "calibrate"}) {
+    for (const char* command : {"", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record", "calibrate", "rtl-variants"}) {
         const Result help = run(std::string(command) + " --help");
         ASSERT_EQ(help.status, 0) << command;
         EXPECT_NE(readme.str().find("```\n" + help.out + "```\n"), std::string::npos)
@@ -102,7 +102,7 @@ TEST_F(Cli, TopLevelCommandLine) {
         const Result r = run(bad);
         EXPECT_EQ(r.status, 2) << bad;
         EXPECT_EQ(r.err, std::string("cdvp: unknown command '") + bad +
-                             "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, calibrate, help (see cdvp --help)\n");
+                             "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, calibrate, rtl-variants, help (see cdvp --help)\n");
     }
     EXPECT_EQ(run("run").err, "cdvp run: give exactly one of --trace FILE or --scene spheres\n");
     // cdvp help [COMMAND]: the same text as --help.

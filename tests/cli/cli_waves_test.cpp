@@ -162,7 +162,7 @@ TEST_F(Cli, BulletTracesItsBoardAsRunDoes) {
     EXPECT_EQ(slurp(dir_ / "w.controller-states.txt"), "0 idle\n1 running\n2 paused\n3 done\n");
     EXPECT_NE(slurp(dir_ / "r.json").find("\"fidelity\": \"cycle\""), std::string::npos) << "--vcd clocks the board";
     cdvp::test::expect_refusal(run(bullet + "--vcd x.vcd --fidelity fast"),
-                               "cdvp bullet: --vcd: waveforms need the clocked engine; --fidelity asks for fast");
+                               "cdvp bullet: --vcd: waveforms need the clocked engine or the RTL; --fidelity asks for fast");
     cdvp::test::expect_refusal(run(bullet + "--vcd x.vcd --vcd-frames 5:6"),
                                "cdvp bullet: --vcd-frames: 5:6 starts after the run's last frame 1");
     cdvp::test::expect_refusal(run(bullet + "--vcd-format fst"), "cdvp bullet: --vcd-format: the format of --vcd");

@@ -23,7 +23,7 @@ FidelityResult level(double wall_ns, double total_ns, const std::string& pairs) 
 
 TEST(FidelityStudy, TheReferenceIsTheClockedEngineOnTheTransactionLevelBusAtQuantumZero) {
     const auto& levels = fidelity_levels();
-    ASSERT_EQ(levels.size(), 14u);
+    ASSERT_EQ(levels.size(), 16u);
     EXPECT_STREQ(levels[0].fidelity(), "cycle");
     EXPECT_STREQ(levels[0].bus_model, "transaction");
     EXPECT_EQ(levels[0].quantum_ns, 0);
@@ -36,7 +36,8 @@ TEST(FidelityStudy, TheReferenceIsTheClockedEngineOnTheTransactionLevelBusAtQuan
         EXPECT_EQ(levels[k].quantum_ns, levels[k + 1].quantum_ns) << k;
         seen.insert(std::string(levels[k].fidelity()) + " " + std::to_string(levels[k].quantum_ns));
     }
-    EXPECT_EQ(seen.size(), 7u) << "no level twice";
+    EXPECT_EQ(seen.size(), 8u) << "no level twice";
+    EXPECT_STREQ(levels[2].fidelity(), "rtl") << "the RTL beside the reference";
     EXPECT_STREQ(levels.back().fidelity(), "analytic");
     EXPECT_EQ(levels.back().quantum_ns, 0) << "the analytic level times a host at quantum 0";
     EXPECT_EQ(levels[levels.size() - 3].quantum_ns, 100000);
@@ -47,17 +48,22 @@ TEST(FidelityStudy, ErrorsAreInPercentOfTheReferencesMeanFrameAndPairsAreCompare
     results.push_back(level(5e4, 1000, "0,1\n"));
     results.push_back(level(5e4, 1100, "0,1\n"));  // 10% off in total, 2.5% in compute
     results.push_back(level(5e4, 1000, "0,2\n"));  // other pairs
+    FidelityResult skipped;  // a level that did not run on this board
+    skipped.not_run = "cdvp fidelity: no Verilator build serves this board";
+    results.push_back(skipped);
     EXPECT_DOUBLE_EQ(fidelity_error_percent(results[1], results[0], ReportSummary::kPhases - 1), 0.0);
     EXPECT_DOUBLE_EQ(fidelity_error_percent(results[2], results[0], ReportSummary::kPhases - 1), 10.0);
     EXPECT_DOUBLE_EQ(fidelity_error_percent(results[2], results[0], 2), 2.5);
     const std::string csv = fidelity_csv(results);
     EXPECT_EQ(csv.rfind("level,fidelity,bus_model,quantum_ns,frames_in_means,p50_sim_wall_native_ns,mean_upload_ns", 0), 0u);
-    EXPECT_NE(csv.find("\n2,fast,transaction,0,28,50000,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\n2,rtl,transaction,0,28,50000,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\n4,fast,transaction,0" + std::string(17, ',') + "not run\n"), std::string::npos) << "level 4: empty figures\n" << csv;
     EXPECT_NE(csv.find(",10,yes\n"), std::string::npos) << "level 2: 10 % off in total, same pairs\n" << csv;
     EXPECT_NE(csv.find(",0,no\n"), std::string::npos) << "level 3: other pairs\n" << csv;
     const std::string table = fidelity_table(results);
     EXPECT_NE(table.find("cycle transaction q=0ns"), std::string::npos) << table;
     EXPECT_NE(table.find("DIFFER"), std::string::npos) << table;
+    EXPECT_NE(table.find("not run: cdvp fidelity: no Verilator build serves this board"), std::string::npos) << table;
 }
 
 }  // namespace

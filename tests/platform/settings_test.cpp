@@ -133,6 +133,7 @@ TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     expect_choice_round_trip<WaitMode>("run.wait");
     expect_choice_round_trip<ModelLevel>("run.fidelity");
     expect_choice_round_trip<bool>("run.ignore_capacity");
+    expect_choice_round_trip<bool>("run.lockstep");
     expect_choice_round_trip<BusModel>("bus.model");
     expect_choice_round_trip<Direction>("bus.load_direction");
     expect_choice_round_trip<LoadArrivals>("bus.load_arrivals");
@@ -141,13 +142,17 @@ TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     expect_choice_round_trip<InterruptPolicy>("driver.interrupts");
     int choices = 0;
     for (const Setting& s : settings_table()) choices += s.type == SettingType::kChoice ? 1 : 0;
-    EXPECT_EQ(13, choices) << "a new choice setting: add it above";
+    EXPECT_EQ(14, choices) << "a new choice setting: add it above";
     // The engines' own names are the setting's, and each level but the analytic one runs the engine of its name.
     for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) EXPECT_STREQ(c.name, to_string(c.value));
     for (const ChoiceName<ModelLevel>& c : Choices<ModelLevel>::names) {
-        if (c.value == ModelLevel::kCycle || c.value == ModelLevel::kFast) {
+        if (c.value == ModelLevel::kCycle || c.value == ModelLevel::kFast || c.value == ModelLevel::kRtl) {
             EXPECT_STREQ(c.name, to_string(engine_of(c.value)));
         }
+    }
+    EXPECT_EQ(Fidelity::kLockstep, engine_of(ModelLevel::kRtl, true)) << "--lockstep: the RTL with the clocked engine beside it";
+    for (ModelLevel level : {ModelLevel::kCycle, ModelLevel::kFast}) {
+        EXPECT_EQ(engine_of(level), engine_of(level, true)) << "lockstep is the rtl level's alone (refused elsewhere)";
     }
 }
 
@@ -175,7 +180,7 @@ TEST(SettingsTable, UnknownChoicesAreRefusedNamingEveryChoice) {
         {"bus.type", "expected ideal, pci or pcie, got 'sram'"},
         {"run.transfer", "expected dma or pio, got 'sram'"},
         {"run.wait", "expected irq or poll, got 'sram'"},
-        {"run.fidelity", "expected cycle, fast, analytic or auto, got 'sram'"},
+        {"run.fidelity", "expected rtl, cycle, fast, analytic or auto, got 'sram'"},
         {"run.ignore_capacity", "expected no or yes, got 'sram'"},
     };
     for (const auto& [name, message] : refusals) {
