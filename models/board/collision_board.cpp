@@ -6,6 +6,9 @@
 
 #include "models/common/address_range.h"
 #include "models/common/transaction.h"
+#include "models/rtl_engine/lockstep_engine.h"
+#include "models/rtl_engine/rtl_engine.h"
+#include "models/rtl_engine/rtl_waves.h"
 
 namespace cdvp {
 
@@ -86,10 +89,26 @@ void CollisionBoard::add_waves(WaveList& waves) {
     waves.add(shown.wait, p + "tiles.wait");
 }
 
+std::vector<TracedSignal> CollisionBoard::trace_rtl(const std::string& path) {
+    traced_rtl_ = dynamic_cast<RtlEngine*>(&core_.engine());
+    if (auto* lockstep = dynamic_cast<LockstepEngine*>(&core_.engine())) traced_rtl_ = &lockstep->rtl();
+    if (traced_rtl_ == nullptr) throw std::logic_error("RTL waveforms need the rtl engine");
+    traced_rtl_->trace_to(path, [this] { return static_cast<uint64_t>(access_time_.to_seconds() * 1e12 + 0.5); });
+    return rtl_waves(traced_rtl_->variant());
+}
+
+void CollisionBoard::close_rtl_trace() {
+    if (traced_rtl_ != nullptr) traced_rtl_->close_trace();
+}
+
 void CollisionBoard::set_tracing(bool on) {
-    if (traced_engine_ == nullptr || on == tracing_on_) return;
+    if ((traced_engine_ == nullptr && traced_rtl_ == nullptr) || on == tracing_on_) return;
     tracing_on_ = on;
     if (core_.running()) throw std::logic_error("tracing switched during a sweep");
+    if (traced_rtl_ != nullptr) {
+        traced_rtl_->set_trace_open(on);
+        return;
+    }
     waves_.set_open(on);
 }
 
@@ -101,6 +120,7 @@ void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& del
         return;
     }
     const sc_time at = sc_time_stamp() + delay;
+    access_time_ = at;
     sync(at);
     const uint64_t segments_before = core_.segments_started();
     const SweepState phase_before = core_.phase();
@@ -110,6 +130,7 @@ void CollisionBoard::b_transport(tlm::tlm_generic_payload& payload, sc_time& del
     // The waveforms see a command's new state when it takes effect, not at
     // the next clock edge (which an abort or a finished sweep never has).
     if (clocked_edge_by_edge() && core_.phase() != phase_before) state_changed_.notify(delay);
+    if (traced_rtl_ != nullptr && tracing_on_ && core_.running() && !first_traced_start_) first_traced_start_ = at;
     // A command or the synchronisation may have moved the line.
     if (core_.interrupt() != irq.read()) irq_changed_.notify(delay);
 }
@@ -230,6 +251,9 @@ void CollisionBoard::on_clock_event() {
             clock_event_.notify(segment_start_ + sc_time::from_value(next * period_.value()) - sc_time_stamp());
             return;
         }
+    }
+    if (traced_rtl_ != nullptr && tracing_on_ && core_.phase() == SweepState::kDone && !first_traced_done_) {
+        first_traced_done_ = sc_time_stamp();
     }
     irq_changed_.notify(SC_ZERO_TIME);
 }

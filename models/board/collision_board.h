@@ -22,6 +22,8 @@
 
 namespace cdvp {
 
+class RtlEngine;
+
 class CollisionBoard : public sc_core::sc_module {
 public:
     SC_HAS_PROCESS(CollisionBoard);
@@ -44,6 +46,13 @@ public:
     // the first sc_start). Needs the clocked engine (throws std::logic_error
     // otherwise). Without this call the board does no per-edge work at all.
     void add_waves(WaveList& waves);
+    // The rtl and rtl-lockstep engines: the RTL's own signals, every one,
+    // into `path` (Verilator's VCD in picoseconds of simulated time; each
+    // command at the time the host's access takes effect). Returns the
+    // signals a save file shows first. Throws std::logic_error for other engines.
+    std::vector<TracedSignal> trace_rtl(const std::string& path);
+    // Closes the RTL's waveform file (its last edges written).
+    void close_rtl_trace();
     // Traced boards only: whether the following sweeps are clocked edge by
     // edge and sampled (a window of frames), or run as untraced ones do and
     // leave the waveforms holding. Switch between sweeps only.
@@ -81,7 +90,9 @@ private:
     sc_core::sc_event irq_changed_;
     sc_core::sc_event state_changed_;
     FaultPlan* faults_ = nullptr;
-    ClockedEngine* traced_engine_ = nullptr;  // set by trace()
+    ClockedEngine* traced_engine_ = nullptr;  // set by add_waves()
+    RtlEngine* traced_rtl_ = nullptr;         // set by trace_rtl()
+    sc_core::sc_time access_time_;            // when the host access being served takes effect
     bool tracing_on_ = true;
     std::optional<sc_core::sc_time> first_traced_start_, first_traced_done_;
 
