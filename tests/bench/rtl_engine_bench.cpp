@@ -66,11 +66,16 @@ class TableReporter : public benchmark::ConsoleReporter {
 public:
     void ReportRuns(const std::vector<Run>& runs) override {
         for (const Run& run : runs) {
-            if (run.run_type != Run::RT_Iteration) continue;
-            const std::string name = run.benchmark_name();
+            // Each repetition (the aggregates are computed again below; with
+            // --benchmark_report_aggregates_only only the median comes).
+            const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
+            if (run.run_type != Run::RT_Iteration && !median) continue;
+            const std::string name = run.run_name.function_name + "/" + run.run_name.args;
             const int engine = name.rfind("BM_Rtl", 0) == 0 ? 1 : 0;
-            const int m = std::stoi(name.substr(name.find('/') + 1));
-            speeds()[{engine, m}].push_back(run.counters.at("board_cycles_per_s"));
+            const int m = std::stoi(run.run_name.args);
+            auto& values = speeds()[{engine, m}];
+            if (median) values.assign(1, run.counters.at("board_cycles_per_s"));
+            if (!median) values.push_back(run.counters.at("board_cycles_per_s"));
         }
         ConsoleReporter::ReportRuns(runs);
     }
