@@ -47,6 +47,12 @@ TEST_F(Cli, FidelityRunsEveryLevelAndWritesTheTableAndThePlot) {
     EXPECT_EQ(rows[1][column("fidelity")], "cycle");
     EXPECT_EQ(rows[1][column("bus_model")], "transaction");
     for (std::size_t k = 1; k < rows.size(); ++k) {
+#ifndef CDVP_RTL_BUILT
+        if (rows[k][column("fidelity")] == "rtl") {  // a build without Verilator's board models
+            EXPECT_EQ(rows[k].back(), "not run") << "level " << k;
+            continue;
+        }
+#endif
         EXPECT_EQ(rows[k][column("frames_in_means")], "1") << "three frames less the default two of warm-up";
         EXPECT_GT(std::stod(rows[k][column("p50_sim_wall_native_ns")]), 0.0);
         EXPECT_GT(std::stod(rows[k][column("mean_total_ns")]), 0.0);

@@ -1,42 +1,11 @@
 # Run by GTKWave (gtkwave -S check_view.tcl -a waves.gtkw DUMP) once the save
 # file is loaded: checks what a user sees when the waveforms open, prints one
 # "check:" line per finding and a last "check: PASS" or "check: FAIL", then quits.
-set failures 0
-proc check {ok what} {
-    global failures
-    if {$ok} { puts "check: ok: $what" } else { puts "check: FAIL: $what"; incr failures }
-}
-# The times at which a signal takes a value, from the dump (GTKWave lists
-# time value pairs, ending with markers past the last time).
-proc times_of {signal value} {
-    set times {}
-    foreach {t v} [gtkwave::signalChangeList $signal -start_time 0 -max 100000] {
-        if {$t <= [gtkwave::getMaxTime] && $v eq $value} { lappend times $t }
-    }
-    return $times
-}
-proc first_after {times after} {
-    foreach t $times { if {$t > $after} { return $t } }
-    return -1
-}
-proc value_at {signal t} {
-    gtkwave::setMarker $t
-    return [gtkwave::getTraceValueAtMarkerFromName $signal]
-}
+source [file join [file dirname [info script]] view_checks.tcl]
 
 if {[catch {
     # Every signal the save file names is on screen.
-    set saved {}
-    set f [open [gtkwave::getSaveFileName] r]
-    while {[gets $f line] >= 0} {
-        if {$line ne "" && [string first [string index $line 0] "@-\[*^"] < 0} { lappend saved $line }
-    }
-    close $f
-    set shown [gtkwave::getDisplayedSignals]
-    set missing {}
-    foreach s $saved { if {[lsearch -exact $shown $s] < 0} { lappend missing $s } }
-    check [expr {[llength $saved] > 15 && [llength $missing] == 0}] \
-        "[llength $shown] signals displayed, [llength $saved] named in the save file, missing: {$missing}"
+    set shown [check_saved_signals_shown 16]
 
     # The first view spans the first frame: its upload DMA, START, DONE and
     # read-back DMA, and stops before the next frame's upload.
@@ -68,5 +37,4 @@ if {[catch {
 } error]} {
     check 0 "the check script failed: $error"
 }
-puts [expr {$failures == 0 ? "check: PASS" : "check: FAIL ($failures)"}]
-gtkwave::/File/Quit
+finish
