@@ -1,6 +1,9 @@
 #include "sw/cli/sweep_command.h"
 
 #include <sys/resource.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <unistd.h>
 
 #include <csignal>
@@ -31,6 +34,19 @@ std::string cpu_seconds(int who) {
     return text;
 }
 
+// Points run here one after another, each allocating its scene, pairs and
+// report afresh: glibc would hand the heap's top back to the system after
+// every point and fault it in again for the next (with the brk and page
+// faults, most of an analytic point's time). Keep it, and keep blocks of up
+// to 32 MiB on the heap. Only where the memory goes changes, not the results.
+void keep_freed_memory() {
+#if defined(__GLIBC__)
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+    mallopt(M_TOP_PAD, 16 << 20);
+#endif
+}
+
 void print_summary(const std::string& out, const SweepOutcome& outcome) {
     std::cout << "cdvp sweep: " << outcome.points << " points in " << table_path(out) << ": " << outcome.ok << " ok, "
               << outcome.refused << " refused, " << outcome.faulted << " faulted (" << outcome.run_now << " run now; CPU time "
@@ -40,7 +56,10 @@ void print_summary(const std::string& out, const SweepOutcome& outcome) {
 
 int run_sweep_command(SweepSpec spec) {
     spec.trace_limits = spooled_trace_limits();
-    if (spec.cdvp_binary.empty()) spec.in_process = run_analytic_in_process;  // analytic points need no child
+    if (spec.cdvp_binary.empty()) {
+        spec.in_process = run_analytic_in_process;  // analytic points need no child
+        keep_freed_memory();
+    }
     SweepProgress progress(!spec.quiet && isatty(STDERR_FILENO));
     const SweepOutcome outcome = run_sweep(spec, &progress);
     if (outcome.status == 0 && sweep_stop_signal() == 0 && !spec.quiet) print_summary(spec.out_dir, outcome);
