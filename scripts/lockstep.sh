@@ -3,7 +3,8 @@
 # FIFOs of 2m-1 pairs and 96-pair buffers) beside the default variants into
 # build-lockstep/, and holds each to the clocked engine edge by edge
 # (tests/rtl/rtl_lockstep_test.cpp). CI runs the default variants only.
-# Building 43 Verilator models takes long: about 40 minutes on 2 cores.
+# Building the 45 Verilator models takes long: 62 minutes with JOBS=1 beside
+# other builds; the test itself about 25 s.
 #
 #   scripts/lockstep.sh [gtest filter]        e.g. 'BuiltVariants/*m_17*'
 # Environment: BUILD_DIR (build-lockstep), JOBS (nproc).
