@@ -22,7 +22,7 @@ packages=(
   help2man                       # the man page, generated from --help at build time
   yosys                          # synthesis behind the resource model (scripts/synthesize.sh)
   iverilog                       # simulates the RTL against the C++ model (tests/rtl)
-  verilator                      # lints the whole-board RTL (scripts/lint-rtl.sh, tests/rtl)
+  verilator                      # compiles the board RTL for --fidelity rtl (models/rtl_engine) and lints it
   pybind11-dev python3-dev       # the Python module (sw/python), for Debian's /usr/bin/python3
   python3-pandas python3-pytest  # its tables and its tests
   python3-matplotlib             # the example that draws the paper's speedup figure from cdvp.sweep
