@@ -43,8 +43,8 @@ void ClockedEngine::start(const CoordinateStore& store, uint32_t objects) {
     collector_.reset();
     for (auto& slot : line_) slot = Slot{};
     head_ = 0;
-    end_issued_ = end_seen_ = stalled_ = issued_ = false;
-    pushed_hits_ = 0;
+    end_issued_ = end_seen_ = stalled_ = false;
+    pushed_edge_ = 0;
     edges_ = 0;
     history_.start();
     state_ = SweepState::kRunning;
@@ -54,6 +54,7 @@ void ClockedEngine::resume() {
     history_.resume(edges_);
     collector_.clear_buffer();
     edges_ = 0;
+    pushed_edge_ = 0;
     state_ = SweepState::kRunning;
 }
 
@@ -137,8 +138,6 @@ void ClockedEngine::stall() {
 // buffer full pauses the board (and counts as a stall).
 void ClockedEngine::step() {
     ++edges_;
-    issued_ = false;
-    pushed_hits_ = 0;
     if (collector_.drain_blocked()) {
         // A pair must move and the buffer is full: this edge does no work
         // (a stall) and the clock stops until the host drains and resumes.
@@ -165,14 +164,13 @@ void ClockedEngine::step() {
         }
         collector_.push(leaving.window.row, leaving.window.first_column, leaving.hits);
         pushed_hits_ = leaving.hits;
+        pushed_edge_ = edges_;
         history_.pushed(edges_, hits);
     } else if (leaving.kind == Slot::kEnd) {
         end_seen_ = true;
     }
     stalled_ = false;
     leaving = issue();
-    issued_ = true;
-    issued_at_ = head_;
     head_ = head_ + 1 == line_.size() ? 0 : head_ + 1;
     if (end_seen_ && collector_.fifo_level() == 0) state_ = SweepState::kDone;
 }

@@ -67,10 +67,14 @@ public:
     bool waiting() const { return waiting_; }
     const Slot& compare_output() const { return line_[head_]; }
     bool stalled() const { return stalled_; }
-    // The last edge's slot issued into the pipeline (a bubble when none was)
-    // and the lane hits it pushed into the FIFO (0 when none).
-    const Slot& issued() const { return issued_ ? line_[issued_at_] : kNoSlot; }
-    uint64_t pushed_hits() const { return pushed_hits_; }
+    // The last edge's slot issued into the pipeline (a bubble when none was:
+    // every edge that does not issue stalls) and the lane hits it pushed
+    // into the FIFO (0 when none). Derived, so the edge itself pays nothing.
+    const Slot& issued() const {
+        if (stalled_ || edges_ == 0) return kNoSlot;
+        return line_[head_ == 0 ? line_.size() - 1 : head_ - 1];
+    }
+    uint64_t pushed_hits() const { return pushed_edge_ == edges_ && edges_ != 0 ? pushed_hits_ : 0; }
     SweepState state() const { return state_; }
     uint64_t edges() const { return edges_; }
     uint32_t fifo_level() const { return collector_.fifo_level(); }
@@ -104,9 +108,8 @@ private:
     bool end_issued_ = false;  // the address generator sent its end marker
     bool end_seen_ = false;    // the end marker reached the collector
     bool stalled_ = false;
-    bool issued_ = false;
-    uint32_t issued_at_ = 0;
-    uint64_t pushed_hits_ = 0;
+    uint64_t pushed_hits_ = 0;  // the last push's lane hits,
+    uint64_t pushed_edge_ = 0;  // at this edge of the segment (0: none yet)
     static const Slot kNoSlot;
     PortWindow last_issue_{};
 

@@ -7,7 +7,7 @@ namespace cdvp {
 
 std::string RtlVariant::spec() const {
     std::ostringstream s;
-    s << "m=" << m << ",format=" << (format_bits == 0 ? std::string("float32") : "fixed" + std::to_string(format_bits))
+    s << "m=" << m << ",format=" << format().name()
       << ",latency=" << compare_latency << ",fifo=" << fifo_depth << ",buffer=" << buffer_depth
       << ",tile=" << tile_boxes << ",tile_latency=" << tile_latency << ",capacity=" << capacity();
     return s.str();
@@ -30,7 +30,7 @@ RtlVariant RtlVariant::for_board(const BoardConfig& config, uint32_t capacity) {
 BoardConfig RtlVariant::board() const {
     BoardConfig config;
     config.m = m;
-    config.format = format_bits == 0 ? NumberFormat::float32() : NumberFormat::fixed(format_bits);
+    config.format = format();
     config.compare.latency_cycles = compare_latency;
     config.collector.fifo_depth = fifo_depth;
     config.collector.buffer_depth = buffer_depth;

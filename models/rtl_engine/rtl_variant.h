@@ -29,6 +29,7 @@ struct RtlVariant {
     uint32_t address_bits = 9;       // AW: 2^AW boxes
 
     uint64_t capacity() const { return uint64_t{1} << address_bits; }
+    NumberFormat format() const { return format_bits == 0 ? NumberFormat::float32() : NumberFormat::fixed(format_bits); }
     // "m=8,format=float32,latency=2,fifo=512,buffer=262144,tile=0,tile_latency=2,capacity=512"
     std::string spec() const;
     // The variant a board of this configuration and capacity needs (the

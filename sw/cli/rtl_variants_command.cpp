@@ -33,7 +33,7 @@ std::string variants_text() {
     for (const BuiltRtlVariant& built : built_rtl_variants()) {
         const RtlVariant& v = built.variant;
         out << std::setw(4) << v.m << std::setw(9)
-            << (v.format_bits == 0 ? std::string("float32") : "fixed" + std::to_string(v.format_bits)) << std::setw(9)
+            << v.format().name() << std::setw(9)
             << v.compare_latency << std::setw(6) << v.fifo_depth << std::setw(8) << v.buffer_depth << std::setw(6)
             << v.tile_boxes << std::setw(14) << (v.tile_boxes == 0 ? std::string("-") : std::to_string(v.tile_latency))
             << std::setw(10) << v.capacity() << v.spec() << '\n';
@@ -49,7 +49,7 @@ nlohmann::json rtl_variants_json() {
     for (const BuiltRtlVariant& built : built_rtl_variants()) {
         const RtlVariant& v = built.variant;
         all.push_back({{"m", v.m},
-                       {"format", v.format_bits == 0 ? std::string("float32") : "fixed" + std::to_string(v.format_bits)},
+                       {"format", v.format().name()},
                        {"compare_latency", v.compare_latency},
                        {"fifo_depth", v.fifo_depth},
                        {"buffer_depth", v.buffer_depth},
