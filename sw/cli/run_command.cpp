@@ -170,7 +170,7 @@ auto within_budget(const RunBudgets& budgets, uint64_t frame, Stage&& stage) {
 }
 
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
-             const std::vector<std::string>& command_line, const RunBudgets& budgets) {
+             const std::vector<std::string>& command_line, const RunBudgets& budgets, nlohmann::json* memory_report) {
     RunConfig run = describe_run(setup, static_cast<uint32_t>(source.max_objects()), budgets);
     run.source = source.describe();
     run.command_line = command_line;
@@ -188,6 +188,8 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         report.emplace(out.report->stream());
         report->begin(run);
     }
+    std::optional<MemoryReport> in_memory;
+    if (memory_report != nullptr) in_memory.emplace(*memory_report);
     RunTotals totals(setup.values.settings().run.warmup);
     FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair, budgets.pair_budget());
 
@@ -231,6 +233,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
             wall.baselines_s += seconds_since(baselines_start);
         }
         if (report) report->frame(stats);
+        if (in_memory) in_memory->frame(stats);
         totals.add(stats);
         // The application gets the pairs the host keeps once it has dropped the extra ones.
         source.feed(reference.kept(check, result.pairs));
@@ -299,6 +302,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
             platform.choice() ? nlohmann::json{{"fidelity_choice", platform.choice()->to_json()}} : nlohmann::json::object();
         report->end(totals, setup.host, &choice);
     }
+    if (in_memory) in_memory->end(totals, setup.host);
     if (!o.quiet) {
         std::ostringstream summary;
         print_summary(summary, run, totals, wall);
@@ -321,7 +325,8 @@ namespace {
 constexpr int kNotAnalytic = -1;
 
 // The run, with option errors pointing at --help.
-int run_checked(int argc, char** argv, bool analytic_only = false) {
+// memory_report: the report is kept there (frames and summary), not written.
+int run_checked(int argc, char** argv, bool analytic_only = false, nlohmann::json* memory_report = nullptr) {
     try {
         RunOptions o;
         const po::variables_map vm = parse_run_options(argc, argv, o);
@@ -359,7 +364,7 @@ int run_checked(int argc, char** argv, bool analytic_only = false) {
         // Every stage that collects a frame's pairs holds the same budget.
         setup.platform.pair_budget = budgets.pair_budget();
         setup.baselines.set_pair_budget(budgets.pair_budget());
-        return simulate(o, *source, setup, out, report_command_line(argc, argv), budgets);
+        return simulate(o, *source, setup, out, report_command_line(argc, argv), budgets, memory_report);
     } catch (po::error_with_option_name& e) {
         // boost quotes an unknown option as typed: keep a huge one short.
         const std::string name = e.get_option_name();
@@ -387,7 +392,8 @@ int run_command(int argc, char** argv) {
     return exit_status_of("cdvp run", [&] { return run_checked(argc, argv); });
 }
 
-std::optional<int> run_analytic_in_process(const std::vector<std::string>& args, std::string& errors) {
+std::optional<int> run_analytic_in_process(const std::vector<std::string>& args, std::string& errors,
+                                           nlohmann::json* report) {
     std::vector<std::string> words{"run"};  // as main passes a command its words
     words.insert(words.end(), args.begin(), args.end());
     std::vector<char*> argv;
@@ -398,7 +404,7 @@ std::optional<int> run_analytic_in_process(const std::vector<std::string>& args,
     std::streambuf* const previous = std::cerr.rdbuf(captured.rdbuf());
     int status = 0;
     try {
-        status = exit_status_of("cdvp run", [&] { return run_checked(static_cast<int>(words.size()), argv.data(), true); });
+        status = exit_status_of("cdvp run", [&] { return run_checked(static_cast<int>(words.size()), argv.data(), true, report); });
     } catch (...) {
         std::cerr.rdbuf(previous);
         throw;

@@ -207,6 +207,12 @@ void ReportWriter::frame(const FrameStats& frame) {
     any_frame_ = true;
 }
 
+MemoryReport::MemoryReport(nlohmann::json& out) : out_(out) { out_ = {{"frames", nlohmann::json::array()}}; }
+
+void MemoryReport::frame(const FrameStats& frame) { out_["frames"].push_back(frame_json(frame)); }
+
+void MemoryReport::end(const RunTotals& totals, const HostTiming& host) { out_["summary"] = to_json(totals.summary(host)); }
+
 ReportSummary RunTotals::summary(const HostTiming& host) const {
     const TimingFigures board = board_figures();
     ReportSummary s;

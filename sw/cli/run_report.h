@@ -160,6 +160,18 @@ private:
     bool any_frame_ = false;
 };
 
+// A report kept in memory, for a compact sweep's point run in process: the
+// frames and the summary as ReportWriter writes them, no config.
+class MemoryReport {
+public:
+    explicit MemoryReport(nlohmann::json& out);
+    void frame(const FrameStats& frame);
+    void end(const RunTotals& totals, const HostTiming& host);
+
+private:
+    nlohmann::json& out_;
+};
+
 // Where a run's native wall time went: the simulator's own (each frame on
 // the platform) and the software baselines timed beside it.
 struct RunWallTimes {

@@ -23,7 +23,8 @@ namespace {
 
 constexpr const char* kHelp =
     "Usage: cdvp sweep [--board LIST] [--set NAME=LIST]... [--fidelity LIST] [--scene LIST | --trace LIST]\n"
-    "                  [options of cdvp run] --out DIR [--jobs J] [--shard K/N] [--no-plots] [--rerun-invalid] [-q]\n"
+    "                  [options of cdvp run] --out DIR [--jobs J] [--shard K/N] [--record full|compact]\n"
+    "                  [--no-plots] [--rerun-invalid] [-q]\n"
     "\n"
     "Runs 'cdvp run' once for every point of the grid (every combination of the axes' values, the\n"
     "first axis outermost) and gathers the points into DIR/sweep.csv, one row per point, with each\n"
@@ -46,6 +47,10 @@ constexpr const char* kHelp =
     "                      file is refused. One sweep or merge at a time writes a directory.\n"
     "  --jobs J            points run in J processes at once (1 to 24; 1)\n"
     "  --shard K/N         run only the points whose index % N is K-1, for 'cdvp merge'\n"
+    "  --record full|compact\n"
+    "                      full: each point's report in DIR/points and every setting in its row;\n"
+    "                      compact: no report, a row of the axes and the figures (pairs, cycles,\n"
+    "                      phases, totals, speedups), about 300 bytes a point (full)\n"
     "  --no-plots          write no figures (shards on a cluster, say: cdvp merge draws them)\n"
     "  --rerun-invalid     rows of sweep.csv that do not match the grid or their reports are run\n"
     "                      again instead of refused\n"
@@ -66,6 +71,7 @@ po::options_description own_options(std::vector<std::string>& sets) {
         ("scene", po::value<std::string>(), "")("trace", po::value<std::string>(), "")
         ("set", po::value(&sets)->composing(), "")("out", po::value<std::string>(), "")
         ("jobs", po::value<std::string>(), "")("shard", po::value<std::string>(), "")
+        ("record", po::value<std::string>(), "")
         ("no-plots", po::bool_switch(), "")("rerun-invalid", po::bool_switch(), "")
         ("quiet,q", po::bool_switch(), "")("help,h", po::bool_switch(), "");
     return own;
@@ -143,7 +149,7 @@ void resolve_axis(Axis& axis, const std::string& label, const std::set<std::stri
 }
 
 // The sweep's own options: its axes (--NAME LIST and --set NAME=LIST), --out,
-// --jobs and --shard.
+// --jobs, --shard and --record.
 void read_own_options(const ParsedCommandLine& line, const std::set<std::string>& run_flags, SweepSpec& o) {
     for (const po::option& option : line.own) {
         const std::string& key = option.string_key;
@@ -163,6 +169,8 @@ void read_own_options(const ParsedCommandLine& line, const std::set<std::string>
             o.jobs = parse_jobs(option.value.at(0));
         } else if (key == "shard") {
             o.shard = parse_shard(option.value.at(0));
+        } else if (key == "record") {
+            o.record = parse_record_mode(option.value.at(0), "--record");
         }
     }
 }

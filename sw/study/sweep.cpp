@@ -155,7 +155,7 @@ SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
     SweepObserver& told = observer != nullptr ? *observer : silent;
     const Grid grid(o.axes);
     const SweepInputs inputs(o.inputs, o.trace_limits);
-    const Manifest wanted{grid.axes(), o.run_options, inputs.digests(), o.shard, kCdvpVersion};
+    const Manifest wanted{grid.axes(), o.run_options, inputs.digests(), o.shard, kCdvpVersion, o.record};
     LockedOutDirectory out(o.out_dir);
     CreatedDirectories& made = out.made();
     const std::optional<Manifest> existing = read_manifest(manifest_path(o.out_dir));
@@ -163,7 +163,7 @@ SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
     remove_stale_temporaries(o.out_dir);
 
     SweepTable table(grid);
-    const TableRead read = read_table(o.out_dir, grid, o.shard, table, o.rerun_invalid);
+    const TableRead read = read_table(o.out_dir, grid, o.shard, table, o.rerun_invalid, o.record);
     if (!o.quiet) {
         for (const std::string& invalid : read.invalid) std::cerr << o.program << ": runs again: " << invalid << '\n';
         if (read.torn) std::cerr << o.program << ": " << table_path(o.out_dir) << ": its last row was cut short; the point runs again\n";

@@ -13,8 +13,11 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "sw/scene/input_spool.h"
 #include "sw/study/sweep_grid.h"
+#include "sw/study/sweep_manifest.h"
 
 namespace cdvp {
 
@@ -31,8 +34,11 @@ struct NamedInput {
 // Runs `cdvp run ARGS` inside this process when it can (a point at the
 // analytic level elaborates no SystemC kernel): its exit status, with what it
 // printed on stderr in `errors`; none when the point needs a process of its
-// own. Set by the command line, which owns `cdvp run`.
-using InProcessRun = std::function<std::optional<int>(const std::vector<std::string>& args, std::string& errors)>;
+// own. With `report` (a compact record), ARGS name no --report and the run
+// leaves its report's "frames" and "summary" there instead of in a file.
+// Set by the command line, which owns `cdvp run`.
+using InProcessRun = std::function<std::optional<int>(const std::vector<std::string>& args, std::string& errors,
+                                                      nlohmann::json* report)>;
 
 struct SweepSpec {
     std::vector<Axis> axes;                // in the order given, named by what they set
@@ -44,6 +50,7 @@ struct SweepSpec {
     bool quiet = false;                    // no notes on stderr
     bool plots = true;                     // false: the CSV and data files only
     bool rerun_invalid = false;            // rows that do not match the grid are run again, not refused
+    RecordMode record = RecordMode::kFull; // full: a report a point beside its row; compact: the row only
     InputLimits trace_limits;              // what a trace read from a pipe may hold when it is spooled
     std::string program = "cdvp sweep";    // the name notes and errors are printed under
     std::string cdvp_binary;               // the cdvp the points run; empty: this process's executable

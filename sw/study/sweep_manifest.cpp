@@ -85,6 +85,14 @@ json input_json(const SweepInput& input) {
 
 }  // namespace
 
+const char* to_string(RecordMode mode) { return mode == RecordMode::kCompact ? "compact" : "full"; }
+
+RecordMode parse_record_mode(const std::string& text, const std::string& label) {
+    if (text == "full") return RecordMode::kFull;
+    if (text == "compact") return RecordMode::kCompact;
+    throw InputError(label + ": expected full or compact, got '" + excerpt(text) + "'");
+}
+
 SweepInput digest_input(std::string option, std::string value, std::string path) {
     const std::optional<FileDigest> digest = digest_file(path);
     if (!digest) {
@@ -110,6 +118,7 @@ json Manifest::to_json() const {
             {"inputs", inputs_json},
             {"points", grid.size()},
             {"shard", shard.text()},
+            {"record", to_string(record)},
             {"point_ids", "NAME-ID of each axis joined by '_', ID from 'ids' (docs/sweep.md)"}};
 }
 
@@ -149,6 +158,11 @@ std::optional<Manifest> read_manifest(const std::string& path) {
                                    fields.text(inputs[k], "path", where), fields.text(inputs[k], "sha256", where),
                                    fields.count(inputs[k], "bytes", where)});
     }
+    if (document.contains("record")) {
+        const std::string record = fields.text(document, "record");
+        if (record != "full" && record != "compact") fields.refuse("record", "expected full or compact");
+        manifest.record = parse_record_mode(record, "record");
+    }
     try {
         manifest.shard = parse_shard(fields.text(document, "shard"));
         const Grid grid(manifest.axes);
@@ -180,6 +194,10 @@ std::optional<SweepDifference> difference(const Manifest& existing, const Manife
         if (e.values != w.values) return other("other values of " + excerpt(w.name));
     }
     if (existing.run_options != wanted.run_options) return other("other options given to every point");
+    if (existing.record != wanted.record) {
+        return other(std::string(to_string(existing.record)) + " records, not " + to_string(wanted.record) +
+                     " (--record)");
+    }
     if (existing.inputs.size() != wanted.inputs.size()) return other("other input files");
     for (std::size_t k = 0; k < existing.inputs.size(); ++k) {
         const SweepInput& e = existing.inputs[k];

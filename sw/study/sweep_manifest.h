@@ -29,12 +29,21 @@ struct SweepInput {
 // value when it cannot be read.
 SweepInput digest_input(std::string option, std::string value, std::string path);
 
+// What a sweep keeps of each point: its whole report beside a row of every
+// setting and figure (full), or a row of the figures alone and no report
+// (compact: about 300 bytes a point, for sweeps of a million points).
+enum class RecordMode { kFull, kCompact };
+const char* to_string(RecordMode mode);
+// "full" or "compact"; throws InputError naming 'label' otherwise.
+RecordMode parse_record_mode(const std::string& text, const std::string& label);
+
 struct Manifest {
     std::vector<Axis> axes;
     std::vector<std::string> run_options;  // as every point gets them
     std::vector<SweepInput> inputs;
     Shard shard;
     std::string cdvp_version;
+    RecordMode record = RecordMode::kFull;  // a manifest without the field was written full
 
     nlohmann::json to_json() const;
 };

@@ -131,7 +131,7 @@ MergeOutcome merge_sweeps(const MergeSpec& o) {
     auto take = [&](const std::string& dir, const Shard& shard) {
         SweepTable rows(grid);
         // Every row checked, or refused naming file, line and field.
-        if (read_table(dir, grid, shard, rows, false).torn) {
+        if (read_table(dir, grid, shard, rows, false, merged.record).torn) {
             throw InputError(excerpt(table_path(dir)) + ": its last row is cut short (its sweep was stopped while "
                              "writing it): run that sweep again to complete it, then merge");
         }
@@ -143,7 +143,7 @@ MergeOutcome merge_sweeps(const MergeSpec& o) {
             }
             from[index] = dir;
             const Point point = grid.point(index);
-            if (row.get("status") == "ok") place_report(report_path(dir, point), report_path(staging.path(), point));
+            if (row.get("status") == "ok" && merged.record == RecordMode::kFull) place_report(report_path(dir, point), report_path(staging.path(), point));
             table.add(index, rows.point_row(index));
         });
     };

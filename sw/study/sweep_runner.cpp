@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <chrono>
 #include <csignal>
 #include <cstring>
@@ -135,10 +136,14 @@ bool SweepRunner::run_in_process(const Point& point, SweepObserver& observer) {
     if (!o_.in_process) return false;
     std::string errors;
     const auto started = std::chrono::steady_clock::now();
-    const std::optional<int> code = o_.in_process(point_arguments(point), errors);
+    const bool compact = o_.record == RecordMode::kCompact;
+    const std::string report = report_path(o_.out_dir, point);
+    nlohmann::json in_memory;
+    const std::optional<int> code =
+        o_.in_process(point_arguments(point, compact ? nullptr : &report), errors, compact ? &in_memory : nullptr);
     if (!code) return false;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const int status = record(point, *code, reason_of(errors, trace_paths_), wall, false);
+    const int status = record(point, *code, reason_of(errors, trace_paths_), wall, false, compact ? &in_memory : nullptr);
     if (status != 0 && failing_ == 0) failing_ = status;
     // Rows of fast points are synced together, a few times a second.
     if (std::chrono::steady_clock::now() - last_sync_ > std::chrono::milliseconds(250)) {
@@ -161,19 +166,27 @@ void SweepRunner::signal_running(int signal_number) {
     }
 }
 
-std::vector<std::string> SweepRunner::point_arguments(const Point& point) const {
+std::vector<std::string> SweepRunner::point_arguments(const Point& point, const std::string* report) const {
     std::vector<std::string> args = o_.run_options;
     for (std::string& arg : grid_.run_arguments(point)) {
         if (arg.rfind("--trace=", 0) == 0) arg = "--trace=" + trace_paths_.at(arg.substr(8));
         args.push_back(std::move(arg));
     }
-    args.insert(args.end(), {"--report=" + report_path(o_.out_dir, point), "-q"});
+    if (report != nullptr) args.push_back("--report=" + *report);
+    args.push_back("-q");
     return args;
+}
+
+std::string SweepRunner::report_file(const Point& point) const {
+    const std::string path = report_path(o_.out_dir, point);
+    // A name a killed sweep's leftovers are removed by (*.part-*) on resume.
+    return o_.record == RecordMode::kCompact ? path + ".part-compact" : path;
 }
 
 void SweepRunner::launch(Slot& slot, std::size_t k, const Point& point) {
     std::vector<std::string> args{self_, "run"};
-    for (std::string& arg : point_arguments(point)) args.push_back(std::move(arg));
+    const std::string report = report_file(point);
+    for (std::string& arg : point_arguments(point, &report)) args.push_back(std::move(arg));
     slot.point = point;
     slot.errors.clear();
     slot.started = std::chrono::steady_clock::now();
@@ -201,19 +214,27 @@ int SweepRunner::finish(Slot& slot) {
 }
 
 // The row of a point that ended with `code`; 0, or the status that ends the sweep.
-int SweepRunner::record(const Point& point, int code, const std::string& reason, double wall, bool sync_now) {
+int SweepRunner::record(const Point& point, int code, const std::string& reason, double wall, bool sync_now,
+                        const nlohmann::json* in_memory) {
     const std::string& id = point.id;
-    const std::string report = report_path(o_.out_dir, point);
+    const std::string report = report_file(point);
     check_inputs_();  // a file changed during the point: its row would not belong to this sweep
     auto fail = [&](int status, const std::string& why) {
         std::cerr << o_.program << ": point " << id << ": " << why << "; the point is not recorded\n";
         return status;
     };
-    if (code == kExitDone) {
+    if (code == kExitDone && in_memory != nullptr) {
+        table_.add(point.index, compact_row(grid_, point, *in_memory, wall));
+    } else if (code == kExitDone) {
         const std::optional<std::string> text = read_whole_file(report);
         if (!text) return fail(kExitInternal, "cdvp run ended well but its report " + excerpt(report) + " cannot be read: " +
                                                   std::strerror(errno) + " (internal error: a cdvp bug)");
-        table_.add(point.index, report_row(grid_, point, *text, wall));
+        if (o_.record == RecordMode::kCompact) {
+            std::remove(report.c_str());
+            table_.add(point.index, compact_row(grid_, point, nlohmann::json::parse(*text), wall));
+        } else {
+            table_.add(point.index, report_row(grid_, point, *text, wall));
+        }
     } else if (code == kExitSystem) {
         return fail(kExitSystem, reason);
     } else if ((code == kExitBadInput || code == kExitDeviceFault) && reason.rfind("--report", 0) == 0) {

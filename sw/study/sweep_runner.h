@@ -40,12 +40,18 @@ public:
 
 private:
     struct Slot;
-    std::vector<std::string> point_arguments(const Point& point) const;  // of cdvp run
+    // Of cdvp run; `report` names where its report goes (none: kept in memory).
+    std::vector<std::string> point_arguments(const Point& point, const std::string* report) const;
+    // Where a point's report is written: its place in OUT/points, or for a
+    // compact record a temporary there, read and removed when the point ends.
+    std::string report_file(const Point& point) const;
     // Runs the point here when the spec's in_process takes it; false: it needs a child.
     bool run_in_process(const Point& point, SweepObserver& observer);
     void launch(Slot& slot, std::size_t k, const Point& point);
     int finish(Slot& slot);
-    int record(const Point& point, int code, const std::string& reason, double wall, bool sync_now);
+    // `report`: the point's report held in memory (a compact record run in process).
+    int record(const Point& point, int code, const std::string& reason, double wall, bool sync_now,
+               const nlohmann::json* report = nullptr);
     std::size_t running() const;
     void signal_running(int signal_number);
 

@@ -38,7 +38,8 @@ std::string quoted(const std::string& value) { return "'" + excerpt(value) + "'"
 // What is wrong with one row of the table ("field 'm': ..."), or nothing.
 class RowCheck {
 public:
-    RowCheck(const std::string& dir, const Grid& grid, const Shard& shard) : dir_(dir), grid_(grid), shard_(shard) {}
+    RowCheck(const std::string& dir, const Grid& grid, const Shard& shard, RecordMode record)
+        : dir_(dir), grid_(grid), shard_(shard), record_(record) {}
 
     // The row's index once it is known to be one of the grid's.
     std::optional<std::string> problem(const Row& row, std::size_t& index) const {
@@ -70,7 +71,7 @@ public:
             return "field 'reason': empty; a " + value(row, "status") + " point gives its reason";
         }
         std::optional<std::string> report;  // its digest
-        if (*status == PointStatus::kOk) {
+        if (*status == PointStatus::kOk && record_ == RecordMode::kFull) {
             const std::string path = report_path(dir_, point);
             struct stat status_of {};
             if (lstat(path.c_str(), &status_of) == 0 && !S_ISREG(status_of.st_mode)) {
@@ -96,6 +97,7 @@ private:
     const std::string& dir_;
     const Grid& grid_;
     const Shard& shard_;
+    RecordMode record_;
 };
 
 // The header must start with the grid's own columns, each once.
@@ -128,7 +130,7 @@ std::vector<std::string> directory_contents(const std::string& dir) {
 }
 
 TableRead read_table(const std::string& dir, const Grid& grid, const Shard& shard, SweepTable& table,
-                     bool keep_going) {
+                     bool keep_going, RecordMode record) {
     const std::string path = table_path(dir);
     const std::string label = excerpt(path);
     TableRead result;
@@ -147,7 +149,7 @@ TableRead read_table(const std::string& dir, const Grid& grid, const Shard& shar
     }
     check_header(header, SweepTable(grid), label);
     table.add_columns(header);
-    const RowCheck check(dir, grid, shard);
+    const RowCheck check(dir, grid, shard, record);
     std::map<std::size_t, std::size_t> lines;  // index -> the line its row is on
     std::vector<std::size_t> conflicted;
     for (std::vector<std::string> fields; records.next(fields);) {

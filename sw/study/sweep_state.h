@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sw/study/sweep_grid.h"
+#include "sw/study/sweep_manifest.h"
 #include "sw/study/sweep_table.h"
 
 namespace cdvp {
@@ -33,12 +34,13 @@ struct TableRead {
 };
 
 // Reads DIR/sweep.csv (nothing when there is none) into 'table', checking
-// every row of this grid and shard against it and, for a point that ran,
-// against DIR/points/ID.json. A row that does not match throws InputError
+// every row of this grid and shard against it and, for a point that ran in
+// a full record, against DIR/points/ID.json (a compact row's checksum is
+// over the row alone). A row that does not match throws InputError
 // naming the file, line and field, unless 'keep_going', which leaves it out
 // (and its report: the point runs again).
 TableRead read_table(const std::string& dir, const Grid& grid, const Shard& shard, SweepTable& table,
-                     bool keep_going);
+                     bool keep_going, RecordMode record = RecordMode::kFull);
 
 // sweep.csv open for appending: one row at a time, synced; the whole file is
 // written again (temporary, synced, renamed) only when the columns change or

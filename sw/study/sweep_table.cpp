@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <set>
 
 #include "models/common/user_text.h"
 #include "sw/study/digest.h"
@@ -175,12 +176,9 @@ void put_baselines(const ReportSummary& summary, RowBuilder& out) {
     }
 }
 
-}  // namespace
-
-PointRow report_row(const Grid& grid, const Point& point, const std::string& report_text, double wall_seconds) {
-    const nlohmann::json report = nlohmann::json::parse(report_text);
-    RowBuilder out{axis_row(grid, point, PointStatus::kOk, ""), {}};
-    put_config(report, out);
+// The figures of a report: its frame count, the medians over the frames after
+// the warm-up, the summary's figures and each baseline's.
+void put_results(const nlohmann::json& report, const Point& point, RowBuilder& out) {
     const auto& frames = report.at("frames");
     const nlohmann::json summary = report.value("summary", nlohmann::json::object());
     // Steady state: warm-up frames are left out (the incremental broad
@@ -194,9 +192,44 @@ PointRow report_row(const Grid& grid, const Point& point, const std::string& rep
     put_frame_medians(frames, first, out);
     put_summary_figures(summary, !frames.empty(), out);
     if (!frames.empty()) put_baselines(summary_from_json(summary, "point " + point.id + "'s report"), out);
+}
+
+// What a compact row keeps of a report's figures: the frame counts, the
+// medians of the pairs, cycles, bytes and phases, the total's mean, p99 and
+// maximum, and each baseline's mean on the modelled host and speedup.
+bool is_compact_result(const std::string& column) {
+    static const std::set<std::string> kept{
+        "report_frames", "frames_in_medians", "too_few_frames", "median_objects", "median_pairs",
+        "median_reference_pairs", "median_extra_pairs", "median_sweep_cycles", "median_compute_cycles",
+        "median_stall_cycles", "median_overflow_pauses", "median_boxes_sent", "median_upload_bytes",
+        "median_readback_bytes", "median_upload_ns", "median_start_ns", "median_compute_ns", "median_irq_ns",
+        "median_readback_ns", "median_driver_ns", "median_total_ns", "median_latency_ns", "mean_total_ns",
+        "p99_total_ns", "max_total_ns"};
+    return kept.count(column) != 0 || ends_with(column, "_mean_host_ns") || ends_with(column, "_speedup");
+}
+
+}  // namespace
+
+PointRow report_row(const Grid& grid, const Point& point, const std::string& report_text, double wall_seconds) {
+    const nlohmann::json report = nlohmann::json::parse(report_text);
+    RowBuilder out{axis_row(grid, point, PointStatus::kOk, ""), {}};
+    put_config(report, out);
+    put_results(report, point, out);
     out.put("point_wall_s", number_text(wall_seconds));
     const std::string report_sha256 = sha256_hex(report_text);
     out.row[kChecksumColumn] = row_checksum(out.row, &report_sha256);
+    return {out.order, out.row};
+}
+
+PointRow compact_row(const Grid& grid, const Point& point, const nlohmann::json& report, double wall_seconds) {
+    RowBuilder all{{}, {}};
+    put_results(report, point, all);
+    RowBuilder out{axis_row(grid, point, PointStatus::kOk, ""), {}};
+    for (const std::string& column : all.order) {
+        if (is_compact_result(column)) out.put(column, all.row.at(column));
+    }
+    out.put("point_wall_s", number_text(wall_seconds));
+    out.row[kChecksumColumn] = row_checksum(out.row, nullptr);
     return {out.order, out.row};
 }
 

@@ -42,6 +42,14 @@ struct PointRow {
 // wall time (point_wall_s) and the row's checksum over all of it and the
 // report's bytes.
 PointRow report_row(const Grid& grid, const Point& point, const std::string& report_text, double wall_seconds);
+// The compact row of a point that ran (`cdvp sweep --record compact`): the
+// axes, report_frames, frames_in_medians, the medians of the pairs, cycles,
+// stalls, pauses, bytes and phases, the total's mean, p99 and maximum, each
+// baseline's mean host time and speedup, computed as report_row computes
+// them (so equal to the full row's same columns), and the wall time; its
+// checksum is over the row alone. 'report' needs "frames" and "summary"
+// only.
+PointRow compact_row(const Grid& grid, const Point& point, const nlohmann::json& report, double wall_seconds);
 // The row of a point refused or faulted: the axes, the child's reason, its
 // wall time and the checksum.
 PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, const std::string& reason,
