@@ -37,6 +37,7 @@ AnalyticPlatform::AnalyticPlatform(const PlatformConfig& config, uint32_t capaci
       bus_(bus_or_ideal(config.bus)),
       frame_(config.driver, *bus_, analytic_board(config.board)),
       finder_(config.board.format, config.pair_budget),
+      memo_(config.pair_memo),
       m_(config.board.m),
       tiles_(config.board.tiles),
       pair_format_(config.driver.pair_format),
@@ -76,7 +77,11 @@ const FrameResult* AnalyticPlatform::try_run_frame(const std::vector<FloatBox>& 
         }
     }
     try {
-        finder_.find(objects, view, result_.pairs);
+        if (memo_) {
+            memo_->find(finder_, objects, view, result_.pairs);
+        } else {
+            finder_.find(objects, view, result_.pairs);
+        }
     } catch (const PairBudgetExceeded& e) {
         shadow_valid_ = false;  // the driver fails the frame and forgets the board's words
         fault.kind = FrameFault::Kind::kPairBudget;

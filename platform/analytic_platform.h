@@ -45,6 +45,7 @@ private:
     std::shared_ptr<const BusTiming> bus_;
     AnalyticFrame frame_;
     PairFinder finder_;
+    std::shared_ptr<PairMemo> memo_;  // may be null
     uint32_t m_;
     TileConfig tiles_;
     PairFormat pair_format_;

@@ -14,6 +14,7 @@
 
 #include "models/board/collision_board.h"
 #include "models/common/wave_list.h"
+#include "models/fast_engine/pair_memo.h"
 #include "models/pci/pci_bridge.h"
 #include "models/pci/pci_bus.h"
 #include "platform/host_cpu.h"
@@ -38,6 +39,9 @@ struct PlatformConfig {
     // The most pairs a frame may hold, in the fast engine's search and the
     // driver's read-back (models/common/pair_budget.h); unlimited by default.
     PairBudget pair_budget{};
+    // Pairs found before, shared by the runs of one process (a sweep's
+    // analytic points); the analytic level asks it first. Null: none kept.
+    std::shared_ptr<PairMemo> pair_memo{};
 };
 
 // Elaborate once, then run any number of frames: each run_frame() hands the

@@ -4,12 +4,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "models/common/aabb.h"
 #include "models/fast_engine/pair_finder.h"
+#include "models/fast_engine/pair_memo.h"
 #include "models/number_format/number_format.h"
 #include "sw/study/extra_pairs.h"
 #include "platform/driver/board_driver.h"
@@ -20,8 +22,10 @@ namespace cdvp {
 class FormatReference {
 public:
     // The float32 reference finds at most `budget` pairs (PairBudgetExceeded past it).
-    FormatReference(NumberFormat format, double ns_per_pair, PairBudget budget = {})
-        : format_(format), ns_per_pair_(ns_per_pair), float32_(NumberFormat::float32(), budget) {}
+    // With `memo`, the reference's pairs come from it when it holds them.
+    FormatReference(NumberFormat format, double ns_per_pair, PairBudget budget = {},
+                    std::shared_ptr<PairMemo> memo = nullptr)
+        : format_(format), ns_per_pair_(ns_per_pair), float32_(NumberFormat::float32(), budget), memo_(std::move(memo)) {}
 
     struct Check {
         PairList reference;              // the float32 pairs, first index ascending (empty under float32)
@@ -42,6 +46,7 @@ private:
     NumberFormat format_;
     double ns_per_pair_;
     PairFinder float32_;
+    std::shared_ptr<PairMemo> memo_;
     std::vector<uint32_t> words_[kCoordinates];
 };
 

@@ -62,7 +62,7 @@ void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out
 }
 
 std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variables_map& vm, const SettingValues& values,
-                                         const RunBudgets& budgets) {
+                                         const RunBudgets& budgets, RunMemo* memo) {
     if (vm.count("trace")) return trace_source(o.trace, budgets.trace_limits(), budgets.input_limits());
     const Settings& settings = values.settings();
     if (is_bullet_scene(o.scene)) {
@@ -72,7 +72,8 @@ std::unique_ptr<FrameSource> open_source(const RunOptions& o, const po::variable
     spheres.objects = static_cast<std::size_t>(settings.scene.objects);
     spheres.seed = settings.scene.seed;
     spheres.moving_fraction = settings.scene.moving_fraction;
-    return spheres_source(spheres, static_cast<std::size_t>(settings.scene.frames));
+    const auto frames = static_cast<std::size_t>(settings.scene.frames);
+    return memo != nullptr ? memo->scenes.spheres(spheres, frames) : spheres_source(spheres, frames);
 }
 
 class Progress {
@@ -170,7 +171,8 @@ auto within_budget(const RunBudgets& budgets, uint64_t frame, Stage&& stage) {
 }
 
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
-             const std::vector<std::string>& command_line, const RunBudgets& budgets, nlohmann::json* memory_report) {
+             const std::vector<std::string>& command_line, const RunBudgets& budgets, nlohmann::json* memory_report,
+             RunMemo* memo) {
     RunConfig run = describe_run(setup, static_cast<uint32_t>(source.max_objects()), budgets);
     run.source = source.describe();
     run.command_line = command_line;
@@ -191,7 +193,8 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     std::optional<MemoryReport> in_memory;
     if (memory_report != nullptr) in_memory.emplace(*memory_report);
     RunTotals totals(setup.values.settings().run.warmup);
-    FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair, budgets.pair_budget());
+    FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair, budgets.pair_budget(),
+                              memo != nullptr ? memo->pairs : nullptr);
 
     // The later runs of the baselines (--repeat) count as frames too.
     const std::size_t baseline_runs = setup.baselines.empty() ? 1 : setup.values.settings().run.repeat;
@@ -325,8 +328,10 @@ namespace {
 constexpr int kNotAnalytic = -1;
 
 // The run, with option errors pointing at --help.
-// memory_report: the report is kept there (frames and summary), not written.
-int run_checked(int argc, char** argv, bool analytic_only = false, nlohmann::json* memory_report = nullptr) {
+// memory_report: the report is kept there (frames and summary), not written;
+// memo: pairs and scenes kept across runs.
+int run_checked(int argc, char** argv, bool analytic_only = false, nlohmann::json* memory_report = nullptr,
+                RunMemo* memo = nullptr) {
     try {
         RunOptions o;
         const po::variables_map vm = parse_run_options(argc, argv, o);
@@ -356,7 +361,7 @@ int run_checked(int argc, char** argv, bool analytic_only = false, nlohmann::jso
             check_inject_frames(setup.platform.faults, last, [](uint64_t) { return true; },
                                 "--frames " + std::to_string(scene.frames));
         }
-        std::unique_ptr<FrameSource> source = open_source(o, vm, setup.values, budgets);
+        std::unique_ptr<FrameSource> source = open_source(o, vm, setup.values, budgets, memo);
         check_scene_fits(origin, setup.values, source->max_objects(), source->frame_count(), budgets);
         check_inject_frames(setup.platform.faults, source->last_frame(),
                             [&source](uint64_t n) { return source->has_frame(n); }, source->describe());
@@ -364,7 +369,8 @@ int run_checked(int argc, char** argv, bool analytic_only = false, nlohmann::jso
         // Every stage that collects a frame's pairs holds the same budget.
         setup.platform.pair_budget = budgets.pair_budget();
         setup.baselines.set_pair_budget(budgets.pair_budget());
-        return simulate(o, *source, setup, out, report_command_line(argc, argv), budgets, memory_report);
+        if (memo != nullptr) setup.platform.pair_memo = memo->pairs;
+        return simulate(o, *source, setup, out, report_command_line(argc, argv), budgets, memory_report, memo);
     } catch (po::error_with_option_name& e) {
         // boost quotes an unknown option as typed: keep a huge one short.
         const std::string name = e.get_option_name();
@@ -393,7 +399,7 @@ int run_command(int argc, char** argv) {
 }
 
 std::optional<int> run_analytic_in_process(const std::vector<std::string>& args, std::string& errors,
-                                           nlohmann::json* report) {
+                                           nlohmann::json* report, RunMemo* memo) {
     std::vector<std::string> words{"run"};  // as main passes a command its words
     words.insert(words.end(), args.begin(), args.end());
     std::vector<char*> argv;
@@ -404,7 +410,7 @@ std::optional<int> run_analytic_in_process(const std::vector<std::string>& args,
     std::streambuf* const previous = std::cerr.rdbuf(captured.rdbuf());
     int status = 0;
     try {
-        status = exit_status_of("cdvp run", [&] { return run_checked(static_cast<int>(words.size()), argv.data(), true, report); });
+        status = exit_status_of("cdvp run", [&] { return run_checked(static_cast<int>(words.size()), argv.data(), true, report, memo); });
     } catch (...) {
         std::cerr.rdbuf(previous);
         throw;

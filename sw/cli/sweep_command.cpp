@@ -56,8 +56,12 @@ void print_summary(const std::string& out, const SweepOutcome& outcome) {
 
 int run_sweep_command(SweepSpec spec) {
     spec.trace_limits = spooled_trace_limits();
+    RunMemo memo;  // scenes and pairs the points share
     if (spec.cdvp_binary.empty()) {
-        spec.in_process = run_analytic_in_process;  // analytic points need no child
+        // Analytic points need no child.
+        spec.in_process = [&memo](const std::vector<std::string>& args, std::string& errors, nlohmann::json* report) {
+            return run_analytic_in_process(args, errors, report, &memo);
+        };
         keep_freed_memory();
     }
     SweepProgress progress(!spec.quiet && isatty(STDERR_FILENO));

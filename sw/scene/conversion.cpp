@@ -1,6 +1,7 @@
 #include "sw/scene/conversion.h"
 
-#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace cdvp {
@@ -10,20 +11,36 @@ namespace cdvp {
 // Only IEEE comparisons are used, so denormals are handled as long as the
 // process does not run with flush-to-zero / denormals-are-zero enabled.
 
-float round_down_to_float(double v) {
-    float f = static_cast<float>(v);
-    if (static_cast<double>(f) > v) {
-        f = std::nextafterf(f, -std::numeric_limits<float>::infinity());
-    }
+namespace {
+
+// One float step towards +inf (up) or -inf (down) when `needed`, as
+// nextafterf takes it, without a branch (a scene's conversion is six of
+// these a box, and whether a bound needs its step is a coin toss): away from
+// zero the bits step by one in the float's order; from either zero to the
+// smallest denormal of the sign stepped to. Never asked of NaN or of the end
+// it would step past.
+inline float step_if(float f, bool needed, bool up) {
+    uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    const bool negative = (bits >> 31) != 0;
+    const bool zero = (bits << 1) == 0;
+    const uint32_t away = negative == up ? bits - 1 : bits + 1;  // towards zero on a negative step up or positive step down
+    const uint32_t stepped = zero ? (up ? 0x00000001u : 0x80000001u) : away;
+    bits = needed ? stepped : bits;
+    std::memcpy(&f, &bits, sizeof f);
     return f;
 }
 
+}  // namespace
+
+float round_down_to_float(double v) {
+    const float f = static_cast<float>(v);
+    return step_if(f, static_cast<double>(f) > v, false);
+}
+
 float round_up_to_float(double v) {
-    float f = static_cast<float>(v);
-    if (static_cast<double>(f) < v) {
-        f = std::nextafterf(f, std::numeric_limits<float>::infinity());
-    }
-    return f;
+    const float f = static_cast<float>(v);
+    return step_if(f, static_cast<double>(f) < v, true);
 }
 
 FloatBox to_float_box(const Box& b) {

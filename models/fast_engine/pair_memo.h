@@ -1,0 +1,54 @@
+// PairFinder's answers kept across runs in one process: a sweep of analytic
+// points asks for the same scene's pairs again at every m, clock and bus
+// (none of which changes them). Keyed by the number format and the six
+// coordinate memories' words themselves (a hash finds the entry, the words
+// are compared whole), so a hit is exact by construction; bounded in bytes,
+// the least recently used entries going first.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <list>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "models/fast_engine/pair_finder.h"
+
+namespace cdvp {
+
+class PairMemo {
+public:
+    static constexpr std::size_t kDefaultBytes = std::size_t{256} << 20;
+    explicit PairMemo(std::size_t max_bytes = kDefaultBytes) : max_bytes_(max_bytes) {}
+
+    // finder.find(objects, words, out), from the memo when it holds the same
+    // words in the same format; a search that passes the finder's budget
+    // throws as finder.find does and is not kept.
+    void find(PairFinder& finder, uint32_t objects, const CoordinateWords& words, PairList& out);
+
+    std::size_t hits() const { return hits_; }
+    std::size_t misses() const { return misses_; }
+    std::size_t bytes() const { return bytes_; }
+
+private:
+    struct Entry {
+        uint64_t key = 0;  // hash() of the rest
+        std::string format;
+        uint32_t objects = 0;
+        std::vector<uint32_t> words;  // the six columns one after another
+        PairList pairs;
+        std::size_t bytes() const { return words.size() * sizeof(uint32_t) + pairs.size() * sizeof(IndexPair) + 128; }
+    };
+    using Entries = std::list<Entry>;  // most recently used first
+    static uint64_t hash(const std::string& format, uint32_t objects, const CoordinateWords& words);
+    static bool same(const Entry& entry, const std::string& format, uint32_t objects, const CoordinateWords& words);
+    void evict_to(std::size_t bytes);
+
+    std::size_t max_bytes_;
+    std::size_t bytes_ = 0, hits_ = 0, misses_ = 0;
+    Entries entries_;
+    std::unordered_multimap<uint64_t, Entries::iterator> by_hash_;
+};
+
+}  // namespace cdvp
