@@ -155,13 +155,18 @@ bool names_a_path(const std::string& name) {
 std::string boards_directory() {
     const char* env = std::getenv("CDVP_BOARDS");
     if (env != nullptr && env[0] != '\0') return env;
-    std::error_code ec;
-    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        const std::filesystem::path installed = executable.parent_path() / CDVP_INSTALLED_BOARDS_DIR;
-        if (std::filesystem::is_directory(installed, ec)) return installed.lexically_normal().string();
-    }
-    return CDVP_BOARDS_DIR;
+    // Beside the executable once installed, else the source tree's: the
+    // executable does not move while it runs, so this is looked up once.
+    static const std::string beside_executable = [] {
+        std::error_code ec;
+        const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", ec);
+        if (!ec) {
+            const std::filesystem::path installed = executable.parent_path() / CDVP_INSTALLED_BOARDS_DIR;
+            if (std::filesystem::is_directory(installed, ec)) return installed.lexically_normal().string();
+        }
+        return std::string(CDVP_BOARDS_DIR);
+    }();
+    return beside_executable;
 }
 
 std::vector<std::string> board_preset_names() {
@@ -215,9 +220,41 @@ SettingValues BoardPreset::applied() const {
     return settings;
 }
 
+// The file as last read: a preset read again is taken from here while its
+// path names the same file unchanged (device, inode, size, modification and
+// change times); a sweep reads its preset once a point.
+struct PresetFile {
+    std::string path;
+    dev_t device = 0;
+    ino_t inode = 0;
+    off_t size = 0;
+    timespec modified{}, changed{};
+    bool same(const std::string& p, const struct stat& s) const {
+        return p == path && s.st_dev == device && s.st_ino == inode && s.st_size == size &&
+               s.st_mtim.tv_sec == modified.tv_sec && s.st_mtim.tv_nsec == modified.tv_nsec &&
+               s.st_ctim.tv_sec == changed.tv_sec && s.st_ctim.tv_nsec == changed.tv_nsec;
+    }
+};
+
 BoardPreset load_board_preset(const std::string& name) {
+    static constexpr std::size_t kKept = 16;
+    static std::vector<std::pair<PresetFile, BoardPreset>> kept;
+    const std::string path = board_preset_path(name);
+    struct stat status {};
+    const bool regular = stat(path.c_str(), &status) == 0 && S_ISREG(status.st_mode);
+    if (regular) {
+        for (const auto& [file, preset] : kept) {
+            if (file.same(path, status)) return preset;
+        }
+    }
     try {
-        return read_board_preset(name);
+        BoardPreset preset = read_board_preset(name);
+        if (regular) {
+            if (kept.size() == kKept) kept.erase(kept.begin());
+            kept.push_back({PresetFile{path, status.st_dev, status.st_ino, status.st_size, status.st_mtim, status.st_ctim},
+                            preset});
+        }
+        return preset;
     } catch (const InputError& e) {
         // One line whatever the file holds: keys, strings and paths may hold control characters.
         throw InputError(printable(e.what()));

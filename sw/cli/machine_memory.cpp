@@ -69,13 +69,21 @@ uint64_t cgroup_memory_limit(const std::string& proc_self_cgroup, const std::str
 }
 
 MachineMemory machine_memory() {
+    // The machine's memory and the cgroup's limit, read once a process (a
+    // sweep asks before each of its points).
+    static const MachineMemory machine = [] {
+        MachineMemory read;
+        const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+        if (pages > 0 && page > 0) read.physical = static_cast<uint64_t>(pages) * static_cast<uint64_t>(page);
+        std::ifstream in("/proc/self/cgroup");
+        std::stringstream text;
+        text << in.rdbuf();
+        read.cgroup = cgroup_memory_limit(text.str(), "/sys/fs/cgroup");
+        return read;
+    }();
     MachineMemory memory;
-    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-    if (pages > 0 && page > 0) memory.physical = static_cast<uint64_t>(pages) * static_cast<uint64_t>(page);
-    std::ifstream in("/proc/self/cgroup");
-    std::stringstream text;
-    text << in.rdbuf();
-    memory.cgroup = cgroup_memory_limit(text.str(), "/sys/fs/cgroup");
+    memory.physical = machine.physical;
+    memory.cgroup = machine.cgroup;
     rlimit limit{};
     if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) memory.address_space = limit.rlim_cur;
     if (const char* share = std::getenv(kMemoryShareVariable); share != nullptr) {

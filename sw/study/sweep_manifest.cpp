@@ -195,8 +195,7 @@ std::optional<SweepDifference> difference(const Manifest& existing, const Manife
     }
     if (existing.run_options != wanted.run_options) return other("other options given to every point");
     if (existing.record != wanted.record) {
-        return other(std::string(to_string(existing.record)) + " records, not " + to_string(wanted.record) +
-                     " (--record)");
+        return other(std::string("--record ") + to_string(existing.record) + ", not " + to_string(wanted.record));
     }
     if (existing.inputs.size() != wanted.inputs.size()) return other("other input files");
     for (std::size_t k = 0; k < existing.inputs.size(); ++k) {
