@@ -82,15 +82,23 @@ SynthesisTable SynthesisTable::parse(const std::string& csv, const std::string& 
         table.rows_.push_back(row);
     }
     if (number == 0) throw std::invalid_argument(origin + ": empty; expected the header " + kHeader);
+    for (std::size_t k = 0; k < table.rows_.size(); ++k) {
+        const Row& row = table.rows_[k];
+        table.by_key_[key(row.family, row.piece, row.format)].push_back(k);
+    }
+    for (auto& [name, rows] : table.by_key_) {
+        std::stable_sort(rows.begin(), rows.end(),
+                         [&](std::size_t a, std::size_t b) { return table.rows_[a].m < table.rows_[b].m; });
+    }
     return table;
 }
 
 const SynthesisTable::Row* SynthesisTable::find(const std::string& family, const std::string& piece,
                                                 const std::string& format) const {
-    for (const Row& row : rows_) {
-        if (row.family == family && row.piece == piece && row.format == format) return &row;
-    }
-    return nullptr;
+    const auto rows = by_key_.find(key(family, piece, format));
+    if (rows == by_key_.end()) return nullptr;
+    // The first in the file, as a scan would find it.
+    return &rows_[*std::min_element(rows->second.begin(), rows->second.end())];
 }
 
 Resources SynthesisTable::lane(const std::string& family, const std::string& format) const {
@@ -111,10 +119,12 @@ Resources SynthesisTable::by_m(const std::string& family, const std::string& pie
                                uint32_t m) const {
     const Row* below = nullptr;
     const Row* above = nullptr;
-    for (const Row& row : rows_) {
-        if (row.family != family || row.piece != piece || row.format != format) continue;
-        if (row.m <= m && (below == nullptr || row.m > below->m)) below = &row;
-        if (row.m >= m && (above == nullptr || row.m < above->m)) above = &row;
+    if (const auto rows = by_key_.find(key(family, piece, format)); rows != by_key_.end()) {
+        for (const std::size_t k : rows->second) {
+            const Row& row = rows_[k];
+            if (row.m <= m && (below == nullptr || row.m > below->m)) below = &row;
+            if (row.m >= m && (above == nullptr || row.m < above->m)) above = &row;
+        }
     }
     if (below == nullptr || above == nullptr) {
         throw std::invalid_argument("no synthesis of the " + piece + (format == "-" ? "" : " (" + format + ")") +

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -59,7 +60,13 @@ private:
     const Row* find(const std::string& family, const std::string& piece, const std::string& format) const;
     Resources by_m(const std::string& family, const std::string& piece, const std::string& format,
                    uint32_t m) const;
+    static std::string key(const std::string& family, const std::string& piece, const std::string& format) {
+        return family + '\n' + piece + '\n' + format;
+    }
     std::vector<Row> rows_;
+    // The rows of each family, piece and format, by m ascending (indices into
+    // rows_): a device fit looks up every piece at every m.
+    std::map<std::string, std::vector<std::size_t>> by_key_;
 };
 
 // A device's capacities, with where they come from.

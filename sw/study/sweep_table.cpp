@@ -139,11 +139,15 @@ void put_config(const nlohmann::json& report, RowBuilder& out) {
     }
 }
 
+// Which result columns a row keeps.
+using ColumnFilter = bool (*)(const std::string& column);
+bool every_column(const std::string&) { return true; }
+
 // Medians over the frames from `first` on of every number a frame reports.
-void put_frame_medians(const nlohmann::json& frames, std::size_t first, RowBuilder& out) {
+void put_frame_medians(const nlohmann::json& frames, std::size_t first, RowBuilder& out, ColumnFilter keep) {
     if (frames.empty()) return;
     for (const auto& [key, item] : frames[0].items()) {
-        if (!item.is_number() || key == "frame") continue;
+        if (!item.is_number() || key == "frame" || !keep("median_" + key)) continue;
         std::vector<double> values;
         for (std::size_t k = first; k < frames.size(); ++k) values.push_back(frames[k].at(key).get<double>());
         out.put("median_" + key, number_text(median(values)));
@@ -154,31 +158,33 @@ void put_frame_medians(const nlohmann::json& frames, std::size_t first, RowBuild
 // the simulator's means, p50, p99 and maxima (simulated time plain, the
 // simulator's _native_ns), and the load average at the end; none for a
 // report of no frames, as no frame medians either.
-void put_summary_figures(const nlohmann::json& summary, bool any_frame, RowBuilder& out) {
+void put_summary_figures(const nlohmann::json& summary, bool any_frame, RowBuilder& out, ColumnFilter keep) {
     for (const auto& [key, item] : summary.items()) {
         const bool figure = any_frame && (key.rfind("mean_", 0) == 0 || key.rfind("p50_", 0) == 0 ||
                                           key.rfind("p99_", 0) == 0 || key.rfind("max_", 0) == 0);
-        if (figure && item.is_number()) out.put(key, number_text(item.get<double>()));
+        if (figure && item.is_number() && keep(key)) out.put(key, number_text(item.get<double>()));
     }
-    if (summary.contains("load_average_end")) out.put("load_average_end", value_text(summary["load_average_end"]));
+    if (summary.contains("load_average_end") && keep("load_average_end")) {
+        out.put("load_average_end", value_text(summary["load_average_end"]));
+    }
 }
 
 // Each baseline's figures on the modelled host, as the report summarises
 // them over every --repeat run.
-void put_baselines(const ReportSummary& summary, RowBuilder& out) {
+void put_baselines(const ReportSummary& summary, RowBuilder& out, ColumnFilter keep) {
     for (const auto& [name, b] : summary.baselines) {
-        out.put(name + "_mean_host_ns", number_text(b.host_ns.mean));
-        out.put(name + "_p50_host_ns", number_text(b.host_ns.p50));
-        out.put(name + "_p99_host_ns", number_text(b.host_ns.p99));
-        out.put(name + "_max_host_ns", number_text(b.host_ns.max));
-        out.put(name + "_host_factor", number_text(b.host_factor));
-        out.put(name + "_speedup", number_text(b.speedup));
+        const std::pair<const char*, double> figures[] = {
+            {"_mean_host_ns", b.host_ns.mean}, {"_p50_host_ns", b.host_ns.p50}, {"_p99_host_ns", b.host_ns.p99},
+            {"_max_host_ns", b.host_ns.max},   {"_host_factor", b.host_factor}, {"_speedup", b.speedup}};
+        for (const auto& [suffix, value] : figures) {
+            if (keep(name + suffix)) out.put(name + suffix, number_text(value));
+        }
     }
 }
 
 // The figures of a report: its frame count, the medians over the frames after
 // the warm-up, the summary's figures and each baseline's.
-void put_results(const nlohmann::json& report, const Point& point, RowBuilder& out) {
+void put_results(const nlohmann::json& report, const Point& point, RowBuilder& out, ColumnFilter keep) {
     const auto& frames = report.at("frames");
     const nlohmann::json summary = report.value("summary", nlohmann::json::object());
     // Steady state: warm-up frames are left out (the incremental broad
@@ -189,9 +195,9 @@ void put_results(const nlohmann::json& report, const Point& point, RowBuilder& o
     out.put("report_frames", std::to_string(frames.size()));
     out.put("frames_in_medians", std::to_string(frames.size() - first));
     if (summary.contains("too_few_frames")) out.put("too_few_frames", value_text(summary["too_few_frames"]));
-    put_frame_medians(frames, first, out);
-    put_summary_figures(summary, !frames.empty(), out);
-    if (!frames.empty()) put_baselines(summary_from_json(summary, "point " + point.id + "'s report"), out);
+    put_frame_medians(frames, first, out, keep);
+    put_summary_figures(summary, !frames.empty(), out, keep);
+    if (!frames.empty()) put_baselines(summary_from_json(summary, "point " + point.id + "'s report"), out, keep);
 }
 
 // What a compact row keeps of a report's figures: the frame counts, the
@@ -214,7 +220,7 @@ PointRow report_row(const Grid& grid, const Point& point, const std::string& rep
     const nlohmann::json report = nlohmann::json::parse(report_text);
     RowBuilder out{axis_row(grid, point, PointStatus::kOk, ""), {}};
     put_config(report, out);
-    put_results(report, point, out);
+    put_results(report, point, out, every_column);
     out.put("point_wall_s", number_text(wall_seconds));
     const std::string report_sha256 = sha256_hex(report_text);
     out.row[kChecksumColumn] = row_checksum(out.row, &report_sha256);
@@ -222,12 +228,8 @@ PointRow report_row(const Grid& grid, const Point& point, const std::string& rep
 }
 
 PointRow compact_row(const Grid& grid, const Point& point, const nlohmann::json& report, double wall_seconds) {
-    RowBuilder all{{}, {}};
-    put_results(report, point, all);
     RowBuilder out{axis_row(grid, point, PointStatus::kOk, ""), {}};
-    for (const std::string& column : all.order) {
-        if (is_compact_result(column)) out.put(column, all.row.at(column));
-    }
+    put_results(report, point, out, is_compact_result);
     out.put("point_wall_s", number_text(wall_seconds));
     out.row[kChecksumColumn] = row_checksum(out.row, nullptr);
     return {out.order, out.row};
