@@ -34,6 +34,9 @@ public:
     virtual bool has_frame(uint64_t number) const = 0;
     // For the report: what the frames come from.
     virtual std::string describe() const = 0;
+    // The float32 boxes (to_float_boxes) of the frame next() gave last when
+    // the source keeps them converted (a replayed scene), else null.
+    virtual const std::vector<FloatBox>* float_boxes() const { return nullptr; }
 };
 
 // A frame may hold as many boxes as the board's address map has room for.

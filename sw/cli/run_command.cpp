@@ -251,7 +251,11 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     std::optional<Frame> in_flight;
     std::vector<FloatBox> in_flight_boxes;
     while (std::optional<Frame> frame = source.next()) {
-        std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
+        // Converted here, unless the source keeps its frames converted.
+        const std::vector<FloatBox>* kept = source.float_boxes();
+        std::vector<FloatBox> converted;
+        if (kept == nullptr || platform.pipelined()) converted = kept ? *kept : to_float_boxes(frame->boxes);
+        const std::vector<FloatBox>& boxes = converted.empty() && kept != nullptr ? *kept : converted;
         FrameFault fault;
         const auto sim_start = std::chrono::steady_clock::now();
         const FrameResult* frame_result = platform.pipelined()
@@ -273,7 +277,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
             }
         }
         in_flight = std::move(frame);
-        in_flight_boxes = std::move(boxes);
+        in_flight_boxes = std::move(converted);
     }
     if (in_flight) {
         FrameFault fault;

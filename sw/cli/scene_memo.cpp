@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "sw/scene/conversion.h"
+
 namespace cdvp {
 
 namespace {
@@ -15,9 +17,12 @@ std::string key_of(const BouncingSpheresConfig& c, std::size_t frames) {
     return text;
 }
 
+// The frames and their float32 boxes, once converted.
 std::size_t bytes_of(const std::vector<Frame>& frames) {
     std::size_t bytes = 0;
-    for (const Frame& f : frames) bytes += sizeof(Frame) + f.ids.size() * sizeof(uint64_t) + f.boxes.size() * sizeof(Box);
+    for (const Frame& f : frames) {
+        bytes += sizeof(Frame) + f.ids.size() * sizeof(uint64_t) + f.boxes.size() * (sizeof(Box) + sizeof(FloatBox));
+    }
     return bytes;
 }
 
@@ -42,6 +47,14 @@ public:
         return false;
     }
     std::string describe() const override { return scene_->description; }
+    const std::vector<FloatBox>* float_boxes() const override {
+        if (next_ == 0) return nullptr;
+        std::vector<std::vector<FloatBox>>& converted = scene_->float_boxes;
+        converted.resize(scene_->frames.size());
+        std::vector<FloatBox>& boxes = converted[next_ - 1];
+        if (boxes.size() != scene_->frames[next_ - 1].boxes.size()) boxes = to_float_boxes(scene_->frames[next_ - 1].boxes);
+        return &boxes;
+    }
 
 private:
     std::shared_ptr<const Scene> scene_;  // at least one frame

@@ -36,6 +36,8 @@ private:
         std::vector<Frame> frames;
         std::size_t max_objects = 0;
         std::string description;
+        // Each frame's float32 boxes, converted when first asked for.
+        mutable std::vector<std::vector<FloatBox>> float_boxes;
     };
     class Replay;
     class Recording;

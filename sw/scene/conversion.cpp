@@ -31,33 +31,34 @@ inline float step_if(float f, bool needed, bool up) {
     return f;
 }
 
-}  // namespace
-
-float round_down_to_float(double v) {
+inline float down(double v) {
     const float f = static_cast<float>(v);
     return step_if(f, static_cast<double>(f) > v, false);
 }
 
-float round_up_to_float(double v) {
+inline float up(double v) {
     const float f = static_cast<float>(v);
     return step_if(f, static_cast<double>(f) < v, true);
 }
 
+}  // namespace
+
+float round_down_to_float(double v) { return down(v); }
+
+float round_up_to_float(double v) { return up(v); }
+
 FloatBox to_float_box(const Box& b) {
     FloatBox f;
     for (int axis = 0; axis < 3; ++axis) {
-        f.min[axis] = round_down_to_float(b.min[axis]);
-        f.max[axis] = round_up_to_float(b.max[axis]);
+        f.min[axis] = down(b.min[axis]);
+        f.max[axis] = up(b.max[axis]);
     }
     return f;
 }
 
 std::vector<FloatBox> to_float_boxes(const std::vector<Box>& boxes) {
-    std::vector<FloatBox> out;
-    out.reserve(boxes.size());
-    for (const Box& b : boxes) {
-        out.push_back(to_float_box(b));
-    }
+    std::vector<FloatBox> out(boxes.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) out[k] = to_float_box(boxes[k]);
     return out;
 }
 

@@ -5,8 +5,10 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 namespace cdvp {
 namespace {
@@ -76,6 +78,37 @@ TEST(Conversion, TinyValues) {
     expect_same_float(kDenormMin, round_up_to_float(1e-50));
     expect_same_float(-kDenormMin, round_down_to_float(-1e-50));
     expect_same_float(-0.0f, round_up_to_float(-1e-50));
+}
+
+// The step taken without nextafterf is nextafterf's: doubles of every
+// magnitude and sign, near float boundaries, zeros, denormals and the ends.
+TEST(Conversion, StepsAsNextafterfDoes) {
+    const auto down_reference = [](double v) {
+        float f = static_cast<float>(v);
+        return static_cast<double>(f) > v ? std::nextafterf(f, -kInfF) : f;
+    };
+    const auto up_reference = [](double v) {
+        float f = static_cast<float>(v);
+        return static_cast<double>(f) < v ? std::nextafterf(f, kInfF) : f;
+    };
+    std::vector<double> values{0.0, -0.0, 1e-46, -1e-46, 1e-300, -1e-300, 0x1p-149, -0x1p-149, 0x1.8p-149,
+                               -0x1.8p-149, FLT_MIN, -FLT_MIN, FLT_MAX, -FLT_MAX, 3.5e38, -3.5e38, 1e300, -1e300,
+                               kInf, -kInf, 1.0 / 3, -1.0 / 3, 16777217.0, -16777217.0};
+    std::mt19937_64 rng(7);
+    std::uniform_int_distribution<uint64_t> bits;
+    for (int k = 0; k < 200000; ++k) {
+        double v;
+        const uint64_t b = bits(rng);
+        std::memcpy(&v, &b, sizeof v);
+        if (!std::isnan(v)) values.push_back(v);
+        values.push_back(std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng), k % 300 - 150));
+    }
+    for (const double v : values) {
+        const float down = round_down_to_float(v), up = round_up_to_float(v);
+        const float down_expected = down_reference(v), up_expected = up_reference(v);
+        ASSERT_EQ(std::memcmp(&down, &down_expected, sizeof down), 0) << std::hexfloat << v;
+        ASSERT_EQ(std::memcmp(&up, &up_expected, sizeof up), 0) << std::hexfloat << v;
+    }
 }
 
 TEST(Conversion, BoxMinsDownMaxesUp) {

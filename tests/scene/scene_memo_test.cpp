@@ -2,6 +2,8 @@
 // setting, keeps nothing of a run that stopped early and stays in its bound.
 #include "sw/cli/scene_memo.h"
 
+#include "sw/scene/conversion.h"
+
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -70,6 +72,23 @@ TEST(SceneMemo, ReplaysTheGeneratedFramesAndTellsSettingsApart) {
     expect_same(again, fresh);
     replay->rewind();
     expect_same(run(*replay), fresh);
+    // A replay keeps each frame's float32 boxes converted; a generator converts none.
+    replay->rewind();
+    EXPECT_EQ(replay->float_boxes(), nullptr) << "no frame given yet";
+    for (std::size_t k = 0; k < fresh.size(); ++k) {
+        ASSERT_TRUE(replay->next());
+        const std::vector<FloatBox>* boxes = replay->float_boxes();
+        ASSERT_NE(boxes, nullptr);
+        const std::vector<FloatBox> expected = to_float_boxes(fresh[k].boxes);
+        ASSERT_EQ(boxes->size(), expected.size());
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            for (int axis = 0; axis < 3; ++axis) {
+                EXPECT_EQ((*boxes)[i].min[axis], expected[i].min[axis]);
+                EXPECT_EQ((*boxes)[i].max[axis], expected[i].max[axis]);
+            }
+        }
+    }
+    EXPECT_EQ(spheres_source(crowded(1), 6)->float_boxes(), nullptr);
     // Any other setting is another scene.
     BouncingSpheresConfig other = crowded(1);
     other.restitution = 0.5;
