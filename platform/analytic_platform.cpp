@@ -43,15 +43,14 @@ AnalyticPlatform::AnalyticPlatform(const PlatformConfig& config, uint32_t capaci
       pair_format_(config.driver.pair_format),
       buffer_depth_(std::max<uint32_t>(config.board.collector.buffer_depth, 1)) {
     if (!config.faults.empty()) throw std::invalid_argument("the analytic level has no engine to inject faults into");
+    if (config.board.box_banks > 1) pipeline_.emplace(frame_);
 }
 
 bool AnalyticPlatform::exact_by_bound(const FrameResult& result) const {
     return result.pairs.size() <= stall_free_pairs_ && result.phases.overflow_pauses == 0;
 }
 
-const FrameResult* AnalyticPlatform::try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number,
-                                                   FrameFault& fault) {
-    (void)number;
+uint64_t AnalyticPlatform::prepare(const std::vector<FloatBox>& boxes, PairList& pairs) {
     if (boxes.size() > capacity_) {
         throw std::invalid_argument("frame of " + std::to_string(boxes.size()) +
                                     " boxes exceeds the board's capacity of " + std::to_string(capacity_));
@@ -65,47 +64,107 @@ const FrameResult* AnalyticPlatform::try_run_frame(const std::vector<FloatBox>& 
         quantiser.write_column(boxes, c, words_[c].data());
         view[c] = words_[c].data();
     }
-    fault = FrameFault{};
-    // The boxes whose words differ from what the board holds (every one when unknown).
+    // The boxes whose words differ from what the host's bank holds (every one when unknown).
+    Bank& bank = banks_[host_bank_];
     uint64_t changed = objects;
-    if (shadow_valid_) {
+    if (bank.valid) {
         changed = 0;
         for (uint32_t i = 0; i < objects; ++i) {
-            bool same = i < shadow_objects_;
-            for (uint32_t c = 0; same && c < kCoordinates; ++c) same = words_[c][i] == shadow_[c][i];
+            bool same = i < bank.objects;
+            for (uint32_t c = 0; same && c < kCoordinates; ++c) same = words_[c][i] == bank.words[c][i];
             changed += !same;
         }
     }
     try {
         if (memo_) {
-            memo_->find(finder_, objects, view, result_.pairs);
+            memo_->find(finder_, objects, view, pairs);
         } else {
-            finder_.find(objects, view, result_.pairs);
+            finder_.find(objects, view, pairs);
         }
-    } catch (const PairBudgetExceeded& e) {
-        shadow_valid_ = false;  // the driver fails the frame and forgets the board's words
-        fault.kind = FrameFault::Kind::kPairBudget;
-        fault.message = e.what();
-        fault.pairs_found = e.found();
-        return nullptr;
+    } catch (const PairBudgetExceeded&) {
+        for (Bank& b : banks_) b.valid = false;  // the driver fails the frame and forgets the board's words
+        throw;
     }
     // In the order the board finds them, as the engines give them.
     if (tiles_.tiled() && objects > tiles_.boxes) {
-        SweepSchedule(m_, tiles_, objects).order_by_block(result_.pairs, by_block_, block_ends_);
-    }
-    result_.phases = frame_.estimate(objects, result_.pairs, changed);
-    // A bitmap read-back hands each segment's pairs over sorted by row.
-    if (pair_format_ == PairFormat::kBitmap) {
-        for (std::size_t k = 0; k < result_.pairs.size(); k += buffer_depth_) {
-            const auto first = result_.pairs.begin() + static_cast<std::ptrdiff_t>(k);
-            std::sort(first, first + static_cast<std::ptrdiff_t>(std::min<std::size_t>(buffer_depth_, result_.pairs.size() - k)));
-        }
+        SweepSchedule(m_, tiles_, objects).order_by_block(pairs, by_block_, block_ends_);
     }
     if (objects > 0) {
-        for (uint32_t c = 0; c < kCoordinates; ++c) shadow_[c].assign(words_[c].begin(), words_[c].end());
-        shadow_objects_ = objects;
-        shadow_valid_ = true;
+        for (uint32_t c = 0; c < kCoordinates; ++c) bank.words[c].assign(words_[c].begin(), words_[c].end());
+        bank.objects = objects;
+        bank.valid = true;
     }
+    return changed;
+}
+
+void AnalyticPlatform::order_as_read_back(PairList& pairs) const {
+    if (pair_format_ != PairFormat::kBitmap) return;
+    for (std::size_t k = 0; k < pairs.size(); k += buffer_depth_) {
+        const auto first = pairs.begin() + static_cast<std::ptrdiff_t>(k);
+        std::sort(first, first + static_cast<std::ptrdiff_t>(std::min<std::size_t>(buffer_depth_, pairs.size() - k)));
+    }
+}
+
+namespace {
+// A pair budget's refusal as the platform reports it.
+void budget_fault(const PairBudgetExceeded& e, FrameFault& fault) {
+    fault.kind = FrameFault::Kind::kPairBudget;
+    fault.message = e.what();
+    fault.pairs_found = e.found();
+}
+}  // namespace
+
+const FrameResult* AnalyticPlatform::try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number,
+                                                   FrameFault& fault) {
+    (void)number;
+    if (pipeline_) throw std::logic_error("try_run_frame: the board has two box banks; use try_submit_frame");
+    fault = FrameFault{};
+    uint64_t changed = 0;
+    try {
+        changed = prepare(boxes, result_.pairs);
+    } catch (const PairBudgetExceeded& e) {
+        budget_fault(e, fault);
+        return nullptr;
+    }
+    result_.phases = frame_.estimate(static_cast<uint32_t>(boxes.size()), result_.pairs, changed);
+    order_as_read_back(result_.pairs);
+    return &result_;
+}
+
+const FrameResult* AnalyticPlatform::try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number,
+                                                      FrameFault& fault) {
+    (void)number;
+    if (!pipeline_) throw std::logic_error("try_submit_frame: the board has one box bank; use try_run_frame");
+    fault = FrameFault{};
+    PairList pairs;
+    uint64_t changed = 0;
+    try {
+        changed = prepare(boxes, pairs);
+    } catch (const PairBudgetExceeded& e) {
+        budget_fault(e, fault);  // as the driver does, the frame in flight fails with it
+        pipeline_.emplace(frame_);
+        in_flight_pairs_.clear();
+        return nullptr;
+    }
+    host_bank_ = 1 - host_bank_;  // START hands the bank over
+    const std::optional<FramePhases> finished = pipeline_->submit(static_cast<uint32_t>(boxes.size()), pairs, changed);
+    if (finished) {
+        result_.pairs.swap(in_flight_pairs_);
+        result_.phases = *finished;
+        order_as_read_back(result_.pairs);
+    }
+    in_flight_pairs_ = std::move(pairs);
+    return finished ? &result_ : nullptr;
+}
+
+const FrameResult* AnalyticPlatform::try_finish_frames(FrameFault& fault) {
+    fault = FrameFault{};
+    const std::optional<FramePhases> finished = pipeline_ ? pipeline_->finish() : std::nullopt;
+    if (!finished) return nullptr;
+    result_.pairs.swap(in_flight_pairs_);
+    in_flight_pairs_.clear();
+    result_.phases = *finished;
+    order_as_read_back(result_.pairs);
     return &result_;
 }
 

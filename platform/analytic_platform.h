@@ -9,10 +9,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "models/fast_engine/pair_finder.h"
 #include "platform/driver/analytic_frame.h"
+#include "platform/driver/analytic_pipeline.h"
 #include "platform/host_cpu.h"
 #include "platform/virtual_board.h"
 
@@ -31,14 +33,27 @@ public:
     // As VirtualBoard::try_run_frame: the frame's result, or null with fault
     // set (only a pair budget's refusal: nothing here can fault).
     const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    // Frames pipelined on a board with two box banks (AnalyticPipeline), as
+    // VirtualBoard's: submit a frame and get the one before it, finished (null
+    // for the first, with fault empty); finish the frame in flight.
+    bool pipelined() const { return pipeline_.has_value(); }
+    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    const FrameResult* try_finish_frames(FrameFault& fault);
     const BusTiming& bus_timing() const { return *bus_; }
-    // Whether every phase of a frame this platform timed is exact by bound,
+    // Whether every phase of a frame this platform timed one at a time is exact by bound,
     // not by estimate: its pairs and a full row of lane hits fit the pair
     // FIFO together (so the FIFO never pushes back) and the pair buffer took
     // them in one segment (docs/analytic.md).
     bool exact_by_bound(const FrameResult& result) const;
 
 private:
+    // The frame's words into words_ and its pairs into pairs (board order);
+    // the boxes whose words differ from what its bank holds. Throws
+    // PairBudgetExceeded as the finder does.
+    uint64_t prepare(const std::vector<FloatBox>& boxes, PairList& pairs);
+    // A bitmap read-back hands each segment's pairs over sorted by row.
+    void order_as_read_back(PairList& pairs) const;
+
     uint32_t capacity_;
     uint64_t stall_free_pairs_;  // FIFO depth less one row of hits (2m - 1 lanes)
     NumberFormat format_;
@@ -54,10 +69,17 @@ private:
     PairList by_block_;                 // scratch: a tiled board's order
     std::vector<uint64_t> block_ends_;
     FrameResult result_;
-    // The words the board holds from the last frame, for delta uploads (as the driver keeps them).
-    std::vector<uint32_t> shadow_[kCoordinates];
-    uint32_t shadow_objects_ = 0;
-    bool shadow_valid_ = false;
+    // The words each box bank holds from the last frame uploaded into it,
+    // for delta uploads (as the driver keeps them); the host's bank.
+    struct Bank {
+        std::vector<uint32_t> words[kCoordinates];
+        uint32_t objects = 0;
+        bool valid = false;
+    };
+    Bank banks_[2];
+    uint32_t host_bank_ = 0;
+    std::optional<AnalyticPipeline> pipeline_;  // two box banks
+    PairList in_flight_pairs_;
 };
 
 }  // namespace cdvp

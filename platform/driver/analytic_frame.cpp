@@ -75,12 +75,16 @@ SimTime AnalyticFrame::chain_fs(double bus_ns) const {
 SimTime AnalyticFrame::upload_fs(uint32_t objects) const {
     if (objects == 0) return 0;
     if (driver_.transfer != Transfer::kDma) return kCoordinates * write_fs(objects);
+    return chain_fs(upload_bus_ns(objects));
+}
+
+double AnalyticFrame::upload_bus_ns(uint32_t objects) const {
     double chain_ns = 0;
     for (uint32_t c = 0; c < kCoordinates; ++c) {
         chain_ns += bus_.dma_ns(sizeof(DmaDescriptor), Direction::kToBoard);
         chain_ns += bus_.dma_ns(4 * uint64_t{objects}, Direction::kToBoard);
     }
-    return chain_fs(chain_ns);
+    return chain_ns;
 }
 
 // The delta stream in window-sized pieces: one access each by PIO, one

@@ -56,6 +56,7 @@ public:
     uint64_t fifo_stall_estimate(uint64_t slots, uint64_t pairs) const;
 
 private:
+    friend class AnalyticPipeline;  // times pipelined frames with these forms
     // One programmed access of `words` words (one bus transaction's delay).
     SimTime read_fs(uint64_t words = 1) const;
     SimTime write_fs(uint64_t words = 1) const;
@@ -74,6 +75,8 @@ private:
     // A chain's registers, its bus time, the wait, status and clear.
     SimTime chain_fs(double bus_ns) const;
     SimTime upload_fs(uint32_t objects) const;
+    // The full upload's chain on the bus: six descriptors and six arrays.
+    double upload_bus_ns(uint32_t objects) const;
     SimTime delta_fs(uint64_t records) const;
     // words_of(k, count): the k-th read-back's words for its `count` pairs.
     template <class Words>

@@ -109,11 +109,6 @@ void check_analytic_run(const Setup& setup, const RunOptions& o) {
     if (!o.inject.empty()) {
         throw InputError("--inject: " + level + " has no engine to inject faults into; use --fidelity fast or cycle");
     }
-    const Setting& banks = *find_setting("board.box_banks");
-    if (values.settings().board.box_banks > 1 && setup.level == ModelLevel::kAnalytic) {
-        throw InputError(values.where(banks) + ": " + level +
-                         " times one frame at a time; expected 1, or --fidelity fast or cycle to pipeline frames");
-    }
     const Setting& quantum = *find_setting("run.quantum_ns");
     if (values.settings().run.quantum_ns != 0) {
         throw InputError(values.where(quantum) + ": " + level +

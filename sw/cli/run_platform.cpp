@@ -21,8 +21,8 @@ constexpr PhaseField kPhaseFields[] = {{"upload", &FramePhases::upload_ns},     
 
 std::string LevelChoice::words() const {
     if (pipelined) {
-        return "auto: the fast engine on every frame: two box banks pipeline frames, which the analytic level does "
-               "not time";
+        return "auto: the fast engine on every frame: two box banks pipeline frames, and auto measures the analytic "
+               "level one frame at a time (--fidelity analytic times pipelined frames as an estimate)";
     }
     const uint64_t frames = analytic_frames + fast_frames;
     char line[400];
@@ -45,7 +45,7 @@ nlohmann::json LevelChoice::to_json() const {
                              {"analytic_frames", analytic_frames},
                              {"exact_by_bound_frames", bounded_frames},
                              {"fast_frames", fast_frames}};
-    if (pipelined) choice["reason"] = "two box banks: the analytic level does not time pipelined frames";
+    if (pipelined) choice["reason"] = "two box banks: auto measures the analytic level one frame at a time";
     if (measured) {
         choice["measured_frame"] = measured_frame;
         choice["measured_error_percent"] = measured_error_percent;
@@ -56,7 +56,7 @@ nlohmann::json LevelChoice::to_json() const {
 
 RunPlatform::RunPlatform(const BoardSetup& setup, uint32_t capacity, const std::string& trace_base)
     : auto_(setup.level == ModelLevel::kAuto) {
-    // The analytic level times one frame at a time: auto runs pipelined frames on the fast engine.
+    // Auto measures the analytic level a frame at a time: pipelined frames run on the fast engine.
     choice_.pipelined = auto_ && setup.platform.board.box_banks > 1;
     if (choice_.pipelined) decided_ = Decided::kFast;
     if (setup.level == ModelLevel::kAnalytic || (auto_ && !choice_.pipelined)) {

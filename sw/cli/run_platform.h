@@ -31,7 +31,7 @@ struct LevelChoice {
     uint64_t measured_frame = 0;
     double measured_error_percent = 0;
     const char* measured_phase = "";
-    bool pipelined = false;  // two box banks: the analytic level does not time pipelined frames
+    bool pipelined = false;  // two box banks: auto runs them on the fast engine
     std::string words() const;        // "analytic on 18 of 20 frames: ...", for the summary
     nlohmann::json to_json() const;   // the report's "fidelity_choice"
 };
@@ -40,12 +40,17 @@ class RunPlatform {
 public:
     RunPlatform(const BoardSetup& setup, uint32_t capacity, const std::string& trace_base);
     const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
-    // Frames pipelined on a board with two box banks: VirtualBoard's.
-    bool pipelined() const { return board_ && board_->pipelined(); }
+    // Frames pipelined on a board with two box banks: VirtualBoard's, or the
+    // analytic level's (AnalyticPipeline).
+    bool pipelined() const { return board_ ? board_->pipelined() : analytic_->pipelined(); }
     const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) {
+        if (!board_) return analytic_->try_submit_frame(boxes, number, fault);
         return counted(board_->try_submit_frame(boxes, number, fault));
     }
-    const FrameResult* try_finish_frames(FrameFault& fault) { return counted(board_->try_finish_frames(fault)); }
+    const FrameResult* try_finish_frames(FrameFault& fault) {
+        if (!board_) return analytic_->try_finish_frames(fault);
+        return counted(board_->try_finish_frames(fault));
+    }
     const BusTiming& bus_timing() const { return board_ ? board_->bus_timing() : analytic_->bus_timing(); }
     // The SystemC platform, or null at the analytic level (which has no waveforms).
     VirtualBoard* board() { return board_.get(); }
