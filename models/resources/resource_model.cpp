@@ -84,7 +84,7 @@ SynthesisTable SynthesisTable::parse(const std::string& csv, const std::string& 
     if (number == 0) throw std::invalid_argument(origin + ": empty; expected the header " + kHeader);
     for (std::size_t k = 0; k < table.rows_.size(); ++k) {
         const Row& row = table.rows_[k];
-        table.by_key_[key(row.family, row.piece, row.format)].push_back(k);
+        table.by_key_[{row.family, row.piece, row.format}].push_back(k);
     }
     for (auto& [name, rows] : table.by_key_) {
         std::stable_sort(rows.begin(), rows.end(),
@@ -93,12 +93,18 @@ SynthesisTable SynthesisTable::parse(const std::string& csv, const std::string& 
     return table;
 }
 
-const SynthesisTable::Row* SynthesisTable::find(const std::string& family, const std::string& piece,
-                                                const std::string& format) const {
-    const auto rows = by_key_.find(key(family, piece, format));
-    if (rows == by_key_.end()) return nullptr;
+const std::vector<std::size_t>* SynthesisTable::rows_of(std::string_view family, std::string_view piece,
+                                                         std::string_view format) const {
+    const auto rows = by_key_.find(std::make_tuple(family, piece, format));
+    return rows == by_key_.end() ? nullptr : &rows->second;
+}
+
+const SynthesisTable::Row* SynthesisTable::find(std::string_view family, std::string_view piece,
+                                                std::string_view format) const {
+    const std::vector<std::size_t>* rows = rows_of(family, piece, format);
+    if (rows == nullptr) return nullptr;
     // The first in the file, as a scan would find it.
-    return &rows_[*std::min_element(rows->second.begin(), rows->second.end())];
+    return &rows_[*std::min_element(rows->begin(), rows->end())];
 }
 
 Resources SynthesisTable::lane(const std::string& family, const std::string& format) const {
@@ -115,20 +121,21 @@ Resources SynthesisTable::control(const std::string& family) const {
     return row->resources;
 }
 
-Resources SynthesisTable::by_m(const std::string& family, const std::string& piece, const std::string& format,
+Resources SynthesisTable::by_m(std::string_view family, std::string_view piece, std::string_view format,
                                uint32_t m) const {
     const Row* below = nullptr;
     const Row* above = nullptr;
-    if (const auto rows = by_key_.find(key(family, piece, format)); rows != by_key_.end()) {
-        for (const std::size_t k : rows->second) {
+    if (const std::vector<std::size_t>* rows = rows_of(family, piece, format)) {
+        for (const std::size_t k : *rows) {
             const Row& row = rows_[k];
             if (row.m <= m && (below == nullptr || row.m > below->m)) below = &row;
             if (row.m >= m && (above == nullptr || row.m < above->m)) above = &row;
         }
     }
     if (below == nullptr || above == nullptr) {
-        throw std::invalid_argument("no synthesis of the " + piece + (format == "-" ? "" : " (" + format + ")") +
-                                    " around m = " + std::to_string(m) + " for the " + family + " family");
+        const std::string in_format = format == "-" ? "" : " (" + std::string(format) + ")";
+        throw std::invalid_argument("no synthesis of the " + std::string(piece) + in_format + " around m = " +
+                                    std::to_string(m) + " for the " + std::string(family) + " family");
     }
     if (below == above) return below->resources;
     return lerp(below->resources, above->resources, double(m - below->m) / double(above->m - below->m));

@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <string_view>
+#include <tuple>
 #include <vector>
 
 namespace cdvp {
@@ -57,16 +59,15 @@ private:
         uint32_t m = 0;  // 0: not a parameter of the piece
         Resources resources;
     };
-    const Row* find(const std::string& family, const std::string& piece, const std::string& format) const;
-    Resources by_m(const std::string& family, const std::string& piece, const std::string& format,
-                   uint32_t m) const;
-    static std::string key(const std::string& family, const std::string& piece, const std::string& format) {
-        return family + '\n' + piece + '\n' + format;
-    }
+    const Row* find(std::string_view family, std::string_view piece, std::string_view format) const;
+    Resources by_m(std::string_view family, std::string_view piece, std::string_view format, uint32_t m) const;
+    // The rows of a family, piece and format (indices into rows_), or null.
+    const std::vector<std::size_t>* rows_of(std::string_view family, std::string_view piece,
+                                            std::string_view format) const;
     std::vector<Row> rows_;
-    // The rows of each family, piece and format, by m ascending (indices into
-    // rows_): a device fit looks up every piece at every m.
-    std::map<std::string, std::vector<std::size_t>> by_key_;
+    // The rows of each family, piece and format, found without building a
+    // string (a device fit looks up every piece at every m).
+    std::map<std::tuple<std::string, std::string, std::string>, std::vector<std::size_t>, std::less<>> by_key_;
 };
 
 // A device's capacities, with where they come from.

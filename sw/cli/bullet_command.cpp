@@ -156,6 +156,7 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
                 const std::vector<std::string>& command_line) {
     const uint32_t boxes = scene_layout(spec).proxies;
     RunConfig run = describe_run(setup, boxes, budgets);
+    describe_device_fit(run, setup.values.settings());
     run.source = describe(spec);
     run.command_line = command_line;
     run.has_report = out.report != nullptr;

@@ -169,6 +169,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
              const std::vector<std::string>& command_line, const RunBudgets& budgets, nlohmann::json* memory_report,
              RunMemo* memo) {
     RunConfig run = describe_run(setup, static_cast<uint32_t>(source.max_objects()), budgets);
+    if (out.report != nullptr || !o.quiet) describe_device_fit(run, setup.values.settings());
     run.source = source.describe();
     run.command_line = command_line;
     run.has_report = out.report != nullptr;

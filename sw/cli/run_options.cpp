@@ -115,7 +115,15 @@ po::variables_map parse_strictly(int argc, char** argv, const po::options_descri
 }
 
 po::variables_map parse_run_options(int argc, char** argv, RunOptions& options) {
-    return parse_strictly(argc, argv, run_options_description(options));
+    // Described once a process (a sweep parses a point's options thousands of
+    // times a second), bound to one scratch RunOptions that is emptied before
+    // each parse and copied out after it.
+    static RunOptions scratch;
+    static const po::options_description description = run_options_description(scratch);
+    scratch = RunOptions{};
+    po::variables_map vm = parse_strictly(argc, argv, description);
+    options = scratch;
+    return vm;
 }
 
 std::string option_error_text(po::error& error, const std::string& program) {

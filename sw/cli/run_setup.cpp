@@ -91,8 +91,11 @@ RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& b
     run.budgets = {budgets.memory_bytes(), budgets.pair_budget().max_pairs(), budgets.footprint().before_pairs(),
                    budgets.footprint().per_pair};
     run.block_rams = static_cast<uint32_t>(run.config.block_rams(run.capacity));
-    if (has_device_family(settings)) run.device_fit = fit_on_device(settings, run.capacity);
     return run;
+}
+
+void describe_device_fit(RunConfig& run, const Settings& settings) {
+    if (has_device_family(settings)) run.device_fit = fit_on_device(settings, run.capacity);
 }
 
 std::vector<std::string> report_command_line(int argc, char** argv) {

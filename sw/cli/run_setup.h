@@ -58,10 +58,12 @@ void add_setting_inputs(OutputSet& files, const SettingLayers& layers, const boo
 // What the report and the summary say of a run on a board of `capacity`
 // boxes: the memory that serves them (whose tiles it sets on
 // setup.platform.board, so call it before the platform is built), the
-// board, host, engine, settings, budgets and the device's resources. The
-// caller adds what only it knows: the source, the command line, the bus as
-// the platform describes it, the software it times.
+// board, host, engine, settings and budgets. The caller adds what only it
+// knows: the source, the command line, the bus as the platform describes
+// it, the software it times.
 RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& budgets);
+// The device's resources at every m, for a report or a summary that shows them.
+void describe_device_fit(RunConfig& run, const Settings& settings);
 // The command line as the report records it: "cdvp", then the command's argv.
 std::vector<std::string> report_command_line(int argc, char** argv);
 

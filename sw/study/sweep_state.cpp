@@ -200,6 +200,7 @@ TableFile::TableFile(std::string path, const SweepTable& table, bool rewrite_fir
         rewrite(table);
         return;
     }
+    header_columns_ = table.columns().size();
     fd_ = open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
     if (fd_ < 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
 }
@@ -213,6 +214,7 @@ void TableFile::rewrite(const SweepTable& table) {
     fd_ = -1;
     commit_text_file(path_, table.csv(), "--out");
     header_ = table.header_line();
+    header_columns_ = table.columns().size();
     in_order_ = true;
     fd_ = open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
     if (fd_ < 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
@@ -221,7 +223,8 @@ void TableFile::rewrite(const SweepTable& table) {
 void TableFile::append(const SweepTable& table, std::size_t index, bool sync_now) {
     if (index < last_index_) in_order_ = false;
     last_index_ = std::max(last_index_, index);
-    if (header_ != table.header_line()) {
+    // A table only gains columns: as many as the header has, the same ones.
+    if (table.columns().size() != header_columns_ && header_ != table.header_line()) {
         rewrite(table);  // new columns: every row gets them (the rows in point order again)
         return;
     }

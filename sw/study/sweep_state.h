@@ -69,6 +69,7 @@ private:
 
     std::string path_;
     std::string header_;  // the header line the file has
+    std::size_t header_columns_ = 0;  // and its columns
     int fd_ = -1;
     std::size_t last_index_ = 0;
     bool in_order_ = true;  // the file's rows are in point order

@@ -100,8 +100,10 @@ void OutputSet::open() {
     }
     if (stdout_label_ && writes_standard_output(written)) stdout_label_.reset();
     if (stdout_label_) written.push_back(standard_output_written(*stdout_label_));
-    std::vector<FileIdentity> input_ids;
-    for (const Declared& in : inputs_) input_ids.push_back(identity_of_input(in.path));
+    std::vector<FileIdentity> input_ids;  // only needed against something written
+    if (!written.empty()) {
+        for (const Declared& in : inputs_) input_ids.push_back(identity_of_input(in.path));
+    }
     for (std::size_t k = 0; k < written.size(); ++k) {
         if (!written[k].checked) continue;
         for (std::size_t i = 0; i < inputs_.size(); ++i) {
