@@ -334,7 +334,8 @@ int run_checked(int argc, char** argv, bool analytic_only = false, nlohmann::jso
                 RunMemo* memo = nullptr) {
     try {
         RunOptions o;
-        const po::variables_map vm = parse_run_options(argc, argv, o);
+        const po::variables_map vm =
+            memo != nullptr ? memo->options.parse(argc, argv, o) : parse_run_options(argc, argv, o);
         check_path_lengths({{"trace", &o.trace}, {"board", &o.layers.board_name}, {"config", &o.layers.config},
                             {"pairs-out", &o.pairs_out}, {"report", &o.report}, {"vcd", &o.vcd}},
                            vm);

@@ -10,6 +10,7 @@
 
 #include "models/fast_engine/pair_memo.h"
 #include "sw/cli/exit_status.h"
+#include "sw/cli/point_options.h"
 #include "sw/cli/scene_memo.h"
 
 namespace cdvp {
@@ -18,11 +19,13 @@ namespace cdvp {
 int run_command(int argc, char** argv);
 
 // What a process running many analytic runs keeps between them (a sweep's
-// points): the pairs it found and the scenes it generated. Neither changes
-// a result: a hit is the same words, or the same scene settings.
+// points): the pairs it found, the scenes it generated and the last options
+// it parsed. None changes a result: a hit is the same words, the same scene
+// settings, or the same options with other setting values.
 struct RunMemo {
     std::shared_ptr<PairMemo> pairs = std::make_shared<PairMemo>();
     SceneMemo scenes;
+    PointOptions options;
 };
 
 // `cdvp run ARGS` in this process when its settings choose the analytic
