@@ -8,6 +8,9 @@
 
 namespace cdvp {
 
+AnalyticPipeline::AnalyticPipeline(const AnalyticFrame& frame)
+    : frame_(frame), read_(frame.read_fs()), write_(frame.write_fs()), lag_(fs_from_ns(frame.bus_.interrupt_ns())) {}
+
 std::optional<FramePhases> AnalyticPipeline::submit(uint32_t objects, const PairList& pairs, uint64_t changed) {
     const AnalyticFrame& a = frame_;
     const DriverConfig& driver = a.driver_;
@@ -36,13 +39,13 @@ std::optional<FramePhases> AnalyticPipeline::submit(uint32_t objects, const Pair
         spend(next, kDriver, AnalyticFrame::cpu_fs(driver.call_ns + driver.ns_per_box * objects));
         const bool delta = upload_as_delta(driver, a.bus_, objects, changed);
         const uint64_t sent = delta ? changed : objects;
-        SimTime upload = delta ? a.delta_fs(sent) : a.upload_fs(objects);
-        if (in_flight_ && sent > 0 && driver.transfer == Transfer::kDma && a.dma_by_interrupt()) {
-            // The chain's wait beside the sweep in flight, whose interrupt may wake it first.
+        SimTime upload = 0;
+        if (driver.transfer != Transfer::kDma || sent == 0) {
+            upload = delta ? a.delta_fs(sent) : a.upload_fs(objects);
+        } else {
+            // One chain (its address in two registers, then the control write).
             const double bus_ns = delta ? delta_upload_bus_ns(a.bus_, Transfer::kDma, sent) : a.upload_bus_ns(objects);
-            const SimTime wait_from = now_ + 3 * a.write_fs();
-            upload = 3 * a.write_fs() + dma_wait_beside(wait_from, fs_from_ns(bus_ns), first_event(*in_flight_)) -
-                     wait_from + a.write_fs();
+            upload = dma(3, fs_from_ns(bus_ns));
         }
         spend(next, kUpload, upload);
         next.phases.boxes_sent = static_cast<uint32_t>(sent);
@@ -50,8 +53,9 @@ std::optional<FramePhases> AnalyticPipeline::submit(uint32_t objects, const Pair
     }
     std::optional<FramePhases> finished;
     if (in_flight_) finish_sweep(*in_flight_, true);
-    spend(next, kStart, 2 * a.write_fs());  // the object count and START
+    spend(next, kStart, 2 * write_);  // the object count and START
     next.segment_start = now_;
+    line_.board_at = now_ + next.cycles / next.counts.size() * a.board_.period_fs;
     if (in_flight_) {
         // The finished frame's last pairs, from the previous pair buffer, while the new frame sweeps.
         show_pair_bank(true, *in_flight_);
@@ -79,20 +83,25 @@ void AnalyticPipeline::finish_sweep(Flight& f, bool defer_last) {
         const SimTime busy = cycles * a.board_.period_fs;
         const SimTime done = f.segment_start + busy;
         const SimTime waiting_from = now_;
-        SimTime noticed = 0;
+        SimTime noticed = 0, t = now_;
         if (by_interrupt) {
-            // The first wait reads STATUS before waiting (the sweep may have
-            // ended while the host uploaded); a read sees the state at its end.
-            const bool looked_first = k == 0;
-            if (looked_first && done <= now_ + a.read_fs()) {
-                noticed = now_;
-            } else {
-                const SimTime from = looked_first ? now_ + a.read_fs() : now_;
-                noticed = std::max(from, done + fs_from_ns(a.bus_.interrupt_ns()));
+            // BoardDriver::wait_for on STATUS: the first wait reads it before
+            // waiting (the sweep may have ended while the host uploaded); a
+            // read sees the state at its end.
+            const bool check_first = k == 0;
+            bool look_now = check_first;
+            SimTime looked = t;
+            for (uint32_t polls = 0;; ++polls) {
+                if (!look_now) t = polls > 0 || check_first ? notification_since(looked, t) : next_notification(t);
+                look_now = false;
+                noticed = looked = t;
+                t += read_;
+                advance(t);
+                if (done <= t) break;
             }
         } else {
             // Polls from here on, the first at once.
-            noticed = waiting_from + a.notice_fs(done > waiting_from ? done - waiting_from : 0, false);
+            noticed = t = waiting_from + a.notice_fs(done > waiting_from ? done - waiting_from : 0, false);
         }
         now_ = noticed;
         // The part of the sweep the wait saw is compute, the rest of the wait
@@ -103,70 +112,130 @@ void AnalyticPipeline::finish_sweep(Flight& f, bool defer_last) {
         f.spent[kCompute] += exposed;
         f.spent[kIrq] += waited - exposed;
         f.phases.overlap_ns += ns_from_fs(busy - exposed);
-        // Status (under interrupts), acknowledge, the CYCLES counter.
-        spend(f, kReadback, a.status_read_fs(by_interrupt) + (by_interrupt ? a.write_fs() : 0) + 2 * a.read_fs());
+        spend(f, kReadback, t - noticed);  // the status read under interrupts (a poll's is in the wait)
+        if (by_interrupt) {
+            spend(f, kReadback, write_);  // acknowledge
+            advance(now_);
+            line_.board_high = false;
+        }
+        spend(f, kReadback, 2 * read_);  // the CYCLES counter
         if (k + 1 < segments) {
             show_pair_bank(false, f);
             read_pairs(f, k);
-            spend(f, kReadback, a.write_fs());  // RESUME
+            spend(f, kReadback, write_);  // RESUME
             f.segment_start = now_;
+            const uint64_t next = f.cycles / segments + (k + 2 == segments ? f.cycles % segments : 0);
+            line_.board_at = now_ + next * a.board_.period_fs;
         } else if (!defer_last) {
             show_pair_bank(false, f);
             read_pairs(f, k);
         }
     }
-    spend(f, kReadback, 4 * a.read_fs());  // the STALLS and TOTAL_PAIRS counters
-}
-
-SimTime AnalyticPipeline::first_event(const Flight& f) const {
-    return f.segment_start + f.cycles / f.counts.size() * frame_.board_.period_fs;
-}
-
-// BoardDriver::wait_for on a DMA under interrupts while a sweep runs: STATUS
-// read (and the board's interrupt acknowledged) first, during the transfer;
-// then the first interrupt wakes the host. The DMA's own comes its end plus
-// the interrupt's lag after; the board's, when it comes first, has the host
-// read the DMA's status early (and, not done yet, acknowledge the board and
-// look again, then wait since that look).
-SimTime AnalyticPipeline::dma_wait_beside(SimTime wait_from, SimTime transfer, SimTime board_event) const {
-    const AnalyticFrame& a = frame_;
-    const SimTime read = a.read_fs(), write = a.write_fs(), lag = fs_from_ns(a.bus_.interrupt_ns());
-    const SimTime dma_end = wait_from + transfer;
-    SimTime t = wait_from + read;
-    const bool board_pending = board_event <= t;
-    if (board_pending) t += write;  // acknowledged before the wait: the line stays free for the DMA
-    const SimTime board_irq = board_event + lag, dma_irq = dma_end + lag;
-    if (board_pending || board_irq >= dma_irq || board_irq < t) return std::max(t, dma_irq) + read;
-    t = board_irq + read;  // woken by the board: the DMA's status
-    if (dma_end <= t) return t;
-    t += read + write;  // the board's interrupt acknowledged
-    t += read;          // the DMA's status again
-    if (dma_end <= t) return t;
-    const SimTime looked = t - read;
-    t += read;  // STATUS: nothing new
-    return std::max(t, std::max(looked, dma_irq)) + read;
+    spend(f, kReadback, 4 * read_);  // the STALLS and TOTAL_PAIRS counters
 }
 
 void AnalyticPipeline::read_pairs(Flight& f, uint64_t segment) {
-    const AnalyticFrame& a = frame_;
-    const DriverConfig& driver = a.driver_;
-    spend(f, kReadback, a.read_fs());  // PAIR_COUNT
+    const DriverConfig& driver = frame_.driver_;
+    spend(f, kReadback, read_);  // PAIR_COUNT
     const uint64_t count = f.counts[segment];
     if (count == 0) return;
     const uint64_t words = f.words[segment];
-    if (driver.pair_format != PairFormat::kList) spend(f, kReadback, a.read_fs());  // PAIR_WORDS
+    if (driver.pair_format != PairFormat::kList) spend(f, kReadback, read_);  // PAIR_WORDS
     if (driver.transfer == Transfer::kDma) {
-        spend(f, kReadback, a.dma_fs(4 * words, Direction::kToHost));
+        // Host address (two registers), local address, bytes, then the control write.
+        spend(f, kReadback, dma(5, fs_from_ns(frame_.bus_.dma_ns(4 * words, Direction::kToHost))));
     } else {
-        spend(f, kReadback, a.read_fs(words));
+        spend(f, kReadback, frame_.read_fs(words));
     }
     f.phases.readback_bytes += 4 * words;
     spend(f, kDriver, AnalyticFrame::cpu_fs(driver.ns_per_pair * static_cast<double>(count)));
 }
 
+SimTime AnalyticPipeline::dma(uint32_t setup, SimTime transfer) {
+    const AnalyticFrame& a = frame_;
+    SimTime t = now_ + setup * write_;
+    const SimTime end = t + transfer;
+    if (!a.dma_by_interrupt()) return setup * write_ + a.notice_fs(transfer, false) + write_;  // polled, then cleared
+    // BoardDriver::wait_for on the DMA's status under interrupts. With a
+    // frame in flight its sweep's request shares the line: acknowledged
+    // first, and again when it is what woke the host.
+    line_.dma_at = end;
+    const bool shared = in_flight_.has_value();
+    const auto acknowledge_board = [&] {
+        t += read_;  // STATUS
+        advance(t);
+        if (!line_.board_high) return false;
+        t += write_;
+        advance(t);
+        line_.board_high = false;
+        return true;
+    };
+    if (shared) acknowledge_board();
+    bool look_now = false;
+    SimTime looked = t;
+    for (uint32_t polls = 0;; ++polls) {
+        if (!look_now) t = polls > 0 ? notification_since(looked, t) : next_notification(t);
+        look_now = false;
+        looked = t;
+        t += read_;  // the DMA's status
+        advance(t);
+        if (end <= t) break;
+        if (shared) look_now = acknowledge_board();
+    }
+    t += write_;  // clears the DMA's status
+    advance(t);
+    line_.dma_high = false;
+    return t - now_;
+}
+
+void AnalyticPipeline::advance(SimTime t) {
+    for (;;) {
+        const SimTime next = std::min({line_.pending, line_.board_at, line_.dma_at});
+        if (next == kNever || next > t) return;
+        if (line_.pending == next) {
+            line_.fired = next;
+            line_.pending = kNever;
+        } else if (line_.board_at == next) {
+            line_.board_at = kNever;
+            rise(true, next);
+        } else {
+            line_.dma_at = kNever;
+            rise(false, next);
+        }
+    }
+}
+
+// The bus notifies the host one lag after the line rises, unless a
+// notification is already on its way (a later one would be dropped for it).
+void AnalyticPipeline::rise(bool board, SimTime at) {
+    const bool was_high = line_.board_high || line_.dma_high;
+    (board ? line_.board_high : line_.dma_high) = true;
+    if (!was_high && line_.pending == kNever) line_.pending = at + lag_;
+}
+
+SimTime AnalyticPipeline::next_notification(SimTime t) {
+    advance(t);
+    for (;;) {
+        const SimTime next = std::min({line_.pending, line_.board_at, line_.dma_at});
+        if (next == kNever) return t;  // nothing will come: the driver's timeout (not modelled)
+        const bool notification = line_.pending == next;
+        advance(next);
+        if (notification) return next;
+    }
+}
+
+SimTime AnalyticPipeline::notification_since(SimTime since, SimTime t) {
+    advance(t);
+    if (line_.fired != kNever && line_.fired >= since && line_.fired != line_.taken) {
+        line_.taken = line_.fired;
+        return t;
+    }
+    return next_notification(t);
+}
+
 void AnalyticPipeline::show_pair_bank(bool previous, Flight& f) {
     if (showing_previous_ == previous) return;
-    spend(f, kReadback, frame_.write_fs());
+    spend(f, kReadback, write_);
     showing_previous_ = previous;
 }
 

@@ -185,8 +185,10 @@ void put_baselines(const ReportSummary& summary, RowBuilder& out, ColumnFilter k
 // The figures of a report: its frame count, the medians over the frames after
 // the warm-up, the summary's figures and each baseline's.
 void put_results(const nlohmann::json& report, const Point& point, RowBuilder& out, ColumnFilter keep) {
+    static const nlohmann::json kNoSummary = nlohmann::json::object();
     const auto& frames = report.at("frames");
-    const nlohmann::json summary = report.value("summary", nlohmann::json::object());
+    const auto at = report.find("summary");
+    const nlohmann::json& summary = at != report.end() ? *at : kNoSummary;
     // Steady state: warm-up frames are left out (the incremental broad
     // phases build their structures in them): as many as the report says,
     // else the first; at least one frame stays.

@@ -1,7 +1,7 @@
 // Pipelined frames (two box banks) at the analytic level against the fast
 // engine through the whole platform: every phase, the latency and the overlap
-// exact where the board neither stalls nor pauses and sweeps outlast the
-// interrupt's lag, on every transfer, wait and interrupt policy and on both
+// exact where the board neither stalls nor pauses and sweeps outlast a few
+// host accesses, on every transfer, wait and interrupt policy and on both
 // buses; on configurations drawn at random with stalls, pauses and tiles, the
 // total and the latency within 10% of every frame's and 5% of all but one in twenty.
 #include "platform/driver/analytic_pipeline.h"
@@ -93,8 +93,8 @@ TEST(AnalyticPipeline, EveryPhaseLatencyAndOverlapExactWithoutStallsOrPauses) {
         {"pcie-gen3-x8", Transfer::kDma, WaitMode::kIrq, InterruptPolicy::kEvery, UploadMode::kFull},
         {"pcie-gen3-x8", Transfer::kDma, WaitMode::kPoll, InterruptPolicy::kEvery, UploadMode::kAuto},
         {"pcie-gen3-x8", Transfer::kPio, WaitMode::kIrq, InterruptPolicy::kBoard, UploadMode::kFull}};
-    // Sweeps longer than the interrupt's lag (see AnalyticPipeline: shorter
-    // ones let one notification stand for two events).
+    // Sweeps longer than the interrupt's lag (docs/analytic.md: shorter ones
+    // end, in the platform, with the host's next accesses).
     const uint32_t sizes[] = {300, 600, 900};
     // Every platform is elaborated before the first frame runs; each keeps
     // its banks' words across the sequences, as its analytic twin does.
