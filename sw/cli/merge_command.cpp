@@ -24,12 +24,13 @@ constexpr const char* kHelp =
     "Usage: cdvp merge --out OUT SHARD_DIR... [-q]\n"
     "       cdvp merge OUT SHARD_DIR... [-q]\n"
     "\n"
-    "Merges the directories of 'cdvp sweep --shard K/N' runs of one sweep (the same axes, options\n"
-    "and input files, and the same N) into OUT: sweep.csv with every shard's rows in the grid's\n"
-    "order, each point's report in OUT/points, and the plots. Every row is checked against the grid,\n"
-    "its shard and its report first; a row that does not match is refused naming the file, line and\n"
-    "field. OUT is new, empty, or a merge of the same sweep (its rows are kept). The merge is built\n"
-    "beside OUT and put in place whole: a merge that fails leaves OUT as it was.\n"
+    "Merges the directories of 'cdvp sweep --shard K/N' runs of one sweep (the same axes, options,\n"
+    "input files and --record, and the same N) into OUT: sweep.csv with every shard's rows in the\n"
+    "grid's order, each point's report in OUT/points (none for --record compact), and the plots.\n"
+    "Every row is checked against the grid, its shard and its report first; a row that does not\n"
+    "match is refused naming the file, line and field. OUT is new, empty, or a merge of the same\n"
+    "sweep (its rows are kept). The merge is built beside OUT and put in place whole: a merge that\n"
+    "fails leaves OUT as it was.\n"
     "Rerunning the sweep without --shard into OUT runs only the points no shard ran.\n";
 
 std::string without_trailing_slashes(std::string path) {
