@@ -92,7 +92,11 @@ void AnalyticPipeline::finish_sweep(Flight& f, bool defer_last) {
             bool look_now = check_first;
             SimTime looked = t;
             for (uint32_t polls = 0;; ++polls) {
-                if (!look_now) t = polls > 0 || check_first ? notification_since(looked, t) : next_notification(t);
+                if (!look_now) {
+                    const SimTime at = t;
+                    t = polls > 0 || check_first ? notification_since(looked, t) : next_notification(t);
+                    if (t == kNever) t = std::max(at, done);  // no notification comes: found by the timeout's look
+                }
                 look_now = false;
                 noticed = looked = t;
                 t += read_;
@@ -174,7 +178,11 @@ SimTime AnalyticPipeline::dma(uint32_t setup, SimTime transfer) {
     bool look_now = false;
     SimTime looked = t;
     for (uint32_t polls = 0;; ++polls) {
-        if (!look_now) t = polls > 0 ? notification_since(looked, t) : next_notification(t);
+        if (!look_now) {
+            const SimTime at = t;
+            t = polls > 0 ? notification_since(looked, t) : next_notification(t);
+            if (t == kNever) t = std::max(at, end);  // no notification comes: found by the timeout's look
+        }
         look_now = false;
         looked = t;
         t += read_;  // the DMA's status
@@ -217,7 +225,7 @@ SimTime AnalyticPipeline::next_notification(SimTime t) {
     advance(t);
     for (;;) {
         const SimTime next = std::min({line_.pending, line_.board_at, line_.dma_at});
-        if (next == kNever) return t;  // nothing will come: the driver's timeout (not modelled)
+        if (next == kNever) return kNever;  // nothing will come (the driver's timeout finds the event)
         const bool notification = line_.pending == next;
         advance(next);
         if (notification) return next;

@@ -75,7 +75,8 @@ private:
     // same time as a rise comes first).
     void advance(SimTime t);
     void rise(bool board, SimTime at);
-    // The time the next notification reaches a host waiting from `t`.
+    // The time the next notification reaches a host waiting from `t`; kNever
+    // when none will.
     SimTime next_notification(SimTime t);
     // HostPort::wait_for_interrupt_since: at once for a notification since
     // `since` not taken yet, else the next one.

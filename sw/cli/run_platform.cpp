@@ -20,15 +20,11 @@ constexpr PhaseField kPhaseFields[] = {{"upload", &FramePhases::upload_ns},     
 }  // namespace
 
 std::string LevelChoice::words() const {
-    if (pipelined) {
-        return "auto: the fast engine on every frame: two box banks pipeline frames, and auto measures the analytic "
-               "level one frame at a time (--fidelity analytic times pipelined frames as an estimate)";
-    }
     const uint64_t frames = analytic_frames + fast_frames;
     char line[400];
-    std::snprintf(line, sizeof line, "auto: analytic level on %llu of %llu frames (%llu exact by bound)",
+    std::snprintf(line, sizeof line, "auto: analytic level on %llu of %llu %sframes (%llu exact by bound)",
                   static_cast<unsigned long long>(analytic_frames), static_cast<unsigned long long>(frames),
-                  static_cast<unsigned long long>(bounded_frames));
+                  pipelined ? "pipelined " : "", static_cast<unsigned long long>(bounded_frames));
     std::string text = line;
     if (measured) {
         std::snprintf(line, sizeof line, "; measured on frame %llu against the fast engine: %s off by %.3g%%, %s --max-error %g%%",
@@ -45,7 +41,7 @@ nlohmann::json LevelChoice::to_json() const {
                              {"analytic_frames", analytic_frames},
                              {"exact_by_bound_frames", bounded_frames},
                              {"fast_frames", fast_frames}};
-    if (pipelined) choice["reason"] = "two box banks: auto measures the analytic level one frame at a time";
+    if (pipelined) choice["pipelined"] = true;
     if (measured) {
         choice["measured_frame"] = measured_frame;
         choice["measured_error_percent"] = measured_error_percent;
@@ -56,10 +52,8 @@ nlohmann::json LevelChoice::to_json() const {
 
 RunPlatform::RunPlatform(const BoardSetup& setup, uint32_t capacity, const std::string& trace_base)
     : auto_(setup.level == ModelLevel::kAuto) {
-    // Auto measures the analytic level a frame at a time: pipelined frames run on the fast engine.
     choice_.pipelined = auto_ && setup.platform.board.box_banks > 1;
-    if (choice_.pipelined) decided_ = Decided::kFast;
-    if (setup.level == ModelLevel::kAnalytic || (auto_ && !choice_.pipelined)) {
+    if (setup.level == ModelLevel::kAnalytic || auto_) {
         analytic_ = std::make_unique<AnalyticPlatform>(setup.platform, capacity);
     }
     if (setup.level != ModelLevel::kAnalytic) {
@@ -89,12 +83,18 @@ const FrameResult* RunPlatform::run_auto(const std::vector<FloatBox>& boxes, uin
     const FramePhases estimate = analytic->phases;
     const FrameResult* exact = board_->try_run_frame(boxes, number, fault);
     if (exact == nullptr) return nullptr;
+    measure(estimate, exact->phases, number);
+    ++choice_.fast_frames;
+    return exact;
+}
+
+void RunPlatform::measure(const FramePhases& estimate, const FramePhases& exact, uint64_t number) {
     choice_.measured = true;
     choice_.measured_frame = number;
-    const double scale = std::max(exact->phases.total_ns, 1e-9);
+    const double scale = std::max(exact.total_ns, 1e-9);
     for (const PhaseField& phase : kPhaseFields) {
         // Below a femtosecond is the two levels' summing order, not an error.
-        const double difference = std::abs(estimate.*phase.field - exact->phases.*phase.field);
+        const double difference = std::abs(estimate.*phase.field - exact.*phase.field);
         const double error = difference < 1e-6 ? 0.0 : 100.0 * difference / scale;
         if (error >= choice_.measured_error_percent) {
             choice_.measured_error_percent = error;
@@ -102,6 +102,51 @@ const FrameResult* RunPlatform::run_auto(const std::vector<FloatBox>& boxes, uin
         }
     }
     decided_ = choice_.measured_error_percent <= choice_.max_error_percent ? Decided::kAnalytic : Decided::kFast;
+}
+
+const FrameResult* RunPlatform::try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number,
+                                                 FrameFault& fault) {
+    if (!auto_) {
+        return board_ ? board_->try_submit_frame(boxes, number, fault) : analytic_->try_submit_frame(boxes, number, fault);
+    }
+    const uint64_t finishing = in_flight_number_;  // the frame a result now is
+    in_flight_number_ = number;
+    if (decided_ != Decided::kNot) {
+        const bool analytic = decided_ == Decided::kAnalytic;
+        const FrameResult* result = analytic ? analytic_->try_submit_frame(boxes, number, fault)
+                                             : board_->try_submit_frame(boxes, number, fault);
+        if (result != nullptr) ++(analytic ? choice_.analytic_frames : choice_.fast_frames);
+        return result;
+    }
+    // Both until a frame finishes: that one is measured (pipelined frames
+    // have no bound); the level not chosen keeps its last frame unread.
+    FrameFault analytic_fault;
+    const FrameResult* estimated = analytic_->try_submit_frame(boxes, number, analytic_fault);
+    const std::optional<FramePhases> estimate = estimated ? std::optional<FramePhases>(estimated->phases) : std::nullopt;
+    return measure_pipelined(estimate, board_->try_submit_frame(boxes, number, fault), finishing);
+}
+
+const FrameResult* RunPlatform::try_finish_frames(FrameFault& fault) {
+    if (!auto_ || decided_ != Decided::kNot) {
+        const bool analytic = board_ == nullptr || decided_ == Decided::kAnalytic;
+        const FrameResult* result = analytic ? analytic_->try_finish_frames(fault) : board_->try_finish_frames(fault);
+        if (auto_ && result != nullptr) ++(analytic ? choice_.analytic_frames : choice_.fast_frames);
+        return result;
+    }
+    FrameFault analytic_fault;
+    const FrameResult* estimated = analytic_->try_finish_frames(analytic_fault);
+    const std::optional<FramePhases> estimate = estimated ? std::optional<FramePhases>(estimated->phases) : std::nullopt;
+    return measure_pipelined(estimate, board_->try_finish_frames(fault), in_flight_number_);
+}
+
+const FrameResult* RunPlatform::measure_pipelined(const std::optional<FramePhases>& estimate, const FrameResult* exact,
+                                                  uint64_t number) {
+    if (exact == nullptr) return nullptr;  // nothing finished yet, or a fault
+    if (estimate) {
+        measure(*estimate, exact->phases, number);
+    } else {
+        decided_ = Decided::kFast;  // the analytic level gave no frame where the engine did
+    }
     ++choice_.fast_frames;
     return exact;
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,7 @@ struct LevelChoice {
     uint64_t measured_frame = 0;
     double measured_error_percent = 0;
     const char* measured_phase = "";
-    bool pipelined = false;  // two box banks: auto runs them on the fast engine
+    bool pipelined = false;  // two box banks: measured on the first frame to finish
     std::string words() const;        // "analytic on 18 of 20 frames: ...", for the summary
     nlohmann::json to_json() const;   // the report's "fidelity_choice"
 };
@@ -41,16 +42,11 @@ public:
     RunPlatform(const BoardSetup& setup, uint32_t capacity, const std::string& trace_base);
     const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
     // Frames pipelined on a board with two box banks: VirtualBoard's, or the
-    // analytic level's (AnalyticPipeline).
+    // analytic level's (AnalyticPipeline); under auto both until the first
+    // frame finishes and is measured, then the one chosen.
     bool pipelined() const { return board_ ? board_->pipelined() : analytic_->pipelined(); }
-    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) {
-        if (!board_) return analytic_->try_submit_frame(boxes, number, fault);
-        return counted(board_->try_submit_frame(boxes, number, fault));
-    }
-    const FrameResult* try_finish_frames(FrameFault& fault) {
-        if (!board_) return analytic_->try_finish_frames(fault);
-        return counted(board_->try_finish_frames(fault));
-    }
+    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    const FrameResult* try_finish_frames(FrameFault& fault);
     const BusTiming& bus_timing() const { return board_ ? board_->bus_timing() : analytic_->bus_timing(); }
     // The SystemC platform, or null at the analytic level (which has no waveforms).
     VirtualBoard* board() { return board_.get(); }
@@ -58,12 +54,16 @@ public:
     const LevelChoice* choice() const { return auto_ ? &choice_ : nullptr; }
 
 private:
-    // Under auto, a pipelined frame the fast engine gave.
-    const FrameResult* counted(const FrameResult* result) {
-        if (auto_ && result != nullptr) ++choice_.fast_frames;
-        return result;
-    }
     const FrameResult* run_auto(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    // Under auto, pipelined: the fast engine's result for a frame (null: none
+    // finished), the analytic level's phases for it measured against it and
+    // the level chosen.
+    const FrameResult* measure_pipelined(const std::optional<FramePhases>& estimate, const FrameResult* exact,
+                                         uint64_t number);
+    // The analytic level's largest phase error on frame `number`, in percent
+    // of the exact total, and which phase; decides the level by it.
+    void measure(const FramePhases& estimate, const FramePhases& exact, uint64_t number);
+    uint64_t in_flight_number_ = 0;  // pipelined: the frame submitted last
 
     std::unique_ptr<VirtualBoard> board_;
     std::unique_ptr<AnalyticPlatform> analytic_;

@@ -3,8 +3,7 @@
 // engines and at the analytic level (whose times equal the fast engine's on
 // this scene); the report gives each frame's overlap and latency, and the
 // host's time a frame falls; a closed-loop scene or a Bullet world is
-// refused on one line naming the setting, and auto says why it runs the
-// fast engine.
+// refused on one line naming the setting; auto measures the first frame.
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.h"
@@ -61,16 +60,35 @@ TEST_F(Cli, PipeliningWhatCannotBePipelinedIsRefused) {
     EXPECT_EQ(bullet.status, 2);
     EXPECT_NE(bullet.err.find("Bullet world"), std::string::npos) << bullet.err;
     ASSERT_EQ(run("record --scene bullet-spheres --objects 40 --frames 2 --out t.csv -q").status, 0);
-    const Result chosen = run("run --trace t.csv --fidelity auto --box-banks 2 --report r.json");
+    const Result banks_refused = run("run --trace t.csv --box-banks 3 -q");
+    EXPECT_EQ(banks_refused.status, 2);
+    EXPECT_NE(banks_refused.err.find("--box-banks"), std::string::npos) << banks_refused.err;
+}
+
+// --fidelity auto pipelined: both levels run until the first frame finishes,
+// which is measured (pipelined frames have no bound); within --max-error
+// the analytic level times the rest, else the fast engine does. The pairs
+// are the fast engine's either way.
+TEST_F(Cli, AutoMeasuresThePipelinesFirstFrameAndKeepsTheLevelWithinTheError) {
+    ASSERT_EQ(run("record --scene bullet-spheres --objects 300 --frames 6 --out t.csv -q").status, 0);
+    const std::string trace = "run --trace t.csv --board adm-xrc-ii --box-banks 2 ";
+    ASSERT_EQ(run(trace + "--m 4 --fidelity fast --pairs-out fast.csv -q").status, 0);
+    const Result chosen = run(trace + "--m 4 --fidelity auto --report r.json --pairs-out auto.csv");
     ASSERT_EQ(chosen.status, 0) << chosen.err;
-    EXPECT_NE(chosen.out.find("auto: the fast engine on every frame"), std::string::npos) << chosen.out;
+    EXPECT_NE(chosen.out.find("auto: analytic level on 5 of 6 pipelined frames"), std::string::npos) << chosen.out;
+    EXPECT_EQ(slurp(dir_ / "auto.csv"), slurp(dir_ / "fast.csv"));
     const auto choice = report_of(dir_ / "r.json")["fidelity_choice"];
-    EXPECT_EQ(choice["fast_frames"], 2);
-    EXPECT_EQ(choice["analytic_frames"], 0);
-    EXPECT_TRUE(choice.contains("reason")) << choice.dump();
-    const Result banks = run("run --trace t.csv --box-banks 3 -q");
-    EXPECT_EQ(banks.status, 2);
-    EXPECT_NE(banks.err.find("--box-banks"), std::string::npos) << banks.err;
+    EXPECT_EQ(choice["pipelined"], true);
+    EXPECT_EQ(choice["measured_frame"], 0);
+    EXPECT_EQ(choice["fast_frames"], 1);
+    EXPECT_EQ(choice["analytic_frames"], 5);
+    // Pausing every few pairs, the segments' lengths are estimated: beyond a tight bound.
+    const Result fast = run(trace + "--m 2 -c board.pair_buffer_depth=50 --fidelity auto --max-error 0.1 -q --report p.json");
+    ASSERT_EQ(fast.status, 0) << fast.err;
+    const auto paused = report_of(dir_ / "p.json")["fidelity_choice"];
+    EXPECT_GT(paused["measured_error_percent"].get<double>(), 0.1) << paused.dump();
+    EXPECT_EQ(paused["analytic_frames"], 0);
+    EXPECT_EQ(paused["fast_frames"], 6);
 }
 
 }  // namespace
