@@ -185,9 +185,26 @@ std::string board_preset_path(const std::string& name) {
 
 namespace {
 
+BoardPreset parse_board_preset(const std::string& path, const std::string& text);
+
 BoardPreset read_board_preset(const std::string& name) {
     const std::string path = board_preset_path(name);
-    const PresetReader r(path, parse_preset(path, read_preset_text(path, names_a_path(name), name), kWhat));
+    std::string text = read_preset_text(path, names_a_path(name), name);
+    // Presets read before, by path and their whole text: a sweep reads its
+    // preset once a point, and only parsing and checking cost anything.
+    static constexpr std::size_t kKept = 16;
+    static std::vector<std::pair<std::pair<std::string, std::string>, BoardPreset>> kept;
+    for (const auto& [key, preset] : kept) {
+        if (key.first == path && key.second == text) return preset;
+    }
+    const BoardPreset p = parse_board_preset(path, text);
+    if (kept.size() == kKept) kept.erase(kept.begin());
+    kept.push_back({{path, std::move(text)}, p});
+    return p;
+}
+
+BoardPreset parse_board_preset(const std::string& path, const std::string& text) {
+    const PresetReader r(path, parse_preset(path, text, kWhat));
     r.only("", {"name", "description", "board", "device", "bus", "host"});
     BoardPreset p;
     p.path = path;
@@ -220,41 +237,9 @@ SettingValues BoardPreset::applied() const {
     return settings;
 }
 
-// The file as last read: a preset read again is taken from here while its
-// path names the same file unchanged (device, inode, size, modification and
-// change times); a sweep reads its preset once a point.
-struct PresetFile {
-    std::string path;
-    dev_t device = 0;
-    ino_t inode = 0;
-    off_t size = 0;
-    timespec modified{}, changed{};
-    bool same(const std::string& p, const struct stat& s) const {
-        return p == path && s.st_dev == device && s.st_ino == inode && s.st_size == size &&
-               s.st_mtim.tv_sec == modified.tv_sec && s.st_mtim.tv_nsec == modified.tv_nsec &&
-               s.st_ctim.tv_sec == changed.tv_sec && s.st_ctim.tv_nsec == changed.tv_nsec;
-    }
-};
-
 BoardPreset load_board_preset(const std::string& name) {
-    static constexpr std::size_t kKept = 16;
-    static std::vector<std::pair<PresetFile, BoardPreset>> kept;
-    const std::string path = board_preset_path(name);
-    struct stat status {};
-    const bool regular = stat(path.c_str(), &status) == 0 && S_ISREG(status.st_mode);
-    if (regular) {
-        for (const auto& [file, preset] : kept) {
-            if (file.same(path, status)) return preset;
-        }
-    }
     try {
-        BoardPreset preset = read_board_preset(name);
-        if (regular) {
-            if (kept.size() == kKept) kept.erase(kept.begin());
-            kept.push_back({PresetFile{path, status.st_dev, status.st_ino, status.st_size, status.st_mtim, status.st_ctim},
-                            preset});
-        }
-        return preset;
+        return read_board_preset(name);
     } catch (const InputError& e) {
         // One line whatever the file holds: keys, strings and paths may hold control characters.
         throw InputError(printable(e.what()));
