@@ -76,11 +76,7 @@ uint64_t AnalyticPlatform::prepare(const std::vector<FloatBox>& boxes, PairList&
         }
     }
     try {
-        if (memo_) {
-            memo_->find(finder_, objects, view, pairs);
-        } else {
-            finder_.find(objects, view, pairs);
-        }
+        find_pairs(memo_.get(), finder_, objects, view, pairs);
     } catch (const PairBudgetExceeded&) {
         for (Bank& b : banks_) b.valid = false;  // the driver fails the frame and forgets the board's words
         throw;

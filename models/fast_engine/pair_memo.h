@@ -51,4 +51,14 @@ private:
     std::unordered_multimap<uint64_t, Entries::iterator> by_hash_;
 };
 
+// finder.find(objects, words, out), through `memo` when there is one.
+inline void find_pairs(PairMemo* memo, PairFinder& finder, uint32_t objects, const CoordinateWords& words,
+                       PairList& out) {
+    if (memo != nullptr) {
+        memo->find(finder, objects, words, out);
+    } else {
+        finder.find(objects, words, out);
+    }
+}
+
 }  // namespace cdvp

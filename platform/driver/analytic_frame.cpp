@@ -118,47 +118,58 @@ FramePhases AnalyticFrame::estimate(const std::vector<FloatBox>& boxes) {
     return estimate(static_cast<uint32_t>(boxes.size()), counter_.count(boxes));
 }
 
+AnalyticFrame::SweepPlan AnalyticFrame::sweep_plan(uint32_t objects, uint64_t pairs) const {
+    SweepPlan plan;
+    plan.pairs = pairs;
+    plan.depth = board_.buffer_depth;
+    plan.pauses = pairs == 0 ? 0 : (pairs - 1) / plan.depth;
+    const uint64_t slots = sweep_slots(objects);
+    plan.stalls = fifo_stall_estimate(slots, pairs) + plan.pauses;
+    plan.cycles = slots + board_.pipeline_latency + plan.stalls;
+    return plan;
+}
+
+uint64_t AnalyticFrame::UploadPlan::bytes() const {
+    return (delta ? 4 * uint64_t{address_map::kDeltaRecordWords} : 24) * sent;
+}
+
+AnalyticFrame::UploadPlan AnalyticFrame::upload_plan(uint32_t objects, uint64_t changed) const {
+    const bool delta = objects > 0 && upload_as_delta(driver_, bus_, objects, changed);
+    return {delta, delta ? changed : objects};
+}
+
 FramePhases AnalyticFrame::estimate(uint32_t objects, uint64_t pairs) const {
-    return estimate_with(objects, pairs, false, objects, [](uint64_t, uint64_t count) { return 2 * count; });
+    return estimate_with(objects, sweep_plan(objects, pairs), UploadPlan{false, objects},
+                         [](uint64_t, uint64_t count) { return 2 * count; });
 }
 
 FramePhases AnalyticFrame::estimate(uint32_t objects, const PairList& pairs, uint64_t changed) const {
-    const bool delta = objects > 0 && upload_as_delta(driver_, bus_, objects, changed);
     const uint64_t depth = board_.buffer_depth;
-    return estimate_with(objects, pairs.size(), delta, delta ? changed : objects, [&](uint64_t k, uint64_t count) {
-        return encoded_words(driver_.pair_format, pairs.data() + k * depth, count, objects);
-    });
+    return estimate_with(objects, sweep_plan(objects, pairs.size()), upload_plan(objects, changed),
+                         [&](uint64_t k, uint64_t count) {
+                             return encoded_words(driver_.pair_format, pairs.data() + k * depth, count, objects);
+                         });
 }
 
 template <class Words>
-FramePhases AnalyticFrame::estimate_with(uint32_t objects, uint64_t pairs, bool delta, uint64_t sent,
+FramePhases AnalyticFrame::estimate_with(uint32_t objects, const SweepPlan& sweep, const UploadPlan& sent,
                                          Words words_of) const {
-    const uint64_t depth = board_.buffer_depth;
-    // Each pause comes when a pair must move into a full buffer: every
-    // segment but the last reads a full buffer back.
-    const uint64_t pauses = pairs == 0 ? 0 : (pairs - 1) / depth;
-    const uint64_t segments = pauses + 1;
-    const uint64_t slots = sweep_slots(objects);
-    const uint64_t stalls = fifo_stall_estimate(slots, pairs) + pauses;  // a pause's edge is a stall
-    const uint64_t cycles = slots + board_.pipeline_latency + stalls;
-
+    const uint64_t segments = sweep.segments();
     SimTime upload = 0, start = 0, compute = 0, irq = 0, readback = 0, driver = 0;
     if (objects > 0) driver += cpu_fs(driver_.call_ns + driver_.ns_per_box * objects);
-    upload += delta ? delta_fs(sent) : upload_fs(objects);
+    upload += sent.delta ? delta_fs(sent.sent) : upload_fs(objects);
     start += 2 * write_fs();  // the object count and START
     const bool board_irq = board_by_interrupt();
     const SimTime board_ack = board_irq ? write_fs() : 0;
     const bool list = driver_.pair_format == PairFormat::kList;
     uint64_t readback_bytes = 0;
     for (uint64_t k = 0; k < segments; ++k) {
-        // The segments' cycles are not known one by one: spread evenly.
-        const uint64_t segment_cycles = cycles / segments + (k + 1 == segments ? cycles % segments : 0);
-        const SimTime busy = segment_cycles * board_.period_fs;
+        const SimTime busy = sweep.segment_cycles(k) * board_.period_fs;
         compute += busy;
         irq += notice_fs(busy, board_irq) - busy;
         // Status, acknowledge, the CYCLES counter, PAIR_COUNT.
         readback += status_read_fs(board_irq) + board_ack + 2 * read_fs() + read_fs();
-        const uint64_t count = k + 1 < segments ? depth : pairs - pauses * depth;
+        const uint64_t count = sweep.segment_pairs(k);
         if (count > 0) {
             const uint64_t words = words_of(k, count);
             if (!list) readback += read_fs();  // PAIR_WORDS
@@ -179,11 +190,11 @@ FramePhases AnalyticFrame::estimate_with(uint32_t objects, uint64_t pairs, bool 
     phases.driver_ns = ns_from_fs(driver);
     phases.total_ns = ns_from_fs(upload + start + compute + irq + readback + driver);
     phases.latency_ns = phases.total_ns;  // one frame at a time
-    phases.compute_cycles = cycles;
-    phases.stall_cycles = stalls;
-    phases.overflow_pauses = static_cast<uint32_t>(pauses);
-    phases.boxes_sent = static_cast<uint32_t>(sent);
-    phases.upload_bytes = (delta ? 4 * uint64_t{address_map::kDeltaRecordWords} : 24) * sent;
+    phases.compute_cycles = sweep.cycles;
+    phases.stall_cycles = sweep.stalls;
+    phases.overflow_pauses = static_cast<uint32_t>(sweep.pauses);
+    phases.boxes_sent = static_cast<uint32_t>(sent.sent);
+    phases.upload_bytes = sent.bytes();
     phases.readback_bytes = readback_bytes;
     return phases;
 }

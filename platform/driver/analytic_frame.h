@@ -48,6 +48,29 @@ public:
     // The same, counting the pairs first (PairCounter: sort and sweep).
     FramePhases estimate(const std::vector<FloatBox>& boxes);
 
+    // A sweep as the forms see it: the pair buffer's segments (a pause comes
+    // when a pair must move into a full buffer, so every segment but the
+    // last reads a full buffer back), the estimated stalls (a pause's edge is
+    // one) and the cycles, spread evenly over the segments as their lengths
+    // are not known one by one.
+    struct SweepPlan {
+        uint64_t pairs = 0, depth = 1, pauses = 0, stalls = 0, cycles = 0;
+        uint64_t segments() const { return pauses + 1; }
+        uint64_t segment_cycles(uint64_t k) const {
+            return cycles / segments() + (k + 1 == segments() ? cycles % segments() : 0);
+        }
+        uint64_t segment_pairs(uint64_t k) const { return k < pauses ? depth : pairs - pauses * depth; }
+    };
+    SweepPlan sweep_plan(uint32_t objects, uint64_t pairs) const;
+    // What an upload sends: every box, or (a delta upload, where the bus
+    // formula makes it quicker) the `changed` ones as records.
+    struct UploadPlan {
+        bool delta = false;
+        uint64_t sent = 0;  // boxes
+        uint64_t bytes() const;
+    };
+    UploadPlan upload_plan(uint32_t objects, uint64_t changed) const;
+
     // The address generator's slots: S(N, m), or the tiled schedule's.
     uint64_t sweep_slots(uint32_t objects) const;
     // Back-pressure stall edges, estimated: none while the drain keeps up
@@ -80,7 +103,7 @@ private:
     SimTime delta_fs(uint64_t records) const;
     // words_of(k, count): the k-th read-back's words for its `count` pairs.
     template <class Words>
-    FramePhases estimate_with(uint32_t objects, uint64_t pairs, bool delta, uint64_t sent, Words words_of) const;
+    FramePhases estimate_with(uint32_t objects, const SweepPlan& sweep, const UploadPlan& upload, Words words_of) const;
     static SimTime cpu_fs(double ns) { return ns > 0 ? fs_from_ns(ns) : 0; }
 
     DriverConfig driver_;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "models/control_registers/control_registers.h"
 #include "models/pair_collector/pair_format.h"
 #include "platform/driver/frame_time.h"
 
@@ -17,49 +16,43 @@ std::optional<FramePhases> AnalyticPipeline::submit(uint32_t objects, const Pair
     Flight next;
     next.objects = objects;
     next.began = now_;
-    // The sweep as AnalyticFrame sees it: segments of the pair buffer's
-    // depth, the FIFO stalls estimated, a pause's edge a stall.
-    const uint64_t depth = a.board_.buffer_depth, p = pairs.size();
-    const uint64_t pauses = p == 0 ? 0 : (p - 1) / depth;
-    const uint64_t slots = a.sweep_slots(objects);
-    const uint64_t stalls = a.fifo_stall_estimate(slots, p) + pauses;
-    next.cycles = slots + a.board_.pipeline_latency + stalls;
-    for (uint64_t k = 0; k <= pauses; ++k) {
-        const uint64_t count = k < pauses ? depth : p - pauses * depth;
-        next.counts.push_back(count);
-        next.words.push_back(count == 0 ? 0 : encoded_words(driver.pair_format, pairs.data() + k * depth, count, objects));
+    next.sweep = a.sweep_plan(objects, pairs.size());
+    for (uint64_t k = 0; k < next.sweep.segments(); ++k) {
+        const uint64_t count = next.sweep.segment_pairs(k);
+        const IndexPair* first = pairs.data() + k * next.sweep.depth;
+        next.words.push_back(count == 0 ? 0 : encoded_words(driver.pair_format, first, count, objects));
     }
-    next.phases.compute_cycles = next.cycles;
-    next.phases.stall_cycles = stalls;
-    next.phases.overflow_pauses = static_cast<uint32_t>(pauses);
+    next.phases.compute_cycles = next.sweep.cycles;
+    next.phases.stall_cycles = next.sweep.stalls;
+    next.phases.overflow_pauses = static_cast<uint32_t>(next.sweep.pauses);
 
     // Packing the boxes, then uploading them into the host's bank while the
     // board sweeps the frame in flight.
     if (objects > 0) {
         spend(next, kDriver, AnalyticFrame::cpu_fs(driver.call_ns + driver.ns_per_box * objects));
-        const bool delta = upload_as_delta(driver, a.bus_, objects, changed);
-        const uint64_t sent = delta ? changed : objects;
+        const AnalyticFrame::UploadPlan sent = a.upload_plan(objects, changed);
         SimTime upload = 0;
-        if (driver.transfer != Transfer::kDma || sent == 0) {
-            upload = delta ? a.delta_fs(sent) : a.upload_fs(objects);
+        if (driver.transfer != Transfer::kDma || sent.sent == 0) {
+            upload = sent.delta ? a.delta_fs(sent.sent) : a.upload_fs(objects);
         } else {
             // One chain (its address in two registers, then the control write).
-            const double bus_ns = delta ? delta_upload_bus_ns(a.bus_, Transfer::kDma, sent) : a.upload_bus_ns(objects);
+            const double bus_ns =
+                sent.delta ? delta_upload_bus_ns(a.bus_, Transfer::kDma, sent.sent) : a.upload_bus_ns(objects);
             upload = dma(3, fs_from_ns(bus_ns));
         }
         spend(next, kUpload, upload);
-        next.phases.boxes_sent = static_cast<uint32_t>(sent);
-        next.phases.upload_bytes = (delta ? 4 * uint64_t{address_map::kDeltaRecordWords} : 24) * sent;
+        next.phases.boxes_sent = static_cast<uint32_t>(sent.sent);
+        next.phases.upload_bytes = sent.bytes();
     }
     std::optional<FramePhases> finished;
     if (in_flight_) finish_sweep(*in_flight_, true);
     spend(next, kStart, 2 * write_);  // the object count and START
     next.segment_start = now_;
-    line_.board_at = now_ + next.cycles / next.counts.size() * a.board_.period_fs;
+    line_.board_at = now_ + next.sweep.segment_cycles(0) * a.board_.period_fs;
     if (in_flight_) {
         // The finished frame's last pairs, from the previous pair buffer, while the new frame sweeps.
         show_pair_bank(true, *in_flight_);
-        read_pairs(*in_flight_, in_flight_->counts.size() - 1);
+        read_pairs(*in_flight_, in_flight_->sweep.segments() - 1);
         finished = close(*in_flight_);
     }
     in_flight_ = std::move(next);
@@ -77,10 +70,9 @@ std::optional<FramePhases> AnalyticPipeline::finish() {
 void AnalyticPipeline::finish_sweep(Flight& f, bool defer_last) {
     const AnalyticFrame& a = frame_;
     const bool by_interrupt = a.board_by_interrupt();
-    const uint64_t segments = f.counts.size();
+    const uint64_t segments = f.sweep.segments();
     for (uint64_t k = 0; k < segments; ++k) {
-        const uint64_t cycles = f.cycles / segments + (k + 1 == segments ? f.cycles % segments : 0);
-        const SimTime busy = cycles * a.board_.period_fs;
+        const SimTime busy = f.sweep.segment_cycles(k) * a.board_.period_fs;
         const SimTime done = f.segment_start + busy;
         const SimTime waiting_from = now_;
         SimTime noticed = 0, t = now_;
@@ -128,8 +120,7 @@ void AnalyticPipeline::finish_sweep(Flight& f, bool defer_last) {
             read_pairs(f, k);
             spend(f, kReadback, write_);  // RESUME
             f.segment_start = now_;
-            const uint64_t next = f.cycles / segments + (k + 2 == segments ? f.cycles % segments : 0);
-            line_.board_at = now_ + next * a.board_.period_fs;
+            line_.board_at = now_ + f.sweep.segment_cycles(k + 1) * a.board_.period_fs;
         } else if (!defer_last) {
             show_pair_bank(false, f);
             read_pairs(f, k);
@@ -141,7 +132,7 @@ void AnalyticPipeline::finish_sweep(Flight& f, bool defer_last) {
 void AnalyticPipeline::read_pairs(Flight& f, uint64_t segment) {
     const DriverConfig& driver = frame_.driver_;
     spend(f, kReadback, read_);  // PAIR_COUNT
-    const uint64_t count = f.counts[segment];
+    const uint64_t count = f.sweep.segment_pairs(segment);
     if (count == 0) return;
     const uint64_t words = f.words[segment];
     if (driver.pair_format != PairFormat::kList) spend(f, kReadback, read_);  // PAIR_WORDS

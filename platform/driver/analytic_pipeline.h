@@ -41,8 +41,8 @@ private:
     enum Phase { kUpload, kStart, kCompute, kIrq, kReadback, kDriver, kPhases };
     struct Flight {
         uint32_t objects = 0;
-        std::vector<uint64_t> counts, words;  // each segment's pairs and their words
-        uint64_t cycles = 0;
+        AnalyticFrame::SweepPlan sweep;
+        std::vector<uint64_t> words;  // each segment's pairs' words
         SimTime began = 0, segment_start = 0;
         SimTime spent[kPhases] = {};
         FramePhases phases;

@@ -12,12 +12,8 @@ FormatReference::Check FormatReference::check(const std::vector<FloatBox>& boxes
         result.extra.reference_pairs = board_pairs.size();
         return result;
     }
-    const auto objects = static_cast<uint32_t>(boxes.size());
-    if (memo_) {
-        memo_->find(float32_, objects, float32_words(boxes, words_), result.reference);
-    } else {
-        float32_.find(objects, float32_words(boxes, words_), result.reference);
-    }
+    find_pairs(memo_.get(), float32_, static_cast<uint32_t>(boxes.size()), float32_words(boxes, words_),
+               result.reference);
     // The reference comes first index ascending, then second; a tiled board
     // reports its pairs tile block by tile block, so the board's are sorted first.
     const PairList board = sorted(board_pairs);

@@ -247,11 +247,11 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
     std::optional<Frame> in_flight;
     std::vector<FloatBox> in_flight_boxes;
     while (std::optional<Frame> frame = source.next()) {
-        // Converted here, unless the source keeps its frames converted.
-        const std::vector<FloatBox>* kept = source.float_boxes();
-        std::vector<FloatBox> converted;
-        if (kept == nullptr || platform.pipelined()) converted = kept ? *kept : to_float_boxes(frame->boxes);
-        const std::vector<FloatBox>& boxes = converted.empty() && kept != nullptr ? *kept : converted;
+        // Converted here, unless the source keeps its frames converted (a
+        // pipelined frame's boxes are kept with it: a copy of its own).
+        const std::vector<FloatBox>* kept = platform.pipelined() ? nullptr : source.float_boxes();
+        std::vector<FloatBox> converted = kept != nullptr ? std::vector<FloatBox>{} : to_float_boxes(frame->boxes);
+        const std::vector<FloatBox>& boxes = kept != nullptr ? *kept : converted;
         FrameFault fault;
         const auto sim_start = std::chrono::steady_clock::now();
         const FrameResult* frame_result = platform.pipelined()
