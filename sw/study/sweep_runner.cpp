@@ -137,7 +137,7 @@ bool SweepRunner::run_in_process(const Point& point, SweepObserver& observer) {
     std::string errors;
     const auto started = std::chrono::steady_clock::now();
     const bool compact = o_.record == RecordMode::kCompact;
-    const std::string report = report_path(o_.out_dir, point);
+    const std::string report = report_file(point);
     nlohmann::json in_memory;
     const std::optional<int> code =
         o_.in_process(point_arguments(point, compact ? nullptr : &report), errors, compact ? &in_memory : nullptr);
