@@ -106,20 +106,14 @@ void RunPlatform::measure(const FramePhases& estimate, const FramePhases& exact,
 
 const FrameResult* RunPlatform::try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number,
                                                  FrameFault& fault) {
-    if (!auto_) {
-        return board_ ? board_->try_submit_frame(boxes, number, fault) : analytic_->try_submit_frame(boxes, number, fault);
-    }
     const uint64_t finishing = in_flight_number_;  // the frame a result now is
     in_flight_number_ = number;
-    if (decided_ != Decided::kNot) {
-        const bool analytic = decided_ == Decided::kAnalytic;
-        const FrameResult* result = analytic ? analytic_->try_submit_frame(boxes, number, fault)
-                                             : board_->try_submit_frame(boxes, number, fault);
-        if (result != nullptr) ++(analytic ? choice_.analytic_frames : choice_.fast_frames);
-        return result;
+    if (!auto_ || decided_ != Decided::kNot) {
+        return counted(analytic_chosen() ? analytic_->try_submit_frame(boxes, number, fault)
+                                         : board_->try_submit_frame(boxes, number, fault));
     }
-    // Both until a frame finishes: that one is measured (pipelined frames
-    // have no bound); the level not chosen keeps its last frame unread.
+    // Auto, both until a frame finishes: that one is measured (pipelined
+    // frames have no bound); the level not chosen keeps its last frame unread.
     FrameFault analytic_fault;
     const FrameResult* estimated = analytic_->try_submit_frame(boxes, number, analytic_fault);
     const std::optional<FramePhases> estimate = estimated ? std::optional<FramePhases>(estimated->phases) : std::nullopt;
@@ -128,15 +122,17 @@ const FrameResult* RunPlatform::try_submit_frame(const std::vector<FloatBox>& bo
 
 const FrameResult* RunPlatform::try_finish_frames(FrameFault& fault) {
     if (!auto_ || decided_ != Decided::kNot) {
-        const bool analytic = board_ == nullptr || decided_ == Decided::kAnalytic;
-        const FrameResult* result = analytic ? analytic_->try_finish_frames(fault) : board_->try_finish_frames(fault);
-        if (auto_ && result != nullptr) ++(analytic ? choice_.analytic_frames : choice_.fast_frames);
-        return result;
+        return counted(analytic_chosen() ? analytic_->try_finish_frames(fault) : board_->try_finish_frames(fault));
     }
     FrameFault analytic_fault;
     const FrameResult* estimated = analytic_->try_finish_frames(analytic_fault);
     const std::optional<FramePhases> estimate = estimated ? std::optional<FramePhases>(estimated->phases) : std::nullopt;
     return measure_pipelined(estimate, board_->try_finish_frames(fault), in_flight_number_);
+}
+
+const FrameResult* RunPlatform::counted(const FrameResult* result) {
+    if (auto_ && result != nullptr) ++(analytic_chosen() ? choice_.analytic_frames : choice_.fast_frames);
+    return result;
 }
 
 const FrameResult* RunPlatform::measure_pipelined(const std::optional<FramePhases>& estimate, const FrameResult* exact,

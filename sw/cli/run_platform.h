@@ -55,6 +55,10 @@ public:
 
 private:
     const FrameResult* run_auto(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    // Pipelined frames go to the analytic level: it is the run's level, or auto chose it.
+    bool analytic_chosen() const { return board_ == nullptr || decided_ == Decided::kAnalytic; }
+    // A pipelined result, counted under auto for the level that gave it.
+    const FrameResult* counted(const FrameResult* result);
     // Under auto, pipelined: the fast engine's result for a frame (null: none
     // finished), the analytic level's phases for it measured against it and
     // the level chosen.
