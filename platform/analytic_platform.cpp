@@ -75,18 +75,24 @@ uint64_t AnalyticPlatform::prepare(const std::vector<FloatBox>& boxes, PairList&
             changed += !same;
         }
     }
+    // In the order the board finds them, as the engines give them: a tiled
+    // board's by block, which depends on the tile size alone (not on m).
+    PairMemo::Order by_block;
+    if (tiles_.tiled() && objects > tiles_.boxes) {
+        by_block.key = (uint64_t{1} << 32) | tiles_.boxes;
+        by_block.apply = [this, objects](PairList& found) {
+            SweepSchedule(m_, tiles_, objects).order_by_block(found, by_block_, block_ends_);
+        };
+    }
     try {
-        find_pairs(memo_.get(), finder_, objects, view, pairs);
+        find_pairs(memo_.get(), finder_, objects, view, pairs, &by_block);
     } catch (const PairBudgetExceeded&) {
         for (Bank& b : banks_) b.valid = false;  // the driver fails the frame and forgets the board's words
         throw;
     }
-    // In the order the board finds them, as the engines give them.
-    if (tiles_.tiled() && objects > tiles_.boxes) {
-        SweepSchedule(m_, tiles_, objects).order_by_block(pairs, by_block_, block_ends_);
-    }
     if (objects > 0) {
-        for (uint32_t c = 0; c < kCoordinates; ++c) bank.words[c].assign(words_[c].begin(), words_[c].end());
+        // The bank takes this frame's words; words_ is rewritten whole by the next frame.
+        for (uint32_t c = 0; c < kCoordinates; ++c) bank.words[c].swap(words_[c]);
         bank.objects = objects;
         bank.valid = true;
     }

@@ -1,6 +1,8 @@
 #include "platform/preset_json.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -180,17 +182,36 @@ json parse_preset(const std::string& path, const std::string& text, const std::s
 
 std::string read_small_file(const std::string& path, const std::string& what) {
     constexpr std::size_t kMaxBytes = 1 << 20;  // a hand-written file; anything bigger is not one
+    // One descriptor for the check and the read (a sweep reads its preset at every point).
+    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) throw InputError(path + ": cannot open: " + std::strerror(errno));
+    struct Closer {
+        int fd;
+        ~Closer() { close(fd); }
+    } closer{fd};
     struct stat status {};
-    if (stat(path.c_str(), &status) != 0) throw InputError(path + ": cannot open: " + std::strerror(errno));
+    if (fstat(fd, &status) != 0) throw InputError(path + ": cannot open: " + std::strerror(errno));
     if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot open: not a regular file");
     if (static_cast<std::size_t>(status.st_size) > kMaxBytes) {
         throw InputError(path + ": larger than " + std::to_string(kMaxBytes) + " bytes; not " + what);
     }
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) throw InputError(path + ": cannot read: " + std::strerror(errno));
-    return text.str();
+    std::string text(static_cast<std::size_t>(status.st_size), '\0');
+    std::size_t got = 0;
+    for (;;) {  // to the end, which may come before or after the size seen (a file being written)
+        if (got == text.size()) {
+            if (text.size() > kMaxBytes) {
+                throw InputError(path + ": larger than " + std::to_string(kMaxBytes) + " bytes; not " + what);
+            }
+            text.resize(text.size() + 4096);
+        }
+        const ssize_t n = read(fd, &text[got], text.size() - got);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw InputError(path + ": cannot read: " + std::strerror(errno));
+        if (n == 0) break;
+        got += static_cast<std::size_t>(n);
+    }
+    text.resize(got);
+    return text;
 }
 
 }  // namespace cdvp

@@ -4,6 +4,8 @@
 #include <sys/utsname.h>
 #include <unistd.h>
 
+#include <array>
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -48,9 +50,17 @@ MachineInfo read_machine_info() {
 }
 
 std::array<double, 3> load_average() {
-    std::array<double, 3> loads{};
+    // The kernel updates its load averages every 5 s; a sweep asks twice a
+    // point, so a reading less than a second old is given again.
+    static std::array<double, 3> loads{};
+    static std::chrono::steady_clock::time_point read_at{};
+    static bool read = false;
+    const auto now = std::chrono::steady_clock::now();
+    if (read && now - read_at < std::chrono::seconds(1)) return loads;
     double values[3];
-    if (getloadavg(values, 3) == 3) loads = {values[0], values[1], values[2]};
+    loads = getloadavg(values, 3) == 3 ? std::array<double, 3>{values[0], values[1], values[2]} : std::array<double, 3>{};
+    read_at = now;
+    read = true;
     return loads;
 }
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -62,6 +63,42 @@ TEST(PairMemo, AHitIsTheFindersAnswerAndOtherWordsSearchAgain) {
     memo.find(finder, 300, a.view(), got);
     EXPECT_EQ(got, expected_fewer);
     EXPECT_EQ(memo.hits(), 1u);
+}
+
+TEST(PairMemo, AnOrderIsAppliedOnceAndKeptUnderItsKey) {
+    PairMemo memo;
+    PairFinder finder;
+    const Words a = scene(603, 7);  // not a multiple of the hash's eight words
+    PairList found, got;
+    PairFinder().find(603, a.view(), found);
+    ASSERT_GT(found.size(), 10u);
+    int reversals = 0, rotations = 0;
+    const PairMemo::Order reversed{5, [&reversals](PairList& p) { ++reversals, std::reverse(p.begin(), p.end()); }};
+    const PairMemo::Order rotated{6, [&rotations](PairList& p) { ++rotations, std::rotate(p.begin(), p.begin() + 1, p.end()); }};
+    PairList expected_reversed(found.rbegin(), found.rend());
+    PairList expected_rotated = found;
+    std::rotate(expected_rotated.begin(), expected_rotated.begin() + 1, expected_rotated.end());
+
+    memo.find(finder, 603, a.view(), got, &reversed);
+    EXPECT_EQ(got, expected_reversed);
+    memo.find(finder, 603, a.view(), got, &reversed);
+    EXPECT_EQ(got, expected_reversed);
+    memo.find(finder, 603, a.view(), got, &rotated);
+    EXPECT_EQ(got, expected_rotated);
+    memo.find(finder, 603, a.view(), got);  // no order: the finder's own
+    EXPECT_EQ(got, found);
+    memo.find(finder, 603, a.view(), got, &rotated);
+    EXPECT_EQ(got, expected_rotated);
+    EXPECT_EQ(reversals, 1);
+    EXPECT_EQ(rotations, 1);
+    EXPECT_EQ(memo.misses(), 1u);
+    EXPECT_EQ(memo.hits(), 4u);
+    // Each kept order counts against the bound.
+    EXPECT_GE(memo.bytes(), 3 * found.size() * sizeof(IndexPair) + 6 * 603 * sizeof(uint32_t));
+    // Without a memo, find_pairs applies the order itself.
+    find_pairs(nullptr, finder, 603, a.view(), got, &reversed);
+    EXPECT_EQ(got, expected_reversed);
+    EXPECT_EQ(reversals, 2);
 }
 
 TEST(PairMemo, TheFormatIsPartOfTheKey) {
