@@ -125,6 +125,7 @@ void refuse_undeclared_keys(const PresetReader& r, const std::string& section, B
 constexpr const char* kWhat = "a board preset";  // in refusals of the file as a whole
 
 std::string read_preset_text(const std::string& path, bool is_path, const std::string& name) {
+    if (const std::string* pinned = PinnedFiles::find(path)) return *pinned;
     struct stat status {};
     if (!is_path && stat(path.c_str(), &status) != 0) {
         std::string known;

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "platform/preset_json.h"
+#include "sw/study/digest.h"
 #include "sw/study/child_runs.h"
 #include "sw/study/directory_lock.h"
 #include "sw/study/sweep_figures.h"
@@ -43,7 +45,14 @@ public:
             }
             struct stat before {};
             const bool regular = stat(path.c_str(), &before) == 0 && S_ISREG(before.st_mode);
-            digests_.push_back(digest_input(input.option, input.value, path));
+            if (regular && input.option != "--trace" && before.st_size <= kMaxPinnedBytes) {
+                // Read once: the digest covers exactly the text the points in this process read.
+                std::string text = read_small_file(path, "an input of the sweep");
+                digests_.push_back({input.option, input.value, path, sha256_hex(text), text.size()});
+                pins_.pin(path, std::move(text));
+            } else {
+                digests_.push_back(digest_input(input.option, input.value, path));
+            }
             if (regular) watched_.push_back({digests_.back(), before});
         }
     }
@@ -65,6 +74,7 @@ public:
     }
 
 private:
+    static constexpr off_t kMaxPinnedBytes = 1 << 20;  // read_small_file's own bound
     struct Watched {
         SweepInput input;
         struct stat status;
@@ -73,6 +83,7 @@ private:
     std::map<std::string, std::string> trace_paths_;
     std::vector<SweepInput> digests_;
     std::vector<Watched> watched_;
+    PinnedFiles pins_;
 };
 
 // Temporaries left by a killed sweep or point (*.part-*): under the lock no

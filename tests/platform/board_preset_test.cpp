@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/nesting_limit.h"
+#include "platform/preset_json.h"
 #include "sw/scene/scene.h"
 #include "tests/platform/nested_text.h"
 
@@ -151,6 +153,35 @@ TEST_F(PresetFile, OnlyASmallRegularFileIsAPreset) {
         EXPECT_EQ(dir_ + "/: cannot open: not a regular file", std::string(e.what()));
     }
     EXPECT_EQ(path_ + ": larger than 1048576 bytes; not a board preset", error_for(std::string(2 << 20, ' ')));
+    // A named pipe is refused at once, not waited on for a writer.
+    const std::string fifo = dir_ + "/pipe.json";
+    ASSERT_EQ(0, mkfifo(fifo.c_str(), 0600));
+    try {
+        load_board_preset(fifo);
+        ADD_FAILURE() << "a named pipe was read as a preset";
+    } catch (const InputError& e) {
+        EXPECT_EQ(fifo + ": cannot open: not a regular file", std::string(e.what()));
+    }
+    std::remove(fifo.c_str());
+}
+
+// While pins live, a pinned preset is the text pinned, whatever the file now
+// holds (a sweep's points read what its manifest digested); after, the file.
+TEST_F(PresetFile, APinnedPresetIsReadAsPinned) {
+    const std::string adm = read(boards_directory() + "/adm-xrc-ii.json");
+    const std::string pcie = read(boards_directory() + "/pcie-gen3-x8.json");
+    std::ofstream(path_, std::ios::binary) << pcie;
+    {
+        PinnedFiles pins;
+        pins.pin(path_, adm);
+        EXPECT_THROW(PinnedFiles(), std::logic_error);
+        EXPECT_EQ(load_board_preset(path_).name, load_board_preset(boards_directory() + "/adm-xrc-ii.json").name);
+        EXPECT_EQ(read_small_file(path_, "a preset"), adm);
+        EXPECT_EQ(PinnedFiles::find(dir_ + "/other.json"), nullptr);
+    }
+    EXPECT_EQ(PinnedFiles::find(path_), nullptr);
+    EXPECT_EQ(read_small_file(path_, "a preset"), pcie);
+    EXPECT_NE(load_board_preset(path_).name, load_board_preset(boards_directory() + "/adm-xrc-ii.json").name);
 }
 
 TEST_F(PresetFile, ErrorsStayOnOneLineWhateverTheFileHolds) {
