@@ -188,17 +188,17 @@ namespace {
 
 BoardPreset parse_board_preset(const std::string& path, const std::string& text);
 
-BoardPreset read_board_preset(const std::string& name) {
+std::shared_ptr<const BoardPreset> read_board_preset(const std::string& name) {
     const std::string path = board_preset_path(name);
     std::string text = read_preset_text(path, names_a_path(name), name);
     // Presets read before, by path and their whole text: a sweep reads its
     // preset once a point, and only parsing and checking cost anything.
     static constexpr std::size_t kKept = 16;
-    static std::vector<std::pair<std::pair<std::string, std::string>, BoardPreset>> kept;
+    static std::vector<std::pair<std::pair<std::string, std::string>, std::shared_ptr<const BoardPreset>>> kept;
     for (const auto& [key, preset] : kept) {
         if (key.first == path && key.second == text) return preset;
     }
-    const BoardPreset p = parse_board_preset(path, text);
+    auto p = std::make_shared<const BoardPreset>(parse_board_preset(path, text));
     if (kept.size() == kKept) kept.erase(kept.begin());
     kept.push_back({{path, std::move(text)}, p});
     return p;
@@ -238,7 +238,7 @@ SettingValues BoardPreset::applied() const {
     return settings;
 }
 
-BoardPreset load_board_preset(const std::string& name) {
+std::shared_ptr<const BoardPreset> load_board_preset(const std::string& name) {
     try {
         return read_board_preset(name);
     } catch (const InputError& e) {
