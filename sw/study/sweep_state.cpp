@@ -206,10 +206,17 @@ TableFile::TableFile(std::string path, const SweepTable& table, bool rewrite_fir
 }
 
 TableFile::~TableFile() {
-    if (fd_ >= 0) close(fd_);
+    if (fd_ >= 0) {
+        try {  // a sweep ended by an error keeps the rows it recorded
+            write_pending();
+        } catch (const std::exception&) {
+        }
+        close(fd_);
+    }
 }
 
 void TableFile::rewrite(const SweepTable& table) {
+    pending_.clear();  // the table holds them
     if (fd_ >= 0) close(fd_);
     fd_ = -1;
     commit_text_file(path_, table.csv(), "--out");
@@ -228,23 +235,36 @@ void TableFile::append(const SweepTable& table, std::size_t index, bool sync_now
         rewrite(table);  // new columns: every row gets them (the rows in point order again)
         return;
     }
-    const std::string line = table.line(index);
-    for (std::size_t done = 0; done < line.size();) {
-        const ssize_t put = write(fd_, line.data() + done, line.size() - done);
+    pending_ += table.line(index);
+    // On disk before the next point starts: a crash keeps every row reported done.
+    if (sync_now) {
+        sync();
+    } else if (pending_.size() >= kPendingBytes) {
+        write_pending();
+    }
+}
+
+void TableFile::write_pending() {
+    for (std::size_t done = 0; done < pending_.size();) {
+        const ssize_t put = write(fd_, pending_.data() + done, pending_.size() - done);
         if (put < 0 && errno == EINTR) continue;
         if (put < 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
         done += static_cast<std::size_t>(put);
     }
-    // On disk before the next point starts: a crash keeps every row reported done.
-    if (sync_now) sync();
+    pending_.clear();
 }
 
 void TableFile::sync() {
+    write_pending();
     if (fdatasync(fd_) != 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
 }
 
 void TableFile::finish(const SweepTable& table) {
-    if (!in_order_) rewrite(table);
+    if (!in_order_) {
+        rewrite(table);
+    } else {
+        write_pending();
+    }
 }
 
 }  // namespace cdvp

@@ -58,14 +58,19 @@ public:
 
     // The row of 'index', just added to 'table'.
     // Synced unless `sync_now` is false (rows of points run in process come fast:
-    // synced by sync() at most every few hundred milliseconds and at the end).
+    // kept and written together, up to kPendingBytes, and synced by sync() at
+    // most every few hundred milliseconds and at the end; rows a crash loses
+    // are run again on resume).
     void append(const SweepTable& table, std::size_t index, bool sync_now = true);
+    // Writes the rows kept, then syncs the file.
     void sync();
     // The whole table in point order, when anything was appended out of it.
     void finish(const SweepTable& table);
 
 private:
+    static constexpr std::size_t kPendingBytes = 64 * 1024;
     void rewrite(const SweepTable& table);
+    void write_pending();
 
     std::string path_;
     std::string header_;  // the header line the file has
@@ -74,6 +79,7 @@ private:
     std::size_t last_index_ = 0;
     bool in_order_ = true;  // the file's rows are in point order
     bool any_ = false;
+    std::string pending_;  // appended rows not yet written
 };
 
 }  // namespace cdvp
