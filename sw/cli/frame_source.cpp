@@ -134,7 +134,10 @@ public:
         ++produced_;
         return scene_->frame();
     }
-    void feed(const PairList& pairs) override { scene_->step(pairs); }
+    // After the last frame no step is seen: none is taken.
+    void feed(const PairList& pairs) override {
+        if (produced_ < frames_) scene_->step(pairs);
+    }
     std::size_t frame_count() const override { return frames_; }
     std::optional<uint64_t> last_frame() const override {
         return frames_ == 0 ? std::nullopt : std::optional<uint64_t>(frames_ - 1);
