@@ -73,7 +73,7 @@ void PairMemo::find(PairFinder& finder, uint32_t objects, const CoordinateWords&
         return;
     }
     ++misses_;
-    finder.find(objects, words, out);
+    searcher(finder).find(objects, words, out);
     Entry entry{key, format, objects, {}, out, {}};
     entry.words.resize(std::size_t{kCoordinates} * objects);
     for (uint32_t c = 0; c < kCoordinates; ++c) {
@@ -90,6 +90,19 @@ void PairMemo::find(PairFinder& finder, uint32_t objects, const CoordinateWords&
     bytes_ += size;
     out = ordered(entries_.front(), order);
     evict_to(max_bytes_, &entries_.front());
+}
+
+PairFinder& PairMemo::searcher(const PairFinder& like) {
+    constexpr std::size_t kKept = 4;
+    for (auto at = searchers_.begin(); at != searchers_.end(); ++at) {
+        if (at->format().name() == like.format().name() && at->budget().max_pairs() == like.budget().max_pairs()) {
+            searchers_.splice(searchers_.begin(), searchers_, at);
+            return searchers_.front();
+        }
+    }
+    if (searchers_.size() == kKept) searchers_.pop_back();
+    searchers_.emplace_front(like.format(), like.budget());
+    return searchers_.front();
 }
 
 void PairMemo::evict_to(std::size_t bytes, const Entry* keep) {

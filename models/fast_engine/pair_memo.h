@@ -60,6 +60,10 @@ private:
     static bool same(const Entry& entry, const std::string& format, uint32_t objects, const CoordinateWords& words);
     // Drops least recently used entries until bytes() <= bytes; `keep` is never dropped.
     void evict_to(std::size_t bytes, const Entry* keep = nullptr);
+    // A finder of `like`'s format and budget kept for the misses: its
+    // buffers, sized by the searches before, are not allocated (and their
+    // pages not touched for the first time) again for every search.
+    PairFinder& searcher(const PairFinder& like);
     // `entry`'s pairs in `order`, reordered and kept the first time.
     const PairList& ordered(Entry& entry, const Order* order);
 
@@ -67,6 +71,7 @@ private:
     std::size_t bytes_ = 0, hits_ = 0, misses_ = 0;
     Entries entries_;
     std::unordered_multimap<uint64_t, Entries::iterator> by_hash_;
+    std::list<PairFinder> searchers_;  // most recently used first, a few at most
 };
 
 // finder.find(objects, words, out), through `memo` when there is one.

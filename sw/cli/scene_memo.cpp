@@ -48,12 +48,7 @@ public:
     }
     std::string describe() const override { return scene_->description; }
     const std::vector<FloatBox>* float_boxes() const override {
-        if (next_ == 0) return nullptr;
-        std::vector<std::vector<FloatBox>>& converted = scene_->float_boxes;
-        converted.resize(scene_->frames.size());
-        std::vector<FloatBox>& boxes = converted[next_ - 1];
-        if (boxes.size() != scene_->frames[next_ - 1].boxes.size()) boxes = to_float_boxes(scene_->frames[next_ - 1].boxes);
-        return &boxes;
+        return next_ == 0 ? nullptr : &scene_->floats(next_ - 1);
     }
 
 private:
@@ -61,8 +56,16 @@ private:
     std::size_t next_ = 0;
 };
 
+const std::vector<FloatBox>& SceneMemo::Scene::floats(std::size_t frame) const {
+    float_boxes.resize(frames.size());
+    std::vector<FloatBox>& boxes = float_boxes[frame];
+    if (boxes.size() != frames[frame].boxes.size()) boxes = to_float_boxes(frames[frame].boxes);
+    return boxes;
+}
+
 // The generator, its frames copied as they go; kept in the memo once the
-// last one has been given (a run that ends early keeps nothing).
+// last one has been given (a run that ends early keeps nothing). Its float32
+// boxes are converted into the scene, so that a replay need not again.
 class SceneMemo::Recording : public FrameSource {
 public:
     Recording(SceneMemo& memo, std::string key, std::unique_ptr<FrameSource> source)
@@ -72,9 +75,12 @@ public:
     }
     std::optional<Frame> next() override {
         std::optional<Frame> frame = source_->next();
-        if (!frame || recorded_ == nullptr) return frame;
+        if (!frame) return frame;
+        ++given_;
+        if (recorded_ == nullptr) return frame;
         recorded_->frames.push_back(*frame);
         if (recorded_->frames.size() == source_->frame_count()) {
+            kept_ = recorded_;
             memo_.keep(key_, std::move(recorded_));
             recorded_ = nullptr;
         }
@@ -83,7 +89,14 @@ public:
     void feed(const PairList& pairs) override { source_->feed(pairs); }
     void rewind() override {
         source_->rewind();
+        given_ = 0;
         if (recorded_ != nullptr) recorded_->frames.clear();
+    }
+    // The frame just given, as recorded (the generator gives the same frames after a rewind).
+    const std::vector<FloatBox>* float_boxes() const override {
+        const Scene* scene = recorded_ != nullptr ? recorded_.get() : kept_.get();
+        if (given_ == 0 || scene == nullptr || given_ > scene->frames.size()) return nullptr;
+        return &scene->floats(given_ - 1);
     }
     std::size_t frame_count() const override { return source_->frame_count(); }
     std::size_t max_objects() const override { return source_->max_objects(); }
@@ -96,6 +109,8 @@ private:
     std::string key_;
     std::unique_ptr<FrameSource> source_;
     std::shared_ptr<Scene> recorded_ = std::make_shared<Scene>();
+    std::shared_ptr<const Scene> kept_;  // once recorded_ is in the memo
+    std::size_t given_ = 0;              // frames given since the start or the last rewind
 };
 
 std::unique_ptr<FrameSource> SceneMemo::spheres(const BouncingSpheresConfig& config, std::size_t frames) {

@@ -38,6 +38,7 @@ private:
         std::string description;
         // Each frame's float32 boxes, converted when first asked for.
         mutable std::vector<std::vector<FloatBox>> float_boxes;
+        const std::vector<FloatBox>& floats(std::size_t frame) const;
     };
     class Replay;
     class Recording;
