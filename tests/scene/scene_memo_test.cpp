@@ -48,6 +48,25 @@ void expect_same(const std::vector<Frame>& a, const std::vector<Frame>& b) {
     }
 }
 
+// Steps `source` through `fresh`'s frames: its float32 boxes are each frame's, converted.
+void expect_float_boxes(FrameSource& source, const std::vector<Frame>& fresh) {
+    EXPECT_EQ(source.float_boxes(), nullptr) << "no frame given yet";
+    for (std::size_t k = 0; k < fresh.size(); ++k) {
+        ASSERT_TRUE(source.next());
+        const std::vector<FloatBox>* boxes = source.float_boxes();
+        ASSERT_NE(boxes, nullptr);
+        const std::vector<FloatBox> expected = to_float_boxes(fresh[k].boxes);
+        ASSERT_EQ(boxes->size(), expected.size());
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            for (int axis = 0; axis < 3; ++axis) {
+                EXPECT_EQ((*boxes)[i].min[axis], expected[i].min[axis]);
+                EXPECT_EQ((*boxes)[i].max[axis], expected[i].max[axis]);
+            }
+        }
+        source.feed({});
+    }
+}
+
 BouncingSpheresConfig crowded(uint64_t seed) {
     BouncingSpheresConfig config;
     config.objects = 120;
@@ -74,20 +93,7 @@ TEST(SceneMemo, ReplaysTheGeneratedFramesAndTellsSettingsApart) {
     expect_same(run(*replay), fresh);
     // A replay keeps each frame's float32 boxes converted; a generator converts none.
     replay->rewind();
-    EXPECT_EQ(replay->float_boxes(), nullptr) << "no frame given yet";
-    for (std::size_t k = 0; k < fresh.size(); ++k) {
-        ASSERT_TRUE(replay->next());
-        const std::vector<FloatBox>* boxes = replay->float_boxes();
-        ASSERT_NE(boxes, nullptr);
-        const std::vector<FloatBox> expected = to_float_boxes(fresh[k].boxes);
-        ASSERT_EQ(boxes->size(), expected.size());
-        for (std::size_t i = 0; i < expected.size(); ++i) {
-            for (int axis = 0; axis < 3; ++axis) {
-                EXPECT_EQ((*boxes)[i].min[axis], expected[i].min[axis]);
-                EXPECT_EQ((*boxes)[i].max[axis], expected[i].max[axis]);
-            }
-        }
-    }
+    expect_float_boxes(*replay, fresh);
     EXPECT_EQ(spheres_source(crowded(1), 6)->float_boxes(), nullptr);
     // Any other setting is another scene.
     BouncingSpheresConfig other = crowded(1);
@@ -97,6 +103,26 @@ TEST(SceneMemo, ReplaysTheGeneratedFramesAndTellsSettingsApart) {
     run(*memo.spheres(crowded(1), 5));
     EXPECT_EQ(memo.hits(), 1u);
     EXPECT_EQ(memo.misses(), 4u);
+}
+
+// The recording converts each frame's boxes into the scene it keeps, so that
+// a replay finds them converted; after a rewind it gives them again.
+TEST(SceneMemo, ARecordingGivesItsFramesFloat32BoxesAndKeepsThem) {
+    SceneMemo memo;
+    const BouncingSpheresConfig still = crowded(3);
+    std::vector<Frame> fresh;  // as expect_float_boxes steps them: no pair fed back
+    for (auto source = spheres_source(still, 4); std::optional<Frame> frame = source->next(); source->feed({})) {
+        fresh.push_back(*frame);
+    }
+    const auto recording = memo.spheres(still, 4);
+    expect_float_boxes(*recording, fresh);
+    const std::vector<FloatBox>* last = recording->float_boxes();
+    recording->rewind();
+    expect_float_boxes(*recording, fresh);
+    const auto replay = memo.spheres(still, 4);
+    EXPECT_EQ(memo.hits(), 1u);
+    for (int k = 0; k < 4; ++k) replay->next();
+    EXPECT_EQ(replay->float_boxes(), last) << "converted once, by the recording";
 }
 
 TEST(SceneMemo, KeepsNothingOfARunThatStoppedEarlyAndStaysInItsBound) {
