@@ -129,6 +129,35 @@ AnalyticFrame::SweepPlan AnalyticFrame::sweep_plan(uint32_t objects, uint64_t pa
     return plan;
 }
 
+// Pair q of the sweep (board order) enters the pair FIFO on the edge after
+// its slot c_q reaches the collector: edge c_q + L of the advancing edges
+// (L = the pipeline's latency). The pause that ends segment k waits on pair
+// q = (k + 1) B, the first that finds the buffer full: it comes on the edge
+// after both that pair has entered the FIFO and pair q - 1 has moved into
+// the buffer. The drain moves d pairs an edge from the first pair's
+// arrival, so pair q - 1 has moved by edge c_0 + L + ceil(q / d) at the
+// earliest (a fluid bound, exact while the FIFO does not back up). Each
+// earlier pause's edge is one more edge before it.
+AnalyticFrame::SweepPlan AnalyticFrame::sweep_plan(uint32_t objects, const PairList& pairs) const {
+    SweepPlan plan = sweep_plan(objects, pairs.size());
+    if (plan.pauses == 0 || pairs.size() != plan.pairs) return plan;
+    const SweepSchedule schedule(board_.m, board_.tiles, objects);
+    const uint64_t latency = board_.pipeline_latency;
+    const uint64_t first_entry = schedule.pair_slot(pairs[0].first, pairs[0].second) + latency;
+    plan.pause_edges.resize(plan.pauses);
+    uint64_t previous = 0;
+    for (uint64_t k = 0; k < plan.pauses; ++k) {
+        const uint64_t q = (k + 1) * plan.depth;
+        const uint64_t entry = schedule.pair_slot(pairs[q].first, pairs[q].second) + latency;
+        const uint64_t drained = first_entry + ceil_div(q, board_.drain_per_cycle);
+        // Within the sweep's cycles, one edge at least after the pause before, one left for each after.
+        const uint64_t edge = std::max(entry, drained) + 1 + k;
+        plan.pause_edges[k] = std::min(std::max(edge, previous + 1), plan.cycles - (plan.pauses - k));
+        previous = plan.pause_edges[k];
+    }
+    return plan;
+}
+
 uint64_t AnalyticFrame::UploadPlan::bytes() const {
     return (delta ? 4 * uint64_t{address_map::kDeltaRecordWords} : 24) * sent;
 }
@@ -145,7 +174,7 @@ FramePhases AnalyticFrame::estimate(uint32_t objects, uint64_t pairs) const {
 
 FramePhases AnalyticFrame::estimate(uint32_t objects, const PairList& pairs, uint64_t changed) const {
     const uint64_t depth = board_.buffer_depth;
-    return estimate_with(objects, sweep_plan(objects, pairs.size()), upload_plan(objects, changed),
+    return estimate_with(objects, sweep_plan(objects, pairs), upload_plan(objects, changed),
                          [&](uint64_t k, uint64_t count) {
                              return encoded_words(driver_.pair_format, pairs.data() + k * depth, count, objects);
                          });

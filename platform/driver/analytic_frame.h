@@ -51,17 +51,25 @@ public:
     // A sweep as the forms see it: the pair buffer's segments (a pause comes
     // when a pair must move into a full buffer, so every segment but the
     // last reads a full buffer back), the estimated stalls (a pause's edge is
-    // one) and the cycles, spread evenly over the segments as their lengths
-    // are not known one by one.
+    // one) and the cycles. With the pairs in board order, each pause's edge
+    // comes from the slot of the pair it waits to move (pause_edges); from a
+    // count alone the cycles are spread evenly over the segments.
     struct SweepPlan {
         uint64_t pairs = 0, depth = 1, pauses = 0, stalls = 0, cycles = 0;
+        // Edges from START to each pause's edge (the clock stops there), ascending; empty when not known.
+        std::vector<uint64_t> pause_edges;
         uint64_t segments() const { return pauses + 1; }
         uint64_t segment_cycles(uint64_t k) const {
+            if (!pause_edges.empty()) {
+                return (k < pauses ? pause_edges[k] : cycles) - (k == 0 ? 0 : pause_edges[k - 1]);
+            }
             return cycles / segments() + (k + 1 == segments() ? cycles % segments() : 0);
         }
         uint64_t segment_pairs(uint64_t k) const { return k < pauses ? depth : pairs - pauses * depth; }
     };
     SweepPlan sweep_plan(uint32_t objects, uint64_t pairs) const;
+    // The same, each pause placed by its pair's slot (pairs in board order).
+    SweepPlan sweep_plan(uint32_t objects, const PairList& pairs) const;
     // What an upload sends: every box, or (a delta upload, where the bus
     // formula makes it quicker) the `changed` ones as records.
     struct UploadPlan {

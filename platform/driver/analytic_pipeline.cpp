@@ -16,7 +16,7 @@ std::optional<FramePhases> AnalyticPipeline::submit(uint32_t objects, const Pair
     Flight next;
     next.objects = objects;
     next.began = now_;
-    next.sweep = a.sweep_plan(objects, pairs.size());
+    next.sweep = a.sweep_plan(objects, pairs);
     for (uint64_t k = 0; k < next.sweep.segments(); ++k) {
         const uint64_t count = next.sweep.segment_pairs(k);
         const IndexPair* first = pairs.data() + k * next.sweep.depth;

@@ -67,19 +67,26 @@ TEST_F(Cli, AutoTakesTheAnalyticLevelWhereItsErrorIsBoundedOrMeasuredWithinTheLi
                 << "frame " << k << " " << field;
         }
     }
-    // Polling with pair-buffer pauses: measured on the first frame, 0.106% off in total.
-    const std::string paused = "run --board adm-xrc-ii --scene spheres --objects 700 --frames 4 --pair-buffer 100 "
-                               "--wait poll --fidelity auto ";
-    const Result within = run(paused + "--max-error 1");
+    // Polling with pair-buffer pauses: each pause placed by its pair's slot, the first frame measures exact.
+    const Result paused = run("run --board adm-xrc-ii --scene spheres --objects 700 --frames 4 --pair-buffer 100 "
+                              "--wait poll --fidelity auto --max-error 0.01");
+    ASSERT_EQ(paused.status, 0) << paused.err;
+    EXPECT_NE(paused.out.find("auto: analytic level on 3 of 4 frames (0 exact by bound); measured on frame 0 against "
+                              "the fast engine: total off by 0%, within --max-error 0.01%\n"),
+              std::string::npos)
+        << paused.out;
+    // A pyramid's contacts come in bursts a 7-pair FIFO cannot take: the stalls are estimated.
+    const std::string bursts = "run --board adm-xrc-ii --scene pyramid --frames 4 --m 4 --fifo-depth 7 --fidelity auto ";
+    const Result within = run(bursts + "--max-error 5");
     ASSERT_EQ(within.status, 0) << within.err;
     EXPECT_NE(within.out.find("auto: analytic level on 3 of 4 frames (0 exact by bound); measured on frame 0 against "
-                              "the fast engine: total off by 0.106%, within --max-error 1%\n"),
+                              "the fast engine: total off by 1.2%, within --max-error 5%\n"),
               std::string::npos)
         << within.out;
-    const Result beyond = run(paused + "--max-error 0.1 --report beyond.json");
+    const Result beyond = run(bursts + "--max-error 0.5 --report beyond.json");
     ASSERT_EQ(beyond.status, 0) << beyond.err;
     EXPECT_NE(beyond.out.find("analytic level on 0 of 4 frames (0 exact by bound); measured on frame 0 against the fast "
-                              "engine: total off by 0.106%, beyond --max-error 0.1%; the fast engine on the rest\n"),
+                              "engine: total off by 1.2%, beyond --max-error 0.5%; the fast engine on the rest\n"),
               std::string::npos)
         << beyond.out;
     EXPECT_EQ(report_of(dir_ / "beyond.json")["fidelity_choice"]["fast_frames"], 4);

@@ -164,8 +164,17 @@ TEST(AnalyticFrame, TotalWithinFivePercentOnScenesWithStallsPausesAndTiles) {
         AnalyticFrame analytic(config.driver, platform.bus_timing(), analytic_board(config, platform));
         const std::vector<FloatBox> boxes = testing::random_boxes(s.objects, s.extent, s.size, rng);
         const FrameResult& result = platform.run_frame(boxes);
-        const FramePhases estimated = analytic.estimate(boxes);  // counting the pairs itself
+        // As the analytic level runs: the board's pairs in board order (PairFinder's, here the engine's).
+        const FramePhases estimated = analytic.estimate(s.objects, result.pairs, s.objects);
+        const FramePhases counted = analytic.estimate(boxes);  // counting the pairs itself: pauses spread evenly
         SCOPED_TRACE(s.name);
+        EXPECT_LT(std::fabs(relative_error(counted.total_ns, result.phases.total_ns)), 0.05);
+        if (result.phases.stall_cycles == result.phases.overflow_pauses) {
+            // No FIFO stall: each pause placed by its pair's slot, so every phase is exact.
+            for (const PhaseTimes& phase : kPhases) {
+                EXPECT_NEAR(estimated.*phase.field, result.phases.*phase.field, 1e-6 * result.phases.total_ns) << phase.name;
+            }
+        }
         EXPECT_EQ(estimated.overflow_pauses, result.phases.overflow_pauses);
         if (s.fifo_depth < 64) {
             EXPECT_GT(result.phases.stall_cycles, result.phases.overflow_pauses + 100) << "the scene must stall";

@@ -144,7 +144,7 @@ TEST(AnalyticPipeline, EveryPhaseLatencyAndOverlapExactWithoutStallsOrPauses) {
     EXPECT_GT(overlapped, frames_checked / 2) << "most frames' sweeps must run beside the host's work";
 }
 
-TEST(AnalyticPipeline, RandomConfigurationsMostlyWithinFivePercentOfTheTotalAndTheLatency) {
+TEST(AnalyticPipeline, RandomConfigurationsWithinFivePercentOfTheTotalAndTheLatency) {
     std::mt19937 rng(2027);
     auto pick = [&](std::initializer_list<uint32_t> values) {
         return *(values.begin() + std::uniform_int_distribution<std::size_t>(0, values.size() - 1)(rng));
@@ -185,8 +185,8 @@ TEST(AnalyticPipeline, RandomConfigurationsMostlyWithinFivePercentOfTheTotalAndT
             ASSERT_EQ(both.estimated.pairs, both.exact.pairs) << where;
             const double total = std::fabs(both.estimated.phases.total_ns / both.exact.phases.total_ns - 1);
             const double latency = std::fabs(both.estimated.phases.latency_ns / both.exact.phases.latency_ns - 1);
-            EXPECT_LT(total, 0.10) << where;
-            EXPECT_LT(latency, 0.10) << where;
+            EXPECT_LT(total, 0.05) << where;
+            EXPECT_LT(latency, 0.05) << where;
             beyond_five_percent += total > 0.05 || latency > 0.05;
             worst_total = std::max(worst_total, total);
             worst_latency = std::max(worst_latency, latency);
@@ -200,7 +200,6 @@ TEST(AnalyticPipeline, RandomConfigurationsMostlyWithinFivePercentOfTheTotalAndT
                 frames, stalled, paused, 100 * worst_total, 100 * worst_latency, beyond_five_percent);
     // Beyond 5%: boards pausing every few pairs under polling, whose
     // segments' lengths are spread evenly (docs/analytic.md).
-    EXPECT_LE(beyond_five_percent * 20, frames) << "at most one frame in twenty beyond 5%";
     EXPECT_GE(stalled, 5);
     EXPECT_GE(paused, 5);
 }
