@@ -238,7 +238,7 @@ SettingValues BoardPreset::applied() const {
     return settings;
 }
 
-std::shared_ptr<const BoardPreset> load_board_preset(const std::string& name) {
+std::shared_ptr<const BoardPreset> load_shared_board_preset(const std::string& name) {
     try {
         return read_board_preset(name);
     } catch (const InputError& e) {
@@ -246,5 +246,7 @@ std::shared_ptr<const BoardPreset> load_board_preset(const std::string& name) {
         throw InputError(printable(e.what()));
     }
 }
+
+BoardPreset load_board_preset(const std::string& name) { return *load_shared_board_preset(name); }
 
 }  // namespace cdvp

@@ -27,9 +27,11 @@ struct BoardPreset {
 // name: a preset in the boards directory (e.g. "adm-xrc-ii"), or a path to a
 // .json file. Throws InputError naming the file and the missing or bad field,
 // on one line (control characters escaped). Every key must be declared and
-// every number within its setting's range (platform/settings.h). Shared and
-// immutable: the same text read again gives the preset parsed before.
-std::shared_ptr<const BoardPreset> load_board_preset(const std::string& name);
+// every number within its setting's range (platform/settings.h).
+BoardPreset load_board_preset(const std::string& name);
+// The same preset, shared and immutable: the same text read again gives the
+// preset parsed before, without a copy (a sweep reads its preset every point).
+std::shared_ptr<const BoardPreset> load_shared_board_preset(const std::string& name);
 // The file load_board_preset(name) reads (whether or not it exists).
 std::string board_preset_path(const std::string& name);
 std::vector<std::string> board_preset_names();

@@ -181,25 +181,6 @@ json parse_preset(const std::string& path, const std::string& text, const std::s
     return root;
 }
 
-namespace {
-const PinnedFiles* living_pins = nullptr;
-}  // namespace
-
-PinnedFiles::PinnedFiles() {
-    if (living_pins != nullptr) throw std::logic_error("PinnedFiles: another set of pins is alive");
-    living_pins = this;
-}
-
-PinnedFiles::~PinnedFiles() { living_pins = nullptr; }
-
-void PinnedFiles::pin(const std::string& path, std::string text) { texts_[path] = std::move(text); }
-
-const std::string* PinnedFiles::find(const std::string& path) {
-    if (living_pins == nullptr) return nullptr;
-    const auto at = living_pins->texts_.find(path);
-    return at == living_pins->texts_.end() ? nullptr : &at->second;
-}
-
 std::string read_small_file(const std::string& path, const std::string& what) {
     if (const std::string* pinned = PinnedFiles::find(path)) return *pinned;
     constexpr std::size_t kMaxBytes = 1 << 20;  // a hand-written file; anything bigger is not one

@@ -4,10 +4,11 @@
 // the summary and the report as printable text.
 #pragma once
 
-#include <map>
 #include <string>
 
 #include <nlohmann/json.hpp>
+
+#include "models/common/pinned_files.h"
 
 namespace cdvp {
 
@@ -21,25 +22,5 @@ nlohmann::json parse_preset(const std::string& path, const std::string& text, co
 // A pinned path's text is given without reading the file (PinnedFiles).
 std::string read_small_file(const std::string& path, const std::string& what);
 
-// Small input files a caller has read and digested once and whose readers in
-// this process must see that text: a sweep pins its presets, config files and
-// host profiles, so that every point it runs in process reads what the
-// manifest's digest covers (a file changed meanwhile stops the sweep after
-// the point, as before). While a PinnedFiles lives, read_small_file gives a
-// pinned path's text. One at a time; not for threads.
-class PinnedFiles {
-public:
-    PinnedFiles();  // throws std::logic_error while another lives
-    ~PinnedFiles();
-    PinnedFiles(const PinnedFiles&) = delete;
-    PinnedFiles& operator=(const PinnedFiles&) = delete;
-
-    void pin(const std::string& path, std::string text);
-    // The living pins' text for `path`, or null.
-    static const std::string* find(const std::string& path);
-
-private:
-    std::map<std::string, std::string> texts_;
-};
 
 }  // namespace cdvp

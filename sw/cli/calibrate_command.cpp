@@ -110,7 +110,7 @@ HostProfile measure(uint32_t repeat, bool quiet) {
         baseline.reference_native_ns = geometric_mean(means);
     }
     for (const std::string& name : board_preset_names()) {
-        profile.factors[name] = derive_factors(load_board_preset(name)->applied().settings().host, profile);
+        profile.factors[name] = derive_factors(load_board_preset(name).applied().settings().host, profile);
     }
     return profile;
 }

@@ -20,7 +20,7 @@ SettingValues layered_settings(const SettingLayers& layers, const po::variables_
     }
     if (vm.count("board")) {
         if (layers.board_name.empty()) throw InputError("--board: expected a preset name or a .json path, got ''");
-        const std::shared_ptr<const BoardPreset> preset = load_board_preset(layers.board_name);
+        const std::shared_ptr<const BoardPreset> preset = load_shared_board_preset(layers.board_name);
         values.apply(preset->values);
         board_name = preset->name;
     }

@@ -64,7 +64,7 @@ std::string presets_json() {
     return as_command("cdvp presets", [] {
         nlohmann::json all = nlohmann::json::array();
         for (const std::string& name : board_preset_names()) {
-            const BoardPreset preset = *load_board_preset(name);
+            const BoardPreset preset = load_board_preset(name);
             nlohmann::json values = nlohmann::json::object();
             for (const Assignment& assignment : preset.values) values[assignment.setting->name] = to_json(assignment.value);
             all.push_back({{"name", name}, {"description", preset.description}, {"path", preset.path}, {"values", values}});

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -11,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "models/common/pinned_files.h"
 #include "models/common/user_text.h"
-#include "platform/preset_json.h"
 #include "sw/study/digest.h"
 #include "sw/study/child_runs.h"
 #include "sw/study/directory_lock.h"
@@ -47,9 +48,10 @@ public:
             const bool regular = stat(path.c_str(), &before) == 0 && S_ISREG(before.st_mode);
             if (regular && input.option != "--trace" && before.st_size <= kMaxPinnedBytes) {
                 // Read once: the digest covers exactly the text the points in this process read.
-                std::string text = read_small_file(path, "an input of the sweep");
-                digests_.push_back({input.option, input.value, path, sha256_hex(text), text.size()});
-                pins_.pin(path, std::move(text));
+                std::optional<std::string> text = read_whole_file(path);
+                if (!text) throw InputError(input.option + ": " + excerpt(input.value) + ": cannot read: " + std::strerror(errno));
+                digests_.push_back({input.option, input.value, path, sha256_hex(*text), text->size()});
+                pins_.pin(path, std::move(*text));
             } else {
                 digests_.push_back(digest_input(input.option, input.value, path));
             }
@@ -74,7 +76,7 @@ public:
     }
 
 private:
-    static constexpr off_t kMaxPinnedBytes = 1 << 20;  // read_small_file's own bound
+    static constexpr off_t kMaxPinnedBytes = 1 << 20;  // a small file's bound (read_small_file's)
     struct Watched {
         SweepInput input;
         struct stat status;

@@ -101,7 +101,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     write_preset(data, size);
     cdvp::BoardPreset preset;
     try {
-        preset = *cdvp::load_board_preset(preset_path);
+        preset = cdvp::load_board_preset(preset_path);
     } catch (const cdvp::InputError& e) {
         const std::string message = e.what();
         if (message.compare(0, preset_path.size() + 1, preset_path + ":") != 0) {

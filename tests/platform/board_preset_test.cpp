@@ -175,13 +175,13 @@ TEST_F(PresetFile, APinnedPresetIsReadAsPinned) {
         PinnedFiles pins;
         pins.pin(path_, adm);
         EXPECT_THROW(PinnedFiles(), std::logic_error);
-        EXPECT_EQ(load_board_preset(path_)->name, load_board_preset(boards_directory() + "/adm-xrc-ii.json")->name);
+        EXPECT_EQ(load_board_preset(path_).name, load_board_preset(boards_directory() + "/adm-xrc-ii.json").name);
         EXPECT_EQ(read_small_file(path_, "a preset"), adm);
         EXPECT_EQ(PinnedFiles::find(dir_ + "/other.json"), nullptr);
     }
     EXPECT_EQ(PinnedFiles::find(path_), nullptr);
     EXPECT_EQ(read_small_file(path_, "a preset"), pcie);
-    EXPECT_NE(load_board_preset(path_)->name, load_board_preset(boards_directory() + "/adm-xrc-ii.json")->name);
+    EXPECT_NE(load_board_preset(path_).name, load_board_preset(boards_directory() + "/adm-xrc-ii.json").name);
 }
 
 TEST_F(PresetFile, ErrorsStayOnOneLineWhateverTheFileHolds) {

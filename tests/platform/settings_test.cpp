@@ -215,7 +215,7 @@ TEST(SettingsTable, ValuesOutsideTypeOrRangeAreRefused) {
 
 TEST(PlatformConfig, FoldsEverySettingThePlatformTakes) {
     SettingValues values;
-    values.apply(load_board_preset("adm-xrc-ii")->values);
+    values.apply(load_board_preset("adm-xrc-ii").values);
     const PlatformConfig paper = platform_config(values);
     EXPECT_EQ("PCI 32-bit/33.3 MHz", paper.bus->describe());
     EXPECT_TRUE(paper.driver.transfer == Transfer::kDma);
@@ -239,7 +239,7 @@ TEST(PlatformConfig, FoldsEverySettingThePlatformTakes) {
 
 TEST(SettingValues, LayersApplyInOrderAndKeepTheirOrigins) {
     SettingValues values;
-    values.apply(load_board_preset("adm-xrc-ii")->values);
+    values.apply(load_board_preset("adm-xrc-ii").values);
     values.apply({parse_override("bus.interrupt_ns=5000"), parse_override("board.m=4")});
     const Setting& interrupt = *find_setting("bus.interrupt_ns");
     EXPECT_EQ(5000.0, values.settings().pci.interrupt_ns);

@@ -10,7 +10,7 @@
 namespace cdvp::testing {
 
 inline PlatformConfig preset_platform(const std::string& name) {
-    PlatformConfig config = platform_config(load_board_preset(name)->applied());
+    PlatformConfig config = platform_config(load_board_preset(name).applied());
     config.fidelity = Fidelity::kCycle;
     return config;
 }

@@ -113,15 +113,15 @@ TEST(BoardPreset, EveryPresetLoadsWithSourcedNumbers) {
     const std::vector<std::string> names = board_preset_names();
     EXPECT_EQ(names, (std::vector<std::string>{"adm-xrc-ii", "adm-xrc-ii-64", "pcie-gen3-x8"}));
     for (const std::string& name : names) {
-        const BoardPreset p = *load_board_preset(name);
+        const BoardPreset p = load_board_preset(name);
         EXPECT_EQ(p.name, name);
         const SettingValues values = p.applied();
         EXPECT_NO_THROW(values.settings().board.validate());
         EXPECT_GT(values.settings().host.speed_factor, 0);
         EXPECT_GT(values.settings().device.block_rams, 0u);
     }
-    EXPECT_EQ(load_board_preset("adm-xrc-ii")->applied().bus()->describe(), "PCI 32-bit/33.3 MHz");
-    EXPECT_EQ(load_board_preset("adm-xrc-ii-64")->applied().bus()->describe(), "PCI 64-bit/66.7 MHz");
+    EXPECT_EQ(load_board_preset("adm-xrc-ii").applied().bus()->describe(), "PCI 32-bit/33.3 MHz");
+    EXPECT_EQ(load_board_preset("adm-xrc-ii-64").applied().bus()->describe(), "PCI 64-bit/66.7 MHz");
 }
 
 TEST(BoardPreset, RejectsUnsourcedNumbersAndUnknownNames) {
