@@ -93,7 +93,8 @@ void PairMemo::find(PairFinder& finder, uint32_t objects, const CoordinateWords&
 }
 
 PairFinder& PairMemo::searcher(const PairFinder& like) {
-    constexpr std::size_t kKept = 4;
+    // One kept: a finder's buffers grow with N, and a point holds one anyway.
+    constexpr std::size_t kKept = 1;
     for (auto at = searchers_.begin(); at != searchers_.end(); ++at) {
         if (at->format().name() == like.format().name() && at->budget().max_pairs() == like.budget().max_pairs()) {
             searchers_.splice(searchers_.begin(), searchers_, at);

@@ -71,7 +71,7 @@ private:
     std::size_t bytes_ = 0, hits_ = 0, misses_ = 0;
     Entries entries_;
     std::unordered_multimap<uint64_t, Entries::iterator> by_hash_;
-    std::list<PairFinder> searchers_;  // most recently used first, a few at most
+    std::list<PairFinder> searchers_;  // the last one used
 };
 
 // finder.find(objects, words, out), through `memo` when there is one.
