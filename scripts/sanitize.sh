@@ -6,8 +6,9 @@
 #
 #   scripts/sanitize.sh [ctest arguments...]     e.g. -R TraceCsv
 # Environment: SANITIZERS (default address,undefined), BUILD_DIR (build-asan),
-# JOBS (nproc), RTL_VARIANTS (the board RTL's Verilator builds: by default the
-# few the command-line and waveform tests name, not the whole default list).
+# SANITIZE_OPT (-O1 -g1: optimisation and debug info), JOBS (nproc),
+# RTL_VARIANTS (the board RTL's Verilator builds: by default the few the
+# command-line and waveform tests name, not the whole default list).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -30,9 +31,15 @@ export SYSTEMC_MEMPOOL_DONT_USE=1
 paper="format=float32,latency=2,fifo=512,buffer=262144,capacity=512"
 rtl_variants="${RTL_VARIANTS-m=8,$paper;m=8,fifo=15,buffer=128,capacity=1024;m=2,buffer=40,capacity=512;m=2,format=fixed16,latency=1,fifo=3,buffer=64,capacity=1024;m=2,fifo=8,buffer=64,tile=64,tile_latency=2,capacity=1024}"
 
+# -O1 -g1: what ASan's and UBSan's checks need (every check is compiled in
+# at any level; -O1 keeps the tests fast) and line tables for the reports'
+# stacks, inlined frames included. Full -g and -O2 made this build take over
+# twice as long (docs/testing.md, CI).
+opt="${SANITIZE_OPT:--O1 -g1}"
+
 start=$SECONDS
-run cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCDVP_SANITIZE=$sanitizers" \
-  "-DCDVP_RTL_VARIANTS=$rtl_variants" "${launcher[@]}"
+run cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$opt -DNDEBUG" \
+  "-DCDVP_SANITIZE=$sanitizers" "-DCDVP_RTL_VARIANTS=$rtl_variants" "${launcher[@]}"
 run cmake --build "$build_dir" -j "$jobs"
 built=$SECONDS
 status=0
