@@ -22,5 +22,4 @@ nlohmann::json parse_preset(const std::string& path, const std::string& text, co
 // A pinned path's text is given without reading the file (PinnedFiles).
 std::string read_small_file(const std::string& path, const std::string& what);
 
-
 }  // namespace cdvp

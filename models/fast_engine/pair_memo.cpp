@@ -88,22 +88,19 @@ void PairMemo::find(PairFinder& finder, uint32_t objects, const CoordinateWords&
     entries_.push_front(std::move(entry));
     by_hash_.emplace(key, entries_.begin());
     bytes_ += size;
-    out = ordered(entries_.front(), order);
-    evict_to(max_bytes_, &entries_.front());
+    if (order != nullptr && order->key != 0) {  // else `out` is the finder's answer already
+        out = ordered(entries_.front(), order);
+        evict_to(max_bytes_, &entries_.front());
+    }
 }
 
 PairFinder& PairMemo::searcher(const PairFinder& like) {
     // One kept: a finder's buffers grow with N, and a point holds one anyway.
-    constexpr std::size_t kKept = 1;
-    for (auto at = searchers_.begin(); at != searchers_.end(); ++at) {
-        if (at->format().name() == like.format().name() && at->budget().max_pairs() == like.budget().max_pairs()) {
-            searchers_.splice(searchers_.begin(), searchers_, at);
-            return searchers_.front();
-        }
+    if (!searcher_ || searcher_->format().name() != like.format().name() ||
+        searcher_->budget().max_pairs() != like.budget().max_pairs()) {
+        searcher_.emplace(like.format(), like.budget());
     }
-    if (searchers_.size() == kKept) searchers_.pop_back();
-    searchers_.emplace_front(like.format(), like.budget());
-    return searchers_.front();
+    return *searcher_;
 }
 
 void PairMemo::evict_to(std::size_t bytes, const Entry* keep) {

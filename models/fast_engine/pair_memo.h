@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <list>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -71,7 +72,7 @@ private:
     std::size_t bytes_ = 0, hits_ = 0, misses_ = 0;
     Entries entries_;
     std::unordered_multimap<uint64_t, Entries::iterator> by_hash_;
-    std::list<PairFinder> searchers_;  // the last one used
+    std::optional<PairFinder> searcher_;  // the last one used
 };
 
 // finder.find(objects, words, out), through `memo` when there is one.

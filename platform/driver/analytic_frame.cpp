@@ -140,7 +140,7 @@ AnalyticFrame::SweepPlan AnalyticFrame::sweep_plan(uint32_t objects, uint64_t pa
 // earlier pause's edge is one more edge before it.
 AnalyticFrame::SweepPlan AnalyticFrame::sweep_plan(uint32_t objects, const PairList& pairs) const {
     SweepPlan plan = sweep_plan(objects, pairs.size());
-    if (plan.pauses == 0 || pairs.size() != plan.pairs) return plan;
+    if (plan.pauses == 0) return plan;
     const SweepSchedule schedule(board_.m, board_.tiles, objects);
     const uint64_t latency = board_.pipeline_latency;
     const uint64_t first_entry = schedule.pair_slot(pairs[0].first, pairs[0].second) + latency;

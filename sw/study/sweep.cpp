@@ -14,7 +14,6 @@
 
 #include "models/common/pinned_files.h"
 #include "models/common/user_text.h"
-#include "sw/study/digest.h"
 #include "sw/study/child_runs.h"
 #include "sw/study/directory_lock.h"
 #include "sw/study/sweep_figures.h"
@@ -50,7 +49,7 @@ public:
                 // Read once: the digest covers exactly the text the points in this process read.
                 std::optional<std::string> text = read_whole_file(path);
                 if (!text) throw InputError(input.option + ": " + excerpt(input.value) + ": cannot read: " + std::strerror(errno));
-                digests_.push_back({input.option, input.value, path, sha256_hex(*text), text->size()});
+                digests_.push_back(digest_text(input.option, input.value, path, *text));
                 pins_.pin(path, std::move(*text));
             } else {
                 digests_.push_back(digest_input(input.option, input.value, path));

@@ -101,6 +101,10 @@ SweepInput digest_input(std::string option, std::string value, std::string path)
     return {std::move(option), std::move(value), std::move(path), digest->sha256, digest->bytes};
 }
 
+SweepInput digest_text(std::string option, std::string value, std::string path, const std::string& text) {
+    return {std::move(option), std::move(value), std::move(path), sha256_hex(text), text.size()};
+}
+
 json Manifest::to_json() const {
     const Grid grid(axes);
     json axes_json = json::array();

@@ -28,6 +28,8 @@ struct SweepInput {
 // Digests the file at 'input.path'. Throws InputError naming the option and
 // value when it cannot be read.
 SweepInput digest_input(std::string option, std::string value, std::string path);
+// The same for a file's text already read from 'path'.
+SweepInput digest_text(std::string option, std::string value, std::string path, const std::string& text);
 
 // What a sweep keeps of each point: its whole report beside a row of every
 // setting and figure (full), or a row of the figures alone and no report
