@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -45,6 +46,8 @@ struct SceneSettings {
 };
 
 struct RunSettings {
+    // run.pin_cpu as a CPU number; nothing for "none".
+    std::optional<uint32_t> pinned_cpu() const;
     Transfer transfer = Transfer::kDma;
     WaitMode wait = WaitMode::kIrq;
     ModelLevel fidelity = ModelLevel::kFast;
@@ -52,6 +55,8 @@ struct RunSettings {
     double max_error_percent = 1.0;  // run.fidelity auto's bound
     uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
     uint32_t repeat = 1;
+    uint32_t retime_tries = 3;      // sw/cli's kDefaultRetimeTries (a test holds them equal)
+    std::string pin_cpu = "none";   // or a CPU number: see pinned_cpu()
     bool ignore_capacity = false;
     bool lockstep = false;  // run.fidelity rtl: the clocked engine compared after every edge
     // Budgets, checked before any work (sw/cli/run_budgets.h). 0: derived

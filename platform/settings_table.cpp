@@ -13,6 +13,18 @@ namespace cdvp {
 
 namespace {
 
+// A CPU number as run.pin_cpu takes it: decimal digits, below 1024 (CPU_SETSIZE).
+std::optional<uint32_t> parse_cpu_number(const std::string& text) {
+    if (text.empty() || text.size() > 4) return std::nullopt;
+    uint32_t value = 0;
+    for (const char c : text) {
+        if (c < '0' || c > '9') return std::nullopt;
+        value = value * 10 + static_cast<uint32_t>(c - '0');
+    }
+    if (value >= 1024) return std::nullopt;
+    return value;
+}
+
 using Getter = std::function<SettingValue(const Settings&)>;
 using Setter = std::function<void(Settings&, const SettingValue&)>;
 struct Binding {
@@ -497,6 +509,24 @@ std::vector<Setting> host_and_run_settings() {
                    "of the runs' means (the board's simulated times are deterministic and simulated once)",
                    "one run"),
              "repeat", "R"),
+        flag(count("run.retime_tries", "tries", 0, 100, member(&S::run, &RunSettings::retime_tries),
+                   "how often a baseline frame disturbed while timed (an involuntary context switch, a move to "
+                   "another CPU) is timed again, on fresh instances stepped through the frames before it; a frame "
+                   "still disturbed after them marks the timing disturbed; 0: never",
+                   "three: a pre-empted frame of a few hundred microseconds comes clean on the first try beside one "
+                   "busy loop (docs/timing.md)"),
+             "retime-tries", "T"),
+        flag(checked_text("run.pin_cpu", "none or a CPU number this process may run on",
+                          [](const std::string& value) {
+                              if (value != "none" && !parse_cpu_number(value)) {
+                                  throw std::invalid_argument("expected none or a CPU number (0 to 1023)");
+                              }
+                          },
+                          member(&S::run, &RunSettings::pin_cpu),
+                          "pin the run (simulator and baselines) to one CPU before any frame; none: the scheduler "
+                          "places it",
+                          "none: CPU time already leaves out time spent waiting for a CPU (docs/timing.md)"),
+             "pin-cpu", "N"),
         switch_flag(choice<bool>("run.ignore_capacity", member(&S::run, &RunSettings::ignore_capacity),
                            "run a board that does not fit its device (device.*) anyway, to explore what a larger "
                            "device would give",
@@ -538,5 +568,7 @@ const std::vector<Setting>& settings_table() {
     }();
     return table;
 }
+
+std::optional<uint32_t> RunSettings::pinned_cpu() const { return parse_cpu_number(pin_cpu); }
 
 }  // namespace cdvp

@@ -3,21 +3,18 @@
 #include <BulletCollision/BroadphaseCollision/btSimpleBroadphase.h>
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 
 #include "sw/baselines/bullet_factory.h"
 #include "sw/bullet/board_broadphase.h"
+#include "sw/timing/thread_timer.h"
 
 namespace cdvp {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double ns_between(Clock::time_point start, Clock::time_point end) {
-    return std::chrono::duration<double, std::nano>(end - start).count();
-}
+// The stages are timed in the thread's CPU time, as the whole step is.
+double ns_between(int64_t start, int64_t end) { return static_cast<double>(end - start); }
 
 constexpr btScalar kStep = btScalar(1.0 / 60.0);
 constexpr uint64_t kDefaultHandles = 16384;  // btSimpleBroadphase's and btAxisSweep3's default
@@ -63,23 +60,23 @@ std::unique_ptr<btBroadphaseInterface> make_broadphase(BroadphaseKind kind, cons
 }
 
 // btCollisionWorld's collision detection, the same three stages in the same
-// order, with a clock read between them.
+// order, with a CPU-time clock read between them.
 class BulletWorld::TimedWorld : public btDiscreteDynamicsWorld {
 public:
     using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
     StepTimes times;
 
     void performDiscreteCollisionDetection() override {
-        const Clock::time_point start = Clock::now();
+        const int64_t start = thread_cpu_ns();
         updateAabbs();
-        const Clock::time_point aabbs_done = Clock::now();
+        const int64_t aabbs_done = thread_cpu_ns();
         computeOverlappingPairs();
-        const Clock::time_point pairs_done = Clock::now();
+        const int64_t pairs_done = thread_cpu_ns();
         if (btDispatcher* dispatcher = getDispatcher()) {
             dispatcher->dispatchAllCollisionPairs(getBroadphase()->getOverlappingPairCache(), getDispatchInfo(),
                                                   dispatcher);
         }
-        const Clock::time_point end = Clock::now();
+        const int64_t end = thread_cpu_ns();
         times.aabbs_ns += ns_between(start, aabbs_done);
         times.broadphase_ns += ns_between(aabbs_done, pairs_done);
         times.narrowphase_ns += ns_between(pairs_done, end);
@@ -129,9 +126,12 @@ void BulletWorld::remove_body(btRigidBody* body) {
 
 StepTimes BulletWorld::step() {
     world_->times = StepTimes{};
-    const Clock::time_point start = Clock::now();
-    world_->stepSimulation(kStep, 0);  // no substeps: exactly one internal step of kStep
-    world_->times.step_ns = ns_between(start, Clock::now());
+    const CallTiming timing = CallTimer::time([this] {
+        world_->stepSimulation(kStep, 0);  // no substeps: exactly one internal step of kStep
+    });
+    world_->times.step_ns = timing.cpu_ns;
+    world_->times.step_wall_ns = timing.wall_ns;
+    world_->times.disturbed = timing.disturbed();
     ++steps_;
     return world_->times;
 }

@@ -35,6 +35,10 @@ struct StepTimes {
     double broadphase_ns = 0;    // calculateOverlappingPairs
     double narrowphase_ns = 0;   // the dispatcher over the pair cache
     double step_ns = 0;          // the whole stepSimulation
+    // Each time above is the thread's CPU time; the step's wall time beside
+    // it, and whether a pre-emption or a move to another CPU disturbed it.
+    double step_wall_ns = 0;
+    bool disturbed = false;
     // What a broad phase accounts for: its setAabb work rides in updateAabbs.
     double broadphase_share_ns() const { return aabbs_ns + broadphase_ns; }
 };

@@ -1,6 +1,6 @@
 #include "sw/cli/baseline_timing.h"
 
-#include <chrono>
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -33,7 +33,8 @@ std::runtime_error mismatch(const std::string& name, std::size_t found, uint64_t
 
 }  // namespace
 
-BaselineTimer::BaselineTimer(const std::string& names, HostTiming host) : host_(std::move(host)) {
+BaselineTimer::BaselineTimer(const std::string& names, HostTiming host, uint32_t max_tries)
+    : host_(std::move(host)), max_tries_(max_tries) {
     std::stringstream list(names);
     for (std::string name; std::getline(list, name, ',');) {
         // Each is timed once a frame; a repeat would be run twice and reported once.
@@ -47,6 +48,8 @@ BaselineTimer::BaselineTimer(const std::string& names, HostTiming host) : host_(
         }
         names_.push_back(first_run_.back()->name());
     }
+    disturbed_.assign(names_.size(), std::vector<Disturbed>(1));
+    counts_.assign(names_.size(), Counts{});
 }
 
 void BaselineTimer::set_pair_budget(PairBudget budget) {
@@ -54,23 +57,33 @@ void BaselineTimer::set_pair_budget(PairBudget budget) {
     for (auto& baseline : first_run_) baseline->set_pair_budget(budget);
 }
 
-double time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found) {
-    const auto start = std::chrono::steady_clock::now();
-    baseline.find_pairs(boxes, found);
-    const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+CallTiming time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found) {
+    const CallTiming timing = CallTimer::time([&] { baseline.find_pairs(boxes, found); });
     found = sorted(std::move(found));
-    return ns;
+    return timing;
+}
+
+std::vector<std::unique_ptr<BroadPhase>> BaselineTimer::fresh(const std::vector<std::size_t>& which) const {
+    std::vector<std::unique_ptr<BroadPhase>> instances;
+    for (const std::size_t b : which) {
+        instances.push_back(make_broad_phase(names_[b]));
+        instances.back()->set_pair_budget(budget_);
+    }
+    return instances;
 }
 
 std::map<std::string, BaselineTime> BaselineTimer::time_frame(const std::vector<FloatBox>& boxes,
                                                               const PairList& board_pairs, uint64_t frame) {
     std::map<std::string, BaselineTime> times;
     PairList found;
-    for (auto& baseline : first_run_) {
-        const double ns = time_find_pairs(*baseline, boxes, found);
-        times[baseline->name()] = {ns, ns * host_.factor(baseline->name())};
+    for (std::size_t b = 0; b < first_run_.size(); ++b) {
+        BroadPhase& baseline = *first_run_[b];
+        const CallTiming t = time_find_pairs(baseline, boxes, found);
+        times[baseline.name()] = {t.cpu_ns, t.wall_ns, t.cpu_ns * host_.factor(baseline.name()),
+                                  t.involuntary_switches, t.migrated};
+        disturbed_[b].back().push_back(t.disturbed());
         if (found != board_pairs) {
-            throw mismatch(baseline->name(), found.size(), frame, "the board " + std::to_string(board_pairs.size()));
+            throw mismatch(baseline.name(), found.size(), frame, "the board " + std::to_string(board_pairs.size()));
         }
     }
     board_digests_.push_back(pairs_digest(board_pairs));
@@ -80,22 +93,27 @@ std::map<std::string, BaselineTime> BaselineTimer::time_frame(const std::vector<
 void BaselineTimer::repeat(FrameSource& source, uint32_t runs, RunTotals& totals,
                            const std::function<void()>& frame_done) {
     first_run_.clear();  // its memory is not the later runs' to reuse
+    std::vector<std::size_t> all(names_.size());
+    for (std::size_t b = 0; b < all.size(); ++b) all[b] = b;
     for (uint32_t run = 2; run <= runs; ++run) {
-        std::vector<std::unique_ptr<BroadPhase>> fresh;
-        for (const std::string& name : names_) {
-            fresh.push_back(make_broad_phase(name));
-            fresh.back()->set_pair_budget(budget_);
-            totals.baseline_samples(name).start_run();
+        const std::vector<std::unique_ptr<BroadPhase>> instances = fresh(all);
+        for (std::size_t b = 0; b < names_.size(); ++b) {
+            totals.baseline_samples(names_[b]).start_run();
+            totals.baseline_wall_samples(names_[b]).start_run();
+            disturbed_[b].emplace_back();
         }
         source.rewind();
         std::size_t index = 0;
         PairList found;
         while (std::optional<Frame> frame = source.next()) {
             const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
-            for (auto& baseline : fresh) {
-                totals.baseline_samples(baseline->name()).add(time_find_pairs(*baseline, boxes, found));
+            for (std::size_t b = 0; b < instances.size(); ++b) {
+                const CallTiming t = time_find_pairs(*instances[b], boxes, found);
+                totals.baseline_samples(names_[b]).add(t.cpu_ns);
+                totals.baseline_wall_samples(names_[b]).add(t.wall_ns);
+                disturbed_[b].back().push_back(t.disturbed());
                 if (index >= board_digests_.size() || pairs_digest(found) != board_digests_[index]) {
-                    throw mismatch(baseline->name(), found.size(), frame->number,
+                    throw mismatch(names_[b], found.size(), frame->number,
                                    "run " + std::to_string(run) + ": not the pairs the board found");
                 }
             }
@@ -104,6 +122,84 @@ void BaselineTimer::repeat(FrameSource& source, uint32_t runs, RunTotals& totals
             frame_done();
         }
     }
+}
+
+void BaselineTimer::retime(FrameSource& source, RunTotals& totals) {
+    first_run_.clear();
+    const std::size_t frames = board_digests_.size();
+    const std::size_t first = first_measured(frames, totals.warmup_frames());
+    for (uint32_t pass = 0; pass < max_tries_; ++pass) {
+        bool any = false;
+        for (std::size_t run = 0; run < (disturbed_.empty() ? 0 : disturbed_[0].size()); ++run) {
+            // The baselines with a measured frame still disturbed in this run, and the last such frame.
+            std::vector<std::size_t> which;
+            std::size_t last = 0;
+            for (std::size_t b = 0; b < names_.size(); ++b) {
+                const Disturbed& flags = disturbed_[b][run];
+                for (std::size_t k = first; k < flags.size(); ++k) {
+                    if (!flags[k]) continue;
+                    if (which.empty() || which.back() != b) which.push_back(b);
+                    last = std::max(last, k);
+                }
+            }
+            if (which.empty()) continue;
+            any = true;
+            // Fresh instances reach each disturbed frame in the state the
+            // timed one had: every frame before it, untimed.
+            const std::vector<std::unique_ptr<BroadPhase>> instances = fresh(which);
+            source.rewind();
+            PairList found;
+            for (std::size_t index = 0; index <= last; ++index) {
+                std::optional<Frame> frame = source.next();
+                if (!frame) break;
+                const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
+                for (std::size_t i = 0; i < which.size(); ++i) {
+                    const std::size_t b = which[i];
+                    std::vector<bool>::reference flag = disturbed_[b][run][index];
+                    if (index >= first && flag) {
+                        const CallTiming t = time_find_pairs(*instances[i], boxes, found);
+                        ++counts_[b].tries;
+                        if (!t.disturbed()) {
+                            totals.baseline_samples(names_[b]).replace(run, index, t.cpu_ns);
+                            totals.baseline_wall_samples(names_[b]).replace(run, index, t.wall_ns);
+                            flag = false;
+                            ++counts_[b].retimed;
+                        }
+                    } else {
+                        instances[i]->find_pairs(boxes, found);
+                        found = sorted(std::move(found));
+                    }
+                    if (pairs_digest(found) != board_digests_[index]) {
+                        throw mismatch(names_[b], found.size(), frame->number, "timed again: not the pairs the board found");
+                    }
+                }
+                source.feed(found);
+            }
+        }
+        if (!any) break;
+    }
+}
+
+std::map<std::string, TimingQuality> BaselineTimer::quality(const RunTotals& totals) const {
+    std::map<std::string, TimingQuality> out;
+    const std::map<std::string, TimingFigures> figures = totals.baseline_figures();
+    const std::size_t first = first_measured(board_digests_.size(), totals.warmup_frames());
+    for (std::size_t b = 0; b < names_.size(); ++b) {
+        TimingQuality q;
+        for (const Disturbed& flags : disturbed_[b]) {
+            for (std::size_t k = first; k < flags.size(); ++k) {
+                ++q.frames_timed;
+                q.never_clean += flags[k] ? 1 : 0;
+            }
+        }
+        q.frames_retimed = counts_[b].retimed;
+        q.frames_disturbed = q.frames_retimed + q.never_clean;
+        q.tries = counts_[b].tries;
+        q.runs = static_cast<uint32_t>(disturbed_[b].size());
+        if (const auto it = figures.find(names_[b]); it != figures.end()) q.repeat_spread = repeat_spread_of(it->second.run_means);
+        out[names_[b]] = q;
+    }
+    return out;
 }
 
 }  // namespace cdvp

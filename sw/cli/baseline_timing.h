@@ -1,7 +1,11 @@
 // Times the software broad phases on a run's frames: once beside the
 // simulation, then again over the same frames with fresh instances for
 // --repeat, without simulating them again (the board's times are
-// deterministic; the baselines' are what vary from run to run).
+// deterministic; the baselines' are what vary from run to run). Each frame
+// is timed in the thread's CPU time; a frame disturbed while timed (a
+// pre-emption, a move to another CPU) is timed again afterwards, on fresh
+// instances stepped through the frames before it, up to run.retime_tries
+// times (docs/timing.md).
 #pragma once
 
 #include <cstdint>
@@ -16,26 +20,34 @@
 #include "sw/cli/frame_source.h"
 #include "sw/cli/host_factor.h"
 #include "sw/cli/run_report.h"
+#include "sw/timing/thread_timer.h"
+#include "sw/timing/timing_quality.h"
 
 namespace cdvp {
 
-// The native wall time of one call of a baseline on a frame, in ns; the
-// pairs it found, sorted, in 'found'. Every baseline time cdvp reports, and
-// every reference time cdvp calibrate measures, is taken this way.
-double time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found);
+// One call of a baseline on a frame, timed (CPU time, wall time, what
+// disturbed it); the pairs it found, sorted, in 'found'. Every baseline
+// time cdvp reports, and every reference time cdvp calibrate measures, is
+// taken this way.
+CallTiming time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found);
+
+// How often a disturbed frame is timed again unless run.retime_tries says otherwise.
+constexpr uint32_t kDefaultRetimeTries = 3;
 
 class BaselineTimer {
 public:
     // names: --baseline's comma-separated list (empty: none); host: each
-    // baseline's factor to the modelled host. Throws InputError for an
-    // unknown name or one given twice.
-    BaselineTimer(const std::string& names, HostTiming host);
+    // baseline's factor to the modelled host; max_tries: how often a
+    // disturbed frame is timed again. Throws InputError for an unknown name
+    // or one given twice.
+    BaselineTimer(const std::string& names, HostTiming host, uint32_t max_tries = kDefaultRetimeTries);
     BaselineTimer() = default;  // none
 
     bool empty() const { return names_.empty(); }
     // Each baseline collects at most `budget` pairs a frame (PairBudgetExceeded past it).
     void set_pair_budget(PairBudget budget);
     const std::vector<std::string>& names() const { return names_; }
+    uint32_t max_tries() const { return max_tries_; }
 
     // First run: times each baseline on the frame, checks it finds the
     // board's pairs (sorted) and keeps a digest of them for the later runs.
@@ -48,12 +60,35 @@ public:
     // is called after each frame (a progress display).
     void repeat(FrameSource& source, uint32_t runs, RunTotals& totals, const std::function<void()>& frame_done);
 
+    // After the runs: each measured frame (after the warm-up) that was
+    // disturbed is timed again on fresh instances, in its run's place in
+    // totals, until it comes clean or max_tries passes are spent.
+    void retime(FrameSource& source, RunTotals& totals);
+
+    // Each baseline's timing quality (the loads left for the caller).
+    std::map<std::string, TimingQuality> quality(const RunTotals& totals) const;
+
 private:
+    // A run's frames that were disturbed and not yet timed clean.
+    using Disturbed = std::vector<bool>;
+    // Fresh instances of the named baselines, holding the run's pair budget.
+    std::vector<std::unique_ptr<BroadPhase>> fresh(const std::vector<std::size_t>& which) const;
+    // The index of the first measured frame of a run of `frames`.
+    static std::size_t first_measured(std::size_t frames, uint64_t warmup) { return frames > warmup ? warmup : 0; }
+
     std::vector<std::string> names_;
     std::vector<std::unique_ptr<BroadPhase>> first_run_;
     HostTiming host_;
+    uint32_t max_tries_ = kDefaultRetimeTries;
     PairBudget budget_;
     std::vector<uint64_t> board_digests_;  // one a frame of the first run
+    std::vector<std::vector<Disturbed>> disturbed_;  // [baseline][run][frame]
+    // By baseline, over measured frames: timed clean by a later try, and the
+    // later tries (a frame first disturbed either came clean or never did).
+    struct Counts {
+        uint64_t retimed = 0, tries = 0;
+    };
+    std::vector<Counts> counts_;
 };
 
 }  // namespace cdvp

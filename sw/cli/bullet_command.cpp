@@ -1,5 +1,6 @@
 #include "sw/cli/bullet_command.h"
 
+#include <chrono>
 #include <iostream>
 #include <memory>
 #include <numeric>
@@ -9,6 +10,7 @@
 #include "models/common/user_text.h"
 #include "sw/bullet/board_broadphase.h"
 #include "sw/cli/bullet_report.h"
+#include "sw/cli/machine_info.h"
 #include "sw/cli/exit_status.h"
 #include "sw/cli/format_reference.h"
 #include "sw/cli/run_checks.h"
@@ -28,9 +30,11 @@ constexpr const char* kUsage =
     "lockstep, the same scene on one of Bullet's broad phases. Per frame: the board's modelled time,\n"
     "Bullet's broad-phase time (AABB update and pair search) and whole step time, the broad phase's\n"
     "share of the step and its Amdahl bound (the most any broad-phase accelerator can speed the step\n"
-    "up), and the speed-ups the board gives. Software times are native wall times x the host factor\n"
-    "(from the host profile, as for cdvp run: docs/timing.md). The summary gives each time's mean over\n"
-    "the frames after the warm-up, which the speed-ups compare, with p50, p99 and the maximum.\n"
+    "up), and the speed-ups the board gives. Software times are the thread's CPU time x the host factor\n"
+    "(from the host profile, as for cdvp run: docs/timing.md); a step a pre-emption or a move to another\n"
+    "CPU disturbed is stepped again on a fresh world and timed again (--retime-tries). The summary gives\n"
+    "each time's mean over the frames after the warm-up, which the speed-ups compare, with p50, p99 and\n"
+    "the maximum, and whether the software's timing came clean.\n"
     "Settings come in layers, each over the last, as for cdvp run: defaults < --board preset\n"
     "< --config FILE < -c NAME=VALUE < the dedicated flags below; the board is checked against its\n"
     "device as cdvp run checks it (--memory auto moves the boxes to SSRAM tiles past the block RAMs).\n"
@@ -152,6 +156,49 @@ std::optional<std::string> lost_pair(const FormatReference::Check& check, Number
     return lost_pair_message(format, frame, *check.missing);
 }
 
+// Each software step after the warm-up that a pre-emption or a move to
+// another CPU disturbed is timed again: a fresh world stepped untimed up to
+// it (Bullet's worlds are deterministic), up to `tries` passes. The quality
+// of the software world's timing, its loads left for the caller.
+TimingQuality retime_software(const SceneSpec& spec, BroadphaseKind software, double factor, uint32_t tries,
+                              std::vector<std::vector<bool>>& disturbed, BulletTimes& times) {
+    const std::size_t frames = disturbed.empty() ? 0 : disturbed[0].size();
+    const std::size_t first = frames > times.warmup_frames() ? times.warmup_frames() : 0;
+    TimingQuality quality;
+    for (uint32_t pass = 0; pass < tries; ++pass) {
+        bool any = false;
+        for (std::size_t run = 0; run < disturbed.size(); ++run) {
+            std::size_t last = frames;
+            for (std::size_t k = first; k < frames; ++k) {
+                if (disturbed[run][k]) last = k;
+            }
+            if (last == frames) continue;
+            any = true;
+            const std::unique_ptr<BulletWorld> world = make_scene_world(spec, software);
+            for (std::size_t k = 0; k <= last; ++k) {
+                const StepTimes step = world->step();
+                if (k < first || !disturbed[run][k]) continue;
+                ++quality.tries;
+                if (step.disturbed) continue;
+                times.replace_software(run, k, step.broadphase_share_ns() * factor, step.step_ns * factor);
+                disturbed[run][k] = false;
+                ++quality.frames_retimed;
+            }
+        }
+        if (!any) break;
+    }
+    for (const std::vector<bool>& flags : disturbed) {
+        for (std::size_t k = first; k < flags.size(); ++k) {
+            ++quality.frames_timed;
+            quality.never_clean += flags[k] ? 1 : 0;
+        }
+    }
+    quality.frames_disturbed = quality.frames_retimed + quality.never_clean;
+    quality.runs = static_cast<uint32_t>(disturbed.size());
+    quality.repeat_spread = repeat_spread_of(times.figures(&BulletFrame::software_step_host_ns).run_means);
+    return quality;
+}
+
 int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Outputs& out, const RunBudgets& budgets,
                 const std::vector<std::string>& command_line) {
     const uint32_t boxes = scene_layout(spec).proxies;
@@ -178,6 +225,7 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
     BulletTimes times(settings.run.warmup);
     FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair, budgets.pair_budget());
     RunWallTimes wall;  // the board's simulation, and the software worlds' steps beside it
+    std::vector<std::vector<bool>> disturbed(1);  // the software world's steps, [run][frame]
     for (uint64_t frame = 0; frame < settings.scene.frames; ++frame) {
         StepTimes board_step;
         try {
@@ -186,6 +234,7 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
             return frame_failed(link.last_fault(), frame, budgets);
         }
         const StepTimes software_step = software_world->step();
+        disturbed[0].push_back(software_step.disturbed);
         const BoardFrameStats& board = broadphase.last_frame();
         wall.simulator_s += board.simulate_ns * 1e-9;
         wall.baselines_s += software_step.step_ns * 1e-9;
@@ -214,12 +263,21 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
         software_world.reset();  // its memory is not the fresh world's to reuse
         software_world = make_scene_world(spec, setup.software);
         times.start_software_run();
+        disturbed.emplace_back();
         for (uint64_t frame = 0; frame < settings.scene.frames; ++frame) {
             const StepTimes step = software_world->step();
             wall.baselines_s += step.step_ns * 1e-9;
             times.add_software(step.broadphase_share_ns() * factor, step.step_ns * factor);
+            disturbed.back().push_back(step.disturbed);
         }
     }
+    software_world.reset();
+    const auto retime_start = std::chrono::steady_clock::now();
+    TimingQuality quality = retime_software(spec, setup.software, factor, settings.run.retime_tries, disturbed, times);
+    wall.baselines_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - retime_start).count();
+    quality.load_start = run.load_average_start;
+    quality.load_end = load_average();
+    times.set_quality(quality, settings.run.retime_tries);
     platform.close_trace();
     if (const std::optional<std::string> failed = out.waves.finish(platform)) {
         std::cerr << "cdvp bullet: " << *failed << '\n';
@@ -263,6 +321,7 @@ int simulate(const BulletOptions& o, const po::variables_map& vm, const std::vec
     check_scene_fits(origin, values, scene_layout(spec).proxies, frames, budgets);
     check_trace_window(setup.trace_window, frames - 1, describe(spec));
     setup.platform.pair_budget = budgets.pair_budget();
+    pin_to_setting_cpu(values);
     return step_worlds(o, spec, setup, out, budgets, command_line);
 }
 

@@ -1,5 +1,7 @@
 #include "sw/cli/bullet_report.h"
 
+#include "sw/study/report_summary.h"
+
 #include <cstdio>
 #include <sstream>
 
@@ -93,6 +95,20 @@ void BulletTimes::add_software(double broadphase_host_ns, double step_host_ns) {
     step_.add(step_host_ns);
 }
 
+void BulletTimes::replace_software(std::size_t run, std::size_t frame, double broadphase_host_ns, double step_host_ns) {
+    broadphase_.replace(run, frame, broadphase_host_ns);
+    step_.replace(run, frame, step_host_ns);
+    if (run == 0 && frame < frames_.size()) {
+        frames_[frame].software_broadphase_host_ns = broadphase_host_ns;
+        frames_[frame].software_step_host_ns = step_host_ns;
+    }
+}
+
+void BulletTimes::set_quality(const TimingQuality& quality, uint32_t tries) {
+    quality_ = quality;
+    tries_ = tries;
+}
+
 TimingFigures BulletTimes::figures(double BulletFrame::*time) const {
     if (time == &BulletFrame::board_ns) return board_.figures();
     if (time == &BulletFrame::bookkeeping_host_ns) return bookkeeping_.figures();
@@ -122,6 +138,8 @@ nlohmann::json BulletTimes::section(const SceneSpec& spec, BroadphaseKind softwa
         summary["run_means_" + name] = figures.run_means;
     }
     add_ratios(summary, means());
+    summary["timing_quality"] = to_json(quality_);
+    summary["retime_tries"] = tries_;
     return {{"scene", spec.name},
             {"objects", spec.objects},
             {"seed", spec.seed},
@@ -164,6 +182,9 @@ std::string BulletTimes::table(BroadphaseKind software, const std::string& host,
         << "amdahl: the most a free broad phase would gain; bp_gain, step_gain: what the board gains on the\n"
         << "broad phase and on the step, from the means (the first " << warmup_frames_
         << " frames left out: --warmup).\n";
+    out << "software world's timing (thread CPU time): " << quality_.describe(tries_);
+    if (!quality_.clean()) out << "; the gains may not hold (docs/timing.md)";
+    out << '\n';
     return out.str();
 }
 

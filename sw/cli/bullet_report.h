@@ -5,8 +5,8 @@
 // Amdahl bound and the gains the board gives; over the frames after the
 // warm-up, each time's mean (for the software world, the median of the
 // --repeat runs' means), p50, p99 and maximum, and the ratios of the means.
-// Times name their clock (docs/timing.md): _host_ns is native time x the
-// host factor, a plain _ns simulated.
+// Times name their clock (docs/timing.md): _host_ns is native time (the
+// thread's CPU time) x the host factor, a plain _ns simulated.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +17,7 @@
 
 #include "sw/bullet/scenes.h"
 #include "sw/timing/frame_samples.h"
+#include "sw/timing/timing_quality.h"
 
 namespace cdvp {
 
@@ -50,6 +51,11 @@ public:
     // start, and its frames' times.
     void start_software_run();
     void add_software(double broadphase_host_ns, double step_host_ns);
+    // A software frame timed again (a disturbed one): frame `frame` of run `run`, from 0.
+    void replace_software(std::size_t run, std::size_t frame, double broadphase_host_ns, double step_host_ns);
+    // What the software world's timing can be trusted for, and the tries it had.
+    void set_quality(const TimingQuality& quality, uint32_t tries);
+    const TimingQuality& quality() const { return quality_; }
 
     const std::vector<BulletFrame>& frames() const { return frames_; }
     uint64_t warmup_frames() const { return warmup_frames_; }
@@ -70,6 +76,8 @@ private:
     uint64_t warmup_frames_;
     FrameSamples board_, bookkeeping_, broadphase_, step_;
     std::vector<BulletFrame> frames_;
+    TimingQuality quality_;
+    uint32_t tries_ = 0;
 };
 
 }  // namespace cdvp

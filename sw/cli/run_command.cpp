@@ -27,6 +27,7 @@
 #include "sw/cli/run_platform.h"
 #include "sw/cli/run_report.h"
 #include "sw/cli/run_setup.h"
+#include "sw/cli/shared_baselines.h"
 #include "sw/cli/wave_outputs.h"
 #include "sw/scene/conversion.h"
 #include "sw/study/output/output_set.h"
@@ -132,7 +133,7 @@ Setup make_setup(const RunOptions& o, const po::variables_map& vm) {
     }
     setup.trace_window = vcd_window(o.vcd_frames, vm);
     setup.host = resolve_host_timing(setup.values);
-    setup.baselines = BaselineTimer(o.baselines, setup.host);
+    setup.baselines = BaselineTimer(o.baselines, setup.host, setup.values.settings().run.retime_tries);
     const Setting& repeat = *find_setting("run.repeat");
     if (!setup.values.is_default(repeat) && setup.baselines.empty()) {
         throw InputError(setup.values.where(repeat) +
@@ -167,7 +168,9 @@ auto within_budget(const RunBudgets& budgets, uint64_t frame, Stage&& stage) {
 
 int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& out,
              const std::vector<std::string>& command_line, const RunBudgets& budgets, nlohmann::json* memory_report,
-             RunMemo* memo) {
+             RunMemo* memo, SharedBaselines* shared) {
+    // A shared timing of this workload: the baselines are not run at all.
+    const bool time_baselines = !setup.baselines.empty() && !(shared != nullptr && shared->loaded());
     RunConfig run = describe_run(setup, static_cast<uint32_t>(source.max_objects()), budgets);
     if (out.report != nullptr || !o.quiet) describe_device_fit(run, setup.values.settings());
     run.source = source.describe();
@@ -193,7 +196,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
                               memo != nullptr ? memo->pairs : nullptr);
 
     // The later runs of the baselines (--repeat) count as frames too.
-    const std::size_t baseline_runs = setup.baselines.empty() ? 1 : setup.values.settings().run.repeat;
+    const std::size_t baseline_runs = time_baselines ? setup.values.settings().run.repeat : 1;
     Progress progress(source.frame_count() * baseline_runs, !o.quiet);
     RunWallTimes wall;  // the simulator's own, and the baselines' beside it
     const auto seconds_since = [](std::chrono::steady_clock::time_point start) {
@@ -224,12 +227,14 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         FrameStats stats{frame.number, boxes.size(), result.pairs.size(),
                          run.config.sweep_cycles(boxes.size()), 0, result.phases, {}, sim_wall_native_ns, check.extra};
         stats.load_wait_slots = load_wait_slots(run, boxes.size());
-        if (!setup.baselines.empty()) {
+        if (time_baselines) {
             const auto baselines_start = std::chrono::steady_clock::now();
             stats.baselines = within_budget(budgets, frame.number, [&] {
                 return setup.baselines.time_frame(boxes, sorted(reference.kept(check, result.pairs)), frame.number);
             });
             wall.baselines_s += seconds_since(baselines_start);
+        } else if (shared != nullptr && shared->loaded()) {
+            stats.baselines = shared->frame(static_cast<std::size_t>(totals.frames()), setup.host);
         }
         if (report) report->frame(stats);
         if (in_memory) in_memory->frame(stats);
@@ -287,10 +292,16 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         }
     }
     std::size_t frames_done = totals.frames();
-    if (!setup.baselines.empty()) {
+    if (!time_baselines && shared != nullptr && shared->loaded()) shared->complete(totals);
+    if (time_baselines) {
         const auto repeats_start = std::chrono::steady_clock::now();
         setup.baselines.repeat(source, setup.values.settings().run.repeat, totals, [&] { progress.update(++frames_done); });
+        setup.baselines.retime(source, totals);
+        std::map<std::string, TimingQuality> quality = setup.baselines.quality(totals);
+        for (auto& [name, q] : quality) q.load_start = run.load_average_start;
+        totals.set_timing_quality(std::move(quality), setup.baselines.max_tries());
         wall.baselines_s += seconds_since(repeats_start);
+        if (shared != nullptr) shared->publish(totals, setup.baselines.max_tries());
     }
     if (VirtualBoard* board = platform.board()) {
         board->close_trace();
@@ -367,11 +378,21 @@ int run_checked(int argc, char** argv, bool analytic_only = false, nlohmann::jso
         check_inject_frames(setup.platform.faults, source->last_frame(),
                             [&source](uint64_t n) { return source->has_frame(n); }, source->describe());
         check_trace_window(setup.trace_window, source->last_frame(), source->describe());
+        pin_to_setting_cpu(setup.values);
+        std::optional<SharedBaselines> shared;
+        if (vm.count("software-timings") && !setup.baselines.empty()) {
+            if (o.software_timings.empty()) throw InputError("--software-timings: expected a directory, got ''");
+            shared.emplace(o.software_timings,
+                           software_workload(vm.count("scene") ? o.scene : "", *source, setup.values,
+                                             setup.baselines.names(), setup.host),
+                           setup.baselines.names(), setup.values.settings().run.repeat, source->frame_count());
+        }
         // Every stage that collects a frame's pairs holds the same budget.
         setup.platform.pair_budget = budgets.pair_budget();
         setup.baselines.set_pair_budget(budgets.pair_budget());
         if (memo != nullptr) setup.platform.pair_memo = memo->pairs;
-        return simulate(o, *source, setup, out, report_command_line(argc, argv), budgets, memory_report, memo);
+        return simulate(o, *source, setup, out, report_command_line(argc, argv), budgets, memory_report, memo,
+                        shared ? &*shared : nullptr);
     } catch (po::error_with_option_name& e) {
         // boost quotes an unknown option as typed: keep a huge one short.
         const std::string name = e.get_option_name();

@@ -135,7 +135,13 @@ void add_extra(nlohmann::json& json, const ExtraPairs& e) {
 nlohmann::json frame_json(const FrameStats& f) {
     const FramePhases& p = f.phases;
     nlohmann::json baselines = nlohmann::json::object();
-    for (const auto& [name, t] : f.baselines) baselines[name] = {{"native_ns", t.native_ns}, {"host_ns", t.host_ns}};
+    for (const auto& [name, t] : f.baselines) {
+        baselines[name] = {{"native_ns", t.native_ns},
+                           {"wall_native_ns", t.wall_native_ns},
+                           {"host_ns", t.host_ns},
+                           {"involuntary_switches", t.involuntary_switches},
+                           {"migrated", t.migrated}};
+    }
     nlohmann::json frame = {{"frame", f.frame},
             {"objects", f.objects},
             {"pairs", f.pairs},
@@ -168,7 +174,10 @@ nlohmann::json frame_json(const FrameStats& f) {
 void RunTotals::add(const FrameStats& frame) {
     Sums& sums = frames_ < warmup_frames_ ? warmup_ : rest_;
     for (int k = 0; k < kPhases; ++k) sums.phases[k] += phase_value(frame.phases, k);
-    for (const auto& [name, t] : frame.baselines) baseline_samples(name).add(t.native_ns);
+    for (const auto& [name, t] : frame.baselines) {
+        baseline_samples(name).add(t.native_ns);
+        baseline_wall_samples(name).add(t.wall_native_ns);
+    }
     board_total_.add(frame.phases.total_ns);
     latency_.add(frame.phases.latency_ns);
     sim_wall_.add(frame.sim_wall_native_ns);
@@ -183,6 +192,20 @@ void RunTotals::add(const FrameStats& frame) {
 
 FrameSamples& RunTotals::baseline_samples(const std::string& name) {
     return baselines_.try_emplace(name, warmup_frames_).first->second;
+}
+
+FrameSamples& RunTotals::baseline_wall_samples(const std::string& name) {
+    return baselines_wall_.try_emplace(name, warmup_frames_).first->second;
+}
+
+void RunTotals::clear_baselines() {
+    baselines_.clear();
+    baselines_wall_.clear();
+}
+
+void RunTotals::set_timing_quality(std::map<std::string, TimingQuality> quality, uint32_t max_tries) {
+    quality_ = std::move(quality);
+    max_tries_ = max_tries;
 }
 
 // Steady-state means: the warm-up frames are left out when there are more,
@@ -216,6 +239,8 @@ void MemoryReport::end(const RunTotals& totals, const HostTiming& host) { out_["
 ReportSummary RunTotals::summary(const HostTiming& host) const {
     const TimingFigures board = board_figures();
     ReportSummary s;
+    const std::array<double, 3> load_end = load_average();
+    bool first_quality = true;
     for (const auto& [name, figures] : baseline_figures()) {
         const double factor = host.factor(name);
         BaselineSummary& b = s.baselines[name];
@@ -224,13 +249,28 @@ ReportSummary RunTotals::summary(const HostTiming& host) const {
         b.run_means_native_ns = figures.run_means;
         b.host_factor = factor;
         b.speedup = speedup(b.host_ns, board.spread);
+        b.timing = timing_id_;
+        if (const auto wall = baselines_wall_.find(name); wall != baselines_wall_.end()) {
+            b.wall_native_ns = wall->second.figures().spread;
+        }
+        if (const auto q = quality_.find(name); q != quality_.end()) {
+            b.quality = q->second;
+            if (timing_id_.empty()) b.quality.load_end = load_end;  // a shared timing keeps its own
+            if (first_quality) {
+                s.timing_quality = b.quality;
+            } else {
+                s.timing_quality += b.quality;
+            }
+            first_quality = false;
+        }
     }
+    s.retime_tries = max_tries_;
     s.frames = frames();
     s.warmup_frames = warmup_frames();
     s.frames_in_means = frames_in_means();
     s.too_few_frames = frames() > 0 && board.too_few_frames();
     s.pairs = pairs();
-    s.load_average_end = load_average();
+    s.load_average_end = load_end;
     s.extra = extra();
     s.total_ns = board.spread;
     s.latency_ns = latency_figures().spread;

@@ -23,15 +23,21 @@
 #include "sw/study/report_summary.h"
 #include "platform/driver/board_driver.h"
 #include "sw/timing/frame_samples.h"
+#include "sw/timing/timing_quality.h"
 
 namespace cdvp {
 
 // Time names say which clock they are on (docs/timing.md): _native_ns is
 // measured on this machine, _host_ns is that times the host factor (the
 // modelled host), and a plain _ns is the platform's simulated time.
+// A baseline's native_ns is its thread's CPU time, the estimator every
+// figure rests on; wall_native_ns is the wall time beside it.
 struct BaselineTime {
-    double native_ns = 0;  // measured natively on this machine
-    double host_ns = 0;    // native_ns x the baseline's host factor: on the modelled host
+    double native_ns = 0;       // CPU time, measured natively on this machine
+    double wall_native_ns = 0;  // wall time of the same call
+    double host_ns = 0;         // native_ns x the baseline's host factor: on the modelled host
+    uint64_t involuntary_switches = 0;  // while it was timed (first try)
+    bool migrated = false;              // it moved to another CPU while timed
 };
 
 struct FrameStats {
@@ -100,8 +106,20 @@ public:
 
     explicit RunTotals(uint64_t warmup = kDefaultWarmupFrames) : warmup_frames_(warmup) {}
     void add(const FrameStats& frame);
-    // A baseline's samples, for the runs after the first (--repeat).
+    // A baseline's samples (CPU time, and wall time beside it), for the runs
+    // after the first (--repeat) and for frames timed again.
     FrameSamples& baseline_samples(const std::string& name);
+    FrameSamples& baseline_wall_samples(const std::string& name);
+    // What each baseline's timing can be trusted for (BaselineTimer::quality),
+    // and the tries a disturbed frame was given; the summary carries them.
+    void set_timing_quality(std::map<std::string, TimingQuality> quality, uint32_t max_tries);
+    const std::map<std::string, TimingQuality>& timing_quality() const { return quality_; }
+    // Every baseline's samples dropped, for a timing taken from elsewhere
+    // (a sweep's shared one), which `timing_id` then names in the summary.
+    void clear_baselines();
+    void set_timing_id(std::string id) { timing_id_ = std::move(id); }
+    const std::string& timing_id() const { return timing_id_; }
+    uint32_t retime_tries() const { return max_tries_; }
 
     uint64_t frames() const { return frames_; }
     uint64_t warmup_frames() const { return warmup_frames_; }
@@ -137,7 +155,10 @@ private:
     ExtraPairs extra_;
     Sums warmup_, rest_;
     FrameSamples board_total_{warmup_frames_}, sim_wall_{warmup_frames_}, latency_{warmup_frames_};
-    std::map<std::string, FrameSamples> baselines_;
+    std::map<std::string, FrameSamples> baselines_, baselines_wall_;
+    std::map<std::string, TimingQuality> quality_;
+    uint32_t max_tries_ = 0;
+    std::string timing_id_;
     std::vector<FrameStats> shown_;
 };
 

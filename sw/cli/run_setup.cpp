@@ -1,5 +1,7 @@
 #include "sw/cli/run_setup.h"
 
+#include "sw/timing/thread_timer.h"
+
 #include "platform/board_preset.h"
 #include "platform/config_file.h"
 #include "platform/device_fit.h"
@@ -111,6 +113,14 @@ void open_with_waves_and_summary(OutputSet& files, WaveOutputs& waves, const boo
     if (!quiet) files.add_standard_output("standard output");
     files.open();
     waves.bind(files);
+}
+
+void pin_to_setting_cpu(const SettingValues& values) {
+    const std::optional<uint32_t> cpu = values.settings().run.pinned_cpu();
+    if (!cpu) return;
+    if (const std::optional<std::string> refused = pin_thread_to_cpu(*cpu)) {
+        throw InputError(values.where(*find_setting("run.pin_cpu")) + ": " + *refused);
+    }
 }
 
 }  // namespace cdvp

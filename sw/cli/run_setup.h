@@ -66,6 +66,9 @@ RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& b
 void describe_device_fit(RunConfig& run, const Settings& settings);
 // The command line as the report records it: "cdvp", then the command's argv.
 std::vector<std::string> report_command_line(int argc, char** argv);
+// run.pin_cpu: pins this thread (the simulator and the software it times)
+// to the CPU, or throws InputError naming the setting and why it cannot.
+void pin_to_setting_cpu(const SettingValues& values);
 
 // What a simulating command (run, bullet) declares after its own outputs:
 // the waveforms (--vcd, --vcd-format) and, unless quiet, the summary on

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "models/common/user_text.h"
+#include "sw/cli/machine_info.h"
 #include "sw/cli/run_report.h"
 
 namespace cdvp {
@@ -45,6 +46,26 @@ std::string frames_described(const RunTotals& totals, const TimingFigures& figur
     return text;
 }
 
+// One line: whether the software's timing held still, and if not, which
+// baselines and how (the load at its end as the summary is printed).
+void print_timing_quality(std::ostream& out, const RunTotals& totals) {
+    const std::map<std::string, TimingQuality>& quality = totals.timing_quality();
+    if (quality.empty()) return;
+    TimingQuality all;
+    std::string disturbed;
+    bool first = true;
+    for (const auto& [name, q] : quality) {
+        all = first ? q : (all += q);
+        first = false;
+        if (!q.clean()) disturbed += (disturbed.empty() ? "" : ", ") + name;
+    }
+    if (totals.timing_id().empty()) all.load_end = load_average();  // a shared timing's loads are its own
+    out << "software timing (thread CPU time" << (totals.timing_id().empty() ? "" : ", shared " + totals.timing_id())
+        << "): " << all.describe(totals.retime_tries());
+    if (!disturbed.empty()) out << "; " << disturbed << "'s speedup may not hold (docs/timing.md)";
+    out << '\n';
+}
+
 // The means the speedups are taken from, with p50, p99 and the maximum.
 void print_timing(std::ostream& out, const RunConfig& run, const RunTotals& totals) {
     if (totals.frames() == 0) return;
@@ -84,6 +105,7 @@ void print_timing(std::ostream& out, const RunConfig& run, const RunTotals& tota
                           speedup(sw, b));
             out << line;
         }
+        print_timing_quality(out, totals);
     }
     if (board.too_few_frames()) {
         out << "note: these figures rest on " << board.frames_per_run << " frames, fewer than " << kMinMeasuredFrames

@@ -58,21 +58,55 @@ private:
 
 }  // namespace
 
+nlohmann::json to_json(const TimingQuality& q) {
+    return {{"verdict", q.verdict()},
+            {"frames_timed", q.frames_timed},
+            {"frames_disturbed", q.frames_disturbed},
+            {"frames_retimed", q.frames_retimed},
+            {"tries", q.tries},
+            {"never_clean", q.never_clean},
+            {"runs", q.runs},
+            {"repeat_spread", q.repeat_spread},
+            {"load_average_start", q.load_start},
+            {"load_average_end", q.load_end}};
+}
+
+TimingQuality timing_quality_from_json(const nlohmann::json& json, const std::string& where) {
+    if (!json.is_object()) throw InputError(where + ": timing_quality is not an object (expected a report of cdvp run)");
+    const Reader r(json, where + ": timing_quality");
+    TimingQuality q;
+    q.frames_timed = r.get<uint64_t>("frames_timed");
+    q.frames_disturbed = r.get<uint64_t>("frames_disturbed");
+    q.frames_retimed = r.get<uint64_t>("frames_retimed");
+    q.tries = r.get<uint64_t>("tries");
+    q.never_clean = r.get<uint64_t>("never_clean");
+    q.runs = r.get<uint32_t>("runs");
+    q.repeat_spread = r.get<double>("repeat_spread");
+    q.load_start = r.get<std::array<double, 3>>("load_average_start");
+    q.load_end = r.get<std::array<double, 3>>("load_average_end");
+    return q;
+}
+
 nlohmann::json to_json(const ReportSummary& s) {
     nlohmann::json baselines = nlohmann::json::object();
     for (const auto& [name, b] : s.baselines) {
         nlohmann::json& json = baselines[name];
         put_spread(json, "native_ns", b.native_ns);
+        put_spread(json, "wall_native_ns", b.wall_native_ns);
         put_spread(json, "host_ns", b.host_ns);
         json["run_means_native_ns"] = b.run_means_native_ns;
         json["host_factor"] = b.host_factor;
         json["speedup"] = b.speedup;
+        json["timing_quality"] = to_json(b.quality);
+        if (!b.timing.empty()) json["timing"] = b.timing;
     }
     nlohmann::json json = {{"frames", s.frames},
                            {"warmup_frames", s.warmup_frames},
                            {"frames_in_means", s.frames_in_means},
                            {"too_few_frames", s.too_few_frames},
                            {"baselines", baselines},
+                           {"timing_quality", to_json(s.timing_quality)},
+                           {"retime_tries", s.retime_tries},
                            {"pairs", s.pairs},
                            {"load_average_end", s.load_average_end},
                            {"reference_pairs", s.extra.reference_pairs},
@@ -120,7 +154,15 @@ ReportSummary summary_from_json(const nlohmann::json& json, const std::string& s
         out.run_means_native_ns = b.get<std::vector<double>>("run_means_native_ns");
         out.host_factor = b.get<double>("host_factor");
         out.speedup = b.get<double>("speedup");
+        // Reports from before CPU time was the estimator have no wall time beside it, nor a quality.
+        if (b.json().contains("mean_wall_native_ns")) out.wall_native_ns = b.spread("wall_native_ns");
+        if (b.json().contains("timing_quality")) {
+            out.quality = timing_quality_from_json(b.json()["timing_quality"], source + ": summary: baselines: " + name);
+        }
+        if (b.json().contains("timing")) out.timing = b.get<std::string>("timing");
     }
+    if (json.contains("timing_quality")) s.timing_quality = timing_quality_from_json(json["timing_quality"], source + ": summary");
+    if (json.contains("retime_tries")) s.retime_tries = r.get<uint32_t>("retime_tries");
     return s;
 }
 

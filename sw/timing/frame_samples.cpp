@@ -12,6 +12,25 @@ void FrameSamples::add(double value) {
     (run.warmup.size() < warmup_ ? run.warmup : run.measured).push_back(value);
 }
 
+void FrameSamples::replace(std::size_t run, std::size_t frame, double value) {
+    if (run >= runs_.size()) return;
+    Run& r = runs_[run];
+    if (frame < r.warmup.size()) {
+        r.warmup[frame] = value;
+    } else if (frame - r.warmup.size() < r.measured.size()) {
+        r.measured[frame - r.warmup.size()] = value;
+    }
+}
+
+std::vector<std::vector<double>> FrameSamples::run_values() const {
+    std::vector<std::vector<double>> values;
+    for (const Run& run : runs_) {
+        std::vector<double>& v = values.emplace_back(run.warmup);
+        v.insert(v.end(), run.measured.begin(), run.measured.end());
+    }
+    return values;
+}
+
 TimingFigures FrameSamples::figures() const {
     TimingFigures figures;
     bool any_measured = false;

@@ -2,6 +2,7 @@
 // sequence, with each run's warm-up frames left out of the statistics.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -50,7 +51,15 @@ public:
     // The next frame's value in the current run.
     void add(double value);
 
+    // Replaces frame `frame` (counted from the run's first, warm-up included)
+    // of run `run` (from 0): a frame timed again. Out of range: nothing.
+    void replace(std::size_t run, std::size_t frame, double value);
+
+    // Every run's values in frame order, warm-up frames first.
+    std::vector<std::vector<double>> run_values() const;
+
     uint64_t runs() const { return runs_.size(); }
+    uint64_t warmup() const { return warmup_; }
     TimingFigures figures() const;
 
 private:
