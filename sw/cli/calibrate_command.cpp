@@ -1,5 +1,9 @@
 #include "sw/cli/calibrate_command.h"
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -30,20 +34,26 @@ namespace cdvp {
 namespace {
 
 constexpr const char* kUsage =
-    "Usage: cdvp calibrate [--out PROFILE.json] [--repeat R] [-q]\n"
+    "Usage: cdvp calibrate [--out PROFILE.json] [--repeat R] [--max-spread P] [--time-limit S] [--strict] [-q]\n"
     "\n"
-    "Times the reference workload on this machine: every software baseline (sap, dbvt, brute, soa) on\n"
-    "the spheres scene of seed 1 at 100, 500 and 2000 objects, 30 frames each, the first 2 left out,\n"
-    "R times over with fresh instances. Writes a host profile: the machine (CPU model and clock,\n"
-    "cores, kernel), the build (compiler, flags, commit), the load average, each baseline's mean frame\n"
-    "time at each size with its spread over the R runs, and the factor to each preset's modelled host.\n"
+    "Times the reference workload on this machine in the thread's CPU time: every software baseline (sap,\n"
+    "dbvt, brute, soa) on the spheres scene of seed 1 at 100, 500 and 2000 objects, 30 frames each, the\n"
+    "first 2 left out, with fresh instances each run. It runs the workload again until, for every baseline\n"
+    "and size, R runs' means lie within P% of each other (those R are kept; a run a neighbour disturbed\n"
+    "falls outside them), or S seconds have passed. Writes a host profile: the machine (CPU model and\n"
+    "clock, cores, kernel), the build (compiler, flags, commit), the load average, each baseline's mean\n"
+    "frame time at each size with its runs and spread, the runs made and the worst spread, and the factor\n"
+    "to each preset's modelled host. A profile whose spread stayed over P% is written marked poor, with a\n"
+    "warning naming the load (refused, and nothing written, with --strict); runs that use it say so.\n"
     "Runs read it (--host-profile, or the default location) and scale each baseline's native time by\n"
-    "its preset's reference time over this machine's (docs/timing.md). Run it on an otherwise idle\n"
-    "machine, with the build the runs will use.";
+    "its preset's reference time over this machine's (docs/timing.md).";
 
 struct CalibrateOptions {
     std::string out;
     uint32_t repeat = 5;
+    double max_spread_percent = 3;
+    double time_limit_s = 120;
+    bool strict = false;
     bool quiet = false;
 };
 
@@ -56,63 +66,129 @@ std::string utc_now() {
     return text;
 }
 
-// One size of the workload, 'repeat' times: every baseline on each frame in
-// turn (as cdvp run times them), the scene stepped on the pairs they agree on.
-std::map<std::string, TimingFigures> time_size(uint64_t objects, uint32_t repeat) {
+// One run of one size: every baseline on each frame in turn (as cdvp run
+// times them), the scene stepped on the pairs they agree on; each
+// baseline's mean frame time after the warm-up, in CPU time.
+std::map<std::string, double> time_run(uint64_t objects, uint64_t& disturbed_frames) {
     namespace w = reference_workload;
     std::map<std::string, FrameSamples> samples;
-    for (const std::string& name : w::baselines()) samples.emplace(name, FrameSamples(w::kWarmup));
+    std::vector<std::unique_ptr<BroadPhase>> fresh;
+    for (const std::string& name : w::baselines()) {
+        samples.emplace(name, FrameSamples(w::kWarmup));
+        fresh.push_back(make_broad_phase(name));
+    }
     BouncingSpheresConfig scene;
     scene.objects = static_cast<std::size_t>(objects);
     scene.seed = w::kSeed;
-    for (uint32_t run = 0; run < repeat; ++run) {
-        std::vector<std::unique_ptr<BroadPhase>> fresh;
-        for (const std::string& name : w::baselines()) {
-            fresh.push_back(make_broad_phase(name));
-            samples.at(name).start_run();
-        }
-        const std::unique_ptr<FrameSource> source = spheres_source(scene, static_cast<std::size_t>(w::kFrames));
-        PairList first, found;
-        while (std::optional<Frame> frame = source->next()) {
-            const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
-            for (std::size_t b = 0; b < fresh.size(); ++b) {
-                samples.at(fresh[b]->name()).add(time_find_pairs(*fresh[b], boxes, b == 0 ? first : found));
-                if (b > 0 && found != first) {
-                    throw std::runtime_error("calibrate: baseline " + fresh[b]->name() + " disagrees with " +
-                                             fresh[0]->name() + " on frame " + std::to_string(frame->number));
-                }
+    const std::unique_ptr<FrameSource> source = spheres_source(scene, static_cast<std::size_t>(w::kFrames));
+    PairList first, found;
+    while (std::optional<Frame> frame = source->next()) {
+        const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
+        for (std::size_t b = 0; b < fresh.size(); ++b) {
+            const CallTiming t = time_find_pairs(*fresh[b], boxes, b == 0 ? first : found);
+            samples.at(fresh[b]->name()).add(t.cpu_ns);
+            disturbed_frames += t.disturbed() ? 1 : 0;
+            if (b > 0 && found != first) {
+                throw std::runtime_error("calibrate: baseline " + fresh[b]->name() + " disagrees with " +
+                                         fresh[0]->name() + " on frame " + std::to_string(frame->number));
             }
-            source->feed(first);
         }
+        source->feed(first);
     }
-    std::map<std::string, TimingFigures> figures;
-    for (const auto& [name, s] : samples) figures[name] = s.figures();
-    return figures;
+    std::map<std::string, double> means;
+    for (const auto& [name, s] : samples) means[name] = s.figures().spread.mean;
+    return means;
 }
 
-HostProfile measure(uint32_t repeat, bool quiet) {
+// The `keep` of `means` that lie closest together (by max/min), ascending;
+// all of them when there are no more.
+std::vector<double> closest(std::vector<double> means, std::size_t keep) {
+    std::sort(means.begin(), means.end());
+    if (means.size() <= keep) return means;
+    std::size_t best = 0;
+    for (std::size_t k = 1; k + keep <= means.size(); ++k) {
+        if (means[k + keep - 1] * means[best] < means[best + keep - 1] * means[k]) best = k;
+    }
+    return {means.begin() + static_cast<std::ptrdiff_t>(best), means.begin() + static_cast<std::ptrdiff_t>(best + keep)};
+}
+
+// Runs of the whole workload until every baseline's kept runs agree within
+// the target at every size, or the time is up (at least `repeat` runs).
+HostProfile measure(const CalibrateOptions& o) {
+    namespace w = reference_workload;
     HostProfile profile;
     profile.created = utc_now();
     profile.machine = read_machine_info();
     profile.build = build_info();
-    profile.repeat = repeat;
+    profile.repeat = o.repeat;
+    profile.target_spread = o.max_spread_percent / 100;
     profile.load_average_start = load_average();
-    for (const uint64_t objects : reference_workload::objects()) {
-        if (!quiet) std::cerr << "cdvp calibrate: timing " << objects << " objects\n";
-        for (const auto& [name, figures] : time_size(objects, repeat)) {
-            profile.reference[name].sizes.push_back({objects, figures.run_means, figures.spread.mean});
-        }
+    for (const std::string& name : w::baselines()) {
+        for (const uint64_t objects : w::objects()) profile.reference[name].sizes.push_back({objects, {}, {}, 0});
     }
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    for (uint32_t run = 1;; ++run) {
+        for (std::size_t size = 0; size < w::objects().size(); ++size) {
+            for (const auto& [name, mean] : time_run(w::objects()[size], profile.disturbed_frames)) {
+                ReferenceTiming& t = profile.reference.at(name).sizes[size];
+                t.run_means_native_ns.push_back(mean);
+                t.kept_means_native_ns = closest(t.run_means_native_ns, o.repeat);
+            }
+        }
+        profile.runs = run;
+        profile.spread = 0;
+        for (const auto& [name, baseline] : profile.reference) {
+            for (const ReferenceTiming& t : baseline.sizes) profile.spread = std::max(profile.spread, t.spread());
+        }
+        if (!o.quiet && isatty(2)) {
+            std::fprintf(stderr, "\rcdvp calibrate: run %u, spread %.1f%% (target %.1f%%)", run, 100 * profile.spread,
+                         o.max_spread_percent);
+        }
+        if (run >= o.repeat && (profile.spread <= profile.target_spread || elapsed() >= o.time_limit_s)) break;
+        if (run >= 10000) break;
+    }
+    if (!o.quiet && isatty(2)) std::fputs("\r\033[K", stderr);
+    profile.seconds = elapsed();
     profile.load_average_end = load_average();
     for (auto& [name, baseline] : profile.reference) {
         std::vector<double> means;
-        for (const ReferenceTiming& t : baseline.sizes) means.push_back(t.mean_native_ns);
+        for (ReferenceTiming& t : baseline.sizes) {
+            t.mean_native_ns = quantile(t.kept_means_native_ns, 0.5);
+            means.push_back(t.mean_native_ns);
+        }
         baseline.reference_native_ns = geometric_mean(means);
     }
     for (const std::string& name : board_preset_names()) {
         profile.factors[name] = derive_factors(load_board_preset(name).applied().settings().host, profile);
     }
     return profile;
+}
+
+// The worst baseline and size, for the warning.
+std::string worst_words(const HostProfile& p) {
+    std::string words;
+    double worst = -1;
+    for (const auto& [name, baseline] : p.reference) {
+        for (const ReferenceTiming& t : baseline.sizes) {
+            if (t.spread() > worst) {
+                worst = t.spread();
+                words = name + " at " + std::to_string(t.objects) + " objects";
+            }
+        }
+    }
+    return words;
+}
+
+// One line: why this profile is poor, and what to do.
+std::string poor_words(const HostProfile& p) {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "the reference workload's runs stayed %.1f%% apart (%s), over the %.1f%% asked for, after %u runs "
+                  "in %.0f s at load %.2f to %.2f (%llu frames disturbed)",
+                  100 * p.spread, worst_words(p).c_str(), 100 * p.target_spread, p.runs, p.seconds,
+                  p.load_average_start[0], p.load_average_end[0], static_cast<unsigned long long>(p.disturbed_frames));
+    return line;
 }
 
 std::string summary(const HostProfile& p, const std::string& out) {
@@ -122,7 +198,10 @@ std::string summary(const HostProfile& p, const std::string& out) {
     text << "host profile of " << printable(p.machine.cpu_model) << " (" << p.machine.cores_allowed << " of "
          << p.machine.cores_online << " cores), " << printable(p.build.compiler) << " " << printable(p.build.flags)
          << line;
-    text << "  baseline  objects  mean_native_us  spread over " << p.repeat << " runs\n";
+    std::snprintf(line, sizeof line, "  thread CPU time; %u runs in %.1f s, the %u closest kept; worst spread %.1f%% (target %.1f%%)\n",
+                  p.runs, p.seconds, p.repeat, 100 * p.spread, 100 * p.target_spread);
+    text << line;
+    text << "  baseline  objects  mean_native_us  spread over the " << p.repeat << " kept runs\n";
     for (const auto& [name, baseline] : p.reference) {
         for (const ReferenceTiming& t : baseline.sizes) {
             std::snprintf(line, sizeof line, "  %-8s %8llu %15.1f %8.1f%%\n", name.c_str(),
@@ -155,10 +234,18 @@ int calibrate(const CalibrateOptions& o, const po::variables_map& vm) {
     const std::size_t profile_file = files.add_output("--out", out);
     if (!o.quiet) files.add_standard_output("standard output");
     files.open();
-    const HostProfile profile = measure(o.repeat, o.quiet);
+    const HostProfile profile = measure(o);
+    if (profile.poor() && o.strict) {
+        throw InputError("--strict: " + poor_words(profile) + "; nothing written: calibrate on a quieter machine, or "
+                         "give a larger --max-spread or --time-limit");
+    }
     files.file(profile_file).stream() << host_profile_json(profile);
     if (!o.quiet) files.set_standard_output(summary(profile, out));
     if (const std::optional<OutputFailure> failure = files.try_commit()) return commit_failed("cdvp calibrate", *failure);
+    if (profile.poor()) {
+        std::cerr << "cdvp calibrate: warning: " << poor_words(profile)
+                  << "; the profile is marked poor and runs that use it say so (docs/timing.md)\n";
+    }
     return kExitDone;
 }
 
@@ -171,7 +258,12 @@ int calibrate_command(int argc, char** argv) {
         ("out", po::value(&o.out)->value_name("PROFILE.json"),
          "the profile to write (default: host-profile.json in $XDG_CONFIG_HOME/cdvp, else in ~/.config/cdvp, "
          "where runs look for it)")
-        ("repeat", number<uint32_t>(&o.repeat, 1, 1000, "R"), "runs of the workload; each time is the median of their means")
+        ("repeat", number<uint32_t>(&o.repeat, 1, 1000, "R"),
+         "runs kept at each size, the R whose means lie closest; each time is the median of their means")
+        ("max-spread", number<double>(&o.max_spread_percent, 0.1, 100, "P"),
+         "repeat the workload until the kept runs' means lie within P% (max/min - 1) at every size and baseline")
+        ("time-limit", number<double>(&o.time_limit_s, 1, 86400, "S"), "stop repeating after S seconds")
+        ("strict", po::bool_switch(&o.strict), "refuse, writing nothing, when the spread stays over P%")
         ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors");
     return run_command_line("cdvp calibrate", argc, argv, kUsage, options,
                             [&o](const po::variables_map& vm) { return calibrate(o, vm); });

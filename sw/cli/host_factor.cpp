@@ -110,6 +110,9 @@ HostTiming resolve_host_timing(const HostConfig& host, bool factor_given) {
     timing.factors.erase("overall");
     timing.profile_sha256 = profile.sha256;
     timing.profile_machine = profile.machine.cpu_model + ", " + profile.created;
+    timing.profile_spread = profile.spread;
+    timing.profile_target_spread = profile.target_spread;
+    timing.profile_load = profile.load_average_start;
     return timing;
 }
 
@@ -120,6 +123,13 @@ HostTiming resolve_host_timing(const SettingValues& values) {
 }
 
 std::string uncalibrated_note(const HostTiming& timing) {
+    if (timing.profile_poor()) {
+        char text[160];
+        std::snprintf(text, sizeof text, "its runs stayed %.1f%% apart, over the %.1f%% it was asked for, at load %.2f",
+                      100 * timing.profile_spread, 100 * timing.profile_target_spread, timing.profile_load[0]);
+        return "host factors rest on a poor profile, " + printable(timing.profile_path) + ": " + text +
+               " (cdvp calibrate on a quieter machine; docs/timing.md)";
+    }
     if (timing.basis != HostTiming::Basis::kUncalibrated) return {};
     return "host factor " + factor_text(timing.overall) + " for " + printable(timing.host) +
            " is the preset's uncalibrated estimate: no host profile" +

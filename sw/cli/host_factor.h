@@ -6,6 +6,7 @@
 // --host-factor given by the user overrides all of it.
 #pragma once
 
+#include <array>
 #include <map>
 #include <string>
 
@@ -29,6 +30,10 @@ struct HostTiming {
     std::string profile_path;               // the profile looked for (calibrated: read)
     std::string profile_sha256;             // calibrated: of the file read
     std::string profile_machine;            // calibrated: the CPU it was taken on, and when
+    double profile_spread = 0;              // calibrated: the profile's worst spread of its kept runs
+    double profile_target_spread = 0;       // and what it was calibrated for
+    std::array<double, 3> profile_load{};   // the load as it began
+    bool profile_poor() const { return basis == Basis::kCalibrated && profile_spread > profile_target_spread; }
 
     // The factor for a baseline's times: its own when calibrated, else overall.
     double factor(const std::string& baseline) const;
@@ -54,7 +59,7 @@ HostTiming resolve_host_timing(const HostConfig& host, bool factor_given);
 HostTiming resolve_host_timing(const SettingValues& values);
 
 // The line a run prints on stderr when it falls back on the preset's
-// uncalibrated factor; empty otherwise.
+// uncalibrated factor, or rests on a poor profile; empty otherwise.
 std::string uncalibrated_note(const HostTiming& timing);
 
 }  // namespace cdvp

@@ -20,7 +20,8 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kFormat = "cdvp host profile";
-constexpr int kFormatVersion = 1;
+// 2: times are the thread's CPU time, runs repeat until they agree (calibration section).
+constexpr int kFormatVersion = 2;
 constexpr const char* kWhat = "a host profile (cdvp calibrate writes one)";
 
 json workload_json(uint32_t repeat) {
@@ -81,11 +82,24 @@ private:
     const json& root_;
 };
 
+std::array<double, 3> read_load(const ProfileFields& fields, const std::string& field) {
+    const json& value = fields.at(field);
+    std::array<double, 3> load{};
+    if (!value.is_array() || value.size() != 3) fields.fail(field, "expected the 1, 5 and 15 minute load averages");
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (!value[k].is_number() || !(value[k].get<double>() >= 0)) {
+            fields.fail(field, "expected the 1, 5 and 15 minute load averages");
+        }
+        load[k] = value[k].get<double>();
+    }
+    return load;
+}
+
 }  // namespace
 
 double ReferenceTiming::spread() const {
-    if (run_means_native_ns.empty()) return 0;
-    const auto [lo, hi] = std::minmax_element(run_means_native_ns.begin(), run_means_native_ns.end());
+    if (kept_means_native_ns.empty()) return 0;
+    const auto [lo, hi] = std::minmax_element(kept_means_native_ns.begin(), kept_means_native_ns.end());
     return *lo > 0 ? *hi / *lo - 1 : 0;
 }
 
@@ -97,6 +111,7 @@ std::string host_profile_json(const HostProfile& p) {
             sizes.push_back({{"objects", t.objects},
                              {"mean_native_ns", t.mean_native_ns},
                              {"run_means_native_ns", t.run_means_native_ns},
+                             {"kept_means_native_ns", t.kept_means_native_ns},
                              {"spread", t.spread()}});
         }
         reference[name] = {{"reference_native_ns", baseline.reference_native_ns}, {"sizes", sizes}};
@@ -119,13 +134,22 @@ std::string host_profile_json(const HostProfile& p) {
           {"flags", p.build.flags}}},
         {"load_average", {{"start", load_json(p.load_average_start)}, {"end", load_json(p.load_average_end)}}},
         {"workload", workload_json(p.repeat)},
+        {"calibration",
+         {{"clock", "thread CPU time"},
+          {"runs", p.runs},
+          {"seconds", p.seconds},
+          {"spread", p.spread},
+          {"target_spread", p.target_spread},
+          {"disturbed_frames", p.disturbed_frames},
+          {"quality", p.poor() ? "poor" : "good"}}},
         {"reference", reference},
         {"factors", p.factors}};
     return profile.dump(2) + '\n';
 }
 
-HostProfile read_host_profile(const std::string& path) {
-    const std::string text = read_small_file(path, kWhat);
+HostProfile read_host_profile(const std::string& path) { return parse_host_profile(path, read_small_file(path, kWhat)); }
+
+HostProfile parse_host_profile(const std::string& path, const std::string& text) {
     const json root = parse_preset(path, text, kWhat);
     const ProfileFields fields(path, root);
     if (fields.text("format") != kFormat) fields.fail("format", std::string("expected \"") + kFormat + "\"");
@@ -139,6 +163,11 @@ HostProfile read_host_profile(const std::string& path) {
     const json expected = workload_json(p.repeat);
     for (const auto& [key, value] : expected.items()) fields.same("workload." + key, value);
     p.created = fields.text("created");
+    p.runs = static_cast<uint32_t>(fields.number("calibration.runs", p.repeat, 1e6));
+    p.spread = fields.number("calibration.spread", 0, 1e6);
+    p.target_spread = fields.number("calibration.target_spread", 0, 1);
+    p.load_average_start = read_load(fields, "load_average.start");
+    p.load_average_end = read_load(fields, "load_average.end");
     p.machine.cpu_model = fields.text("machine.cpu_model");
     p.machine.cpu_mhz = fields.number("machine.cpu_mhz", 0, 1e6);
     p.build.compiler = fields.text("build.compiler");
@@ -148,6 +177,31 @@ HostProfile read_host_profile(const std::string& path) {
         const std::string field = "reference." + name + ".reference_native_ns";
         baseline.reference_native_ns = fields.number(field, 0, 1e12);
         if (baseline.reference_native_ns <= 0) fields.fail(field, "expected a positive time, got 0");
+        const json& sizes = fields.at("reference." + name + ".sizes");
+        if (!sizes.is_array()) fields.fail("reference." + name + ".sizes", "expected a list");
+        for (std::size_t k = 0; k < sizes.size(); ++k) {
+            const std::string at = "reference." + name + ".sizes." + std::to_string(k);
+            const json& size = sizes[k];
+            const auto number = [&](const char* key, double lo, double hi) {
+                if (!size.is_object() || !size.contains(key)) fields.fail(at + "." + key, "missing");
+                const json& value = size[key];
+                if (!value.is_number() || !(value.get<double>() >= lo && value.get<double>() <= hi)) {
+                    fields.fail(at + "." + key, "expected a number from " + std::to_string(lo) + " to " + std::to_string(hi));
+                }
+                return value.get<double>();
+            };
+            ReferenceTiming t;
+            t.objects = static_cast<uint64_t>(number("objects", 1, 1e9));
+            t.mean_native_ns = number("mean_native_ns", 0, 1e12);
+            if (!size.contains("kept_means_native_ns") || !size["kept_means_native_ns"].is_array()) {
+                fields.fail(at + ".kept_means_native_ns", "expected a list of times");
+            }
+            for (const json& mean : size["kept_means_native_ns"]) {
+                if (!mean.is_number() || !(mean.get<double>() >= 0)) fields.fail(at + ".kept_means_native_ns", "expected a list of times");
+                t.kept_means_native_ns.push_back(mean.get<double>());
+            }
+            baseline.sizes.push_back(std::move(t));
+        }
     }
     return p;
 }

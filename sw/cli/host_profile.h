@@ -15,13 +15,16 @@
 
 namespace cdvp {
 
-// One baseline at one size: the mean frame time of each calibration run and
-// the median of those means.
+// One baseline at one size: the mean frame time (thread CPU time) of each
+// calibration run, the runs kept (the `repeat` whose means lie closest
+// together: a run a neighbour disturbed falls outside them) and the median
+// of the kept runs' means.
 struct ReferenceTiming {
     uint64_t objects = 0;
-    std::vector<double> run_means_native_ns;
+    std::vector<double> run_means_native_ns;   // every run, in order
+    std::vector<double> kept_means_native_ns;  // the closest `repeat` of them, ascending
     double mean_native_ns = 0;
-    // max/min - 1 over the runs' means: how far repeats on this machine agree.
+    // max/min - 1 over the kept runs' means: how far repeats on this machine agree.
     double spread() const;
 };
 
@@ -38,7 +41,14 @@ struct HostProfile {
     MachineInfo machine;
     BuildInfo build;
     std::array<double, 3> load_average_start{}, load_average_end{};
-    uint32_t repeat = 0;
+    uint32_t repeat = 0;   // runs kept at each size
+    uint32_t runs = 0;     // runs made before the kept ones agreed, or the time ran out
+    double seconds = 0;    // the calibration's wall time
+    double spread = 0;     // the worst ReferenceTiming::spread() of any baseline and size
+    double target_spread = 0;  // what it repeated for (--max-spread)
+    uint64_t disturbed_frames = 0;  // frames pre-empted or moved to another CPU while timed
+    // The spread stayed over the target: runs on this profile say so.
+    bool poor() const { return spread > target_spread; }
     std::map<std::string, BaselineReference> reference;  // by baseline name
     // Informational: the factor to each preset's modelled host as derived when
     // calibrating (a run derives its own from its preset's reference times).
@@ -53,6 +63,8 @@ std::string host_profile_json(const HostProfile& profile);
 // reference workload (foreign) or whose fields are missing or out of range
 // (damaged).
 HostProfile read_host_profile(const std::string& path);
+// The same for a profile's text already read from `path`.
+HostProfile parse_host_profile(const std::string& path, const std::string& text);
 
 // Where a run looks for a profile when --host-profile is not given and
 // cdvp calibrate writes one without --out: $XDG_CONFIG_HOME/cdvp/host-profile.json,

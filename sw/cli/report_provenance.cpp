@@ -36,7 +36,10 @@ nlohmann::json host_calibration_json(const HostTiming& host) {
             {"host", host.host},
             {"factors", factors},
             {"uncalibrated_factor", host.uncalibrated_factor},
-            {"profile_machine", host.profile_machine.empty() ? nlohmann::json(nullptr) : nlohmann::json(host.profile_machine)}};
+            {"profile_machine", host.profile_machine.empty() ? nlohmann::json(nullptr) : nlohmann::json(host.profile_machine)},
+            {"profile_spread", host.profile_spread},
+            {"profile_quality", host.basis != HostTiming::Basis::kCalibrated ? nlohmann::json(nullptr)
+                                : nlohmann::json(host.profile_poor() ? "poor" : "good")}};
 }
 
 }  // namespace cdvp

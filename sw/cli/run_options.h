@@ -28,6 +28,7 @@ struct RunOptions {
     std::string scene;
     SettingLayers layers;
     std::string baselines;
+    std::string software_timings;  // a directory of shared software timings (sw/cli/shared_baselines.h)
     std::vector<std::string> inject;  // fault specs, docs/faults.md
     std::string pairs_out, report, vcd;
     std::string vcd_frames;  // A:B

@@ -14,6 +14,7 @@
 #include "sw/cli/forwarded_options.h"
 #include "sw/cli/host_profile.h"
 #include "sw/cli/run_options.h"
+#include "sw/study/sweep_state.h"
 
 namespace po = boost::program_options;
 
@@ -24,7 +25,7 @@ namespace {
 constexpr const char* kHelp =
     "Usage: cdvp sweep [--board LIST] [--set NAME=LIST]... [--fidelity LIST] [--scene LIST | --trace LIST]\n"
     "                  [options of cdvp run] --out DIR [--jobs J] [--shard K/N] [--record full|compact]\n"
-    "                  [--no-plots] [--rerun-invalid] [-q]\n"
+    "                  [--software-timings DIR|none] [--no-plots] [--rerun-invalid] [-q]\n"
     "\n"
     "Runs 'cdvp run' once for every point of the grid (every combination of the axes' values, the\n"
     "first axis outermost) and gathers the points into DIR/sweep.csv, one row per point, with each\n"
@@ -51,6 +52,13 @@ constexpr const char* kHelp =
     "                      full: each point's report in DIR/points and every setting in its row;\n"
     "                      compact: no report, a row of the axes and the figures (pairs, cycles,\n"
     "                      phases, totals, speedups), about 300 bytes a point (full)\n"
+    "  --software-timings DIR|none\n"
+    "                      the software baselines are timed once a workload (the scene and its\n"
+    "                      settings or the trace, the baselines, repeats and warm-up: not the board, m\n"
+    "                      or bus), by its first point, kept in DIR/KEY.json and used by every point\n"
+    "                      of it, so speedups across boards share one denominator; each row names\n"
+    "                      its timing (NAME_timing_id). Shards given one DIR share it too. none: each\n"
+    "                      point times its own (OUT/software)\n"
     "  --no-plots          write no figures (shards on a cluster, say: cdvp merge draws them)\n"
     "  --rerun-invalid     rows of sweep.csv that do not match the grid or their reports are run\n"
     "                      again instead of refused\n"
@@ -71,7 +79,7 @@ po::options_description own_options(std::vector<std::string>& sets) {
         ("scene", po::value<std::string>(), "")("trace", po::value<std::string>(), "")
         ("set", po::value(&sets)->composing(), "")("out", po::value<std::string>(), "")
         ("jobs", po::value<std::string>(), "")("shard", po::value<std::string>(), "")
-        ("record", po::value<std::string>(), "")
+        ("record", po::value<std::string>(), "")("software-timings", po::value<std::string>(), "")
         ("no-plots", po::bool_switch(), "")("rerun-invalid", po::bool_switch(), "")
         ("quiet,q", po::bool_switch(), "")("help,h", po::bool_switch(), "");
     return own;
@@ -151,6 +159,7 @@ void resolve_axis(Axis& axis, const std::string& label, const std::set<std::stri
 // The sweep's own options: its axes (--NAME LIST and --set NAME=LIST), --out,
 // --jobs, --shard and --record.
 void read_own_options(const ParsedCommandLine& line, const std::set<std::string>& run_flags, SweepSpec& o) {
+    bool software_timings_given = false;
     for (const po::option& option : line.own) {
         const std::string& key = option.string_key;
         if (is_axis_option(key)) {
@@ -171,8 +180,16 @@ void read_own_options(const ParsedCommandLine& line, const std::set<std::string>
             o.shard = parse_shard(option.value.at(0));
         } else if (key == "record") {
             o.record = parse_record_mode(option.value.at(0), "--record");
+        } else if (key == "software-timings") {
+            o.software_timings = option.value.at(0);
+            if (o.software_timings.empty()) throw InputError("--software-timings: expected a directory or none, got ''");
+            while (o.software_timings.size() > 1 && o.software_timings.back() == '/') o.software_timings.pop_back();
+            if (o.software_timings == "none") o.software_timings.clear();
+            software_timings_given = true;
+            o.software_timings_given = !o.software_timings.empty();
         }
     }
+    if (!software_timings_given && !o.out_dir.empty()) o.software_timings = software_timings_dir(o.out_dir);
 }
 
 // The options of cdvp run every point takes: none the sweep sets itself,
@@ -218,6 +235,26 @@ void name_axis_inputs(SweepSpec& o) {
     if (sources.empty()) o.run_options.insert(o.run_options.begin(), "--scene=spheres");
 }
 
+// A host profile's reference times and, as what each may move by on a
+// resume, its recorded spread (the worst of its sizes).
+nlohmann::json host_profile_facts(const NamedInput& input, const std::string& text) {
+    if (input.option != "--host-profile") return nullptr;
+    HostProfile profile;
+    try {
+        profile = parse_host_profile(input.path, text);
+    } catch (const InputError&) {
+        return nullptr;  // the points refuse it, naming the field
+    }
+    nlohmann::json values = nlohmann::json::object(), tolerance = nlohmann::json::object();
+    for (const auto& [name, baseline] : profile.reference) {
+        values[name + "'s reference time (ns)"] = baseline.reference_native_ns;
+        double spread = 0;
+        for (const ReferenceTiming& t : baseline.sizes) spread = std::max(spread, t.spread());
+        tolerance[name + "'s reference time (ns)"] = spread;
+    }
+    return {{"values", values}, {"tolerance", tolerance}};
+}
+
 }  // namespace
 
 std::string sweep_help() { return kHelp; }
@@ -239,6 +276,7 @@ std::optional<SweepSpec> parse_sweep_options(int argc, char** argv) {
     o.rerun_invalid = line.values["rerun-invalid"].as<bool>();
     if (o.out_dir.empty()) throw InputError("--out DIR is required (see cdvp sweep --help)");
     name_axis_inputs(o);
+    o.input_facts = host_profile_facts;
     // The host profile the points read when none is named: a calibration
     // between two runs of the sweep changes its factors.
     const bool profile_named = std::any_of(o.inputs.begin(), o.inputs.end(),

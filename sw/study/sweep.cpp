@@ -18,6 +18,7 @@
 #include "sw/study/directory_lock.h"
 #include "sw/study/sweep_figures.h"
 #include "sw/study/sweep_manifest.h"
+#include "sw/study/software_timing.h"
 #include "sw/study/sweep_runner.h"
 #include "sw/study/sweep_state.h"
 #include "sw/study/version.h"
@@ -32,7 +33,8 @@ namespace fs = std::filesystem;
 // and its digest; and a check, after each point, that none has changed since.
 class SweepInputs {
 public:
-    SweepInputs(const std::vector<NamedInput>& named, const InputLimits& limits) {
+    SweepInputs(const std::vector<NamedInput>& named, const InputLimits& limits,
+                const std::function<nlohmann::json(const NamedInput&, const std::string&)>& facts) {
         for (const NamedInput& input : named) {
             std::string path = input.path;
             if (input.option == "--trace") {
@@ -50,6 +52,7 @@ public:
                 std::optional<std::string> text = read_whole_file(path);
                 if (!text) throw InputError(input.option + ": " + excerpt(input.value) + ": cannot read: " + std::strerror(errno));
                 digests_.push_back(digest_text(input.option, input.value, path, *text));
+                if (facts) digests_.back().facts = facts(input, *text);
                 pins_.pin(path, std::move(*text));
             } else {
                 digests_.push_back(digest_input(input.option, input.value, path));
@@ -90,7 +93,7 @@ private:
 // Temporaries left by a killed sweep or point (*.part-*): under the lock no
 // one else writes them.
 void remove_stale_temporaries(const std::string& dir) {
-    for (const std::string& where : {dir, points_dir(dir)}) {
+    for (const std::string& where : {dir, points_dir(dir), software_timings_dir(dir)}) {
         std::error_code error;
         for (const auto& entry : fs::directory_iterator(where, error)) {
             if (entry.is_regular_file() && entry.path().filename().string().find(".part-") != std::string::npos) {
@@ -166,8 +169,11 @@ SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
     SweepObserver silent;
     SweepObserver& told = observer != nullptr ? *observer : silent;
     const Grid grid(o.axes);
-    const SweepInputs inputs(o.inputs, o.trace_limits);
-    const Manifest wanted{grid.axes(), o.run_options, inputs.digests(), o.shard, kCdvpVersion, o.record};
+    const SweepInputs inputs(o.inputs, o.trace_limits, o.input_facts);
+    // Shards of one sweep each keep OUT/software unless one directory is named for all.
+    const std::string timings_named = o.software_timings_given || o.software_timings.empty() ? o.software_timings
+                                                                                              : "OUT/software";
+    const Manifest wanted{grid.axes(), o.run_options, inputs.digests(), o.shard, kCdvpVersion, o.record, timings_named};
     LockedOutDirectory out(o.out_dir);
     CreatedDirectories& made = out.made();
     const std::optional<Manifest> existing = read_manifest(manifest_path(o.out_dir));
@@ -180,9 +186,16 @@ SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
         for (const std::string& invalid : read.invalid) std::cerr << o.program << ": runs again: " << invalid << '\n';
         if (read.torn) std::cerr << o.program << ": " << table_path(o.out_dir) << ": its last row was cut short; the point runs again\n";
     }
+    // The rows kept divided by the timings there: the points to run must too.
+    if (!o.software_timings.empty()) {
+        if (const std::optional<std::string> changed = check_software_timings(o.software_timings, table)) {
+            throw InputError(*changed);
+        }
+    }
     std::size_t in_shard = 0;
     const std::vector<std::size_t> todo = points_to_run(grid, o.shard, table, in_shard);
     made.create(points_dir(o.out_dir));
+    if (!o.software_timings.empty()) made.create(o.software_timings);
     if (!existing) commit_text_file(manifest_path(o.out_dir), wanted.to_json().dump(2) + "\n", "--out");
     TableFile file(table_path(o.out_dir), table, read.rewrite);
     told.started(in_shard, in_shard - todo.size());
@@ -206,6 +219,7 @@ SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
             fs::remove(table_path(o.out_dir), ignored);
             fs::remove(manifest_path(o.out_dir), ignored);
             fs::remove(points_dir(o.out_dir), ignored);  // only if empty
+            if (!o.software_timings.empty()) fs::remove(o.software_timings, ignored);  // only if empty
         }
         throw InputError("every point was refused; the first, " + first_reason);
     }

@@ -55,6 +55,15 @@ struct SweepSpec {
     std::string program = "cdvp sweep";    // the name notes and errors are printed under
     std::string cdvp_binary;               // the cdvp the points run; empty: this process's executable
     InProcessRun in_process;               // points it takes run here, one at a time; empty: every point a child
+    // Where the points share their software timings, one a workload
+    // (sw/study/software_timing.h; --software-timings): OUT/software unless
+    // given; empty: each point times its own.
+    std::string software_timings;
+    bool software_timings_given = false;  // named by the user, not OUT/software (the manifest says which)
+    // What an input file may differ by on a resume (SweepInput::facts), from
+    // its text: a host profile's reference times and spreads. Set by the
+    // command line, which reads host profiles; empty: nothing.
+    std::function<nlohmann::json(const NamedInput& input, const std::string& text)> input_facts;
 };
 
 // Told how a sweep goes: a progress bar on a terminal, a callback in a notebook.

@@ -14,17 +14,32 @@ namespace {
 struct Crossover {
     double n = 0;
     const char* how = "none";  // interpolated, measured (the smallest N already wins), none
+    std::vector<double> rests_on;  // the N whose speedups it was taken from
 };
 Crossover crossover(const std::vector<std::pair<double, double>>& speedups) {
     for (std::size_t k = 0; k < speedups.size(); ++k) {
         const auto [n1, s1] = speedups[k];
         if (s1 < 1) continue;
-        if (k == 0) return {n1, "measured"};
+        if (k == 0) return {n1, "measured", {n1}};
         const auto [n0, s0] = speedups[k - 1];
         const double t = (1 - s0) / (s1 - s0);
-        return {std::exp(std::log(n0) + t * (std::log(n1) - std::log(n0))), "interpolated"};
+        return {std::exp(std::log(n0) + t * (std::log(n1) - std::log(n0))), "interpolated", {n0, n1}};
     }
-    return {};
+    Crossover none;
+    for (const auto& [n, s] : speedups) none.rests_on.push_back(n);
+    return none;
+}
+
+// Whether any of the points a crossover rests on took its software timing
+// disturbed: such a crossover is never written as plainly measured.
+bool rests_on_disturbed(const Samples& samples, const std::string& board, const Line& line, const Crossover& c,
+                        const std::string& baseline) {
+    for (const Sample& s : samples.all) {
+        if (s.board != board || s.variant != line.variant || s.m != line.m) continue;
+        if (std::find(c.rests_on.begin(), c.rests_on.end(), s.n) == c.rests_on.end()) continue;
+        if (text(s.row, baseline + "_timing_quality") == "disturbed") return true;
+    }
+    return false;
 }
 
 // m across: integer ticks at the values swept. A log axis when they span a
@@ -108,7 +123,7 @@ void add_crossovers(const Samples& samples, const std::vector<std::string>& vari
                     const std::vector<std::string>& baselines, FigurePlan& plan) {
     std::string csv = "board,m,";
     for (const std::string& axis : variant_axes) csv += axis + ",";
-    csv += "baseline,crossover_n,how\n";
+    csv += "baseline,crossover_n,how,timing\n";
     for (const std::string& baseline : baselines) {
         std::vector<PlotSeries> drawn;
         std::vector<const Sample*> behind;  // the points the figure rests on
@@ -126,8 +141,10 @@ void add_crossovers(const Samples& samples, const std::vector<std::string>& vari
                         break;
                     }
                 }
+                const bool disturbed = rests_on_disturbed(samples, board, line, c, baseline);
                 csv += board + "," + num(line.m) + "," + values + baseline + "," + (c.n > 0 ? num(c.n) : "") + "," +
-                       c.how + "\n";
+                       c.how + (disturbed ? " (disturbed timing)" : "") + "," + (disturbed ? "disturbed" : "clean") +
+                       "\n";
                 PlotSeries& variant_line = by_variant[key.first];
                 variant_line.title = line.variant.empty() ? board : board + " " + line.variant;
                 // A colour per board, a dash per variant (or the other way about).
@@ -135,7 +152,9 @@ void add_crossovers(const Samples& samples, const std::vector<std::string>& vari
                 if (c.n == 0) never.push_back({variant_line.title, num(line.m)});
                 if (c.n > 0) {
                     const bool at_smallest = std::string(c.how) == "measured";
-                    variant_line.points.push_back({line.m, c.n, (at_smallest ? "<= " : "") + short_number(c.n)});
+                    // A crossover from a disturbed timing is labelled so on the figure too.
+                    variant_line.points.push_back({line.m, c.n,
+                                                   (at_smallest ? "<= " : "") + short_number(c.n) + (disturbed ? " (disturbed)" : "")});
                 }
             }
             for (auto& [order, line] : by_variant) {

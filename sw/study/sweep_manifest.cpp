@@ -1,5 +1,7 @@
 #include "sw/study/sweep_manifest.h"
 
+#include <cmath>
+#include <cstdio>
 #include <sys/stat.h>
 
 #include <cerrno>
@@ -79,8 +81,10 @@ private:
 };
 
 json input_json(const SweepInput& input) {
-    return {{"option", input.option}, {"value", input.value}, {"path", input.path}, {"sha256", input.sha256},
-            {"bytes", input.bytes}};
+    json j = {{"option", input.option}, {"value", input.value}, {"path", input.path}, {"sha256", input.sha256},
+              {"bytes", input.bytes}};
+    if (!input.facts.is_null()) j["facts"] = input.facts;
+    return j;
 }
 
 }  // namespace
@@ -98,11 +102,11 @@ SweepInput digest_input(std::string option, std::string value, std::string path)
     if (!digest) {
         throw InputError(option + ": " + excerpt(value) + ": cannot read: " + std::strerror(errno));
     }
-    return {std::move(option), std::move(value), std::move(path), digest->sha256, digest->bytes};
+    return {std::move(option), std::move(value), std::move(path), digest->sha256, digest->bytes, nullptr};
 }
 
 SweepInput digest_text(std::string option, std::string value, std::string path, const std::string& text) {
-    return {std::move(option), std::move(value), std::move(path), sha256_hex(text), text.size()};
+    return {std::move(option), std::move(value), std::move(path), sha256_hex(text), text.size(), nullptr};
 }
 
 json Manifest::to_json() const {
@@ -123,6 +127,7 @@ json Manifest::to_json() const {
             {"points", grid.size()},
             {"shard", shard.text()},
             {"record", to_string(record)},
+            {"software_timings", software_timings},
             {"point_ids", "NAME-ID of each axis joined by '_', ID from 'ids' (docs/sweep.md)"}};
 }
 
@@ -160,8 +165,10 @@ std::optional<Manifest> read_manifest(const std::string& path) {
         const std::string where = "inputs[" + std::to_string(k) + "].";
         manifest.inputs.push_back({fields.text(inputs[k], "option", where), fields.text(inputs[k], "value", where),
                                    fields.text(inputs[k], "path", where), fields.text(inputs[k], "sha256", where),
-                                   fields.count(inputs[k], "bytes", where)});
+                                   fields.count(inputs[k], "bytes", where), nullptr});
+        if (inputs[k].contains("facts")) manifest.inputs.back().facts = inputs[k]["facts"];
     }
+    if (document.contains("software_timings")) manifest.software_timings = fields.text(document, "software_timings");
     if (document.contains("record")) {
         const std::string record = fields.text(document, "record");
         if (record != "full" && record != "compact") fields.refuse("record", "expected full or compact");
@@ -185,6 +192,33 @@ std::optional<Manifest> read_manifest(const std::string& path) {
     return manifest;
 }
 
+namespace {
+
+// Which of a changed input's values moved by more than its tolerance, in
+// words ("sap's reference_native_ns moved 4.2% (1.06e+05 then, 1.1e+05 now),
+// more than the 1.3% it may"); nothing when none did or neither has facts.
+std::optional<std::string> moved_beyond_tolerance(const json& then, const json& now) {
+    if (then.is_null() || now.is_null()) return std::nullopt;
+    const auto number = [](const json& facts, const char* part, const std::string& name) {
+        const json& values = facts.value(part, json::object());
+        return values.is_object() && values.contains(name) && values[name].is_number() ? values[name].get<double>() : -1.0;
+    };
+    for (const auto& [name, ignored] : then.value("values", json::object()).items()) {
+        const double before = number(then, "values", name), after = number(now, "values", name);
+        const double tolerance = std::max(number(then, "tolerance", name), number(now, "tolerance", name));
+        if (!(before > 0) || !(after > 0)) return name + " is not in both";
+        const double moved = after / before - 1;
+        if (std::fabs(moved) <= tolerance) continue;
+        char text[256];
+        std::snprintf(text, sizeof text, "%s moved %+.1f%% (%.4g then, %.4g now), more than the %.1f%% it may (its recorded spread)",
+                      name.c_str(), 100 * moved, before, after, 100 * std::max(tolerance, 0.0));
+        return std::string(text);
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<SweepDifference> difference(const Manifest& existing, const Manifest& wanted) {
     const auto other = [](std::string what) { return std::optional<SweepDifference>({std::move(what), false}); };
     if (existing.cdvp_version != wanted.cdvp_version) {
@@ -201,12 +235,21 @@ std::optional<SweepDifference> difference(const Manifest& existing, const Manife
     if (existing.record != wanted.record) {
         return other(std::string("--record ") + to_string(existing.record) + ", not " + to_string(wanted.record));
     }
+    if (existing.software_timings != wanted.software_timings) {
+        return other("software timings shared through '" + excerpt(existing.software_timings) + "', not '" +
+                     excerpt(wanted.software_timings) + "' (--software-timings)");
+    }
     if (existing.inputs.size() != wanted.inputs.size()) return other("other input files");
     for (std::size_t k = 0; k < existing.inputs.size(); ++k) {
         const SweepInput& e = existing.inputs[k];
         const SweepInput& w = wanted.inputs[k];
         if (e.option != w.option || e.value != w.value) return other("other input files");
         if (e.sha256 != w.sha256) {
+            if (const std::optional<std::string> moved = moved_beyond_tolerance(e.facts, w.facts)) {
+                return SweepDifference{w.option + " " + excerpt(w.value) + " changed since the sweep began: " + *moved,
+                                       true};
+            }
+            if (!e.facts.is_null() && !w.facts.is_null()) continue;  // within what it may differ by
             return SweepDifference{w.option + " " + excerpt(w.value) + " changed since the sweep began (" +
                                        std::to_string(e.bytes) + " bytes, sha256 " + e.sha256.substr(0, 12) +
                                        "... then; " + std::to_string(w.bytes) + " bytes, sha256 " +

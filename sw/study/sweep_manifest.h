@@ -24,6 +24,11 @@ struct SweepInput {
     std::string path;    // where it was read (a spooled pipe: the spool)
     std::string sha256;
     uint64_t bytes = 0;
+    // What a changed file may differ by and still be the same input: null,
+    // or {"values": {NAME: number}, "tolerance": {NAME: fraction}} (a host
+    // profile's reference times and their spreads). A file whose values all
+    // moved by no more than the larger tolerance is not a change.
+    nlohmann::json facts;
 };
 // Digests the file at 'input.path'. Throws InputError naming the option and
 // value when it cannot be read.
@@ -46,6 +51,7 @@ struct Manifest {
     Shard shard;
     std::string cdvp_version;
     RecordMode record = RecordMode::kFull;  // a manifest without the field was written full
+    std::string software_timings;           // where the points share their software timings ("": nowhere)
 
     nlohmann::json to_json() const;
 };

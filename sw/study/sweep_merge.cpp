@@ -17,6 +17,9 @@
 #include "sw/study/sweep_figures.h"
 #include "sw/study/sweep_manifest.h"
 #include "sw/study/sweep_state.h"
+#include "sw/study/software_timing.h"
+
+#include <iostream>
 
 namespace cdvp {
 
@@ -149,6 +152,16 @@ MergeOutcome merge_sweeps(const MergeSpec& o) {
     };
     if (existing) take(o.out, Shard{});
     for (const std::string& dir : o.shards) take(dir, read_manifest(manifest_path(dir))->shard);
+    // Each shard's own timings come along, so that the merge resumes as the shards do.
+    if (merged.software_timings == "OUT/software") {
+        std::vector<std::string> sources = o.shards;
+        if (existing) sources.insert(sources.begin(), o.out);
+        for (const std::string& dir : sources) {
+            for (const std::string& note : merge_software_timings(software_timings_dir(dir), software_timings_dir(staging.path()))) {
+                if (!o.quiet) std::cerr << o.program << ": note: " << note << '\n';
+            }
+        }
+    }
     commit_text_file(manifest_path(staging.path()), merged.to_json().dump(2) + "\n", "--out");
     commit_text_file(table_path(staging.path()), table.csv(), "--out");
     MergeOutcome outcome{0, table.size(), grid.size()};

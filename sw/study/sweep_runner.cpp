@@ -173,6 +173,7 @@ std::vector<std::string> SweepRunner::point_arguments(const Point& point, const 
         args.push_back(std::move(arg));
     }
     if (report != nullptr) args.push_back("--report=" + *report);
+    if (!o_.software_timings.empty()) args.push_back("--software-timings=" + o_.software_timings);
     args.push_back("-q");
     return args;
 }

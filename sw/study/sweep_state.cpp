@@ -118,6 +118,8 @@ void check_header(const std::vector<std::string>& header, const SweepTable& fres
 
 }  // namespace
 
+std::string software_timings_dir(const std::string& dir) { return dir + "/software"; }
+
 std::vector<std::string> directory_contents(const std::string& dir) {
     std::vector<std::string> names;
     std::error_code error;

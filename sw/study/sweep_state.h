@@ -22,6 +22,8 @@ std::string manifest_path(const std::string& dir);
 std::string table_path(const std::string& dir);
 std::string points_dir(const std::string& dir);
 std::string report_path(const std::string& dir, const Point& point);
+// DIR/software: where a sweep's points share their software timings unless told otherwise.
+std::string software_timings_dir(const std::string& dir);
 
 // The names in DIR but its lock file: what makes it not empty.
 std::vector<std::string> directory_contents(const std::string& dir);

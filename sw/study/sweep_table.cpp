@@ -179,6 +179,17 @@ void put_baselines(const ReportSummary& summary, RowBuilder& out, ColumnFilter k
         for (const auto& [suffix, value] : figures) {
             if (keep(name + suffix)) out.put(name + suffix, number_text(value));
         }
+        // How far the figures can be trusted, and whose timing they are.
+        const TimingQuality& q = b.quality;
+        const std::pair<std::string, std::string> quality[] = {
+            {"_timing_quality", q.verdict()},
+            {"_timing_retimed", std::to_string(q.frames_retimed)},
+            {"_timing_never_clean", std::to_string(q.never_clean)},
+            {"_timing_repeat_spread", number_text(q.repeat_spread)},
+            {"_timing_id", b.timing.empty() ? "own" : b.timing}};
+        for (const auto& [suffix, value] : quality) {
+            if (keep(name + suffix)) out.put(name + suffix, value);
+        }
     }
 }
 
@@ -213,7 +224,8 @@ bool is_compact_result(const std::string& column) {
         "median_readback_bytes", "median_upload_ns", "median_start_ns", "median_compute_ns", "median_irq_ns",
         "median_readback_ns", "median_driver_ns", "median_total_ns", "median_latency_ns", "mean_total_ns",
         "p99_total_ns", "max_total_ns"};
-    return kept.count(column) != 0 || ends_with(column, "_mean_host_ns") || ends_with(column, "_speedup");
+    return kept.count(column) != 0 || ends_with(column, "_mean_host_ns") || ends_with(column, "_speedup") ||
+           ends_with(column, "_timing_quality") || ends_with(column, "_timing_id");
 }
 
 }  // namespace
@@ -251,7 +263,7 @@ bool is_measured_column(const std::string& column) {
     return column == "point_wall_s" || column == kChecksumColumn || column == "load_average_end" ||
            column.rfind("config.provenance.", 0) == 0 || column.rfind("config.budgets.", 0) == 0 ||
            ends_with(column, "_native_ns") ||
-           ends_with(column, "_host_ns") || ends_with(column, "_speedup");
+           ends_with(column, "_host_ns") || ends_with(column, "_speedup") || column.find("_timing_") != std::string::npos;
 }
 
 std::string RowView::get(const std::string& column) const {

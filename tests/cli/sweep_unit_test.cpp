@@ -275,7 +275,7 @@ TEST(SweepFigures, CrossoverIsInterpolatedInLogNOrMeasuredAtTheSmallestN) {
     for (const Figure& f : plan.figures) {
         if (f.file == "crossover.csv") crossover = f.data;
     }
-    EXPECT_NE(crossover.find("b,1,sap,,none\n"), std::string::npos) << crossover;
+    EXPECT_NE(crossover.find("b,1,sap,,none,clean\n"), std::string::npos) << crossover;
     const std::size_t at = crossover.find("b,8,sap,");
     ASSERT_NE(at, std::string::npos) << crossover;
     EXPECT_NEAR(std::stod(crossover.substr(at + 8)), 100 * std::cbrt(4.0), 1e-6);
