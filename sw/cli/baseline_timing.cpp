@@ -49,6 +49,7 @@ BaselineTimer::BaselineTimer(const std::string& names, HostTiming host, uint32_t
         names_.push_back(first_run_.back()->name());
     }
     disturbed_.assign(names_.size(), std::vector<Disturbed>(1));
+    probes_.assign(names_.size(), std::vector<std::vector<float>>(1));
     counts_.assign(names_.size(), Counts{});
 }
 
@@ -61,6 +62,36 @@ CallTiming time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& bo
     const CallTiming timing = CallTimer::time([&] { baseline.find_pairs(boxes, found); });
     found = sorted(std::move(found));
     return timing;
+}
+
+CallTiming BaselineTimer::probed(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found,
+                                double& probe_ns) {
+    const double before = probe_.time_ns();
+    const CallTiming timing = time_find_pairs(baseline, boxes, found);
+    probe_ns = std::max(before, probe_.time_ns());
+    return timing;
+}
+
+double BaselineTimer::mark_slowed(uint64_t warmup) {
+    const std::size_t first = first_measured(board_digests_.size(), warmup);
+    std::vector<double> all;
+    for (const auto& runs : probes_) {
+        for (const auto& run : runs) {
+            for (std::size_t k = first; k < run.size(); ++k) all.push_back(run[k]);
+        }
+    }
+    probe_reference_ns_ = host_.probe_reference_ns > 0 ? host_.probe_reference_ns : fast_probe_ns(all);
+    const double limit = probe_reference_ns_ * (1 + kProbeTolerance);
+    for (std::size_t b = 0; b < names_.size(); ++b) {
+        for (std::size_t run = 0; run < probes_[b].size(); ++run) {
+            for (std::size_t k = first; k < probes_[b][run].size(); ++k) {
+                if (probes_[b][run][k] <= limit || disturbed_[b][run][k]) continue;
+                disturbed_[b][run][k] = true;
+                ++counts_[b].slowed;
+            }
+        }
+    }
+    return limit;
 }
 
 std::vector<std::unique_ptr<BroadPhase>> BaselineTimer::fresh(const std::vector<std::size_t>& which) const {
@@ -78,9 +109,11 @@ std::map<std::string, BaselineTime> BaselineTimer::time_frame(const std::vector<
     PairList found;
     for (std::size_t b = 0; b < first_run_.size(); ++b) {
         BroadPhase& baseline = *first_run_[b];
-        const CallTiming t = time_find_pairs(baseline, boxes, found);
+        double probe = 0;
+        const CallTiming t = probed(baseline, boxes, found, probe);
+        probes_[b].back().push_back(static_cast<float>(probe));
         times[baseline.name()] = {t.cpu_ns, t.wall_ns, t.cpu_ns * host_.factor(baseline.name()),
-                                  t.involuntary_switches, t.migrated};
+                                  t.involuntary_switches, t.migrated, probe};
         disturbed_[b].back().push_back(t.disturbed());
         if (found != board_pairs) {
             throw mismatch(baseline.name(), found.size(), frame, "the board " + std::to_string(board_pairs.size()));
@@ -101,6 +134,7 @@ void BaselineTimer::repeat(FrameSource& source, uint32_t runs, RunTotals& totals
             totals.baseline_samples(names_[b]).start_run();
             totals.baseline_wall_samples(names_[b]).start_run();
             disturbed_[b].emplace_back();
+            probes_[b].emplace_back();
         }
         source.rewind();
         std::size_t index = 0;
@@ -108,7 +142,9 @@ void BaselineTimer::repeat(FrameSource& source, uint32_t runs, RunTotals& totals
         while (std::optional<Frame> frame = source.next()) {
             const std::vector<FloatBox> boxes = to_float_boxes(frame->boxes);
             for (std::size_t b = 0; b < instances.size(); ++b) {
-                const CallTiming t = time_find_pairs(*instances[b], boxes, found);
+                double probe = 0;
+                const CallTiming t = probed(*instances[b], boxes, found, probe);
+                probes_[b].back().push_back(static_cast<float>(probe));
                 totals.baseline_samples(names_[b]).add(t.cpu_ns);
                 totals.baseline_wall_samples(names_[b]).add(t.wall_ns);
                 disturbed_[b].back().push_back(t.disturbed());
@@ -128,6 +164,7 @@ void BaselineTimer::retime(FrameSource& source, RunTotals& totals) {
     first_run_.clear();
     const std::size_t frames = board_digests_.size();
     const std::size_t first = first_measured(frames, totals.warmup_frames());
+    const double limit = mark_slowed(totals.warmup_frames());
     for (uint32_t pass = 0; pass < max_tries_; ++pass) {
         bool any = false;
         for (std::size_t run = 0; run < (disturbed_.empty() ? 0 : disturbed_[0].size()); ++run) {
@@ -157,13 +194,16 @@ void BaselineTimer::retime(FrameSource& source, RunTotals& totals) {
                     const std::size_t b = which[i];
                     std::vector<bool>::reference flag = disturbed_[b][run][index];
                     if (index >= first && flag) {
-                        const CallTiming t = time_find_pairs(*instances[i], boxes, found);
+                        double probe = 0;
+                        const CallTiming t = probed(*instances[i], boxes, found, probe);
                         ++counts_[b].tries;
-                        if (!t.disturbed()) {
+                        if (!t.disturbed() && probe <= limit) {
                             totals.baseline_samples(names_[b]).replace(run, index, t.cpu_ns);
                             totals.baseline_wall_samples(names_[b]).replace(run, index, t.wall_ns);
                             flag = false;
                             ++counts_[b].retimed;
+                            retimed_[names_[b]].push_back(
+                                {static_cast<double>(run), static_cast<double>(index), t.cpu_ns});
                         }
                     } else {
                         instances[i]->find_pairs(boxes, found);
@@ -193,6 +233,8 @@ std::map<std::string, TimingQuality> BaselineTimer::quality(const RunTotals& tot
             }
         }
         q.frames_retimed = counts_[b].retimed;
+        q.frames_slowed = counts_[b].slowed;
+        q.probe_ns = probe_reference_ns_;
         q.frames_disturbed = q.frames_retimed + q.never_clean;
         q.tries = counts_[b].tries;
         q.runs = static_cast<uint32_t>(disturbed_[b].size());

@@ -8,6 +8,7 @@
 // times (docs/timing.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -20,6 +21,7 @@
 #include "sw/cli/frame_source.h"
 #include "sw/cli/host_factor.h"
 #include "sw/cli/run_report.h"
+#include "sw/timing/speed_probe.h"
 #include "sw/timing/thread_timer.h"
 #include "sw/timing/timing_quality.h"
 
@@ -65,12 +67,21 @@ public:
     // totals, until it comes clean or max_tries passes are spent.
     void retime(FrameSource& source, RunTotals& totals);
 
+    // Each baseline's frames timed again: {run, frame, CPU time in ns}.
+    const std::map<std::string, std::vector<std::array<double, 3>>>& retimed() const { return retimed_; }
+
     // Each baseline's timing quality (the loads left for the caller).
     std::map<std::string, TimingQuality> quality(const RunTotals& totals) const;
 
 private:
     // A run's frames that were disturbed and not yet timed clean.
     using Disturbed = std::vector<bool>;
+    // A baseline's call with a speed probe before and after it: the slower
+    // probe in `probe_ns`.
+    CallTiming probed(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found, double& probe_ns);
+    // Marks each measured frame whose probes ran slower than the machine's
+    // fast speed (the host profile's, else this run's) as disturbed; the limit.
+    double mark_slowed(uint64_t warmup);
     // Fresh instances of the named baselines, holding the run's pair budget.
     std::vector<std::unique_ptr<BroadPhase>> fresh(const std::vector<std::size_t>& which) const;
     // The index of the first measured frame of a run of `frames`.
@@ -83,12 +94,16 @@ private:
     PairBudget budget_;
     std::vector<uint64_t> board_digests_;  // one a frame of the first run
     std::vector<std::vector<Disturbed>> disturbed_;  // [baseline][run][frame]
+    std::vector<std::vector<std::vector<float>>> probes_;  // [baseline][run][frame]: the first try's slower probe, ns
+    SpeedProbe probe_;
+    double probe_reference_ns_ = 0;  // the fast speed frames were held to
     // By baseline, over measured frames: timed clean by a later try, and the
     // later tries (a frame first disturbed either came clean or never did).
     struct Counts {
-        uint64_t retimed = 0, tries = 0;
+        uint64_t retimed = 0, tries = 0, slowed = 0;
     };
     std::vector<Counts> counts_;
+    std::map<std::string, std::vector<std::array<double, 3>>> retimed_;
 };
 
 }  // namespace cdvp

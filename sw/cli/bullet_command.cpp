@@ -1,5 +1,6 @@
 #include "sw/cli/bullet_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "sw/cli/run_checks.h"
 #include "sw/cli/run_setup.h"
 #include "sw/cli/wave_outputs.h"
+#include "sw/timing/speed_probe.h"
 
 namespace po = boost::program_options;
 
@@ -156,15 +158,36 @@ std::optional<std::string> lost_pair(const FormatReference::Check& check, Number
     return lost_pair_message(format, frame, *check.missing);
 }
 
+// A software step with a speed probe before and after it: the slower in `slower`.
+StepTimes probed_step(BulletWorld& world, SpeedProbe& probe, double& slower) {
+    const double before = probe.time_ns();
+    const StepTimes step = world.step();
+    slower = std::max(before, probe.time_ns());
+    return step;
+}
+
 // Each software step after the warm-up that a pre-emption or a move to
 // another CPU disturbed is timed again: a fresh world stepped untimed up to
 // it (Bullet's worlds are deterministic), up to `tries` passes. The quality
 // of the software world's timing, its loads left for the caller.
 TimingQuality retime_software(const SceneSpec& spec, BroadphaseKind software, double factor, uint32_t tries,
-                              std::vector<std::vector<bool>>& disturbed, BulletTimes& times) {
+                              double probe_reference_ns, std::vector<std::vector<bool>>& disturbed,
+                              const std::vector<std::vector<double>>& probes, SpeedProbe& probe, BulletTimes& times) {
     const std::size_t frames = disturbed.empty() ? 0 : disturbed[0].size();
     const std::size_t first = frames > times.warmup_frames() ? times.warmup_frames() : 0;
     TimingQuality quality;
+    // A step on a slowed CPU (its probes slower than the machine's fast speed) is disturbed too.
+    std::vector<double> all;
+    for (const std::vector<double>& run : probes) all.insert(all.end(), run.begin() + static_cast<std::ptrdiff_t>(first), run.end());
+    quality.probe_ns = probe_reference_ns > 0 ? probe_reference_ns : fast_probe_ns(all);
+    const double limit = quality.probe_ns * (1 + kProbeTolerance);
+    for (std::size_t run = 0; run < disturbed.size(); ++run) {
+        for (std::size_t k = first; k < frames; ++k) {
+            if (disturbed[run][k] || probes[run][k] <= limit) continue;
+            disturbed[run][k] = true;
+            ++quality.frames_slowed;
+        }
+    }
     for (uint32_t pass = 0; pass < tries; ++pass) {
         bool any = false;
         for (std::size_t run = 0; run < disturbed.size(); ++run) {
@@ -176,10 +199,14 @@ TimingQuality retime_software(const SceneSpec& spec, BroadphaseKind software, do
             any = true;
             const std::unique_ptr<BulletWorld> world = make_scene_world(spec, software);
             for (std::size_t k = 0; k <= last; ++k) {
-                const StepTimes step = world->step();
-                if (k < first || !disturbed[run][k]) continue;
+                if (k < first || !disturbed[run][k]) {
+                    world->step();
+                    continue;
+                }
+                double slower = 0;
+                const StepTimes step = probed_step(*world, probe, slower);
                 ++quality.tries;
-                if (step.disturbed) continue;
+                if (step.disturbed || slower > limit) continue;
                 times.replace_software(run, k, step.broadphase_share_ns() * factor, step.step_ns * factor);
                 disturbed[run][k] = false;
                 ++quality.frames_retimed;
@@ -226,6 +253,8 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
     FormatReference reference(run.config.format, setup.platform.driver.ns_per_pair, budgets.pair_budget());
     RunWallTimes wall;  // the board's simulation, and the software worlds' steps beside it
     std::vector<std::vector<bool>> disturbed(1);  // the software world's steps, [run][frame]
+    std::vector<std::vector<double>> probes(1);   // the slower speed probe beside each
+    SpeedProbe probe;
     for (uint64_t frame = 0; frame < settings.scene.frames; ++frame) {
         StepTimes board_step;
         try {
@@ -233,8 +262,10 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
         } catch (const BoardFrameFault&) {
             return frame_failed(link.last_fault(), frame, budgets);
         }
-        const StepTimes software_step = software_world->step();
+        double slower = 0;
+        const StepTimes software_step = probed_step(*software_world, probe, slower);
         disturbed[0].push_back(software_step.disturbed);
+        probes[0].push_back(slower);
         const BoardFrameStats& board = broadphase.last_frame();
         wall.simulator_s += board.simulate_ns * 1e-9;
         wall.baselines_s += software_step.step_ns * 1e-9;
@@ -264,8 +295,11 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
         software_world = make_scene_world(spec, setup.software);
         times.start_software_run();
         disturbed.emplace_back();
+        probes.emplace_back();
         for (uint64_t frame = 0; frame < settings.scene.frames; ++frame) {
-            const StepTimes step = software_world->step();
+            double slower = 0;
+            const StepTimes step = probed_step(*software_world, probe, slower);
+            probes.back().push_back(slower);
             wall.baselines_s += step.step_ns * 1e-9;
             times.add_software(step.broadphase_share_ns() * factor, step.step_ns * factor);
             disturbed.back().push_back(step.disturbed);
@@ -273,7 +307,8 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
     }
     software_world.reset();
     const auto retime_start = std::chrono::steady_clock::now();
-    TimingQuality quality = retime_software(spec, setup.software, factor, settings.run.retime_tries, disturbed, times);
+    TimingQuality quality = retime_software(spec, setup.software, factor, settings.run.retime_tries,
+                                            setup.host.probe_reference_ns, disturbed, probes, probe, times);
     wall.baselines_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - retime_start).count();
     quality.load_start = run.load_average_start;
     quality.load_end = load_average();

@@ -25,6 +25,7 @@
 #include "sw/scene/conversion.h"
 #include "sw/study/output/output_set.h"
 #include "sw/timing/frame_samples.h"
+#include "sw/timing/speed_probe.h"
 
 namespace po = boost::program_options;
 
@@ -149,6 +150,11 @@ HostProfile measure(const CalibrateOptions& o) {
         if (run >= 10000) break;
     }
     if (!o.quiet && isatty(2)) std::fputs("\r\033[K", stderr);
+    // The machine's fast speed, which runs hold their frames to.
+    SpeedProbe probe;
+    std::vector<double> probes;
+    for (int k = 0; k < 4000; ++k) probes.push_back(probe.time_ns());
+    profile.probe_native_ns = fast_probe_ns(probes);
     profile.seconds = elapsed();
     profile.load_average_end = load_average();
     for (auto& [name, baseline] : profile.reference) {

@@ -113,6 +113,7 @@ HostTiming resolve_host_timing(const HostConfig& host, bool factor_given) {
     timing.profile_spread = profile.spread;
     timing.profile_target_spread = profile.target_spread;
     timing.profile_load = profile.load_average_start;
+    timing.probe_reference_ns = profile.probe_native_ns;
     return timing;
 }
 

@@ -33,6 +33,7 @@ struct HostTiming {
     double profile_spread = 0;              // calibrated: the profile's worst spread of its kept runs
     double profile_target_spread = 0;       // and what it was calibrated for
     std::array<double, 3> profile_load{};   // the load as it began
+    double probe_reference_ns = 0;          // calibrated: the machine's fast speed (SpeedProbe), 0: none
     bool profile_poor() const { return basis == Basis::kCalibrated && profile_spread > profile_target_spread; }
 
     // The factor for a baseline's times: its own when calibrated, else overall.

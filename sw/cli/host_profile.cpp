@@ -141,6 +141,7 @@ std::string host_profile_json(const HostProfile& p) {
           {"spread", p.spread},
           {"target_spread", p.target_spread},
           {"disturbed_frames", p.disturbed_frames},
+          {"probe_native_ns", p.probe_native_ns},
           {"quality", p.poor() ? "poor" : "good"}}},
         {"reference", reference},
         {"factors", p.factors}};
@@ -166,6 +167,7 @@ HostProfile parse_host_profile(const std::string& path, const std::string& text)
     p.runs = static_cast<uint32_t>(fields.number("calibration.runs", p.repeat, 1e6));
     p.spread = fields.number("calibration.spread", 0, 1e6);
     p.target_spread = fields.number("calibration.target_spread", 0, 1);
+    p.probe_native_ns = fields.number("calibration.probe_native_ns", 0, 1e9);
     p.load_average_start = read_load(fields, "load_average.start");
     p.load_average_end = read_load(fields, "load_average.end");
     p.machine.cpu_model = fields.text("machine.cpu_model");

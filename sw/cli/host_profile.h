@@ -47,6 +47,7 @@ struct HostProfile {
     double spread = 0;     // the worst ReferenceTiming::spread() of any baseline and size
     double target_spread = 0;  // what it repeated for (--max-spread)
     uint64_t disturbed_frames = 0;  // frames pre-empted or moved to another CPU while timed
+    double probe_native_ns = 0;     // the machine's fast speed: SpeedProbe's 10th percentile
     // The spread stayed over the target: runs on this profile say so.
     bool poor() const { return spread > target_spread; }
     std::map<std::string, BaselineReference> reference;  // by baseline name

@@ -300,6 +300,7 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
         std::map<std::string, TimingQuality> quality = setup.baselines.quality(totals);
         for (auto& [name, q] : quality) q.load_start = run.load_average_start;
         totals.set_timing_quality(std::move(quality), setup.baselines.max_tries());
+        totals.set_retimed(setup.baselines.retimed());
         wall.baselines_s += seconds_since(repeats_start);
         if (shared != nullptr) shared->publish(totals, setup.baselines.max_tries());
     }

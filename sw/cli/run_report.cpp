@@ -140,7 +140,8 @@ nlohmann::json frame_json(const FrameStats& f) {
                            {"wall_native_ns", t.wall_native_ns},
                            {"host_ns", t.host_ns},
                            {"involuntary_switches", t.involuntary_switches},
-                           {"migrated", t.migrated}};
+                           {"migrated", t.migrated},
+                           {"probe_native_ns", t.probe_native_ns}};
     }
     nlohmann::json frame = {{"frame", f.frame},
             {"objects", f.objects},
@@ -250,6 +251,7 @@ ReportSummary RunTotals::summary(const HostTiming& host) const {
         b.host_factor = factor;
         b.speedup = speedup(b.host_ns, board.spread);
         b.timing = timing_id_;
+        if (const auto r = retimed_.find(name); r != retimed_.end()) b.retimed = r->second;
         if (const auto wall = baselines_wall_.find(name); wall != baselines_wall_.end()) {
             b.wall_native_ns = wall->second.figures().spread;
         }

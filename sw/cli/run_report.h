@@ -38,6 +38,7 @@ struct BaselineTime {
     double host_ns = 0;         // native_ns x the baseline's host factor: on the modelled host
     uint64_t involuntary_switches = 0;  // while it was timed (first try)
     bool migrated = false;              // it moved to another CPU while timed
+    double probe_native_ns = 0;         // the slower SpeedProbe beside it (sw/timing/speed_probe.h)
 };
 
 struct FrameStats {
@@ -117,6 +118,8 @@ public:
     // Every baseline's samples dropped, for a timing taken from elsewhere
     // (a sweep's shared one), which `timing_id` then names in the summary.
     void clear_baselines();
+    // Frames a baseline timed again (BaselineTimer::retime), for the summary.
+    void set_retimed(std::map<std::string, std::vector<std::array<double, 3>>> retimed) { retimed_ = std::move(retimed); }
     void set_timing_id(std::string id) { timing_id_ = std::move(id); }
     const std::string& timing_id() const { return timing_id_; }
     uint32_t retime_tries() const { return max_tries_; }
@@ -159,6 +162,7 @@ private:
     std::map<std::string, TimingQuality> quality_;
     uint32_t max_tries_ = 0;
     std::string timing_id_;
+    std::map<std::string, std::vector<std::array<double, 3>>> retimed_;
     std::vector<FrameStats> shown_;
 };
 

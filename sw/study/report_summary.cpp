@@ -63,6 +63,8 @@ nlohmann::json to_json(const TimingQuality& q) {
             {"frames_timed", q.frames_timed},
             {"frames_disturbed", q.frames_disturbed},
             {"frames_retimed", q.frames_retimed},
+            {"frames_slowed", q.frames_slowed},
+            {"probe_native_ns", q.probe_ns},
             {"tries", q.tries},
             {"never_clean", q.never_clean},
             {"runs", q.runs},
@@ -78,6 +80,8 @@ TimingQuality timing_quality_from_json(const nlohmann::json& json, const std::st
     q.frames_timed = r.get<uint64_t>("frames_timed");
     q.frames_disturbed = r.get<uint64_t>("frames_disturbed");
     q.frames_retimed = r.get<uint64_t>("frames_retimed");
+    q.frames_slowed = r.get<uint64_t>("frames_slowed");
+    q.probe_ns = r.get<double>("probe_native_ns");
     q.tries = r.get<uint64_t>("tries");
     q.never_clean = r.get<uint64_t>("never_clean");
     q.runs = r.get<uint32_t>("runs");
@@ -98,6 +102,7 @@ nlohmann::json to_json(const ReportSummary& s) {
         json["host_factor"] = b.host_factor;
         json["speedup"] = b.speedup;
         json["timing_quality"] = to_json(b.quality);
+        json["retimed"] = b.retimed;
         if (!b.timing.empty()) json["timing"] = b.timing;
     }
     nlohmann::json json = {{"frames", s.frames},
@@ -160,6 +165,7 @@ ReportSummary summary_from_json(const nlohmann::json& json, const std::string& s
             out.quality = timing_quality_from_json(b.json()["timing_quality"], source + ": summary: baselines: " + name);
         }
         if (b.json().contains("timing")) out.timing = b.get<std::string>("timing");
+        if (b.json().contains("retimed")) out.retimed = b.get<std::vector<std::array<double, 3>>>("retimed");
     }
     if (json.contains("timing_quality")) s.timing_quality = timing_quality_from_json(json["timing_quality"], source + ": summary");
     if (json.contains("retime_tries")) s.retime_tries = r.get<uint32_t>("retime_tries");

@@ -26,6 +26,9 @@ struct BaselineSummary {
     double host_factor = 1.0;
     double speedup = 0.0;  // host_ns.mean over the board's mean frame time
     TimingQuality quality;
+    // Frames timed again: {run, frame, native_ns} each (run and frame from 0),
+    // the figures' values where a report's frames hold the first try's.
+    std::vector<std::array<double, 3>> retimed;
     // The software timing the figures were taken from when it was not this
     // run's own (a sweep's shared timing of the workload); empty: the run's.
     std::string timing;

@@ -27,6 +27,10 @@ std::string TimingQuality::describe(uint32_t max_tries) const {
                       frames);
         add(text);
     }
+    if (frames_slowed > 0) {
+        std::snprintf(text, sizeof text, "%llu on a slowed CPU", static_cast<unsigned long long>(frames_slowed));
+        add(text);
+    }
     if (runs > 1) {
         std::snprintf(text, sizeof text, "repeats %.1f%% apart%s", 100 * repeat_spread,
                       repeat_spread > kMaxRepeatSpread ? " (over 10%)" : "");
@@ -41,6 +45,7 @@ TimingQuality& TimingQuality::operator+=(const TimingQuality& other) {
     frames_timed += other.frames_timed;
     frames_disturbed += other.frames_disturbed;
     frames_retimed += other.frames_retimed;
+    frames_slowed += other.frames_slowed;
     tries += other.tries;
     never_clean += other.never_clean;
     repeat_spread = std::max(repeat_spread, other.repeat_spread);

@@ -24,11 +24,13 @@ constexpr double kMaxRepeatSpread = 0.10;
 struct TimingQuality {
     uint64_t frames_timed = 0;      // measured frames (after the warm-up) of every run and baseline
     uint64_t frames_disturbed = 0;  // of those, disturbed when first timed
+    uint64_t frames_slowed = 0;     // of those, on a machine slower than its fast speed (SpeedProbe)
     uint64_t frames_retimed = 0;    // of those, timed clean by a later try
     uint64_t tries = 0;             // the later tries, all together
     uint64_t never_clean = 0;       // frames still disturbed after the last try
     double repeat_spread = 0;       // max/min - 1 over the runs' means (0 for one run)
     uint32_t runs = 1;
+    double probe_ns = 0;  // the machine's fast speed the frames were held to (SpeedProbe), 0: none
     std::array<double, 3> load_start{}, load_end{};
 
     // Clean: every measured frame came clean and the repeats agree.

@@ -27,13 +27,19 @@ double quantile(std::vector<double> v, double p) {
     return k + 1 < v.size() ? v[k] + (h - static_cast<double>(k)) * (v[k + 1] - v[k]) : v.back();
 }
 
+// A baseline's first-run frames as its figures took them: the report's
+// frames, with those the run timed again (summary ... retimed) replaced.
 std::vector<double> per_frame(const json& report, const std::string& baseline, std::size_t from) {
-    std::vector<double> values;
-    for (std::size_t k = from; k < report["frames"].size(); ++k) {
-        const json& f = report["frames"][k];
-        values.push_back(baseline.empty() ? f["total_ns"].get<double>() : f["baselines"][baseline]["native_ns"].get<double>());
+    std::vector<double> all;
+    for (const json& f : report["frames"]) {
+        all.push_back(baseline.empty() ? f["total_ns"].get<double>() : f["baselines"][baseline]["native_ns"].get<double>());
     }
-    return values;
+    if (!baseline.empty()) {
+        for (const json& again : report["summary"]["baselines"][baseline]["retimed"]) {
+            if (again[0].get<double>() == 0) all.at(static_cast<std::size_t>(again[1].get<double>())) = again[2].get<double>();
+        }
+    }
+    return {all.begin() + static_cast<std::ptrdiff_t>(std::min(from, all.size())), all.end()};
 }
 
 class CliTiming : public Cli {
