@@ -55,7 +55,7 @@ struct RunSettings {
     double max_error_percent = 1.0;  // run.fidelity auto's bound
     uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
     uint32_t repeat = 1;
-    uint32_t retime_tries = 3;      // sw/cli's kDefaultRetimeTries (a test holds them equal)
+    uint32_t retime_tries = 3;      // sw/timing's kDefaultRetimeTries (a test holds them equal)
     std::string pin_cpu = "none";   // or a CPU number: see pinned_cpu()
     bool ignore_capacity = false;
     bool lockstep = false;  // run.fidelity rtl: the clocked engine compared after every edge

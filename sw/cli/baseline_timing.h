@@ -33,9 +33,6 @@ namespace cdvp {
 // taken this way.
 CallTiming time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found);
 
-// How often a disturbed frame is timed again unless run.retime_tries says otherwise.
-constexpr uint32_t kDefaultRetimeTries = 3;
-
 class BaselineTimer {
 public:
     // names: --baseline's comma-separated list (empty: none); host: each

@@ -203,7 +203,8 @@ std::optional<std::string> moved_beyond_tolerance(const json& then, const json& 
         const json& values = facts.value(part, json::object());
         return values.is_object() && values.contains(name) && values[name].is_number() ? values[name].get<double>() : -1.0;
     };
-    for (const auto& [name, ignored] : then.value("values", json::object()).items()) {
+    const json values = then.value("values", json::object());  // kept: items() of a temporary would dangle
+    for (const auto& [name, ignored] : values.items()) {
         const double before = number(then, "values", name), after = number(now, "values", name);
         const double tolerance = std::max(number(then, "tolerance", name), number(now, "tolerance", name));
         if (!(before > 0) || !(after > 0)) return name + " is not in both";

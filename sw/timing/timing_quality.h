@@ -21,6 +21,9 @@ namespace cdvp {
 // caches or the memory bandwidth for a whole run moves it further.
 constexpr double kMaxRepeatSpread = 0.10;
 
+// How often a disturbed frame is timed again unless run.retime_tries says otherwise.
+constexpr uint32_t kDefaultRetimeTries = 3;
+
 struct TimingQuality {
     uint64_t frames_timed = 0;      // measured frames (after the warm-up) of every run and baseline
     uint64_t frames_disturbed = 0;  // of those, disturbed when first timed

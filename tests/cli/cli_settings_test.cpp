@@ -10,6 +10,7 @@
 
 #include "platform/settings.h"
 #include "sw/timing/frame_samples.h"
+#include "sw/timing/timing_quality.h"
 #include "tests/cli/cli_support.h"
 
 namespace cdvp::test {
@@ -188,6 +189,7 @@ TEST_F(CliSettings, SettingsJsonListsEverySettingAndEveryPresetKey) {
 }
 
 TEST(Settings, TheWarmupDefaultIsTheTimingLibrarys) { EXPECT_EQ(Settings{}.run.warmup, kDefaultWarmupFrames); }
+TEST(Settings, TheRetimeTriesDefaultIsTheTimingLibrarys) { EXPECT_EQ(Settings{}.run.retime_tries, kDefaultRetimeTries); }
 
 TEST_F(CliSettings, TheDocListsTheTableAsCdvpSettingsPrintsIt) {
     const Result r = run("settings --markdown");

@@ -278,6 +278,9 @@ TEST_F(CliSweepState, APipedTraceIsCopiedOnceUnderTheTraceLimitsForEveryPoint) {
     }
 }
 
+// A recalibration whose reference times moved by more than the profile's
+// recorded spread is a changed input; one that moved within it (here: the
+// same times, the file rewritten) is the same, and the sweep resumes.
 TEST_F(CliSweepState, ARecalibratedHostProfileMakesAnotherSweep) {
     fs::create_directories(dir_ / "config" / "cdvp");
     const std::string env = "XDG_CONFIG_HOME='" + (dir_ / "config").string() + "'";
@@ -292,8 +295,13 @@ TEST_F(CliSweepState, ARecalibratedHostProfileMakesAnotherSweep) {
     fs::copy_file(dir_ / "config" / "cdvp" / "host-profile.json", dir_ / "named.json");
     ASSERT_EQ(run(kGrid + "--host-profile named.json --out named -q").status, 0);
     write("named.json", slurp(dir_ / "named.json") + " ");
+    EXPECT_EQ(run(kGrid + "--host-profile named.json --out named -q").status, 0) << "the same reference times";
+    nlohmann::json moved = nlohmann::json::parse(slurp(dir_ / "named.json"));
+    moved["reference"]["sap"]["reference_native_ns"] = 1.5 * moved["reference"]["sap"]["reference_native_ns"].get<double>();
+    write("named.json", moved.dump(2));
     expect_refusal(run(kGrid + "--host-profile named.json --out named -q"),
-                   "cdvp sweep: --out: named: --host-profile named.json changed since the sweep began");
+                   "cdvp sweep: --out: named: --host-profile named.json changed since the sweep began: sap's reference "
+                   "time (ns) moved +50.0% (");
 }
 
 TEST_F(CliSweepState, PointsRunAtOnceShareTheDefaultMemoryBudget) {

@@ -1,0 +1,178 @@
+// The software's time end to end: every report carries what its timing can be
+// trusted for; a frame on a slowed CPU is timed again up to run.retime_tries
+// and, never clean, makes the timing disturbed on the summary's line, in the
+// report and in the sweep's rows; --pin-cpu; a sweep times each workload once
+// and every point of it divides by that timing; a resume refuses a timing its
+// rows used that changed; cdvp calibrate repeats to a spread, says when it
+// could not get there, and runs on a poor profile say so.
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_support.h"
+#include "tests/cli/sweep_rows.h"
+
+namespace cdvp::test {
+namespace {
+
+using nlohmann::json;
+
+class CliTimingQuality : public Cli {
+protected:
+    json read_json(const std::string& name) { return json::parse(slurp(dir_ / name)); }
+    // A profile whose fast speed no probe reaches: every frame is on a slowed CPU.
+    void write_unreachable_profile() {
+        ASSERT_EQ(run("calibrate --repeat 1 --max-spread 100 -q --out p.json").status, 0);
+        json p = read_json("p.json");
+        p["calibration"]["probe_native_ns"] = 1;
+        write("p.json", p.dump(2));
+    }
+    const std::string kRun = "run --board adm-xrc-ii --scene spheres --objects 60 --frames 6 --m 4 --baseline sap,soa ";
+};
+
+TEST_F(CliTimingQuality, EveryReportSaysItsClockAndWhatItsTimingCanBeTrustedFor) {
+    const Result r = run(kRun + "--repeat 2 --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("software timing (thread CPU time): "), std::string::npos) << r.out;
+    const json j = read_json("r.json");
+    for (const json& frame : j["frames"]) {
+        for (const char* name : {"sap", "soa"}) {
+            const json& b = frame["baselines"][name];
+            EXPECT_GT(b["wall_native_ns"].get<double>(), 0);
+            EXPECT_GT(b["probe_native_ns"].get<double>(), 0);
+            EXPECT_TRUE(b["migrated"].is_boolean());
+        }
+    }
+    const json& q = j["summary"]["timing_quality"];
+    EXPECT_EQ(q["frames_timed"], 2 * 2 * 4) << "two baselines, two runs, four frames after the warm-up";
+    EXPECT_EQ(q["runs"], 2);
+    EXPECT_EQ(q["frames_disturbed"], q["frames_retimed"].get<uint64_t>() + q["never_clean"].get<uint64_t>());
+    EXPECT_TRUE(q["verdict"] == "clean" || q["verdict"] == "disturbed");
+    EXPECT_EQ(j["summary"]["retime_tries"], 3);
+    EXPECT_EQ(j["summary"]["baselines"]["sap"]["timing_quality"]["frames_timed"], 8);
+}
+
+TEST_F(CliTimingQuality, AFrameOnASlowedCpuIsTimedAgainAndNeverCleanIsLoud) {
+    write_unreachable_profile();
+    const Result r = run(kRun + "--host-profile p.json --retime-tries 2 --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("software timing (thread CPU time): disturbed: 8 of 8 frames never came clean after 2 tries"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("; sap, soa's speedup may not hold (docs/timing.md)"), std::string::npos) << r.out;
+    const json j = read_json("r.json");
+    const json& q = j["summary"]["timing_quality"];
+    EXPECT_EQ(q["verdict"], "disturbed");
+    EXPECT_EQ(q["never_clean"], 8);
+    EXPECT_EQ(q["frames_slowed"], 8);
+    EXPECT_EQ(q["tries"], 16) << "each of the 8 frames timed again twice, on fresh instances stepped to it";
+    EXPECT_DOUBLE_EQ(q["probe_native_ns"].get<double>(), 1);
+    const Result none = run(kRun + "--host-profile p.json --retime-tries 0 --report n.json -q");
+    ASSERT_EQ(none.status, 0) << none.err;
+    EXPECT_EQ(read_json("n.json")["summary"]["timing_quality"]["tries"], 0);
+    EXPECT_EQ(read_json("n.json")["summary"]["timing_quality"]["never_clean"], 8);
+}
+
+TEST_F(CliTimingQuality, ReTimingFindsTheSamePairsAndKeepsTheFiguresTheReportsFramesGive) {
+    // --warmup 0: the first frame (allocation, first insertion) is timed again too.
+    const Result r = run(kRun + "--warmup 0 --repeat 2 --report r.json -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json j = read_json("r.json");
+    for (const char* name : {"sap", "soa"}) {
+        std::vector<double> first;
+        for (const json& f : j["frames"]) first.push_back(f["baselines"][name]["native_ns"].get<double>());
+        for (const json& again : j["summary"]["baselines"][name]["retimed"]) {
+            ASSERT_EQ(again.size(), 3u);
+            if (again[0] == 0) first.at(again[1].get<std::size_t>()) = again[2].get<double>();
+        }
+        double sum = 0;
+        for (const double v : first) sum += v;
+        const std::vector<double> means = j["summary"]["baselines"][name]["run_means_native_ns"];
+        ASSERT_EQ(means.size(), 2u);
+        EXPECT_NEAR(means[0], sum / static_cast<double>(first.size()), 1e-6 * means[0]) << name;
+    }
+}
+
+TEST_F(CliTimingQuality, PinCpuPinsOrIsRefusedOnOneLine) {
+    expect_refusal(run(kRun + "--pin-cpu 1023"), "cdvp run: --pin-cpu: CPU 1023 is not one this process may run on (");
+    expect_refusal(run(kRun + "--pin-cpu abc"), "cdvp run: --pin-cpu: ");
+    expect_refusal(run(kRun + "-c run.pin_cpu=-1"), "cdvp run: -c run.pin_cpu: ");
+    const Result pinned = run(kRun + "--pin-cpu 0 --report r.json -q");
+    ASSERT_EQ(pinned.status, 0) << pinned.err;
+    EXPECT_EQ(read_json("r.json")["config"]["settings"]["run.pin_cpu"]["value"], "0");
+}
+
+TEST_F(CliTimingQuality, ASweepTimesEachWorkloadOnceAndEveryPointOfItDividesByIt) {
+    const std::string grid = "sweep --board adm-xrc-ii,pcie-gen3-x8 --set m=1,4 --set objects=40,80 --frames 4 "
+                             "--baseline sap --no-plots -q ";
+    ASSERT_EQ(run(grid + "--out s").status, 0);
+    std::size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(dir_ / "s" / "software")) files += entry.path().extension() == ".json";
+    EXPECT_EQ(files, 2u) << "two workloads (40 and 80 objects) for eight points";
+    std::map<std::string, std::set<std::string>> ids, natives;
+    for (const auto& row : sweep_rows(slurp(dir_ / "s" / "sweep.csv"), false)) {
+        ids[row.at("objects")].insert(row.at("sap_timing_id"));
+        const double factor = std::stod(row.at("sap_host_factor"));
+        char native[32];
+        std::snprintf(native, sizeof native, "%.6g", std::stod(row.at("sap_mean_host_ns")) / factor);
+        natives[row.at("objects")].insert(native);
+        EXPECT_TRUE(row.at("sap_timing_quality") == "clean" || row.at("sap_timing_quality") == "disturbed");
+    }
+    for (const auto& [objects, used] : ids) {
+        EXPECT_EQ(used.size(), 1u) << objects << " objects: one timing for every board and m";
+        EXPECT_EQ(used.begin()->find('@'), 16u) << *used.begin();
+        EXPECT_EQ(natives[objects].size(), 1u) << objects << " objects: one native mean";
+    }
+    // A resume holds the rows to the timings they used.
+    const std::string file = (dir_ / "s" / "software" / (ids["40"].begin()->substr(0, 16) + ".json")).string();
+    std::string text = slurp(file);
+    write("s/software/" + ids["40"].begin()->substr(0, 16) + ".json", text + " ");
+    expect_refusal(run(grid + "--out s"), "cdvp sweep: s/software/" + ids["40"].begin()->substr(0, 16) + ".json: changed");
+    write("s/software/" + ids["40"].begin()->substr(0, 16) + ".json", text);
+    EXPECT_EQ(run(grid + "--out s").status, 0);
+    expect_refusal(run(grid + "--out s --software-timings none"),
+                   "cdvp sweep: --out: s holds another sweep (software timings shared through 'OUT/software', not ''");
+    // Each point its own timing.
+    ASSERT_EQ(run(grid + "--out own --software-timings none").status, 0);
+    EXPECT_FALSE(fs::exists(dir_ / "own" / "software"));
+    for (const auto& row : sweep_rows(slurp(dir_ / "own" / "sweep.csv"), false)) EXPECT_EQ(row.at("sap_timing_id"), "own");
+}
+
+TEST_F(CliTimingQuality, ShardsGivenOneTimingsDirectoryShareItAndTheirMergeEqualsTheWhole) {
+    const std::string grid = "sweep --board adm-xrc-ii --set m=1,2,4 --set objects=40 --frames 4 --baseline soa "
+                             "--no-plots -q --software-timings shared ";
+    ASSERT_EQ(run(grid + "--out a --shard 1/2").status, 0);
+    ASSERT_EQ(run(grid + "--out b --shard 2/2").status, 0);
+    ASSERT_EQ(run("merge -q --out m a b").status, 0);
+    std::set<std::string> ids;
+    for (const auto& row : sweep_rows(slurp(dir_ / "m" / "sweep.csv"), false)) ids.insert(row.at("soa_timing_id"));
+    EXPECT_EQ(ids.size(), 1u) << "both shards divided by one timing";
+}
+
+TEST_F(CliTimingQuality, CalibrateSaysWhenItsRunsCouldNotAgreeAndARunOnThatProfileSaysSo) {
+    const Result strict = run("calibrate --repeat 2 --max-spread 0.1 --time-limit 1 --strict --out strict.json");
+    if (strict.status == 0) GTEST_SKIP() << "this machine got within 0.1%: " << strict.out;
+    expect_refusal(strict, "cdvp calibrate: --strict: the reference workload's runs stayed ");
+    EXPECT_FALSE(fs::exists(dir_ / "strict.json")) << "a refused calibration writes nothing";
+    const Result poor = run("calibrate --repeat 2 --max-spread 0.1 --time-limit 1 -q --out poor.json");
+    ASSERT_EQ(poor.status, 0) << poor.err;
+    EXPECT_EQ(poor.err.rfind("cdvp calibrate: warning: the reference workload's runs stayed ", 0), 0u) << poor.err;
+    EXPECT_NE(poor.err.find(" at load "), std::string::npos) << "names the load: " << poor.err;
+    const json p = read_json("poor.json");
+    EXPECT_EQ(p["calibration"]["quality"], "poor");
+    EXPECT_GT(p["calibration"]["runs"].get<int>(), 2) << "it repeated for the spread";
+    const Result r = run(kRun + "--host-profile poor.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.rfind("cdvp run: host factors rest on a poor profile, poor.json: its runs stayed ", 0), 0u) << r.err;
+}
+
+TEST_F(CliTimingQuality, BulletReportsItsSoftwareWorldsTimingQuality) {
+    const Result r = run("bullet --scene stack --objects 20 --frames 5 --board adm-xrc-ii --m 2 --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("software world's timing (thread CPU time): "), std::string::npos) << r.out;
+    const json report = read_json("r.json");
+    const json& q = report["bullet"]["summary"]["timing_quality"];
+    EXPECT_EQ(q["frames_timed"], 3) << "five steps, two of them warm-up";
+    EXPECT_EQ(q["frames_disturbed"], q["frames_retimed"].get<uint64_t>() + q["never_clean"].get<uint64_t>());
+}
+
+}  // namespace
+}  // namespace cdvp::test
