@@ -158,7 +158,11 @@ TEST_F(CliTimingQuality, CalibrateSaysWhenItsRunsCouldNotAgreeAndARunOnThatProfi
     EXPECT_NE(poor.err.find(" at load "), std::string::npos) << "names the load: " << poor.err;
     const json p = read_json("poor.json");
     EXPECT_EQ(p["calibration"]["quality"], "poor");
-    EXPECT_GT(p["calibration"]["runs"].get<int>(), 2) << "it repeated for the spread";
+    // It repeats for the spread until its time limit; a slow build (sanitizers) may reach the limit at 2 runs.
+    const int runs = p["calibration"]["runs"].get<int>();
+    EXPECT_GE(runs, 2);
+    EXPECT_TRUE(runs > 2 || p["calibration"]["seconds"].get<double>() >= 1.0)
+        << "it stopped at " << runs << " runs before its time limit: " << p["calibration"].dump();
     const Result r = run(kRun + "--host-profile poor.json");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err.rfind("cdvp run: host factors rest on a poor profile, poor.json: its runs stayed ", 0), 0u) << r.err;
