@@ -32,14 +32,18 @@ SpeedProbe::SpeedProbe() : next_(kChaseBytes / sizeof(uint32_t)) {
 }
 
 // The work once untimed, to warm the caches, branch predictors and clock
-// reads the call before it cooled, then once timed.
+// reads the call before it cooled, then once timed. Both passes chase the
+// same slots: a timed pass that went on along the cycle would meet lines the
+// warm pass never touched, cold after a call that evicted L1 (a Bullet step
+// of 3,000 bodies does), and every probe after such a call would read slow.
 double SpeedProbe::time_ns() {
     double ns = 0;
+    const uint32_t first = at_;
     for (int pass = 0; pass < 2; ++pass) {
         const int64_t start = thread_cpu_ns();
         uint64_t x = state_;
         for (int k = 0; k < kChainSteps; ++k) x ^= x << 13, x ^= x >> 7, x ^= x << 17;
-        uint32_t at = at_;
+        uint32_t at = first;
         for (int k = 0; k < kChaseSteps; ++k) at = next_[at];
         const int64_t end = thread_cpu_ns();
         // Kept, so that neither loop is optimised away.
