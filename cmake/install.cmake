@@ -43,13 +43,15 @@ set(cdvp_package_libraries
     cdvp_models             board_core     # BoardCore and the engine factory, no SystemC
     cdvp_models_systemc     board          # CollisionBoard, PciBus, PciBridge: the board as SystemC IP
     cdvp_driver             driver         # BoardDriver against a HostPort
-    cdvp_platform           platform       # VirtualBoard, presets, the settings table
+    cdvp_settings           settings       # the settings table, their values and origins, presets, config files
+    cdvp_platform           platform       # VirtualBoard, the analytic platform, the device fit
     cdvp_timing             timing
     cdvp_scene              scene          # traces, pairs CSV, spheres
     cdvp_baselines          baselines      # software broad phases
     cdvp_apps               apps           # the bouncing spheres
     cdvp_bullet             bullet         # BoardBroadphase for btDiscreteDynamicsWorld
-    cdvp_study_output       study_output   # transactional output files
+    cdvp_output             output         # transactional output files
+    cdvp_run                run            # RunSpec and run(): one run in this process
     cdvp_study              study)         # child runs, reports, sweeps, merges, fidelity
 if(TARGET cdvp_models_rtl_verilated)
   list(APPEND cdvp_package_libraries cdvp_models_rtl_verilated rtl_verilated)  # the Verilator-built board RTL
@@ -69,7 +71,7 @@ set_target_properties(cdvp PROPERTIES EXPORT_NAME cdvp)
 install(TARGETS cdvp EXPORT cdvpTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # Headers: every header of the layers the libraries hold (the public surface
 # and the internals it includes; docs/library.md says which is which).
-foreach(dir models platform sw/timing sw/scene sw/baselines sw/apps sw/bullet sw/study)
+foreach(dir models platform sw/timing sw/scene sw/baselines sw/apps sw/bullet sw/output sw/run sw/study)
   install(DIRECTORY ${CMAKE_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cdvp/${dir}
           FILES_MATCHING PATTERN "*.h" PATTERN "rtl" EXCLUDE PATTERN "boards" EXCLUDE PATTERN "figures" EXCLUDE)
 endforeach()

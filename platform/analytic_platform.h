@@ -15,7 +15,7 @@
 #include "models/fast_engine/pair_finder.h"
 #include "platform/driver/analytic_frame.h"
 #include "platform/driver/analytic_pipeline.h"
-#include "platform/host_cpu.h"
+#include "platform/frame_platform.h"
 #include "platform/virtual_board.h"
 
 namespace cdvp {
@@ -24,7 +24,7 @@ namespace cdvp {
 // to femtoseconds as sc_time rounds the board's (CollisionBoard::period()).
 AnalyticBoard analytic_board(const BoardConfig& board);
 
-class AnalyticPlatform {
+class AnalyticPlatform : public FramePlatform {
 public:
     // config's faults must be empty (there is no engine to inject into) and its
     // quantum is not modelled: callers refuse both with the setting's name.
@@ -32,14 +32,14 @@ public:
 
     // As VirtualBoard::try_run_frame: the frame's result, or null with fault
     // set (only a pair budget's refusal: nothing here can fault).
-    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) override;
     // Frames pipelined on a board with two box banks (AnalyticPipeline), as
     // VirtualBoard's: submit a frame and get the one before it, finished (null
     // for the first, with fault empty); finish the frame in flight.
-    bool pipelined() const { return pipeline_.has_value(); }
-    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
-    const FrameResult* try_finish_frames(FrameFault& fault);
-    const BusTiming& bus_timing() const { return *bus_; }
+    bool pipelined() const override { return pipeline_.has_value(); }
+    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) override;
+    const FrameResult* try_finish_frames(FrameFault& fault) override;
+    const BusTiming& bus_timing() const override { return *bus_; }
     // Whether every phase of a frame this platform timed one at a time is exact by bound,
     // not by estimate: its pairs and a full row of lane hits fit the pair
     // FIFO together (so the FIFO never pushes back) and the pair buffer took

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "models/board_spec/board_config.h"
-#include "platform/settings.h"
+#include "platform/settings/settings.h"
 
 namespace cdvp {
 

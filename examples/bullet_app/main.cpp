@@ -17,7 +17,7 @@
 
 #include <systemc>
 
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 #include "platform/kernel.h"
 #include "platform/memory_plan.h"
 #include "platform/platform_settings.h"

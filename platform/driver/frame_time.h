@@ -1,6 +1,6 @@
 // How long the driver lets each wait take, and how long a frame can take at
 // most, from the same numbers: the estimate that cdvp run makes before any
-// work (sw/cli/run_budgets.h) therefore covers every deadline the driver will
+// work (sw/run/run_budgets.h) therefore covers every deadline the driver will
 // set, and both are held to one limit, kSimulatedTimeLimit.
 #pragma once
 

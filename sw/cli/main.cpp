@@ -7,15 +7,16 @@
 #include <systemc>
 
 #include "platform/kernel.h"
+#include "sw/cli/exit_status.h"
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/calibrate_command.h"
 #include "sw/cli/fidelity_command.h"
 #include "sw/cli/rtl_variants_command.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/settings_command.h"
-#include "sw/study/version.h"
+#include "sw/run/version.h"
 #include "sw/cli/sweep_command.h"
-#include "sw/study/output/output_target.h"
+#include "sw/output/output_target.h"
 #include "models/common/user_text.h"
 
 namespace {

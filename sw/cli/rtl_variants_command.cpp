@@ -8,7 +8,7 @@
 #include "models/common/user_text.h"
 #include "models/rtl_engine/rtl_variant.h"
 #include "sw/cli/exit_status.h"
-#include "sw/study/exit_codes.h"
+#include "sw/run/exit_codes.h"
 
 namespace cdvp {
 

@@ -36,7 +36,7 @@ cd "$work/run"
 
 build_example foreign_platform "$work/prefix"
 "$work/build-foreign_platform/foreign_platform" > "$work/foreign_platform.out" 2>/dev/null || fail "foreign_platform failed: $(cat "$work/foreign_platform.out")"
-expect foreign_platform "refused m too large: -c board.m: expected an integer from 1 to 32, got '40'"
+expect foreign_platform "refused m too large: override board.m: expected an integer from 1 to 32, got '40'"
 expect foreign_platform "refused a bad preset value: bad-preset.json: board.clock_mhz: expected 1 to 1000 MHz, got -66"
 [ "$(grep -c '^frame [0-9]*: 400 boxes, [0-9]* pairs (= all-pairs test)' "$work/foreign_platform.out")" = 4 ] ||
   fail "foreign_platform did not match the all-pairs test on 4 frames: $(cat "$work/foreign_platform.out")"
@@ -51,7 +51,8 @@ expect bullet_app "41 of 41 bodies bit-identical to btSimpleBroadphase"
 build_example study_api "$work/prefix"
 "$work/build-study_api/study_api" > "$work/study_api.out" 2>&1 || fail "study_api failed: $(cat "$work/study_api.out")"
 for objects in 100 200 400; do expect study_api "N=$objects  4 frames"; done
-expect study_api "refused: status 2: cdvp run: --objects: expected an integer"
+expect study_api "refused: status 2: cdvp run: -c board.m: expected an integer from 1 to 32"
+expect study_api "analytic, in this process: 3 frames"
 expect study_api "status 0, 2 rows (2 ok, 0 refused, 0 faulted)"
 
 # Python: the installed module, imported with the prefix's site-packages on
