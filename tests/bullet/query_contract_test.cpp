@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <initializer_list>
 #include <map>
 #include <random>
 #include <set>
@@ -191,13 +192,24 @@ void check_rays(ThreeBroadphases& broadphases, std::mt19937& rng, float min_leng
     }
 }
 
-TEST(BoardQueryContract, RaysShorterThanAUnitMeetEveryBoxOfTheirSegment) {
+// 300 rays (or swept boxes) of each length range through 300 random boxes.
+RayCounts run_rays(unsigned seed, std::initializer_list<std::pair<float, float>> lengths, const btVector3& sweep_min,
+                   const btVector3& sweep_max, const char* what) {
     ThreeBroadphases broadphases;
-    std::mt19937 rng(21);
+    std::mt19937 rng(seed);
     fill_random(broadphases, rng);
     RayCounts counts;
-    check_rays(broadphases, rng, 0.05f, 1, btVector3(0, 0, 0), btVector3(0, 0, 0), counts);
-    counts.print("300 rays of 0.05 to 1");
+    for (const auto& [shortest, longest] : lengths) {
+        check_rays(broadphases, rng, shortest, longest, sweep_min, sweep_max, counts);
+    }
+    counts.print(what);
+    return counts;
+}
+
+const btVector3 kNoSweep(0, 0, 0);
+
+TEST(BoardQueryContract, RaysShorterThanAUnitMeetEveryBoxOfTheirSegment) {
+    const RayCounts counts = run_rays(21, {{0.05f, 1}}, kNoSweep, kNoSweep, "300 rays of 0.05 to 1");
     EXPECT_GT(counts.hits, 100u);
     // The boxes a ray of length L < 1 meets past s = L (of its segment): a
     // broad phase reading m_lambda_max as a fraction of the segment misses them.
@@ -205,12 +217,7 @@ TEST(BoardQueryContract, RaysShorterThanAUnitMeetEveryBoxOfTheirSegment) {
 }
 
 TEST(BoardQueryContract, LongRaysStopAtTheirEnd) {
-    ThreeBroadphases broadphases;
-    std::mt19937 rng(22);
-    fill_random(broadphases, rng);
-    RayCounts counts;
-    check_rays(broadphases, rng, 1, 30, btVector3(0, 0, 0), btVector3(0, 0, 0), counts);
-    counts.print("300 rays of 1 to 30");
+    const RayCounts counts = run_rays(22, {{1, 30}}, kNoSweep, kNoSweep, "300 rays of 1 to 30");
     EXPECT_GT(counts.hits, 200u);
     EXPECT_GT(counts.beyond_end, 15u) << "boxes past the rays' ends, which must not be reported";
 }
@@ -218,15 +225,14 @@ TEST(BoardQueryContract, LongRaysStopAtTheirEnd) {
 // convexSweepTest's query: the origin's segment against boxes grown by the
 // cast shape's box (symmetric for a sphere, any box for a turned shape).
 TEST(BoardQueryContract, SweptBoxesShortAndLongMeetTheGrownBoxes) {
-    ThreeBroadphases broadphases;
-    std::mt19937 rng(23);
-    fill_random(broadphases, rng);
-    RayCounts counts;
-    check_rays(broadphases, rng, 0.05f, 1, btVector3(-0.3f, -0.3f, -0.3f), btVector3(0.3f, 0.3f, 0.3f), counts);
-    check_rays(broadphases, rng, 1, 30, btVector3(-0.2f, -0.6f, -0.1f), btVector3(0.4f, 0.1f, 0.3f), counts);
-    counts.print("600 swept boxes of 0.05 to 30");
-    EXPECT_GT(counts.hits, 600u);
-    EXPECT_GT(counts.past_length, 15u);
+    const RayCounts sphere = run_rays(23, {{0.05f, 1}, {1, 30}}, btVector3(-0.3f, -0.3f, -0.3f),
+                                      btVector3(0.3f, 0.3f, 0.3f), "600 sweeps of a sphere's box, 0.05 to 30");
+    const RayCounts turned = run_rays(24, {{0.05f, 1}, {1, 30}}, btVector3(-0.2f, -0.6f, -0.1f),
+                                      btVector3(0.4f, 0.1f, 0.3f), "600 sweeps of a turned shape's box, 0.05 to 30");
+    for (const RayCounts& counts : {sphere, turned}) {
+        EXPECT_GT(counts.hits, 500u);
+        EXPECT_GT(counts.past_length, 10u);
+    }
 }
 
 // A callback that keeps only the nearest box and shortens m_lambda_max to its

@@ -56,19 +56,24 @@ struct OnlyObject : Callback {
     const btCollisionObject* only_;
 };
 
-// The closest hit: [object index, fraction, normal, point] (index -1 and fraction 1 for none).
+// A hit: [object index, fraction, normal, point]; a miss: [-1, fraction].
+Bits hit_bits(const btCollisionObject* object, btScalar fraction, const btVector3& normal, const btVector3& point) {
+    Bits bits;
+    append(bits, index_of(object));
+    append(bits, fraction);
+    if (object != nullptr) {
+        append_vector(bits, normal);
+        append_vector(bits, point);
+    }
+    return bits;
+}
+
 Bits closest_ray(BulletWorld& world, const btVector3& from, const btVector3& to,
                  const btCollisionObject* only = nullptr) {
     OnlyObject<btCollisionWorld::ClosestRayResultCallback> result(from, to, only);
     world.world().rayTest(from, to, result);
-    Bits bits;
-    append(bits, index_of(result.m_collisionObject));
-    append(bits, result.m_closestHitFraction);
-    if (result.hasHit()) {
-        append_vector(bits, result.m_hitNormalWorld);
-        append_vector(bits, result.m_hitPointWorld);
-    }
-    return bits;
+    return hit_bits(result.m_collisionObject, result.m_closestHitFraction, result.m_hitNormalWorld,
+                    result.m_hitPointWorld);
 }
 
 std::vector<Bits> all_hits(BulletWorld& world, const btVector3& from, const btVector3& to) {
@@ -76,12 +81,8 @@ std::vector<Bits> all_hits(BulletWorld& world, const btVector3& from, const btVe
     world.world().rayTest(from, to, result);
     std::vector<Bits> hits;
     for (int k = 0; k < result.m_collisionObjects.size(); ++k) {
-        Bits bits;
-        append(bits, index_of(result.m_collisionObjects[k]));
-        append(bits, result.m_hitFractions[k]);
-        append_vector(bits, result.m_hitNormalWorld[k]);
-        append_vector(bits, result.m_hitPointWorld[k]);
-        hits.push_back(bits);
+        hits.push_back(hit_bits(result.m_collisionObjects[k], result.m_hitFractions[k], result.m_hitNormalWorld[k],
+                                result.m_hitPointWorld[k]));
     }
     return hits;
 }
@@ -90,14 +91,8 @@ Bits closest_sweep(BulletWorld& world, const btConvexShape& shape, const btTrans
                    const btCollisionObject* only = nullptr) {
     OnlyObject<btCollisionWorld::ClosestConvexResultCallback> result(from.getOrigin(), to.getOrigin(), only);
     world.world().convexSweepTest(&shape, from, to, result);
-    Bits bits;
-    append(bits, index_of(result.m_hitCollisionObject));
-    append(bits, result.m_closestHitFraction);
-    if (result.hasHit()) {
-        append_vector(bits, result.m_hitNormalWorld);
-        append_vector(bits, result.m_hitPointWorld);
-    }
-    return bits;
+    return hit_bits(result.m_hitCollisionObject, result.m_closestHitFraction, result.m_hitNormalWorld,
+                    result.m_hitPointWorld);
 }
 
 // Two closest hits agree, or tie: the same fraction, and the other's object,
