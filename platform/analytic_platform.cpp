@@ -145,26 +145,21 @@ const FrameResult* AnalyticPlatform::try_submit_frame(const std::vector<FloatBox
     } catch (const PairBudgetExceeded& e) {
         budget_fault(e, fault);  // as the driver does, the frame in flight fails with it
         pipeline_.emplace(frame_);
-        in_flight_pairs_.clear();
         return nullptr;
     }
     host_bank_ = 1 - host_bank_;  // START hands the bank over
-    const std::optional<FramePhases> finished = pipeline_->submit(static_cast<uint32_t>(boxes.size()), pairs, changed);
-    if (finished) {
-        result_.pairs.swap(in_flight_pairs_);
-        result_.phases = *finished;
-        order_as_read_back(result_.pairs);
-    }
-    in_flight_pairs_ = std::move(pairs);
-    return finished ? &result_ : nullptr;
+    const std::optional<FramePhases> finished =
+        pipeline_->submit(static_cast<uint32_t>(boxes.size()), std::move(pairs), changed, result_.pairs);
+    if (!finished) return nullptr;
+    result_.phases = *finished;
+    order_as_read_back(result_.pairs);
+    return &result_;
 }
 
 const FrameResult* AnalyticPlatform::try_finish_frames(FrameFault& fault) {
     fault = FrameFault{};
-    const std::optional<FramePhases> finished = pipeline_ ? pipeline_->finish() : std::nullopt;
+    const std::optional<FramePhases> finished = pipeline_ ? pipeline_->finish(result_.pairs) : std::nullopt;
     if (!finished) return nullptr;
-    result_.pairs.swap(in_flight_pairs_);
-    in_flight_pairs_.clear();
     result_.phases = *finished;
     order_as_read_back(result_.pairs);
     return &result_;

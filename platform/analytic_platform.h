@@ -79,7 +79,6 @@ private:
     Bank banks_[2];
     uint32_t host_bank_ = 0;
     std::optional<AnalyticPipeline> pipeline_;  // two box banks
-    PairList in_flight_pairs_;
 };
 
 }  // namespace cdvp
