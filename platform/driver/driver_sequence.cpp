@@ -133,6 +133,15 @@ void DriverSequence<X>::run_dma(uint32_t control, Worst worst) {
 }
 
 template <class X>
+template <class Worst>
+void DriverSequence<X>::run_chain(Chain chain, uint64_t count, Worst worst) {
+    const uint64_t at = x_.stage_chain(chain, count);
+    x_.write(D::kBase + D::kChainLo, static_cast<uint32_t>(at));
+    x_.write(D::kBase + D::kChainHi, static_cast<uint32_t>(at >> 32));
+    run_dma(D::kChain, worst);
+}
+
+template <class X>
 void DriverSequence<X>::dma_fault() {
     const auto cause = static_cast<DmaFault>(x_.read(D::kBase + D::kErrorCause));
     const uint64_t address = read_counter(D::kBase + D::kErrorAddressLo);
@@ -189,10 +198,7 @@ void DriverSequence<X>::upload_full(uint32_t n) {
         return;
     }
     // One scatter-gather chain of six descriptors: one set-up, one interrupt.
-    const uint64_t chain = x_.stage_chain(Chain::kCoordinateArrays, n);
-    x_.write(D::kBase + D::kChainLo, static_cast<uint32_t>(chain));
-    x_.write(D::kBase + D::kChainHi, static_cast<uint32_t>(chain >> 32));
-    run_dma(D::kChain, [n](const FrameTime& time) { return time.upload_worst_ns(n); });
+    run_chain(Chain::kCoordinateArrays, n, [n](const FrameTime& time) { return time.upload_worst_ns(n); });
 }
 
 // The records (index, six words) in host RAM, then one chain of
@@ -212,10 +218,7 @@ void DriverSequence<X>::upload_delta(uint64_t changed) {
         }
         return;
     }
-    const uint64_t chain = x_.stage_chain(Chain::kDeltaStream, changed);
-    x_.write(D::kBase + D::kChainLo, static_cast<uint32_t>(chain));
-    x_.write(D::kBase + D::kChainHi, static_cast<uint32_t>(chain >> 32));
-    run_dma(D::kChain, [changed](const FrameTime& time) { return time.delta_worst_ns(changed); });
+    run_chain(Chain::kDeltaStream, changed, [changed](const FrameTime& time) { return time.delta_worst_ns(changed); });
 }
 
 template <class X>

@@ -103,6 +103,10 @@ private:
     // it; worst(FrameTime) gives the wait's worst case; a fault fails the frame.
     template <class Worst>
     void run_dma(uint32_t control, Worst worst);
+    // The chain staged in host memory (its descriptors' address in two
+    // registers), then the DMA that walks it.
+    template <class Worst>
+    void run_chain(Chain chain, uint64_t count, Worst worst);
     [[noreturn]] void dma_fault();
     void dma(uint64_t host_address, uint32_t local_address, uint32_t bytes, bool to_host);
     void upload(const Frame& frame);

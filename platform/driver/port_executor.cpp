@@ -62,34 +62,29 @@ void PortExecutor::open(uint32_t capacity, uint32_t buffer_depth, uint32_t paral
     }
 }
 
-void PortExecutor::forget_banks() {
-    for (BankCopy& bank : banks_) bank.valid = false;
+namespace {
+// A port's error fails the frame.
+void check_access(const std::string& error, const char* access, uint64_t address) {
+    if (!error.empty()) throw DeviceFault(std::string("board ") + access + " at " + hex(address) + " failed: " + error);
 }
+}  // namespace
 
 uint32_t PortExecutor::read(uint64_t address) {
     uint32_t value = 0;
-    if (const std::string error = port_.read(address, &value, 4); !error.empty()) {
-        throw DeviceFault("board read at " + hex(address) + " failed: " + error);
-    }
+    check_access(port_.read(address, &value, 4), "read", address);
     return value;
 }
 
 void PortExecutor::write(uint64_t address, uint32_t value) {
-    if (const std::string error = port_.write(address, &value, 4); !error.empty()) {
-        throw DeviceFault("board write at " + hex(address) + " failed: " + error);
-    }
+    check_access(port_.write(address, &value, 4), "write", address);
 }
 
 void PortExecutor::pio_write(uint64_t address, uint64_t host_address, uint32_t bytes) {
-    if (const std::string error = port_.write(address, port_.memory(host_address), bytes); !error.empty()) {
-        throw DeviceFault("board write at " + hex(address) + " failed: " + error);
-    }
+    check_access(port_.write(address, port_.memory(host_address), bytes), "write", address);
 }
 
 void PortExecutor::pio_read(uint64_t address, uint64_t host_address, uint32_t bytes) {
-    if (const std::string error = port_.read(address, port_.memory(host_address), bytes); !error.empty()) {
-        throw DeviceFault("board read at " + hex(address) + " failed: " + error);
-    }
+    check_access(port_.read(address, port_.memory(host_address), bytes), "read", address);
 }
 
 void PortExecutor::wait(SimTime duration) {
@@ -153,39 +148,26 @@ void PortExecutor::stage(const Frame& boxes) {
     }
 }
 
-uint64_t PortExecutor::changed_boxes(const Frame&) {
-    changed_.clear();
-    const BankCopy& bank = banks_[host_bank_];
-    const uint32_t known = bank.valid ? std::min(objects_, bank.objects) : 0;
-    const uint32_t* words[kCoordinates];
+// The coordinate arrays as staged in host memory.
+std::array<const uint32_t*, kCoordinates> PortExecutor::staged_columns() {
+    std::array<const uint32_t*, kCoordinates> columns{};
     for (uint32_t c = 0; c < kCoordinates; ++c) {
-        words[c] = reinterpret_cast<const uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
+        columns[c] = reinterpret_cast<const uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
     }
-    for (uint32_t i = 0; i < objects_; ++i) {
-        bool same = i < known;
-        for (uint32_t c = 0; same && c < kCoordinates; ++c) same = words[c][i] == bank.words[c][i];
-        if (!same) changed_.push_back(i);
-    }
-    return changed_.size();
+    return columns;
 }
 
-void PortExecutor::keep_bank() {
-    BankCopy& bank = banks_[host_bank_];
-    for (uint32_t c = 0; c < kCoordinates; ++c) {
-        const auto* words = reinterpret_cast<const uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
-        bank.words[c].assign(words, words + objects_);
-    }
-    bank.objects = objects_;
-    bank.valid = true;
+uint64_t PortExecutor::changed_boxes(const Frame&) {
+    changed_.clear();
+    return banks_.compare(staged_columns().data(), objects_, [this](uint32_t i) { changed_.push_back(i); });
 }
+
+void PortExecutor::keep_bank() { banks_.keep(staged_columns().data(), objects_); }
 
 // The records (index, six words) of the changed boxes.
 void PortExecutor::stage_delta_records() {
     auto* records = reinterpret_cast<uint32_t*>(port_.memory(host_address(HostArea::kDeltaRecords)));
-    const uint32_t* words[kCoordinates];
-    for (uint32_t c = 0; c < kCoordinates; ++c) {
-        words[c] = reinterpret_cast<const uint32_t*>(port_.memory(coordinate_area(capacity_, c)));
-    }
+    const std::array<const uint32_t*, kCoordinates> words = staged_columns();
     for (std::size_t k = 0; k < changed_.size(); ++k) {
         uint32_t* record = records + address_map::kDeltaRecordWords * k;
         record[0] = changed_[k];

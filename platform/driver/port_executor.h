@@ -15,6 +15,7 @@
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/number_format/number_format.h"
 #include "models/pci/bus_timing.h"
+#include "platform/driver/bank_copies.h"
 #include "platform/driver/driver_config.h"
 #include "platform/driver/driver_sequence.h"
 #include "platform/driver/frame_time.h"
@@ -45,9 +46,9 @@ public:
               const TileConfig& tiles);
     uint32_t capacity() const { return capacity_; }
     NumberFormat format() const { return format_; }
-    void set_host_bank(uint32_t bank) { host_bank_ = bank; }
+    void set_host_bank(uint32_t bank) { banks_.set_host_bank(bank); }
     // What the board's memories hold is not known (after a fault).
-    void forget_banks();
+    void forget_banks() { banks_.forget(); }
 
     // The bus and the host's clock. A port's error fails the frame (DeviceFault).
     uint32_t read(uint64_t address);
@@ -83,10 +84,11 @@ public:
     uint64_t host_address(HostArea area, uint32_t index = 0) const;
     bool pair_area_holds(uint64_t words) const;
     void take_pairs(PairList& pairs, uint64_t words, uint32_t count, uint32_t objects);
-    void banks_swapped() { host_bank_ = 1 - host_bank_; }
+    void banks_swapped() { banks_.hand_over(); }
 
 private:
     SimTime timeout_for(double worst_ns) const;
+    std::array<const uint32_t*, kCoordinates> staged_columns();
     // HostPort::wait, held to the port's contract.
     void wait(SimTime duration);
 
@@ -102,16 +104,7 @@ private:
     std::vector<uint32_t> changed_;  // its boxes that differ from the host bank's copy
     // When wait_for_interrupt_since last returned at once: each interrupt is taken once.
     std::optional<SimTime> taken_at_;
-    // Each bank's memories as the last upload into it left them (the words
-    // of each coordinate, boxes 0..objects-1), for delta uploads; invalid
-    // until a frame succeeds, and after any fault.
-    struct BankCopy {
-        std::array<std::vector<uint32_t>, kCoordinates> words;
-        uint32_t objects = 0;
-        bool valid = false;
-    };
-    std::array<BankCopy, 2> banks_;
-    uint32_t host_bank_ = 0;  // the bank the next upload goes to
+    BankCopies banks_;
 };
 
 }  // namespace cdvp
