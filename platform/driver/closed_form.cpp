@@ -94,7 +94,10 @@ uint32_t ClosedForm::value(uint64_t address) const {
     switch (address) {
         case R::kStatus: {
             uint32_t status = line_.board_high ? uint32_t{R::kInterrupt} : 0u;
-            if (sweep != nullptr && segment_end_ <= now_) status |= segment_ + 1 < sweep->segments() ? R::kOverflow : R::kDone;
+            // A segment that ended paused (overflow) unless it was the sweep's last.
+            if (sweep != nullptr && segment_end_ <= now_) {
+                status |= segment_ + 1 < sweep->segments() ? R::kOverflow : R::kDone;
+            }
             return status;
         }
         case R::kCyclesLo: return low(cycles_);
@@ -111,8 +114,8 @@ uint32_t ClosedForm::value(uint64_t address) const {
             const uint64_t count = frame->sweep.segment_pairs(k);
             if (address == R::kPairCount) return static_cast<uint32_t>(count);
             if (frame->pairs == nullptr || count == 0) return static_cast<uint32_t>(2 * count);
-            return static_cast<uint32_t>(encoded_words(driver_.pair_format, frame->pairs + k * frame->sweep.depth, count,
-                                                       frame->objects));
+            const IndexPair* first = frame->pairs + k * frame->sweep.depth;
+            return static_cast<uint32_t>(encoded_words(driver_.pair_format, first, count, frame->objects));
         }
         case D::kBase + D::kStatus: return dma_end_ <= now_ ? uint32_t{D::kDone} : uint32_t{D::kBusy};
         default: unmodelled("register read", address);
@@ -166,9 +169,8 @@ void ClosedForm::write(uint64_t address, uint32_t value) {
         case D::kBase + D::kBytes: bytes_ = value; return;
         case D::kBase + D::kControl: {
             if (!(value & D::kStart)) return;
-            const double transfer_ns =
-                (value & D::kChain) ? chain_ns_
-                                    : bus_.dma_ns(bytes_, (value & D::kToHost) ? Direction::kToHost : Direction::kToBoard);
+            const Direction direction = (value & D::kToHost) ? Direction::kToHost : Direction::kToBoard;
+            const double transfer_ns = (value & D::kChain) ? chain_ns_ : bus_.dma_ns(bytes_, direction);
             dma_end_ = now_ + fs_from_ns(transfer_ns);
             if (value & D::kInterruptOnDone) line_.dma_at = dma_end_;
             return;
