@@ -15,6 +15,7 @@
 #include "models/fast_engine/pair_finder.h"
 #include "platform/driver/analytic_frame.h"
 #include "platform/driver/analytic_pipeline.h"
+#include "platform/driver/bank_copies.h"
 #include "platform/frame_platform.h"
 #include "platform/virtual_board.h"
 
@@ -70,16 +71,9 @@ private:
     std::vector<uint64_t> block_ends_;
     FrameResult result_;
     // The words each box bank holds from the last frame uploaded into it,
-    // for delta uploads (as the driver keeps them); the host's bank.
-    struct Bank {
-        std::vector<uint32_t> words[kCoordinates];
-        uint32_t objects = 0;
-        bool valid = false;
-    };
-    Bank banks_[2];
-    uint32_t host_bank_ = 0;
+    // for delta uploads (as the driver keeps them).
+    BankCopies banks_;
     std::optional<AnalyticPipeline> pipeline_;  // two box banks
-    PairList in_flight_pairs_;
 };
 
 }  // namespace cdvp

@@ -90,8 +90,7 @@ private:
     HostQuantumKeeper quantum_keeper_;
     sc_core::sc_time last_interrupt_ = sc_core::sc_max_time();
     // The interrupt wait_for_interrupt_since last returned for without
-    // waiting: each is taken once (on an untimed bus no time passes between
-    // two status reads, and the same interrupt would be taken forever).
+    // waiting: each is taken once (HostPort's contract, host_port.h).
     sc_core::sc_time taken_interrupt_ = sc_core::sc_max_time();
     const sc_core::sc_event& interrupt_;
     BoardDriver driver_;

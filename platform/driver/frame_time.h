@@ -36,6 +36,11 @@ double delta_upload_bus_ns(const BusTiming& bus, Transfer transfer, uint64_t rec
 // Whether run.upload sends the `changed` boxes of a frame of `objects` as deltas.
 bool upload_as_delta(const DriverConfig& config, const BusTiming& bus, uint32_t objects, uint64_t changed);
 
+// The pause after the k-th poll of a wait: the poll gap (a board period when
+// it is 0, so that an untimed bus still lets time pass), growing by the
+// back-off factor each poll up to the largest gap.
+SimTime poll_gap_fs(const DriverConfig& config, SimTime period_fs, uint32_t k);
+
 // What a frame's waits and work cost on one board and bus. All times in ns.
 class FrameTime {
 public:

@@ -52,6 +52,17 @@ expect foreign_platform "refused a bad preset value: bad-preset.json: board.cloc
 [ "$(grep -c '^frame [0-9]*: 400 boxes, [0-9]* pairs (= all-pairs test)' "$work/foreign_platform.out")" = 4 ] ||
   fail "foreign_platform did not match the all-pairs test on 4 frames: $(cat "$work/foreign_platform.out")"
 expect foreign_platform "4 frames, 491 pairs, 0 mismatches"
+expect foreign_platform "bus: 38400 bytes of boxes uploaded, 3928 bytes of pairs read back"
+# Delta uploads and the encoded pair formats need host memory for their
+# records and words: the example sizes it as the platform does.
+preset=$(find "$work/prefix" -name adm-xrc-ii.json | head -1)
+for format in counted bitmap; do
+  "$work/build-foreign_platform/foreign_platform" "$preset" 400 4 \
+    driver.upload=delta driver.pair_format=$format > "$work/foreign_platform.out" 2>&1 ||
+    fail "foreign_platform with delta uploads and $format pairs failed: $(cat "$work/foreign_platform.out")"
+  expect foreign_platform "4 frames, 491 pairs, 0 mismatches"
+  expect foreign_platform "bus: 44800 bytes of boxes uploaded"  # 28-byte records
+done
 
 build_example bullet_app "$work/prefix"
 "$work/build-bullet_app/bullet_app" > "$work/bullet_app.out" 2>/dev/null || fail "bullet_app failed: $(cat "$work/bullet_app.out")"
