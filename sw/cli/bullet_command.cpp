@@ -90,11 +90,11 @@ struct Outputs {
     WaveOutputs waves;
 };
 
-void open_outputs(const BulletOptions& o, const po::variables_map& vm, Outputs& out) {
+void open_outputs(const BulletOptions& o, const po::variables_map& vm, ModelLevel level, Outputs& out) {
     add_setting_inputs(out.files, o.layers, vm);
     std::optional<std::size_t> report;
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
-    open_with_waves_and_summary(out.files, out.waves, vm, o.vcd, o.vcd_format, o.quiet);
+    open_with_waves_and_summary(out.files, out.waves, vm, o.vcd, o.vcd_format, o.quiet, level);
     if (report) out.report = &out.files.file(*report);
 }
 
@@ -338,13 +338,14 @@ int simulate(const BulletOptions& o, const po::variables_map& vm, const std::vec
     check_path_lengths({{"board", &o.layers.board_name}, {"config", &o.layers.config}, {"report", &o.report},
                         {"vcd", &o.vcd}},
                        vm);
-    // Outputs first: a path that cannot be written, or that names an input
-    // or another output, is refused before any work.
-    Outputs out;
-    open_outputs(o, vm, out);
     if (vm.count("scene") == 0) throw InputError("--scene: expected one of " + bullet_scene_list());
     check_bullet_scene_name(o.scene);
     Setup setup = make_setup(o, vm);
+    // Outputs next (the level says what the waveforms hold): a path that
+    // cannot be written, or that names an input or another output, is
+    // refused before any work.
+    Outputs out;
+    open_outputs(o, vm, setup.level, out);
     const SettingValues& values = setup.values;
     const SceneSpec spec = bullet_scene_spec(o.scene, values);
     const uint64_t frames = values.settings().scene.frames;

@@ -51,13 +51,13 @@ struct Outputs {
 };
 
 // Declares the inputs and outputs and checks them together before any work.
-void open_outputs(const RunOptions& o, const po::variables_map& vm, Outputs& out) {
+void open_outputs(const RunOptions& o, const po::variables_map& vm, ModelLevel level, Outputs& out) {
     if (vm.count("trace")) out.files.add_input("--trace", o.trace);
     add_setting_inputs(out.files, o.layers, vm);
     std::optional<std::size_t> pairs, report;
     if (vm.count("pairs-out")) pairs = out.files.add_output("--pairs-out", o.pairs_out);
     if (vm.count("report")) report = out.files.add_output("--report", o.report);
-    open_with_waves_and_summary(out.files, out.waves, vm, o.vcd, o.vcd_format, o.quiet);
+    open_with_waves_and_summary(out.files, out.waves, vm, o.vcd, o.vcd_format, o.quiet, level);
     if (pairs) out.pairs = &out.files.file(*pairs);
     if (report) out.report = &out.files.file(*report);
 }
@@ -351,13 +351,14 @@ int run_checked(int argc, char** argv, bool analytic_only = false, nlohmann::jso
         check_path_lengths({{"trace", &o.trace}, {"board", &o.layers.board_name}, {"config", &o.layers.config},
                             {"pairs-out", &o.pairs_out}, {"report", &o.report}, {"vcd", &o.vcd}},
                            vm);
-        // Outputs first: a path that cannot be written, or that names an
-        // input or another output, is refused before any work.
-        Outputs out;
-        open_outputs(o, vm, out);
         check_source_options(o, vm);
         Setup setup = make_setup(o, vm);
         if (analytic_only && setup.level != ModelLevel::kAnalytic) return kNotAnalytic;
+        // Outputs next (the level says what the waveforms hold): a path that
+        // cannot be written, or that names an input or another output, is
+        // refused before any work.
+        Outputs out;
+        open_outputs(o, vm, setup.level, out);
         check_scene_settings(vm, setup.values);
         const FrameOrigin origin = vm.count("trace") ? FrameOrigin{o.trace, ""} : FrameOrigin{"", o.scene};
         RunBudgets budgets(setup.values, setup.platform, run_shape(vm, setup), origin);

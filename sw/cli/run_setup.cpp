@@ -107,9 +107,11 @@ std::vector<std::string> report_command_line(int argc, char** argv) {
 }
 
 void open_with_waves_and_summary(OutputSet& files, WaveOutputs& waves, const boost::program_options::variables_map& vm,
-                                 const std::string& vcd, const std::string& vcd_format, bool quiet) {
+                                 const std::string& vcd, const std::string& vcd_format, bool quiet, ModelLevel level) {
     if (vm.count("vcd-format") && !vm.count("vcd")) throw InputError("--vcd-format: the format of --vcd; give --vcd too");
-    if (vm.count("vcd")) waves.declare(files, vcd, parse_dump_format(vcd_format));
+    if (vm.count("vcd")) {
+        waves.declare(files, vcd, parse_dump_format(vcd_format), VirtualBoard::state_tables(level == ModelLevel::kRtl));
+    }
     if (!quiet) files.add_standard_output("standard output");
     files.open();
     waves.bind(files);

@@ -73,8 +73,9 @@ void pin_to_setting_cpu(const SettingValues& values);
 // What a simulating command (run, bullet) declares after its own outputs:
 // the waveforms (--vcd, --vcd-format) and, unless quiet, the summary on
 // standard output (an output too: committed with the files or not at all);
-// then opens the set and binds the waveforms to it.
+// then opens the set and binds the waveforms to it. `level` (model_level())
+// decides what the waveforms hold: the RTL's signals or the platform's.
 void open_with_waves_and_summary(OutputSet& files, WaveOutputs& waves, const boost::program_options::variables_map& vm,
-                                 const std::string& vcd, const std::string& vcd_format, bool quiet);
+                                 const std::string& vcd, const std::string& vcd_format, bool quiet, ModelLevel level);
 
 }  // namespace cdvp

@@ -7,7 +7,9 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "models/common/wave_list.h"
 #include "sw/study/output/output_set.h"
 
 namespace cdvp {
@@ -22,8 +24,10 @@ DumpFormat parse_dump_format(const std::string& text);
 class WaveOutputs {
 public:
     // Declares the dump and, for a dump to a file, the save file ("w.vcd" or
-    // "w.fst" -> "w.gtkw") and its filter files ("w.controller-states.txt").
-    void declare(OutputSet& files, const std::string& path, DumpFormat format);
+    // "w.fst" -> "w.gtkw") and the filter files of the state tables the dump
+    // holds ("w.controller-states.txt"; VirtualBoard::state_tables).
+    void declare(OutputSet& files, const std::string& path, DumpFormat format,
+                 const std::vector<const StateNames*>& tables);
     // After files.open(): binds the declared outputs; for an FST, makes the
     // scratch VCD beside it.
     void bind(OutputSet& files);
@@ -38,6 +42,7 @@ private:
     std::string path_;
     DumpFormat format_ = DumpFormat::kVcd;
     std::optional<std::size_t> dump_index_, save_index_;
+    std::vector<const StateNames*> tables_;
     std::map<std::string, std::size_t> filter_indices_;  // by state table
     OutputFile* dump_ = nullptr;
     std::optional<OutputFile> scratch_vcd_;  // fst only: never published
