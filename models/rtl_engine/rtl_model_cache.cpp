@@ -254,10 +254,6 @@ std::string RtlModelCache::default_directory() {
     return set("HOME").value_or(".") + "/.cache/cdvp/rtl";
 }
 
-std::string RtlModelCache::entry_path(const RtlVariant& variant) const {
-    return directory_ + "/" + variant.name() + "-" + sha256_hex(rtl_model_key_text(variant, build_, kit_)).substr(0, kKeyDigits);
-}
-
 RtlBoardMaker RtlModelCache::load(const RtlVariant& variant) {
     const std::string key_text = rtl_model_key_text(variant, build_, kit_);
     const std::string key = sha256_hex(key_text);

@@ -46,8 +46,6 @@ public:
     // a cache that cannot be created, a tool missing, a failed compile (with
     // its log's path).
     RtlBoardMaker load(const RtlVariant& variant);
-    // Where the variant's entry is (whether or not it exists yet).
-    std::string entry_path(const RtlVariant& variant) const;
 
 private:
     std::string directory_;
