@@ -40,6 +40,20 @@ std::optional<std::string> on_path(const std::string& name) {
     return std::nullopt;
 }
 
+// This process's environment less the variables make and the compiler would
+// add flags from: the model is made from what its key names, whoever runs it.
+std::vector<char*> compile_environment() {
+    static const char* const kDropped[] = {"CXXFLAGS=", "CPPFLAGS=", "LDFLAGS=", "LDLIBS=", "MAKEFLAGS=", "MFLAGS="};
+    std::vector<char*> kept;
+    for (char** variable = environ; *variable != nullptr; ++variable) {
+        bool dropped = false;
+        for (const char* name : kDropped) dropped |= std::strncmp(*variable, name, std::strlen(name)) == 0;
+        if (!dropped) kept.push_back(*variable);
+    }
+    kept.push_back(nullptr);
+    return kept;
+}
+
 // Runs args (args[0] an absolute path) with standard input from /dev/null
 // and both outputs appended to `log`; its wait status.
 int run_logged(const std::vector<std::string>& args, const std::string& log) {
@@ -61,8 +75,9 @@ int run_logged(const std::vector<std::string>& args, const std::string& log) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
+    std::vector<char*> environment = compile_environment();
     pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, args[0].c_str(), &actions, nullptr, argv.data(), environ);
+    const int spawned = posix_spawn(&pid, args[0].c_str(), &actions, nullptr, argv.data(), environment.data());
     posix_spawn_file_actions_destroy(&actions);
     close(fd);
     if (spawned != 0) throw_os_error(args[0] + ": cannot start", spawned);
