@@ -1,8 +1,16 @@
 # `cmake --install build --prefix P`: P/bin/cdvp, the presets in
-# P/share/cdvp/boards, the README, LICENSE and docs in P/share/doc/cdvp, and a
-# man page in P/share/man/man1/cdvp.1 generated from the --help texts.
+# P/share/cdvp/boards, the RTL kit in P/share/cdvp/rtl, the README, LICENSE
+# and docs in P/share/doc/cdvp, and a man page in P/share/man/man1/cdvp.1
+# generated from the --help texts.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/platform/boards/ DESTINATION ${CDVP_INSTALL_BOARDS_DIR}
         FILES_MATCHING PATTERN "*.json")
+# The RTL kit (models/rtl_engine/rtl_kit.h): what --fidelity rtl compiles a
+# variant the binary does not hold from, laid out as in the source tree.
+get_property(cdvp_rtl_kit GLOBAL PROPERTY CDVP_RTL_KIT)
+foreach(file IN LISTS cdvp_rtl_kit)
+  get_filename_component(directory ${file} DIRECTORY)
+  install(FILES ${CMAKE_SOURCE_DIR}/${file} DESTINATION ${CDVP_INSTALL_RTL_DIR}/${directory})
+endforeach()
 install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 # docs/ keeps its name, so the README's links into it hold.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR})
@@ -80,7 +88,7 @@ install(EXPORT cdvpTargets NAMESPACE cdvp:: DESTINATION ${cdvp_cmake_dir})
 include(CMakePackageConfigHelpers)
 configure_package_config_file(${CMAKE_SOURCE_DIR}/cmake/cdvpConfig.cmake.in ${CMAKE_BINARY_DIR}/cdvpConfig.cmake
                               INSTALL_DESTINATION ${cdvp_cmake_dir}
-                              PATH_VARS CDVP_INSTALL_BOARDS_DIR CMAKE_INSTALL_INCLUDEDIR)
+                              PATH_VARS CDVP_INSTALL_BOARDS_DIR CDVP_INSTALL_RTL_DIR CMAKE_INSTALL_INCLUDEDIR)
 write_basic_package_version_file(${CMAKE_BINARY_DIR}/cdvpConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_BINARY_DIR}/cdvpConfig.cmake ${CMAKE_BINARY_DIR}/cdvpConfigVersion.cmake
         DESTINATION ${cdvp_cmake_dir})

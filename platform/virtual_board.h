@@ -94,8 +94,10 @@ public:
     // traced frame with markers at its START and DONE.
     void write_gtkw(std::ostream& out, const std::string& dump_path,
                     const std::map<std::string, std::string>& filter_paths) const;
-    // The named-state tables the waveforms use, each a translate filter file.
-    static std::vector<const StateNames*> state_tables();
+    // The named-state tables the waveforms use, each a translate filter
+    // file: the platform's (the controller's and the DMA engine's), or with
+    // rtl_waves (--fidelity rtl) the RTL controller's alone.
+    static std::vector<const StateNames*> state_tables(bool rtl_waves);
 
     const CollisionBoard& board() const { return board_; }
     const PciBridge& bridge() const { return bridge_; }

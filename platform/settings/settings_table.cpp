@@ -485,7 +485,7 @@ std::vector<Setting> host_and_run_settings() {
                     "the modelling level: fast computes pairs and cycles from the schedule, cycle clocks the datapath "
                     "edge by edge (the same pairs, cycles and times; --vcd needs cycle or rtl, and picks cycle when "
                     "the fidelity is not given); rtl clocks the board's Verilog under Verilator, the reference the "
-                    "others answer to (only the parameter sets built in: cdvp rtl-variants); analytic finds the same pairs and times the frame from closed forms "
+                    "others answer to (a parameter set not built in, cdvp rtl-variants, is compiled on first use and cached: docs/rtl.md); analytic finds the same pairs and times the frame from closed forms "
                     "without the SystemC kernel (FIFO stalls estimated, the host quantum not modelled); auto takes "
                     "the analytic level where its error is bounded or measured within --max-error, fast elsewhere",
                     "fast: exact, faster (docs/fast_engine.md); rtl: docs/rtl.md; analytic: docs/analytic.md"),

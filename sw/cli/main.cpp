@@ -18,6 +18,7 @@
 #include "sw/cli/sweep_command.h"
 #include "sw/output/output_target.h"
 #include "models/common/user_text.h"
+#include "models/rtl_engine/rtl_model_cache.h"
 
 namespace {
 
@@ -88,7 +89,10 @@ int sc_main(int argc, char** argv) {
         {"record", cdvp::record_command}, {"calibrate", cdvp::calibrate_command},
         {"rtl-variants", cdvp::rtl_variants_command}};
     for (const auto& [name, run] : commands) {
-        if (command == name) return run(command_argc, command_argv);
+        if (command == name) {
+            cdvp::set_rtl_notice_program("cdvp " + command);  // names the RTL's compile on first use
+            return run(command_argc, command_argv);
+        }
     }
     std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
               << "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, calibrate, rtl-variants, help (see cdvp --help)\n";

@@ -273,11 +273,12 @@ RunSetup bullet_setup(const RunSpec& spec, const BulletWorlds& worlds) {
 
 RunOutcome run_bullet_worlds(const RunSpec& spec, RunObserver& observer) {
     const auto& worlds = std::get<BulletWorlds>(*spec.frames);
-    // Outputs first: a path that cannot be written, or that names an input
-    // or another output, is refused before any work.
-    RunFiles files;
-    open_run_files(spec, files);
     RunSetup setup = bullet_setup(spec, worlds);
+    // Outputs next (the level says what the waveforms hold): a path that
+    // cannot be written, or that names an input or another output, is
+    // refused before any work.
+    RunFiles files;
+    open_run_files(spec, setup.level, files);
     const SettingValues& values = setup.values;
     const SceneSpec scene = bullet_scene_spec(worlds.name, values);
     const uint64_t frames = values.settings().scene.frames;

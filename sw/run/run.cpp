@@ -98,13 +98,14 @@ std::unique_ptr<FrameSource> open_source(const RunSpec& spec, const SettingValue
 // A run of a trace's frames or a generated scene's.
 RunOutcome run_frames_of(const RunSpec& spec, RunObserver& observer, const RunContext& context) {
     const SettingNames& names = *spec.settings.names;
-    // Outputs first: a path that cannot be written, or that names an input
-    // or another output, is refused before any work.
-    RunFiles files;
-    open_run_files(spec, files);
     check_frame_input(spec.frames, names);
     RunSetup setup = make_setup(spec);
     if (context.kernel_free && setup.level != ModelLevel::kAnalytic) return RunOutcome{false, 0, {}};
+    // Outputs next (the level says what the waveforms hold): a path that
+    // cannot be written, or that names an input or another output, is
+    // refused before any work.
+    RunFiles files;
+    open_run_files(spec, setup.level, files);
     const bool trace = std::holds_alternative<TraceFrames>(*spec.frames);
     check_scene_settings(trace, setup.values);
     const FrameOrigin origin = trace ? FrameOrigin{std::get<TraceFrames>(*spec.frames).path, ""}

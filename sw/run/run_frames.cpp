@@ -19,7 +19,7 @@
 
 namespace cdvp {
 
-void open_run_files(const RunSpec& spec, RunFiles& out) {
+void open_run_files(const RunSpec& spec, ModelLevel level, RunFiles& out) {
     const SettingNames& names = *spec.settings.names;
     if (const auto* trace = spec.frames ? std::get_if<TraceFrames>(&*spec.frames) : nullptr) {
         out.files.add_input(names.input("trace"), trace->path);
@@ -28,7 +28,7 @@ void open_run_files(const RunSpec& spec, RunFiles& out) {
     std::optional<std::size_t> pairs, report;
     if (spec.outputs.pairs_csv) pairs = out.files.add_output(names.input("pairs-out"), *spec.outputs.pairs_csv);
     if (spec.outputs.report) report = out.files.add_output(names.input("report"), *spec.outputs.report);
-    open_with_waves_and_summary(out.files, out.waves, spec.outputs, names);
+    open_with_waves_and_summary(out.files, out.waves, spec.outputs, names, level);
     if (pairs) out.pairs = &out.files.file(*pairs);
     if (report) out.report = &out.files.file(*report);
 }

@@ -27,8 +27,9 @@ struct RunFiles {
 };
 
 // Declares the inputs (the trace, the preset, the config file) and the
-// outputs and checks them together before any work.
-void open_run_files(const RunSpec& spec, RunFiles& out);
+// outputs and checks them together before any work; `level` (the setup's)
+// says what the waveforms hold.
+void open_run_files(const RunSpec& spec, ModelLevel level, RunFiles& out);
 
 // What a run simulates on: the board, its bus and host from the settings,
 // the software baselines to time beside it and the traced frames' window.

@@ -126,10 +126,10 @@ void describe_device_fit(RunDescription& run, const Settings& settings) {
 }
 
 void open_with_waves_and_summary(OutputSet& files, WaveOutputs& waves, const RunOutputs& outputs,
-                                 const SettingNames& names) {
+                                 const SettingNames& names, ModelLevel level) {
     if (outputs.waves) {
         waves.declare(files, outputs.waves->path, parse_dump_format(outputs.waves->format.value_or("vcd"), names),
-                      names.input("vcd"));
+                      names.input("vcd"), VirtualBoard::state_tables(level == ModelLevel::kRtl));
     }
     if (outputs.summary) files.add_standard_output("standard output");
     files.open();

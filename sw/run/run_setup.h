@@ -66,8 +66,9 @@ void pin_to_setting_cpu(const SettingValues& values);
 
 // What a run declares after its own outputs: the waveforms and, when asked,
 // the summary on standard output (an output too: committed with the files or
-// not at all); then opens the set and binds the waveforms to it.
+// not at all); then opens the set and binds the waveforms to it. `level`
+// decides what the waveforms hold: the RTL's signals or the platform's.
 void open_with_waves_and_summary(OutputSet& files, WaveOutputs& waves, const RunOutputs& outputs,
-                                 const SettingNames& names);
+                                 const SettingNames& names, ModelLevel level);
 
 }  // namespace cdvp

@@ -45,15 +45,17 @@ DumpFormat parse_dump_format(const std::string& text, const SettingNames& names)
     return DumpFormat::kFst;
 }
 
-void WaveOutputs::declare(OutputSet& files, const std::string& path, DumpFormat format, const std::string& label) {
+void WaveOutputs::declare(OutputSet& files, const std::string& path, DumpFormat format, const std::string& label,
+                          const std::vector<const StateNames*>& tables) {
     path_ = path;
     format_ = format;
+    tables_ = tables;
     // SystemC names the VCD itself (base + ".vcd"); vcd2fst writes the FST over its temporary.
     dump_index_ = format == DumpFormat::kVcd ? files.add_output(label, path, ".vcd", false)
                                              : files.add_output(label, path, "", false);
     if (!has_save_file(path)) return;
     save_index_ = files.add_output(label + " (its GTKWave save file)", dump_stem(path) + ".gtkw");
-    for (const StateNames* table : VirtualBoard::state_tables()) {
+    for (const StateNames* table : tables_) {
         filter_indices_[table->table] =
             files.add_output(label + " (its " + table->table + " state names)", filter_path(path, *table));
     }
@@ -87,7 +89,7 @@ std::optional<std::string> WaveOutputs::finish(const VirtualBoard& platform) {
     }
     if (!save_index_) return std::nullopt;
     std::map<std::string, std::string> filter_paths;
-    for (const StateNames* table : VirtualBoard::state_tables()) {
+    for (const StateNames* table : tables_) {
         write_translate_filter(files_->file(filter_indices_.at(table->table)).stream(), *table);
         filter_paths[table->table] = absolute(filter_path(path_, *table));
     }

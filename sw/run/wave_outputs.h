@@ -7,7 +7,9 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "models/common/wave_list.h"
 #include "platform/settings/setting_names.h"
 #include "sw/output/output_set.h"
 
@@ -23,9 +25,11 @@ DumpFormat parse_dump_format(const std::string& text, const SettingNames& names)
 class WaveOutputs {
 public:
     // Declares the dump and, for a dump to a file, the save file ("w.vcd" or
-    // "w.fst" -> "w.gtkw") and its filter files ("w.controller-states.txt").
+    // "w.fst" -> "w.gtkw") and the filter files of the state tables the dump
+    // holds ("w.controller-states.txt"; VirtualBoard::state_tables).
     // label: how the face names the waveforms' input ("--vcd").
-    void declare(OutputSet& files, const std::string& path, DumpFormat format, const std::string& label);
+    void declare(OutputSet& files, const std::string& path, DumpFormat format, const std::string& label,
+                 const std::vector<const StateNames*>& tables);
     // After files.open(): binds the declared outputs; for an FST, makes the
     // scratch VCD beside it.
     void bind(OutputSet& files);
@@ -40,6 +44,7 @@ private:
     std::string path_;
     DumpFormat format_ = DumpFormat::kVcd;
     std::optional<std::size_t> dump_index_, save_index_;
+    std::vector<const StateNames*> tables_;
     std::map<std::string, std::size_t> filter_indices_;  // by state table
     OutputFile* dump_ = nullptr;
     std::optional<OutputFile> scratch_vcd_;  // fst only: never published

@@ -78,7 +78,8 @@ std::variant<FidelityResult, int> run_level(const FidelityLevel& level, RunSpec 
     if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
     if (WEXITSTATUS(wait_status) == kExitBadInput && level.level == ModelLevel::kRtl) {
         // The scene and flags ran at the reference level before: what the
-        // rtl level refuses is the board (no built variant serves it).
+        // rtl level refuses is the board (the RTL cannot run it) or its
+        // model (verilator missing, a failed compile).
         FidelityResult skipped;
         skipped.not_run = renamed_message(errors.text(64 * 1024), "cdvp fidelity");
         while (!skipped.not_run.empty() && skipped.not_run.back() == '\n') skipped.not_run.pop_back();
