@@ -155,9 +155,9 @@ const PieceTiming& BoardTiming::slowest() const { return slowest_of(pieces, fals
 BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
     const std::string& family = board.family;
     const uint32_t grade = board.speed_grade;
-    const std::string lane = board.format + " comparison lane (compare latency " +
-                             std::to_string(board.compare_latency) + ")";
-    const std::string fifo = board.fifo_memory == "block_ram" ? "pair FIFO (block RAM)" : "pair FIFO (LUTs)";
+    const std::string lane = board.format + " comparison lane at compare latency " +
+                             std::to_string(board.compare_latency);
+    const std::string fifo = board.fifo_memory == "block_ram" ? "pair FIFO in block RAM" : "pair FIFO in LUTs";
     BoardTiming timing;
     timing.speed_grade = grade;
     timing.pieces.push_back({"lane", lane, table.lane(family, grade, board.format, board.compare_latency)});

@@ -73,7 +73,7 @@ private:
 // A board's pieces with their paths, as the timing table gives them.
 struct PieceTiming {
     std::string key;    // lane, address_generator or tile_walker, pair_fifo, controller
-    std::string piece;  // "float32 comparison lane (compare latency 2)", "pair FIFO (block RAM)", ...
+    std::string piece;  // "float32 comparison lane at compare latency 2", "pair FIFO in block RAM", ...
     PathDelay path;
     // Whether the board's clock is held to this piece. The pair FIFO's
     // bookkeeping and the tile walker are written as one combinational step a

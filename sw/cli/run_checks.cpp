@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -298,6 +299,7 @@ void check_scene_fits(const FrameOrigin& origin, const SettingValues& values, ui
     check_pair_window(origin, values, max_objects, plan);
     if (plan.ssram) check_ssram(origin, values, max_objects, plan);
     budgets.check_scene(max_objects, frame_count);
+    check_clock(values, max_objects, std::cerr);
     check_device_fits(origin, values, max_objects);
 }
 

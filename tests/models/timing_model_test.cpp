@@ -104,12 +104,12 @@ TEST(BoardTiming, TheSlowestPieceTheClockIsHeldToSetsTheFmax) {
     BoardTiming timing = board_timing(table, board);
     ASSERT_EQ(timing.pieces.size(), 4u);
     // The lane (9 ns) limits; the pair FIFO (11 ns) is reported as the RTL is written.
-    EXPECT_EQ(timing.limiting().piece, "float32 comparison lane (compare latency 2)");
+    EXPECT_EQ(timing.limiting().piece, "float32 comparison lane at compare latency 2");
     EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 9.0);
-    EXPECT_EQ(timing.slowest().piece, "pair FIFO (block RAM)");
+    EXPECT_EQ(timing.slowest().piece, "pair FIFO in block RAM");
     EXPECT_FALSE(timing.slowest().holds_clock);
     board.fifo_memory = "distributed";
-    EXPECT_EQ(board_timing(table, board).slowest().piece, "pair FIFO (LUTs)");
+    EXPECT_EQ(board_timing(table, board).slowest().piece, "pair FIFO in LUTs");
     EXPECT_DOUBLE_EQ(board_timing(table, board).slowest().path.ns, 14.0);
     // At compare latency 0 the lane takes 12 ns; with fixed16 lanes the
     // address generator (7 ns at m = 3) limits instead.
@@ -124,7 +124,7 @@ TEST(BoardTiming, TheSlowestPieceTheClockIsHeldToSetsTheFmax) {
     timing = board_timing(table, board);
     EXPECT_EQ(timing.pieces[1].piece, "tile walker");
     EXPECT_FALSE(timing.pieces[1].holds_clock);
-    EXPECT_EQ(timing.limiting().piece, "fixed16 comparison lane (compare latency 2)");
+    EXPECT_EQ(timing.limiting().piece, "fixed16 comparison lane at compare latency 2");
 }
 
 
