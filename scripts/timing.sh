@@ -230,14 +230,18 @@ prepare() {
 }
 
 # sta on a prepared DIR at FAMILY GRADE; the report on stdout. A cell without
-# arcs or a path that ends nowhere is an error, not a shorter path.
+# arcs, a path that ends nowhere or an output no path reaches is an error,
+# not a shorter path; with a fourth argument an output no path reaches is
+# taken for a constant (the whole board's tied-off ports).
 analyse() {
-    local dir=$1 family=$2 grade=$3 flags report
+    local dir=$1 family=$2 grade=$3 constants=${4:-} flags report problems
     flags=$(delay_flags "$family" "$grade")
     report=$(yosys -p "read_verilog -lib -specify $flags $dir/cells.v; read_verilog $dir/netlist.v $dir/harness.v; hierarchy -top timing_harness; flatten; sta" 2>&1) ||
         die "yosys sta failed ($family -$grade): $(grep -m1 ERROR <<<"$report")"
-    if grep -qE "not recognised|no timing arcs|does not terminate|no \(\* sta_arrival" <<<"$report"; then
-        die "sta ($family -$grade): $(grep -m1 -E 'not recognised|no timing arcs|does not terminate|no \(\* sta_arrival' <<<"$report")"
+    problems="not recognised|no timing arcs|does not terminate"
+    [[ -n $constants ]] || problems+="|no \(\* sta_arrival"
+    if grep -qE "$problems" <<<"$report"; then
+        die "sta ($family -$grade): $(grep -m1 -E "$problems" <<<"$report")"
     fi
     echo "$report"
 }
@@ -287,7 +291,7 @@ board_timing() {
     # shellcheck disable=SC2064
     trap "rm -rf '$dir'" RETURN
     prepare "$dir" "$family" collision_board_top "$sources" "$params" "" ""
-    analyse "$dir" "$family" "$grade" | sed -n '/^Latest arrival/,/^Arrival histogram/p' | sed '$d'
+    analyse "$dir" "$family" "$grade" constants | sed -n '/^Latest arrival/,/^Arrival histogram/p' | sed '$d'
 }
 
 [[ ${BASH_SOURCE[0]} == "$0" ]] || return 0

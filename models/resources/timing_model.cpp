@@ -57,6 +57,10 @@ TimingTable TimingTable::parse(const std::string& csv, const std::string& origin
     for (std::size_t k = 0; k < table.rows_.size(); ++k) {
         const Row& row = table.rows_[k];
         table.by_key_[{row.family, row.piece, row.format, row.speed_grade}].push_back(k);
+        std::vector<uint32_t>& grades = table.grades_[row.family];
+        if (std::find(grades.begin(), grades.end(), row.speed_grade) == grades.end()) {
+            grades.insert(std::upper_bound(grades.begin(), grades.end(), row.speed_grade), row.speed_grade);
+        }
     }
     return table;
 }
@@ -123,14 +127,8 @@ PathDelay TimingTable::control(const std::string& family, uint32_t speed_grade) 
 }
 
 std::vector<uint32_t> TimingTable::speed_grades(const std::string& family) const {
-    std::vector<uint32_t> grades;
-    for (const Row& row : rows_) {
-        if (row.family == family && std::find(grades.begin(), grades.end(), row.speed_grade) == grades.end()) {
-            grades.push_back(row.speed_grade);
-        }
-    }
-    std::sort(grades.begin(), grades.end());
-    return grades;
+    const auto grades = grades_.find(family);
+    return grades == grades_.end() ? std::vector<uint32_t>() : grades->second;
 }
 
 namespace {

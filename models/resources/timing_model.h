@@ -68,6 +68,7 @@ private:
                    uint32_t m, const std::string& what) const;
     std::vector<Row> rows_;
     std::map<Key, std::vector<std::size_t>, std::less<>> by_key_;
+    std::map<std::string, std::vector<uint32_t>, std::less<>> grades_;  // ascending, by family
 };
 
 // A board's pieces with their paths, as the timing table gives them.
