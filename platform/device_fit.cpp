@@ -1,11 +1,19 @@
 #include "platform/device_fit.h"
 
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <limits>
 #include <map>
+#include <ostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "models/common/user_text.h"
 #include "platform/memory_plan.h"
 
 namespace cdvp {
@@ -60,7 +68,56 @@ const std::vector<BoardResources>& costs_by_m(const Settings& settings, uint64_t
     return kept.emplace(std::move(key), std::move(costs)).first->second;
 }
 
+// The grade a device name ends in ("XC2V6000-4": 4), or 0.
+uint32_t named_grade(const std::string& name) {
+    const std::size_t dash = name.rfind('-');
+    if (dash == std::string::npos || dash + 1 == name.size() || dash + 4 < name.size()) return 0;
+    for (std::size_t k = dash + 1; k < name.size(); ++k) {
+        if (name[k] < '0' || name[k] > '9') return 0;
+    }
+    return static_cast<uint32_t>(std::strtoul(name.c_str() + dash + 1, nullptr, 10));
+}
+
+// "98.5 MHz", "10.15 ns": a figure with its unit, to the decimals it is known to.
+std::string with_unit(double value, int decimals, const char* unit) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*f %s", decimals, value, unit);
+    return text;
+}
+std::string megahertz(double mhz) { return with_unit(mhz, 1, "MHz"); }
+std::string nanoseconds(double ns) { return with_unit(ns, 2, "ns"); }
+
+BoardTiming timing_of(const Settings& settings, uint64_t capacity, uint32_t grade, const std::string& fifo_memory) {
+    const BoardConfig board = planned_board(settings, capacity);
+    TimedBoard timed;
+    timed.family = name_of(settings.device.family);
+    timed.speed_grade = grade;
+    timed.format = board.format.name();
+    timed.m = board.m;
+    timed.compare_latency = board.compare.latency_cycles;
+    timed.fifo_memory = fifo_memory;
+    timed.tiled = board.tiles.tiled();
+    return board_timing(TimingTable::stored(), timed);
+}
+
 }  // namespace
+
+SpeedGrade speed_grade_of(const DeviceSettings& device) {
+    const std::string family = name_of(device.family);
+    const std::vector<uint32_t> grades = TimingTable::stored().speed_grades(family);
+    if (grades.empty()) throw std::invalid_argument("no timing for the " + family + " family");
+    const uint32_t named = named_grade(device.name);
+    if (named == 0) return {grades.front(), false};
+    if (std::find(grades.begin(), grades.end(), named) == grades.end()) {
+        std::string known;
+        for (std::size_t k = 0; k < grades.size(); ++k) {
+            known += (k == 0 ? "-" : k + 1 == grades.size() ? " or -" : ", -") + std::to_string(grades[k]);
+        }
+        throw std::invalid_argument("speed grade -" + std::to_string(named) + " of " + excerpt(device.name) +
+                                    ": the " + family + " timing has " + known);
+    }
+    return {named, true};
+}
 
 bool has_device_family(const Settings& settings) { return settings.device.family != DeviceFamily::kNone; }
 
@@ -75,7 +132,72 @@ DeviceFit fit_on_device(const Settings& settings, uint64_t capacity) {
     for (uint32_t m = 1; m <= BoardConfig::kMaxM; ++m) {
         if (utilisation(costs[m - 1].total(), fit.device).fits()) fit.largest_m = m;
     }
+    fit.speed_grade = speed_grade_of(d);
+    fit.timing = timing_of(settings, capacity, fit.speed_grade.grade, fit.resources.pair_fifo_memory);
+    fit.clock_mhz = settings.board.clock_mhz;
     return fit;
+}
+
+std::optional<std::string> check_clock(const SettingValues& values, uint64_t capacity) {
+    const Settings& settings = values.settings();
+    if (!has_device_family(settings)) return std::nullopt;
+    SpeedGrade grade;
+    try {
+        grade = speed_grade_of(settings.device);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(values.where(*find_setting("device.name")) + ": " + e.what());
+    }
+    // The pieces the clock is held to need no resource costs: where the FIFO
+    // lives only picks its own row, which is reported, not held to.
+    const BoardTiming timing = timing_of(settings, capacity, grade.grade, "block_ram");
+    const double clock = settings.board.clock_mhz, fmax = timing.fmax_mhz();
+    if (clock <= fmax) return std::nullopt;
+    const PieceTiming& limit = timing.limiting();
+    const std::string line = values.where(*find_setting("board.clock_mhz")) + ": " + megahertz(clock) +
+                             " is beyond the " + megahertz(fmax) + " the board reaches on the " +
+                             excerpt(settings.device.name) + " (speed grade -" + std::to_string(grade.grade) +
+                             (grade.named ? "" : ", the family's slowest") + "): its " + limit.piece + " takes " +
+                             nanoseconds(limit.path.ns) + " a cycle (synthesis timing for " +
+                             name_of(settings.device.family) + ")";
+    const std::string ignore = values.names().setting_to(*find_setting("run.ignore_timing"), "yes");
+    if (!settings.run.ignore_timing) throw InputError(line + "; " + ignore + " runs it anyway");
+    return "warning: " + line + "; running it anyway (" + ignore + ")";
+}
+
+nlohmann::json timing_json(const DeviceFit& fit) {
+    nlohmann::json pieces = nlohmann::json::object();
+    for (const PieceTiming& piece : fit.timing.pieces) {
+        const PathDelay& p = piece.path;
+        pieces[piece.key] = {{"piece", piece.piece},
+                             {"holds_clock", piece.holds_clock},
+                             {"path_ns", p.ns},
+                             {"fmax_mhz", p.fmax_mhz()},
+                             {"luts", p.luts},
+                             {"carry_cells", p.carry_cells},
+                             {"wide_muxes", p.wide_muxes},
+                             {"from", p.from},
+                             {"to", p.to}};
+    }
+    return {{"speed_grade", fit.speed_grade.grade},
+            {"speed_grade_from", fit.speed_grade.named ? "device name" : "the family's slowest (not in the name)"},
+            {"fmax_mhz", fit.timing.fmax_mhz()},
+            {"limited_by", fit.timing.limiting().piece},
+            {"as_written_fmax_mhz", fit.timing.slowest().path.fmax_mhz()},
+            {"as_written_limited_by", fit.timing.slowest().piece},
+            {"clock_mhz", fit.clock_mhz},
+            {"meets_clock", fit.clock_mhz <= fit.timing.fmax_mhz()},
+            {"pieces", pieces}};
+}
+
+std::string timing_summary(const DeviceFit& fit) {
+    const PieceTiming& limit = fit.timing.limiting();
+    const PieceTiming& slowest = fit.timing.slowest();
+    std::string text = "Fmax about " + megahertz(fit.timing.fmax_mhz()) + " at speed grade -" +
+                       std::to_string(fit.speed_grade.grade) + " (its " + limit.piece + ", " +
+                       nanoseconds(limit.path.ns) + ")";
+    if (fit.clock_mhz > fit.timing.fmax_mhz()) text += ", below the " + megahertz(fit.clock_mhz) + " clock";
+    if (&slowest != &limit) text += "; its " + slowest.piece + " as written: " + megahertz(slowest.path.fmax_mhz());
+    return text;
 }
 
 }  // namespace cdvp

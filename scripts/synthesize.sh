@@ -15,7 +15,8 @@
 #                                          fixedK, default float32); BOARD_ADDRESS_BITS (default 9:
 #                                          512 boxes, one block RAM deep), BOARD_BUFFER_DEPTH
 #                                          (default 512 pairs, on chip) and BOARD_FIFO_DISTRIBUTED
-#                                          (default 0; 1: the pair FIFO in LUTs) set its memories. Slow at
+#                                          (default 0; 1: the pair FIFO in LUTs) set its memories,
+#                                          BOARD_COMPARE_LATENCY (default 2) its lanes. Slow at
 #                                          large m (minutes); not part of the full table or ctest.
 #
 # Needs yosys (Debian: yosys 0.23) and, for the full table, GNU parallel.
@@ -26,6 +27,8 @@ stored="$root/models/resources/synthesis.csv"
 header="family,piece,format,m,address_bits,fifo_depth,luts,lutram_luts,flip_flops,carry_cells,block_rams_18k,multipliers"
 address_bits=16   # up to 65,536 boxes: the board's largest scene
 fifo_depth=512    # the pair FIFO's default depth (models/pair_collector)
+tile_boxes=512    # the tile walker's tiles (timing only: its paths run through the box indices)
+tile_bits=9
 families="xc2v xcup"
 ms="1 2 3 4 6 8 12 16 24 32"
 
@@ -58,17 +61,26 @@ count_cells() {
         END { printf "%d,%d,%d,%d,%d,%d\n", luts, lutram, ffs, carry, bram, mult }'
 }
 
-# One row: FAMILY PIECE FORMAT M ("-" where a parameter does not apply).
-row() {
-    local family=$1 piece=$2 format=$3 m=$4 sources params
+# The chparam arguments of a number format: float32 or fixedK.
+format_params() {
+    case $1 in
+        float32) echo "-set FLOAT 1 -set WIDTH 32" ;;
+        fixed*) echo "-set FLOAT 0 -set WIDTH ${1#fixed}" ;;
+        *) die "unknown format '$1'" ;;
+    esac
+}
+
+# The design of one piece: sets 'sources' (Verilog files) and 'params'
+# (chparam arguments) for FAMILY PIECE FORMAT M ("-" where a parameter does
+# not apply), with the compare lane at LATENCY stages (default: the RTL's 2).
+# The timing table (scripts/timing.sh) synthesises the same pieces.
+piece_design() {
+    local piece=$2 format=$3 m=$4 latency=${5:--}
     case $piece in
         compare_lane)
             sources="$root/models/comparison_unit/rtl/float_le.v $root/models/comparison_unit/rtl/compare_lane.v"
-            case $format in
-                float32) params="-set FLOAT 1 -set WIDTH 32" ;;
-                fixed*) params="-set FLOAT 0 -set WIDTH ${format#fixed}" ;;
-                *) die "unknown format '$format'" ;;
-            esac ;;
+            params=$(format_params "$format")
+            [[ $latency == - ]] || params="$params -set LATENCY $latency" ;;
         address_generator)
             sources="$root/models/address_generator/rtl/address_generator.v"
             params="-set M $m -set AW $address_bits" ;;
@@ -83,8 +95,17 @@ row() {
         board_control)
             sources="$root/models/control_registers/rtl/board_control.v"
             params="" ;;
+        tile_walker)
+            sources="$root/models/board/rtl/tile_walker.v"
+            params="-set M $m -set AW $address_bits -set T $tile_boxes -set TAW $tile_bits -set LAT 2" ;;
         *) die "unknown piece '$piece'" ;;
     esac
+}
+
+# One row: FAMILY PIECE FORMAT M ("-" where a parameter does not apply).
+row() {
+    local family=$1 piece=$2 format=$3 m=$4 sources params
+    piece_design "$family" "$piece" "$format" "$m"
     local log
     log=$(mktemp)
     trap 'rm -f "$log"' RETURN
@@ -99,21 +120,31 @@ row() {
     echo "$family,$piece,$format,$m,$bits,$depth,$(count_cells "$family" <"$log")"
 }
 
+# The whole board's Verilog files (collision_board_top and every piece).
+board_sources() {
+    echo "$root/models/board/rtl/collision_board_top.v $root/models/board/rtl/board_ram.v" \
+        "$root/models/board/rtl/tile_walker.v $root/models/address_generator/rtl/address_generator.v" \
+        "$root/models/comparison_unit/rtl/float_le.v $root/models/comparison_unit/rtl/compare_lane.v" \
+        "$root/models/pair_collector/rtl/pair_collector.v $root/models/control_registers/rtl/board_control.v"
+}
+
+# The whole board's chparam arguments: M FORMAT, its memories and compare
+# latency from BOARD_ADDRESS_BITS, BOARD_BUFFER_DEPTH, BOARD_FIFO_DISTRIBUTED
+# and BOARD_COMPARE_LATENCY (default 2).
+board_params() {
+    local format
+    format=$(format_params "$2")
+    echo "$format -set M $1 -set AW ${BOARD_ADDRESS_BITS:-9} -set FIFO_DEPTH $fifo_depth" \
+        "-set BUFFER_DEPTH ${BOARD_BUFFER_DEPTH:-512} -set COMPARE_LATENCY ${BOARD_COMPARE_LATENCY:-2}" \
+        "-set FIFO_DISTRIBUTED ${BOARD_FIFO_DISTRIBUTED:-0}"
+}
+
 # The whole board: FAMILY M FORMAT.
 board_row() {
-    local family=$1 m=$2 format=${3:-float32} params
-    local bits=${BOARD_ADDRESS_BITS:-9} buffer=${BOARD_BUFFER_DEPTH:-512}
-    case $format in
-        float32) params="-set FLOAT 1 -set WIDTH 32" ;;
-        fixed*) params="-set FLOAT 0 -set WIDTH ${format#fixed}" ;;
-        *) die "unknown format '$format'" ;;
-    esac
-    params="$params -set M $m -set AW $bits -set FIFO_DEPTH $fifo_depth -set BUFFER_DEPTH $buffer -set COMPARE_LATENCY 2"
-    params="$params -set FIFO_DISTRIBUTED ${BOARD_FIFO_DISTRIBUTED:-0}"
-    local sources="$root/models/board/rtl/collision_board_top.v $root/models/board/rtl/board_ram.v"
-    sources+=" $root/models/board/rtl/tile_walker.v $root/models/address_generator/rtl/address_generator.v"
-    sources+=" $root/models/comparison_unit/rtl/float_le.v $root/models/comparison_unit/rtl/compare_lane.v"
-    sources+=" $root/models/pair_collector/rtl/pair_collector.v $root/models/control_registers/rtl/board_control.v"
+    local family=$1 m=$2 format=${3:-float32} params sources
+    local bits=${BOARD_ADDRESS_BITS:-9}
+    params=$(board_params "$m" "$format")
+    sources=$(board_sources)
     local log
     log=$(mktemp)
     trap 'rm -f "$log"' RETURN
@@ -136,6 +167,9 @@ all_rows() {
     done
 }
 
+# Sourced (scripts/timing.sh) for its functions: no command is run.
+[[ ${BASH_SOURCE[0]} == "$0" ]] || return 0
+
 case "${1:-}" in
     --row) shift; [[ $# -eq 4 ]] || die "--row needs FAMILY PIECE FORMAT M"; row "$@" ;;
     --board) shift; [[ $# -eq 2 || $# -eq 3 ]] || die "--board needs FAMILY M [FORMAT]"; board_row "$@" ;;
@@ -152,8 +186,8 @@ case "${1:-}" in
         fi
         echo "$fresh" ;;
     "")
-        export -f row count_cells die
-        export root address_bits fifo_depth
+        export -f row piece_design format_params count_cells die
+        export root address_bits fifo_depth tile_boxes tile_bits
         echo "$header"
         all_rows | parallel --keep-order --jobs "${SYNTH_JOBS:-100%}" --colsep ' ' row {1} {2} {3} {4} ;;
     *) die "unknown option '$1' (see the comment at the top)" ;;

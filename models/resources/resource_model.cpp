@@ -1,9 +1,9 @@
 #include "models/resources/resource_model.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <sstream>
 #include <stdexcept>
+
+#include "models/resources/table_fields.h"
 
 namespace cdvp {
 
@@ -26,62 +26,22 @@ namespace {
 constexpr const char* kHeader =
     "family,piece,format,m,address_bits,fifo_depth,luts,lutram_luts,flip_flops,carry_cells,block_rams_18k,"
     "multipliers";
-constexpr std::size_t kColumns = 12;
-
-std::vector<std::string> split(const std::string& line) {
-    std::vector<std::string> fields;
-    std::istringstream in(line);
-    for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
-    if (!line.empty() && line.back() == ',') fields.emplace_back();
-    return fields;
-}
-
-// A whole, non-negative count; "-" where a parameter does not apply (0).
-double count(const std::string& text, const std::string& where, const char* column) {
-    if (text == "-") return 0;
-    char* end = nullptr;
-    const unsigned long long value = std::strtoull(text.c_str(), &end, 10);
-    if (text.empty() || text[0] == '-' || *end != '\0') {
-        throw std::invalid_argument(where + ": " + column + ": expected a whole number or '-', got '" + text + "'");
-    }
-    return static_cast<double>(value);
-}
-
 Resources lerp(const Resources& a, const Resources& b, double t) { return (1 - t) * a + t * b; }
 
 }  // namespace
 
 SynthesisTable SynthesisTable::parse(const std::string& csv, const std::string& origin) {
     SynthesisTable table;
-    std::istringstream in(csv);
-    std::string line;
-    std::size_t number = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        const std::string where = origin + ":" + std::to_string(number);
-        if (number == 1) {
-            if (line != kHeader) throw std::invalid_argument(where + ": expected the header " + kHeader);
-            continue;
-        }
-        if (line.empty()) continue;
-        const std::vector<std::string> f = split(line);
-        if (f.size() != kColumns) {
-            throw std::invalid_argument(where + ": expected " + std::to_string(kColumns) + " fields, got " +
-                                        std::to_string(f.size()));
-        }
+    read_table(csv, origin, kHeader, [&](const std::vector<std::string>& f, const std::string& where) {
         Row row;
-        row.family = f[0];
-        row.piece = f[1];
-        row.format = f[2];
-        row.m = static_cast<uint32_t>(count(f[3], where, "m"));
-        row.resources.luts = count(f[6], where, "luts") + count(f[7], where, "lutram_luts");
-        row.resources.flip_flops = count(f[8], where, "flip_flops");
-        row.resources.carry_cells = count(f[9], where, "carry_cells");
-        row.resources.block_rams = count(f[10], where, "block_rams_18k");
-        row.resources.multipliers = count(f[11], where, "multipliers");
+        static_cast<TableRowKey&>(row) = table_row_key(f, where);
+        row.resources.luts = table_count(f[6], where, "luts") + table_count(f[7], where, "lutram_luts");
+        row.resources.flip_flops = table_count(f[8], where, "flip_flops");
+        row.resources.carry_cells = table_count(f[9], where, "carry_cells");
+        row.resources.block_rams = table_count(f[10], where, "block_rams_18k");
+        row.resources.multipliers = table_count(f[11], where, "multipliers");
         table.rows_.push_back(row);
-    }
-    if (number == 0) throw std::invalid_argument(origin + ": empty; expected the header " + kHeader);
+    });
     for (std::size_t k = 0; k < table.rows_.size(); ++k) {
         const Row& row = table.rows_[k];
         table.by_key_[{row.family, row.piece, row.format}].push_back(k);

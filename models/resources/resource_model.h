@@ -15,6 +15,8 @@
 #include <tuple>
 #include <vector>
 
+#include "models/resources/table_fields.h"
+
 namespace cdvp {
 
 // One piece's or one board's resources. LUTs count logic LUTs and the LUTs
@@ -54,9 +56,7 @@ public:
     std::vector<std::string> formats(const std::string& family) const;
 
 private:
-    struct Row {
-        std::string family, piece, format;
-        uint32_t m = 0;  // 0: not a parameter of the piece
+    struct Row : TableRowKey {
         Resources resources;
     };
     const Row* find(std::string_view family, std::string_view piece, std::string_view format) const;

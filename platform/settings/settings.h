@@ -58,6 +58,7 @@ struct RunSettings {
     uint32_t retime_tries = 3;      // sw/timing's kDefaultRetimeTries (a test holds them equal)
     std::string pin_cpu = "none";   // or a CPU number: see pinned_cpu()
     bool ignore_capacity = false;
+    bool ignore_timing = false;  // a clock beyond the estimated Fmax warns instead of refusing
     bool lockstep = false;  // run.fidelity rtl: the clocked engine compared after every edge
     // Budgets, checked before any work (sw/run/run_budgets.h). 0: derived
     // (from this machine's memory; from the memory budget).

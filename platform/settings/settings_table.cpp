@@ -532,6 +532,12 @@ std::vector<Setting> host_and_run_settings() {
                            "device would give",
                            "no: a board that does not fit is refused naming the resource"),
                     "ignore-capacity"),
+        switch_flag(choice<bool>("run.ignore_timing", member(&S::run, &RunSettings::ignore_timing),
+                           "run a board clock beyond the Fmax estimated for its device (device.* and the "
+                           "synthesis timing table) anyway, with a warning, to explore a faster design",
+                           "no: a clock beyond the estimate is refused naming the piece that limits it "
+                           "(docs/resources.md)"),
+                    "ignore-timing"),
         switch_flag(choice<bool>("run.lockstep", member(&S::run, &RunSettings::lockstep),
                            "--fidelity rtl: clock the clocked engine beside the RTL and compare them after every edge "
                            "(addresses, lane hits, FIFO level, pairs, registers, state); the run stops at the first "

@@ -33,8 +33,9 @@ void print_resources(std::ostream& out, const DeviceFit& fit) {
     std::snprintf(split, sizeof split, "%.0f for the boxes, %.0f besides", boxes, total.block_rams - boxes);
     usage("block RAMs", total.block_rams, fit.device.block_rams, split);
     text += " pair FIFO in " + std::string(fit.resources.pair_fifo_memory == "block_ram" ? "block RAM" : "LUTs");
-    text += fit.use.fits() ? "; largest m that fits: " + std::to_string(fit.largest_m) + "\n"
-                           : "; does not fit (" + fit.use.overflow + ")\n";
+    text += fit.use.fits() ? "; largest m that fits: " + std::to_string(fit.largest_m)
+                           : "; does not fit (" + fit.use.overflow + ")";
+    text += "; " + timing_summary(fit) + "\n";
     out << text;
 }
 

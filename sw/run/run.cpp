@@ -119,13 +119,15 @@ RunOutcome run_frames_of(const RunSpec& spec, RunObserver& observer, const RunCo
         const uint64_t boxes = is_bullet_scene(origin.scene)
                                    ? scene_layout(bullet_scene_spec(origin.scene, setup.values)).proxies
                                    : scene.objects;
-        check_scene_fits(origin, setup.values, boxes, scene.frames, budgets);
+        check_scene_fits(origin, setup.values, boxes, scene.frames, budgets);  // its warning comes below
         const std::optional<uint64_t> last = scene.frames > 0 ? std::optional<uint64_t>(scene.frames - 1) : std::nullopt;
         check_inject_frames(setup.platform.faults, last, [](uint64_t) { return true; },
                             setup.values.names().setting_to(setting("scene.frames"), std::to_string(scene.frames)), names);
     }
     std::unique_ptr<FrameSource> source = open_source(spec, setup.values, budgets, context.memo);
-    check_scene_fits(origin, setup.values, source->max_objects(), source->frame_count(), budgets);
+    if (const auto warning = check_scene_fits(origin, setup.values, source->max_objects(), source->frame_count(), budgets)) {
+        observer.note(*warning);
+    }
     check_inject_frames(setup.platform.faults, source->last_frame(),
                         [&source](uint64_t n) { return source->has_frame(n); }, source->describe(), names);
     check_trace_window(setup.trace_window, source->last_frame(), source->describe(), names);

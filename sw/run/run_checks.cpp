@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -314,14 +315,16 @@ void check_rtl_built(const FrameOrigin& origin, const SettingValues& values, uin
 }
 }  // namespace
 
-void check_scene_fits(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects,
-                      uint64_t frame_count, RunBudgets& budgets) {
+std::optional<std::string> check_scene_fits(const FrameOrigin& origin, const SettingValues& values,
+                                            uint64_t max_objects, uint64_t frame_count, RunBudgets& budgets) {
     check_rtl_built(origin, values, max_objects);
     const MemoryPlan plan = plan_memory(values.settings(), max_objects);
     check_pair_window(origin, values, max_objects, plan);
     if (plan.ssram) check_ssram(origin, values, max_objects, plan);
     budgets.check_scene(max_objects, frame_count);
+    std::optional<std::string> clock_warning = check_clock(values, max_objects);
     check_device_fits(origin, values, max_objects);
+    return clock_warning;
 }
 
 }  // namespace cdvp

@@ -67,9 +67,11 @@ void check_inject_frames(const std::vector<FaultSpec>& specs, std::optional<uint
 // unless run.ignore_capacity, the device: its block RAMs (device.block_rams,
 // 0: unbounded) and, with a device family, the LUTs and flip-flops the
 // synthesis-backed resource model gives the board. Throws InputError naming
-// the resource and the largest m that fits.
-void check_scene_fits(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects,
-                      uint64_t frame_count, RunBudgets& budgets);
+// the resource and the largest m that fits. A board clock beyond the
+// device's estimated Fmax is refused, or with run.ignore_timing returned as
+// a warning for the run's observer.
+std::optional<std::string> check_scene_fits(const FrameOrigin& origin, const SettingValues& values,
+                                            uint64_t max_objects, uint64_t frame_count, RunBudgets& budgets);
 
 // Where a run's counts came from, inside a sentence: "500 objects (the
 // default of --objects)", "20 objects (the largest frame of --trace t.csv)",

@@ -68,6 +68,7 @@ nlohmann::json resources_json(const DeviceFit& fit, NumberFormat format) {
             {"carry_cells", total.carry_cells},
             {"fits", fit.use.fits()},
             {"largest_m", fit.largest_m},
+            {"timing", timing_json(fit)},
             {"pieces",
              {{"lanes", piece_json(r.lanes)},
               {"coordinate_memories", piece_json(r.coordinate_memories)},

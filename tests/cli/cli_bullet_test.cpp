@@ -85,11 +85,11 @@ TEST_F(Bullet, EverySettingsFlagIsAcceptedWithItsOriginAndABadValueRefused) {
     // board (m, format, clock-mhz, compare-latency, fifo-depth, drain-rate,
     // pair-buffer, box-banks at its default, memory, tile-boxes), scene (objects, frames, seed), host
     // (host-factor, host-profile) and run (transfer, wait, fidelity,
-    // quantum-ns, max-error, warmup, repeat, retime-tries, pin-cpu, ignore-capacity, lockstep, max-memory,
-    // max-pairs),
+    // quantum-ns, max-error, warmup, repeat, retime-tries, pin-cpu, ignore-capacity, ignore-timing, lockstep,
+    // max-memory, max-pairs),
     // the driver's communication (upload, pair-format, interrupts) and the
     // spheres scene's moving share (its default only: Bullet's scenes refuse another).
-    EXPECT_EQ(tried, 32u) << "the flags bullet shares with run";
+    EXPECT_EQ(tried, 33u) << "the flags bullet shares with run";
 }
 
 TEST_F(Bullet, LayersPresetThenConfigThenOverridesThenFlagsAsRunDoes) {

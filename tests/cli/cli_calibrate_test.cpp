@@ -15,13 +15,13 @@ namespace {
 using nlohmann::json;
 
 // The simulated-time fields (docs/timing.md, "One vocabulary"): the
-// platform's phases (cdvp bullet's board too), what extra pairs cost, and
-// the settings of the model given in ns.
+// platform's phases (cdvp bullet's board too), what extra pairs cost, the
+// settings of the model given in ns, and the board's estimated path delays.
 const std::set<std::string> kSimulatedTimeFields = {
     "upload_ns", "start_ns", "compute_ns", "irq_ns", "readback_ns", "driver_ns", "total_ns", "overlap_ns", "latency_ns",
     "extra_readback_ns", "extra_driver_ns", "quantum_ns", "interrupt_ns", "host_pio_overhead_ns",
     "read_round_trip_ns", "posted_write_ns", "ns_per_box", "ns_per_pair", "call_ns", "poll_gap_ns", "poll_gap_max_ns",
-    "timeout_floor_ns"};
+    "timeout_floor_ns", "path_ns"};
 
 // A key of a time: "mean_upload_ns" -> "upload_ns", "host.call_ns" -> "call_ns".
 std::string time_field(std::string key) {

@@ -133,6 +133,7 @@ TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     expect_choice_round_trip<WaitMode>("run.wait");
     expect_choice_round_trip<ModelLevel>("run.fidelity");
     expect_choice_round_trip<bool>("run.ignore_capacity");
+    expect_choice_round_trip<bool>("run.ignore_timing");
     expect_choice_round_trip<bool>("run.lockstep");
     expect_choice_round_trip<BusModel>("bus.model");
     expect_choice_round_trip<Direction>("bus.load_direction");
@@ -142,7 +143,7 @@ TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     expect_choice_round_trip<InterruptPolicy>("driver.interrupts");
     int choices = 0;
     for (const Setting& s : settings_table()) choices += s.type == SettingType::kChoice ? 1 : 0;
-    EXPECT_EQ(14, choices) << "a new choice setting: add it above";
+    EXPECT_EQ(15, choices) << "a new choice setting: add it above";
     // The engines' own names are the setting's, and each level but the analytic one runs the engine of its name.
     for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) EXPECT_STREQ(c.name, to_string(c.value));
     for (const ChoiceName<ModelLevel>& c : Choices<ModelLevel>::names) {

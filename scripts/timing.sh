@@ -1,0 +1,330 @@
+#!/usr/bin/env bash
+# Estimates how fast each board piece can be clocked: synthesises it with
+# Yosys (the pieces of scripts/synthesize.sh), puts every port behind the
+# register or block RAM that feeds or takes it on the board, and runs
+# Yosys's static timing analysis (sta) with the family's cell delays
+# (models/resources/timing_arcs.txt, delays.csv). One CSV row a piece,
+# parameter set and speed grade: the longest register-to-register path in
+# ns and what it runs through; cdvp compiles the table in
+# (models/resources/timing.csv).
+#
+#   scripts/timing.sh                  every row, in parallel (GNU parallel), CSV on stdout
+#   scripts/timing.sh --row FAMILY PIECE FORMAT M LATENCY
+#                                      the rows of one synthesis, one a speed grade (e.g.
+#                                      xc2v compare_lane float32 - 2, xcup pair_collector block_ram 8 -)
+#   scripts/timing.sh --check FAMILY PIECE FORMAT M LATENCY
+#                                      re-derives those rows and compares them with the stored ones
+#   scripts/timing.sh --path FAMILY PIECE FORMAT M LATENCY GRADE
+#                                      sta's report of the critical path, to read
+#   scripts/timing.sh --board FAMILY GRADE M [FORMAT]
+#                                      the whole board (collision_board_top, with scripts/synthesize.sh
+#                                      --board's parameters and BOARD_* knobs) as one design: its longest path,
+#                                      across the pieces' boundaries (minutes at large m; a
+#                                      cross-check, not part of the table)
+#
+# Needs yosys (Debian: yosys 0.23) and, for the full table, GNU parallel.
+set -euo pipefail
+shopt -s inherit_errexit
+
+here=$(cd "$(dirname "$0")" && pwd)
+# shellcheck source=scripts/synthesize.sh
+source "$here/synthesize.sh"
+die() { echo "timing.sh: $*" >&2; exit 2; }
+
+timing_stored="$root/models/resources/timing.csv"
+arcs="$root/models/resources/timing_arcs.txt"
+delays="$root/models/resources/delays.csv"
+timing_header="family,piece,format,m,latency,speed_grade,path_ns,luts,carry_cells,wide_muxes,from,to"
+latencies="0 1 2"   # compare stages; more only delay the AND (compare_lane.v)
+
+# Ports that meet a block RAM on the board (their other ports meet registers).
+from_ram_ports() { case $1 in compare_lane) echo "box_i box_j" ;; *) echo "" ;; esac; }
+to_ram_ports() {
+    case $1 in
+        address_generator) echo "row columns" ;;
+        tile_walker) echo "row_local columns_local land_addr" ;;
+        pair_collector) echo "out_pair out_valid" ;;
+        *) echo "" ;;
+    esac
+}
+
+# The speed grades of a family (delays.csv), slowest first.
+speed_grades() {
+    awk -F, -v family="$1" 'NR > 1 && $1 == family { print $2 }' "$delays" | sort -n -u | tr '\n' ' '
+}
+
+# Yosys -D flags for FAMILY GRADE: every delay parameter in picoseconds. A
+# grade given as SCALE takes the slowest grade's delays times the factor.
+delay_flags() {
+    awk -F, -v family="$1" -v grade="$2" '
+        NR == 1 || $1 != family { next }
+        { if (base == "" || $2 + 0 < base + 0) base = $2 }
+        $2 == grade && $3 == "SCALE" { scale = $4 }
+        { value[$2 "," $3] = $4 }
+        END {
+            if (base == "") { print "no delays for the family " family > "/dev/stderr"; exit 2 }
+            from = scale != "" ? base : grade
+            if (scale == "") scale = 1
+            for (key in value) {
+                split(key, k, ",")
+                if (k[1] != from || k[2] == "SCALE") continue
+                printf "-D%s=%d ", k[2], value[key] * scale * 1000 + 0.5; found = 1
+            }
+            if (!found) { print "no delays for " family " speed grade " grade > "/dev/stderr"; exit 2 }
+        }' "$delays"
+}
+
+# Blackbox timing models of CELLS for FAMILY: the ports of Yosys's own cell
+# library, specify entries from the arcs file. Boundary cells (TIMING_*) are
+# the harness's own.
+timing_cells() {
+    local family=$1; shift
+    local select="" cell ports
+    for cell in "$@"; do [[ $cell == TIMING_* ]] || select+=" =$cell"; done
+    ports=$(mktemp)
+    # shellcheck disable=SC2064
+    trap "rm -f '$ports'" RETURN
+    yosys -q -p "read_verilog -lib +/xilinx/cells_sim.v; read_verilog -lib +/xilinx/cells_xtra.v; select$select; write_verilog -blackboxes -selected $ports" \
+        >/dev/null 2>&1 || die "yosys could not list the ports of$select"
+    for cell in "$@"; do
+        [[ $cell == TIMING_* ]] && printf 'module %s(O, I);\n  input I;\n  output O;\nendmodule\n' "$cell" >>"$ports"
+    done
+    awk -v family="$family" -v wanted=" $* " '
+        FNR == NR {
+            if ($0 ~ /^[ \t]*#/ || NF < 6) next
+            n = split($1, families, ","); mine = 0
+            for (i = 1; i <= n; i++) if (families[i] == family) mine = 1
+            if (!mine) next
+            n = split($2, cells, ",")
+            for (i = 1; i <= n; i++) arcs[cells[i]] = arcs[cells[i]] $3 " " $4 " " $5 " " $6 "\n"
+            next
+        }
+        /^module / {
+            name = $2; sub(/\(.*/, "", name)
+            keep = index(wanted, " " name " ") > 0
+            if (keep) { print "(* blackbox *)"; print }
+            header = $0 !~ /\);$/
+            split("", dir); ports = 0
+            next
+        }
+        !keep { next }
+        header { print; header = $0 !~ /\);$/; next }
+        /^  (input|output) / { port = $NF; sub(/;$/, "", port); dir[port] = $1; order[++ports] = port; print; next }
+        /^endmodule/ {
+            if (!(name in arcs)) { print "timing.sh: no timing arcs for the cell " name " (" family ")" > "/dev/stderr"; exit 2 }
+            print "  specify"
+            n = split(arcs[name], lines, "\n")
+            for (l = 1; l <= n; l++) {
+                if (lines[l] == "") continue
+                split(lines[l], f, " ")
+                terms = split(f[4], term, "+"); delay = ""
+                for (t = 1; t <= terms; t++) delay = delay (t > 1 ? " + " : "") "`" term[t]
+                nf = split(f[2], from, ","); nt = split(f[3], to, ",")
+                if (f[2] == "*") { nf = 0; for (p = 1; p <= ports; p++) if (dir[order[p]] == "input") from[++nf] = order[p] }
+                for (a = 1; a <= nf; a++) for (b = 1; b <= nt; b++) {
+                    if (!(from[a] in dir) || !(to[b] in dir)) continue
+                    if (f[1] == "comb") print "    (" from[a] " *> " to[b] ") = " delay ";"
+                    else if (f[1] == "clock") print "    (posedge " from[a] " *> (" to[b] " : " to[b] ")) = " delay ";"
+                    else if (f[1] == "setup") print "    $setup(" from[a] ", posedge " to[b] ", " delay ");"
+                }
+            }
+            print "  endspecify"; print
+        }' "$arcs" "$ports"
+}
+
+# A netlist without its cells' parameters (timing needs none, and a
+# blackbox would have to declare them all).
+strip_parameters() {
+    awk '/^  [A-Za-z][A-Za-z0-9_]* #\($/ { type = $1; skip = 1; next }
+         skip && /^  \) .* \($/ { sub(/^  \) /, ""); print "  " type " " $0; skip = 0; next }
+         skip { next }
+         { print }' "$1"
+}
+
+# The harness around module 'piece': every port but clk behind a boundary
+# cell, as the board drives and takes it (FROM_RAM, TO_RAM: block RAM ports).
+harness() {
+    awk -v from_ram=" $2 " -v to_ram=" $3 " '
+        /^module piece[ (]/ { inside = 1; next }
+        inside && /^endmodule/ { exit }
+        inside && /^  (input|output) / {
+            width = $0 ~ /\[/ ? $2 " " : ""
+            name = $NF; sub(/;$/, "", name)
+            high = 0
+            if (width != "") { w = width; gsub(/[\[\] ]/, "", w); split(w, r, ":"); high = r[1] }
+            ports = ports ", " name
+            decl = decl "  " $1 " " width name ";\n"
+            if (name == "clk") { conn = conn ", .clk(clk)"; next }
+            decl = decl "  wire " width name "_q;\n"
+            conn = conn ", ." name "(" name "_q)"
+            if ($1 == "input") {
+                cell = index(from_ram, " " name " ") ? "TIMING_FROM_RAM" : "TIMING_FROM_FF"
+                body = body "  " cell " " name "_boundary [" high ":0] (.I(" name "), .O(" name "_q));\n"
+            } else {
+                cell = index(to_ram, " " name " ") ? "TIMING_TO_RAM" : "TIMING_TO_FF"
+                body = body "  " cell " " name "_boundary [" high ":0] (.I(" name "_q), .O(" name "));\n"
+            }
+        }
+        END {
+            print "module timing_harness(" substr(ports, 3) ");"
+            printf "%s%s", decl, body
+            print "  piece dut(" substr(conn, 3) ");"
+            print "endmodule"
+        }' "$1"
+}
+
+# sta's report -> path_ns,luts,carry_cells,wide_muxes,from,to
+path_fields() {
+    awk '
+        /^Latest arrival time in / { on = 1; ps = $NF; sub(/:$/, "", ps); next }
+        on && /^Arrival histogram/ { on = 0 }
+        on && /\([A-Za-z0-9_]+\.[^)]*\)$/ {
+            cell = $NF; gsub(/[()]/, "", cell); split(cell, c, "."); type = c[1]
+            if (first == "") first = type
+            last = type
+            if (type ~ /^(LUT[1-6]|INV)$/) luts++
+            else if (type ~ /^(MUXCY|XORCY|CARRY4|CARRY8)$/) carry++
+            else if (type ~ /^MUXF[5-9]$/) muxes++
+        }
+        function kind(type) {
+            if (type ~ /RAM$|^RAMB/) return "block_ram"
+            if (type ~ /^RAM(16|32|64|128)/) return "lut_ram"
+            return "flip_flop"
+        }
+        END {
+            if (ps == "") { print "timing.sh: sta found no path" > "/dev/stderr"; exit 2 }
+            printf "%.3f,%d,%d,%d,%s,%s\n", ps / 1000, luts, carry, muxes, kind(last), kind(first)
+        }'
+}
+
+# The timing models of every cell the arcs file names for FAMILY, into FILE.
+family_cells() {
+    # shellcheck disable=SC2046
+    timing_cells "$1" $(awk -v family="$1" '!/^[ \t]*#/ && NF >= 6 && index("," $1 ",", "," family ",") {
+        n = split($2, cells, ","); for (i = 1; i <= n; i++) print cells[i] }' "$arcs" | sort -u) >"$2"
+}
+
+# Synthesises one design into DIR: netlist.v (parameters stripped) and
+# harness.v, with cells.v the family's cell models (TIMING_CELLS_DIR keeps one
+# a family for a whole table). Arguments: FAMILY TOP "SOURCES" "PARAMS"
+# "FROM_RAM" "TO_RAM".
+prepare() {
+    local dir=$1 family=$2 top=$3 sources=$4 params=$5 from_ram=$6 to_ram=$7
+    local chparam="" cells
+    [[ -n $params ]] && chparam="chparam $params $top;"
+    yosys -q -p "read_verilog -sv $sources; $chparam synth_xilinx -family $family -top $top -flatten -noiopad; rename -top piece; write_verilog -noattr $dir/raw.v" \
+        >/dev/null 2>&1 || die "yosys failed on $top ($family: $params)"
+    strip_parameters "$dir/raw.v" >"$dir/netlist.v"
+    harness "$dir/netlist.v" "$from_ram" "$to_ram" >"$dir/harness.v"
+    cells=${TIMING_CELLS_DIR:-}/$family.v
+    if [[ -n ${TIMING_CELLS_DIR:-} && -s $cells ]]; then
+        cp "$cells" "$dir/cells.v"
+    else
+        family_cells "$family" "$dir/cells.v"
+    fi
+    # Every cell of the netlist has its arcs (a missing one would be a shorter path).
+    local cell
+    for cell in $(grep -oE '^  [A-Z][A-Za-z0-9_]* ' "$dir/netlist.v" | sort -u); do
+        grep -q "^module $cell(" "$dir/cells.v" || die "no timing arcs for the cell $cell ($family, $top)"
+    done
+}
+
+# sta on a prepared DIR at FAMILY GRADE; the report on stdout. A cell without
+# arcs, a path that ends nowhere or an output no path reaches is an error,
+# not a shorter path; with a fourth argument an output no path reaches is
+# taken for a constant (the whole board's tied-off ports).
+analyse() {
+    local dir=$1 family=$2 grade=$3 constants=${4:-} flags report problems
+    flags=$(delay_flags "$family" "$grade")
+    report=$(yosys -p "read_verilog -lib -specify $flags $dir/cells.v; read_verilog $dir/netlist.v $dir/harness.v; hierarchy -top timing_harness; flatten; sta" 2>&1) ||
+        die "yosys sta failed ($family -$grade): $(grep -m1 ERROR <<<"$report")"
+    problems="not recognised|no timing arcs|does not terminate"
+    [[ -n $constants ]] || problems+="|no \(\* sta_arrival"
+    if grep -qE "$problems" <<<"$report"; then
+        die "sta ($family -$grade): $(grep -m1 -E "$problems" <<<"$report")"
+    fi
+    echo "$report"
+}
+
+# The rows of one piece: FAMILY PIECE FORMAT M LATENCY, one a speed grade.
+timing_rows() {
+    local family=$1 piece=$2 format=$3 m=$4 latency=$5 sources params dir grade
+    piece_design "$family" "$piece" "$format" "$m" "$latency"
+    # The board's controller: 64-bit counters and the model's phase rules.
+    [[ $piece == board_control ]] && params="-set CW 64 -set MODEL_TIMING 1"
+    dir=$(mktemp -d)
+    # shellcheck disable=SC2064
+    trap "rm -rf '$dir'" RETURN
+    prepare "$dir" "$family" "$piece" "$sources" "$params" "$(from_ram_ports "$piece")" "$(to_ram_ports "$piece")"
+    local fields
+    for grade in $(speed_grades "$family"); do
+        fields=$(analyse "$dir" "$family" "$grade" | path_fields)
+        echo "$family,$piece,$format,$m,$latency,$grade,$fields"
+    done
+}
+
+# Every row's synthesis: FAMILY PIECE FORMAT M LATENCY.
+all_timing_rows() {
+    local family k m latency
+    for family in $families; do
+        echo "$family board_control - - -"
+        for latency in $latencies; do
+            echo "$family compare_lane float32 - $latency"
+            for k in $(seq 8 32); do echo "$family compare_lane fixed$k - $latency"; done
+        done
+        for m in $ms; do
+            echo "$family address_generator - $m -"
+            echo "$family tile_walker - $m -"
+            echo "$family pair_collector block_ram $m -"
+            echo "$family pair_collector distributed $m -"
+        done
+    done
+}
+
+# The whole board as one design: FAMILY GRADE M [FORMAT], its ports behind
+# registers (the host bus and SSRAM interfaces).
+board_timing() {
+    local family=$1 grade=$2 m=$3 format=${4:-float32} dir params sources
+    params=$(board_params "$m" "$format")
+    sources=$(board_sources)
+    dir=$(mktemp -d)
+    # shellcheck disable=SC2064
+    trap "rm -rf '$dir'" RETURN
+    prepare "$dir" "$family" collision_board_top "$sources" "$params" "" ""
+    analyse "$dir" "$family" "$grade" constants | sed -n '/^Latest arrival/,/^Arrival histogram/p' | sed '$d'
+}
+
+[[ ${BASH_SOURCE[0]} == "$0" ]] || return 0
+
+case "${1:-}" in
+    --row) shift; [[ $# -eq 5 ]] || die "--row needs FAMILY PIECE FORMAT M LATENCY"; timing_rows "$@" ;;
+    --path)
+        shift; [[ $# -eq 6 ]] || die "--path needs FAMILY PIECE FORMAT M LATENCY GRADE"
+        piece_design "$1" "$2" "$3" "$4" "$5"
+        [[ $2 == board_control ]] && params="-set CW 64 -set MODEL_TIMING 1"
+        dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
+        prepare "$dir" "$1" "$2" "$sources" "$params" "$(from_ram_ports "$2")" "$(to_ram_ports "$2")"
+        analyse "$dir" "$1" "$6" | sed -n '/^Latest arrival/,/^Arrival histogram/p' | sed '$d' ;;
+    --board) shift; [[ $# -eq 3 || $# -eq 4 ]] || die "--board needs FAMILY GRADE M [FORMAT]"; board_timing "$@" ;;
+    --check)
+        shift; [[ $# -eq 5 ]] || die "--check needs FAMILY PIECE FORMAT M LATENCY"
+        fresh=$(timing_rows "$@")
+        kept=$(grep -F "$1,$2,$3,$4,$5," "$timing_stored") || die "$timing_stored: no rows for $1,$2,$3,$4,$5"
+        if [[ $fresh != "$kept" ]]; then
+            echo "timing.sh: $1,$2,$3,$4,$5 differs from $timing_stored" >&2
+            echo "  stored:" >&2; sed 's/^/    /' <<<"$kept" >&2
+            echo "  derived:" >&2; sed 's/^/    /' <<<"$fresh" >&2
+            exit 1
+        fi
+        echo "$fresh" ;;
+    "")
+        TIMING_CELLS_DIR=$(mktemp -d)
+        trap 'rm -rf "$TIMING_CELLS_DIR"' EXIT
+        for family in $families; do family_cells "$family" "$TIMING_CELLS_DIR/$family.v"; done
+        export -f timing_rows piece_design format_params prepare analyse path_fields harness strip_parameters timing_cells \
+            family_cells delay_flags speed_grades from_ram_ports to_ram_ports die
+        export root address_bits fifo_depth tile_boxes tile_bits arcs delays TIMING_CELLS_DIR
+        echo "$timing_header"
+        all_timing_rows | parallel --keep-order --jobs "${SYNTH_JOBS:-100%}" --colsep ' ' timing_rows {1} {2} {3} {4} {5} ;;
+    *) die "unknown option '$1' (see the comment at the top)" ;;
+esac

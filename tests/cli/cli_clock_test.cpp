@@ -1,0 +1,122 @@
+// A board clock its device cannot reach, end to end through cdvp run: refused
+// in one line naming where the clock came from, the estimated Fmax and the
+// piece that limits it, with no report left behind; --ignore-timing runs it
+// with a warning; every preset runs at its own clock; the fit line and the
+// report carry the estimate.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <regex>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+using nlohmann::json;
+
+class CliClock : public Cli {
+protected:
+    static std::string spheres(const std::string& board) {
+        return "run --scene spheres --objects 200 --frames 1 --board " + board + " ";
+    }
+    json timing() const { return json::parse(slurp(dir_ / "r.json"))["config"]["resources"]["timing"]; }
+    static std::string mhz(double value) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f MHz", value);
+        return text;
+    }
+};
+
+TEST_F(CliClock, AClockBeyondTheEstimateIsRefusedNamingItsOriginTheEstimateAndThePiece) {
+    ASSERT_EQ(run(spheres("adm-xrc-ii") + "--quiet --report r.json").status, 0);
+    const json estimate = timing();
+    const double fmax = estimate["fmax_mhz"];
+    const std::string limit = estimate["limited_by"];
+    std::filesystem::remove(dir_ / "r.json");
+
+    const Result r = run(spheres("adm-xrc-ii") + "--clock-mhz 500 --report r.json --pairs-out p.csv");
+    expect_refusal(r, "cdvp run: --clock-mhz: 500.0 MHz is beyond the " + mhz(fmax) +
+                          " the board reaches on the XC2V6000-4 (speed grade -4): its " + limit + " takes ");
+    EXPECT_NE(r.err.find("a cycle (synthesis timing for xc2v); --ignore-timing runs it anyway\n"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(files(), std::vector<std::string>{}) << "a refused run leaves no file";
+
+    // Where the clock came from: a preset's own clock is named by its file and key.
+    json fast = json::parse(slurp(preset("adm-xrc-ii")));
+    fast["board"]["clock_mhz"]["value"] = 400;
+    write("fast.json", fast.dump());
+    expect_refusal(run(spheres("fast.json") + "--quiet"),
+                   "cdvp run: fast.json: board.clock_mhz: 400.0 MHz is beyond the ");
+}
+
+TEST_F(CliClock, TheEstimateItselfIsTheBoundary) {
+    ASSERT_EQ(run(spheres("adm-xrc-ii") + "--quiet --report r.json").status, 0);
+    const double fmax = timing()["fmax_mhz"];
+    char below[32], above[32];
+    std::snprintf(below, sizeof below, "%.4f", fmax * 0.999);
+    std::snprintf(above, sizeof above, "%.4f", fmax * 1.001);
+    const Result fits = run(spheres("adm-xrc-ii") + "--quiet --clock-mhz " + below + " --report r.json");
+    ASSERT_EQ(fits.status, 0) << fits.err;
+    EXPECT_TRUE(timing()["meets_clock"].get<bool>());
+    expect_refusal(run(spheres("adm-xrc-ii") + "--quiet --clock-mhz " + above),
+                   "cdvp run: --clock-mhz: " + mhz(fmax * 1.001) + " is beyond the ");
+}
+
+TEST_F(CliClock, IgnoreTimingRunsItWithAWarningAndTheReportSaysSo) {
+    const Result r = run(spheres("adm-xrc-ii") + "--quiet --clock-mhz 500 --ignore-timing --report r.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.rfind("cdvp run: warning: --clock-mhz: 500.0 MHz is beyond the ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("; running it anyway (--ignore-timing)\n"), std::string::npos) << r.err;
+    const json t = timing();
+    EXPECT_FALSE(t["meets_clock"].get<bool>());
+    EXPECT_EQ(t["clock_mhz"], 500.0);
+    EXPECT_LT(t["fmax_mhz"].get<double>(), 500.0);
+    // The run itself is the faster board's: its frames take fewer nanoseconds.
+    const json report = json::parse(slurp(dir_ / "r.json"));
+    EXPECT_EQ(report["config"]["clock_mhz"], 500.0);
+}
+
+TEST_F(CliClock, EveryPresetRunsAtItsOwnClock) {
+    for (const auto& entry : std::filesystem::directory_iterator(CDVP_SOURCE_DIR "/platform/boards")) {
+        const std::string name = entry.path().stem().string();
+        const Result r = run(spheres(name) + "--report r.json");
+        ASSERT_EQ(r.status, 0) << name << ": " << r.err;
+        EXPECT_EQ(r.err, "") << name;
+        const json t = timing();
+        const json config = json::parse(slurp(dir_ / "r.json"))["config"];
+        EXPECT_TRUE(t["meets_clock"].get<bool>()) << name;
+        EXPECT_GE(t["fmax_mhz"].get<double>(), config["clock_mhz"].get<double>()) << name;
+        // The fit line names the estimate and the piece that sets it.
+        EXPECT_NE(r.out.find("; Fmax about " + mhz(t["fmax_mhz"]) + " at speed grade -" +
+                             std::to_string(t["speed_grade"].get<int>()) + " (its " +
+                             t["limited_by"].get<std::string>() + ", "),
+                  std::string::npos)
+            << name << ": " << r.out.substr(0, 600);
+        // Each piece with its path; the ones the clock is not held to are the RTL's pair FIFO and tile walker.
+        for (const auto& [key, piece] : t["pieces"].items()) {
+            EXPECT_GT(piece["path_ns"].get<double>(), 0) << name;
+            const std::string what = piece["piece"];
+            EXPECT_EQ(piece["holds_clock"].get<bool>(),
+                      what.rfind("pair FIFO", 0) != 0 && what.rfind("tile walker", 0) != 0)
+                << name << ": " << what;
+        }
+    }
+}
+
+TEST_F(CliClock, TheSpeedGradeComesFromTheDeviceName) {
+    ASSERT_EQ(run(spheres("adm-xrc-ii") + "--quiet --report r.json").status, 0);
+    const double slow = timing()["fmax_mhz"];
+    ASSERT_EQ(run(spheres("adm-xrc-ii") + "--quiet --report r.json -c device.name=XC2V6000-6").status, 0);
+    EXPECT_EQ(timing()["speed_grade"], 6);
+    EXPECT_EQ(timing()["speed_grade_from"], "device name");
+    EXPECT_GT(timing()["fmax_mhz"].get<double>(), slow);
+    expect_refusal(run(spheres("adm-xrc-ii") + "--quiet -c device.name=XC2V6000-7"),
+                   "cdvp run: -c device.name: speed grade -7 of XC2V6000-7: the xc2v timing has -4, -5 or -6\n");
+}
+
+}  // namespace
+}  // namespace cdvp::test

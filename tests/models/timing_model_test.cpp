@@ -1,0 +1,219 @@
+// The timing table (scripts/timing.sh, models/resources/timing.csv): its
+// parser, its lookups, a board's Fmax as its slowest piece, and what the
+// stored table says of the RTL: more compare stages make a faster lane,
+// fixed-point lanes are faster than float32, deeper logic is slower, a
+// faster speed grade is faster.
+#include "models/resources/timing_model.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "models/board_spec/board_config.h"
+
+namespace cdvp {
+namespace {
+
+const std::string kHeader = "family,piece,format,m,latency,speed_grade,path_ns,luts,carry_cells,wide_muxes,from,to\n";
+
+// A small table: one grade, two latencies, two m a piece.
+TimingTable small_table() {
+    return TimingTable::parse(kHeader +
+                                  "xc2v,board_control,-,-,-,4,5.0,1,30,0,flip_flop,flip_flop\n"
+                                  "xc2v,compare_lane,float32,-,0,4,12.0,5,16,2,block_ram,flip_flop\n"
+                                  "xc2v,compare_lane,float32,-,2,4,9.0,4,16,0,block_ram,flip_flop\n"
+                                  "xc2v,compare_lane,fixed16,-,2,4,6.0,2,8,0,block_ram,flip_flop\n"
+                                  "xc2v,address_generator,-,1,-,4,4.0,2,10,0,flip_flop,flip_flop\n"
+                                  "xc2v,address_generator,-,3,-,4,7.0,3,12,0,flip_flop,flip_flop\n"
+                                  "xc2v,tile_walker,-,1,-,4,8.0,5,20,0,flip_flop,flip_flop\n"
+                                  "xc2v,tile_walker,-,3,-,4,6.0,5,20,0,flip_flop,flip_flop\n"
+                                  "xc2v,pair_collector,block_ram,1,-,4,10.0,6,0,4,block_ram,flip_flop\n"
+                                  "xc2v,pair_collector,block_ram,3,-,4,11.0,7,0,6,block_ram,flip_flop\n"
+                                  "xc2v,pair_collector,distributed,1,-,4,13.0,8,0,4,lut_ram,flip_flop\n"
+                                  "xc2v,pair_collector,distributed,3,-,4,14.0,9,0,6,lut_ram,flip_flop\n",
+                              "small.csv");
+}
+
+std::string parse_error(const std::string& csv) {
+    try {
+        TimingTable::parse(csv, "t.csv");
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(TimingTable, RefusesAMalformedTableNamingTheLineAndColumn) {
+    EXPECT_EQ(parse_error(""), "t.csv: empty; expected the header " + kHeader.substr(0, kHeader.size() - 1));
+    EXPECT_EQ(parse_error("family,piece\n").rfind("t.csv:1: expected the header", 0), 0u);
+    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-\n"), "t.csv:2: expected 12 fields, got 3");
+    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,4,0,1,1,0,flip_flop,flip_flop\n"),
+              "t.csv:2: path_ns: expected a positive number of ns, got '0'");
+    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,4,nan,1,1,0,flip_flop,flip_flop\n"),
+              "t.csv:2: path_ns: expected a positive number of ns, got 'nan'");
+    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,-,5.0,1,1,0,flip_flop,flip_flop\n"),
+              "t.csv:2: speed_grade: expected a grade, got '-'");
+    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,4,5.0,1,1,0,latch,flip_flop\n"),
+              "t.csv:2: from: expected flip_flop, block_ram or lut_ram, got 'latch'");
+    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,4,5.0,x,1,0,flip_flop,flip_flop\n"),
+              "t.csv:2: luts: expected a whole number or '-', got 'x'");
+}
+
+TEST(TimingTable, LooksUpLanesByLatencyAndPiecesByTheSlowerNeighbouringM) {
+    const TimingTable table = small_table();
+    EXPECT_EQ(table.lane("xc2v", 4, "float32", 0).ns, 12.0);
+    EXPECT_EQ(table.lane("xc2v", 4, "float32", 2).ns, 9.0);
+    // Latency 1 was not synthesised: the shallower row, never a faster guess.
+    EXPECT_EQ(table.lane("xc2v", 4, "float32", 1).ns, 12.0);
+    // Past the deepest row the extra stages only delay the AND.
+    EXPECT_EQ(table.lane("xc2v", 4, "float32", 7).ns, 9.0);
+    EXPECT_EQ(table.address_generator("xc2v", 4, 2).ns, 7.0);  // the slower of m = 1 and m = 3
+    EXPECT_EQ(table.tile_walker("xc2v", 4, 2).ns, 8.0);        // the slower even when it is the smaller m
+    EXPECT_EQ(table.pair_collector("xc2v", 4, 1, "distributed").from, "lut_ram");
+    EXPECT_EQ(table.control("xc2v", 4).carry_cells, 30u);
+    EXPECT_DOUBLE_EQ(table.control("xc2v", 4).fmax_mhz(), 200.0);
+}
+
+TEST(TimingTable, NamesWhatIsMissing) {
+    const TimingTable table = small_table();
+    const auto message = [](auto&& lookup) {
+        try {
+            lookup();
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(message([&] { table.lane("xc2v", 5, "float32", 2); }),
+              "no timing of the float32 comparison lane for the xc2v family at speed grade -5");
+    EXPECT_EQ(message([&] { table.lane("xc2v", 4, "fixed16", 0); }),
+              "no timing of the fixed16 comparison lane at compare latency 0 for the xc2v family");
+    EXPECT_EQ(message([&] { table.address_generator("xc2v", 4, 4); }),
+              "no timing of the address generator around m = 4 for the xc2v family");
+    EXPECT_EQ(message([&] { table.control("xcup", 1); }),
+              "no timing of the controller for the xcup family at speed grade -1");
+    EXPECT_EQ(table.speed_grades("xc2v"), std::vector<uint32_t>{4});
+    EXPECT_TRUE(table.speed_grades("xcup").empty());
+}
+
+TEST(BoardTiming, TheSlowestPieceTheClockIsHeldToSetsTheFmax) {
+    const TimingTable table = small_table();
+    TimedBoard board{"xc2v", 4, "float32", 3, 2, "block_ram", false};
+    BoardTiming timing = board_timing(table, board);
+    ASSERT_EQ(timing.pieces.size(), 4u);
+    // The lane (9 ns) limits; the pair FIFO (11 ns) is reported as the RTL is written.
+    EXPECT_EQ(timing.limiting().piece, "float32 comparison lane at compare latency 2");
+    EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 9.0);
+    EXPECT_EQ(timing.slowest().piece, "pair FIFO in block RAM");
+    EXPECT_FALSE(timing.slowest().holds_clock);
+    board.fifo_memory = "distributed";
+    EXPECT_EQ(board_timing(table, board).slowest().piece, "pair FIFO in LUTs");
+    EXPECT_DOUBLE_EQ(board_timing(table, board).slowest().path.ns, 14.0);
+    // At compare latency 0 the lane takes 12 ns; with fixed16 lanes the
+    // address generator (7 ns at m = 3) limits instead.
+    board.compare_latency = 0;
+    EXPECT_DOUBLE_EQ(board_timing(table, board).limiting().path.ns, 12.0);
+    board.compare_latency = 2;
+    board.format = "fixed16";
+    EXPECT_EQ(board_timing(table, board).limiting().piece, "address generator");
+    // Boxes in SSRAM tiles: the tile walker instead of the address generator,
+    // reported beside the FIFO; the controller (5 ns) is now below the lane.
+    board.tiled = true;
+    timing = board_timing(table, board);
+    EXPECT_EQ(timing.pieces[1].piece, "tile walker");
+    EXPECT_FALSE(timing.pieces[1].holds_clock);
+    EXPECT_EQ(timing.limiting().piece, "fixed16 comparison lane at compare latency 2");
+}
+
+
+// What the stored table (the RTL, synthesised and timed) says, for every
+// family and speed grade in it.
+class StoredTiming : public ::testing::Test {
+protected:
+    const TimingTable& table = TimingTable::stored();
+    static std::vector<std::string> fixed_formats() {
+        std::vector<std::string> formats;
+        for (int k = 8; k <= 32; ++k) formats.push_back("fixed" + std::to_string(k));
+        return formats;
+    }
+    template <class Check>
+    void for_each_grade(Check check) const {
+        for (const std::string family : {"xc2v", "xcup"}) {
+            const std::vector<uint32_t> grades = table.speed_grades(family);
+            ASSERT_EQ(grades.size(), 3u) << family;
+            for (const uint32_t grade : grades) check(family, grade);
+        }
+    }
+};
+
+TEST_F(StoredTiming, MoreCompareStagesMakeAFasterLane) {
+    for_each_grade([&](const std::string& family, uint32_t grade) {
+        std::vector<std::string> formats = fixed_formats();
+        formats.push_back("float32");
+        for (const std::string& format : formats) {
+            const double l0 = table.lane(family, grade, format, 0).ns;
+            const double l1 = table.lane(family, grade, format, 1).ns;
+            const double l2 = table.lane(family, grade, format, 2).ns;
+            // The first stage takes the AND of the six comparators off the path.
+            EXPECT_GT(l0, l1) << family << " -" << grade << " " << format;
+            EXPECT_GE(l1, l2) << family << " -" << grade << " " << format;
+            EXPECT_EQ(table.lane(family, grade, format, 9).ns, l2) << "stages past the second only delay the AND";
+        }
+    });
+}
+
+TEST_F(StoredTiming, FixedPointLanesAreFasterThanFloat32AndWiderOnesNoFaster) {
+    for_each_grade([&](const std::string& family, uint32_t grade) {
+        for (uint32_t latency = 0; latency <= 2; ++latency) {
+            const double float32 = table.lane(family, grade, "float32", latency).ns;
+            double narrower = 0;
+            for (const std::string& format : fixed_formats()) {
+                const double ns = table.lane(family, grade, format, latency).ns;
+                EXPECT_LT(ns, float32) << family << " -" << grade << " " << format << " at latency " << latency;
+                // A wider comparator is a longer carry chain.
+                EXPECT_GE(ns, narrower) << family << " -" << grade << " " << format << " at latency " << latency;
+                narrower = ns;
+            }
+            EXPECT_GT(table.lane(family, grade, "fixed32", latency).carry_cells,
+                      table.lane(family, grade, "fixed8", latency).carry_cells);
+        }
+    });
+}
+
+TEST_F(StoredTiming, TheFifoGrowsDeeperAndSlowerWithTheLanes) {
+    for_each_grade([&](const std::string& family, uint32_t grade) {
+        for (const std::string memory : {"block_ram", "distributed"}) {
+            double fewer = 0;
+            for (const uint32_t m : {1u, 2u, 3u, 4u, 6u, 8u, 12u, 16u, 24u, 32u}) {
+                const PathDelay path = table.pair_collector(family, grade, m, memory);
+                EXPECT_GE(path.ns, fewer) << family << " -" << grade << " " << memory << " m = " << m;
+                fewer = path.ns;
+            }
+            const PathDelay one = table.pair_collector(family, grade, 1, memory);
+            const PathDelay many = table.pair_collector(family, grade, BoardConfig::kMaxM, memory);
+            EXPECT_GT(many.luts + many.wide_muxes, one.luts + one.wide_muxes) << family << " " << memory;
+        }
+    });
+}
+
+TEST_F(StoredTiming, AFasterSpeedGradeIsFasterEverywhere) {
+    for (const std::string family : {"xc2v", "xcup"}) {
+        const std::vector<uint32_t> grades = table.speed_grades(family);
+        for (std::size_t g = 1; g < grades.size(); ++g) {
+            const uint32_t slow = grades[g - 1], fast = grades[g];
+            EXPECT_LT(table.control(family, fast).ns, table.control(family, slow).ns);
+            EXPECT_LT(table.lane(family, fast, "float32", 2).ns, table.lane(family, slow, "float32", 2).ns);
+            for (const uint32_t m : {1u, 8u, 32u}) {
+                EXPECT_LT(table.address_generator(family, fast, m).ns, table.address_generator(family, slow, m).ns);
+                EXPECT_LT(table.tile_walker(family, fast, m).ns, table.tile_walker(family, slow, m).ns);
+                EXPECT_LT(table.pair_collector(family, fast, m, "block_ram").ns,
+                          table.pair_collector(family, slow, m, "block_ram").ns);
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace cdvp

@@ -1,0 +1,112 @@
+// The board clock against its device's estimated Fmax (platform/device_fit):
+// the speed grade from the device's name, the estimate as the slowest piece
+// the clock is held to, the refusal naming where the clock came from, and
+// run.ignore_timing turning it into a warning.
+#include "platform/device_fit.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "models/common/user_text.h"
+#include "platform/settings/board_preset.h"
+#include "platform/settings/config_file.h"
+
+namespace cdvp {
+namespace {
+
+constexpr uint64_t kBoxes = 500;
+
+SettingValues preset(const std::string& name, const std::vector<std::string>& overrides = {}) {
+    SettingValues values;
+    values.apply(load_board_preset(name).values);
+    std::vector<Assignment> layer;
+    for (const std::string& text : overrides) layer.push_back(parse_override(text));
+    values.apply(layer);
+    return values;
+}
+
+std::string refusal(const SettingValues& values) {
+    try {
+        check_clock(values, kBoxes);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(SpeedGrade, ComesFromTheDeviceNameElseTheFamilysSlowest) {
+    DeviceSettings device;
+    device.family = DeviceFamily::kXc2v;
+    device.name = "XC2V6000-4";
+    EXPECT_EQ(speed_grade_of(device).grade, 4u);
+    EXPECT_TRUE(speed_grade_of(device).named);
+    device.name = "XC2V6000-6";
+    EXPECT_EQ(speed_grade_of(device).grade, 6u);
+    device.name = "XC2V6000";
+    EXPECT_EQ(speed_grade_of(device).grade, 4u);
+    EXPECT_FALSE(speed_grade_of(device).named);
+    device.name = "XC2V6000-9";
+    EXPECT_THROW(speed_grade_of(device), std::invalid_argument);
+    device.family = DeviceFamily::kXcup;
+    device.name = "XCVU9P";
+    EXPECT_EQ(speed_grade_of(device).grade, 1u);
+    device.name = "XCVU9P-L2";  // not a grade: a letter before the digits
+    EXPECT_FALSE(speed_grade_of(device).named);
+}
+
+TEST(DeviceFitTiming, TheEstimateIsTheSlowestPieceTheClockIsHeldTo) {
+    const DeviceFit fit = fit_on_device(preset("adm-xrc-ii").settings(), kBoxes);
+    EXPECT_EQ(fit.speed_grade.grade, 4u);
+    ASSERT_EQ(fit.timing.pieces.size(), 4u);
+    double slowest_held = 0;
+    for (const PieceTiming& piece : fit.timing.pieces) {
+        if (piece.holds_clock) slowest_held = std::max(slowest_held, piece.path.ns);
+    }
+    EXPECT_DOUBLE_EQ(fit.timing.fmax_mhz(), 1e3 / slowest_held);
+    EXPECT_EQ(fit.timing.pieces[0].piece, "float32 comparison lane at compare latency 2");
+    EXPECT_EQ(fit.clock_mhz, 66.0);
+    // A faster grade of the same part is faster.
+    const DeviceFit fast = fit_on_device(preset("adm-xrc-ii", {"device.name=XC2V6000-6"}).settings(), kBoxes);
+    EXPECT_GT(fast.timing.fmax_mhz(), fit.timing.fmax_mhz());
+    // Fixed-point lanes are faster than float32 ones.
+    const DeviceFit fixed = fit_on_device(preset("adm-xrc-ii", {"board.format=fixed16"}).settings(), kBoxes);
+    EXPECT_LT(fixed.timing.pieces[0].path.ns, fit.timing.pieces[0].path.ns);
+}
+
+TEST(ClockCheck, AClockBeyondTheEstimateIsRefusedNamingItsOriginTheEstimateAndThePiece) {
+    const SettingValues fine = preset("adm-xrc-ii");
+    EXPECT_EQ(refusal(fine), "");
+    const DeviceFit fit = fit_on_device(fine.settings(), kBoxes);
+    char fmax[32];
+    std::snprintf(fmax, sizeof fmax, "%.1f MHz", fit.timing.fmax_mhz());
+    const std::string error = refusal(preset("adm-xrc-ii", {"board.clock_mhz=500"}));
+    EXPECT_EQ(error.rfind("-c board.clock_mhz: 500.0 MHz is beyond the " + std::string(fmax) +
+                              " the board reaches on the XC2V6000-4 (speed grade -4): its " +
+                              fit.timing.limiting().piece + " takes ",
+                          0),
+              0u)
+        << error;
+    EXPECT_NE(error.find("(synthesis timing for xc2v); --ignore-timing runs it anyway"), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos);
+    // Without a speed grade in the name the family's slowest is assumed, and said.
+    EXPECT_NE(refusal(preset("adm-xrc-ii", {"board.clock_mhz=500", "device.name=XC2V6000"}))
+                  .find("(speed grade -4, the family's slowest)"),
+              std::string::npos);
+    // No device family: nothing to estimate, nothing refused.
+    EXPECT_EQ(refusal(preset("adm-xrc-ii", {"board.clock_mhz=500", "device.family=none"})), "");
+}
+
+TEST(ClockCheck, IgnoreTimingWarnsInsteadAndAnUnknownGradeIsRefused) {
+    const std::optional<std::string> warning =
+        check_clock(preset("adm-xrc-ii", {"board.clock_mhz=500", "run.ignore_timing=yes"}), kBoxes);
+    ASSERT_TRUE(warning.has_value());
+    EXPECT_EQ(warning->rfind("warning: board.clock_mhz: 500.0 MHz is beyond the ", 0), 0u) << *warning;
+    EXPECT_NE(warning->find("; running it anyway (run.ignore_timing=yes)"), std::string::npos) << *warning;
+    EXPECT_EQ(refusal(preset("adm-xrc-ii", {"device.name=XC2V6000-7"})),
+              "-c device.name: speed grade -7 of XC2V6000-7: the xc2v timing has -4, -5 or -6");
+}
+
+}  // namespace
+}  // namespace cdvp
