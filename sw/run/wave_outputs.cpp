@@ -48,6 +48,7 @@ DumpFormat parse_dump_format(const std::string& text, const SettingNames& names)
 void WaveOutputs::declare(OutputSet& files, const std::string& path, DumpFormat format, const std::string& label,
                           const std::vector<const StateNames*>& tables) {
     path_ = path;
+    label_ = label;
     format_ = format;
     tables_ = tables;
     // SystemC names the VCD itself (base + ".vcd"); vcd2fst writes the FST over its temporary.
@@ -84,7 +85,7 @@ std::optional<std::string> WaveOutputs::finish(const VirtualBoard& platform) {
         streams.out = streams.err = errors.fd();
         const int status = run_child({kFstConverter, scratch_vcd_->temp_path(), dump_->temp_path()}, streams);
         if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-            return "--vcd " + excerpt(path_) + ": vcd2fst failed: " + printable(errors.text(4096));
+            return label_ + " " + excerpt(path_) + ": vcd2fst failed: " + printable(errors.text(4096));
         }
     }
     if (!save_index_) return std::nullopt;

@@ -42,6 +42,7 @@ public:
 
 private:
     std::string path_;
+    std::string label_;  // the face's name for the dump ("--vcd")
     DumpFormat format_ = DumpFormat::kVcd;
     std::optional<std::size_t> dump_index_, save_index_;
     std::vector<const StateNames*> tables_;
