@@ -65,8 +65,8 @@ int run_command_line(const char* program, int argc, char** argv, const std::stri
     return exit_status_of(program, [&] {
         try {
             return body(parse_strictly(argc, argv, options));
-        } catch (const po::error& e) {
-            std::cerr << program << ": " << printable(e.what()) << " (see " << program << " --help)\n";
+        } catch (po::error& e) {  // option_error_text shortens a huge name in place
+            std::cerr << program << ": " << option_error_text(e, program, &options) << '\n';
             return kExitBadInput;
         } catch (const BoardFrameFault& e) {
             std::cerr << program << ": the simulated system faulted: " << printable(e.what()) << '\n';

@@ -77,7 +77,7 @@ ParsedCommandLine parse_with_run_options(int argc, char** argv, const po::option
                      .run();
         po::store(parsed, line.values);  // checks every value of a setting's flag, and options given twice
     } catch (po::error& e) {
-        throw InputError(option_error_text(e, program));
+        throw InputError(option_error_text(e, program, &all));
     }
     for (const std::string& stray : po::collect_unrecognized(parsed.options, po::include_positional)) {
         throw InputError("unexpected argument '" + excerpt(stray) + "'");

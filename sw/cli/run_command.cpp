@@ -75,7 +75,9 @@ int run_command(int argc, char** argv) {
             const po::variables_map vm = parse_run_options(argc, argv, o);
             spec = run_spec_of(o, vm);
         } catch (po::error& e) {
-            std::cerr << "cdvp run: " << option_error_text(e, "cdvp run") << '\n';
+            RunOptions unused;
+            const po::options_description options = run_options_description(unused);
+            std::cerr << "cdvp run: " << option_error_text(e, "cdvp run", &options) << '\n';
             return kExitBadInput;
         }
         spec.command_line = report_command_line(argc, argv);

@@ -1,8 +1,12 @@
 #include "sw/cli/run_options.h"
 
+#include <algorithm>
+#include <optional>
 #include <sstream>
+#include <vector>
 
 #include "models/common/user_text.h"
+#include "platform/settings/settings.h"
 #include "sw/bullet/scenes.h"
 #include "sw/cli/setting_flag.h"
 
@@ -131,7 +135,33 @@ po::variables_map parse_run_options(int argc, char** argv, RunOptions& options) 
     return vm;
 }
 
-std::string option_error_text(po::error& error, const std::string& program) {
+namespace {
+
+// The option an unknown one was likely meant to be ("--frames" for
+// "--frmaes"), when one lies within a typo's distance of it.
+std::optional<std::string> nearest_option(const std::string& typed, const po::options_description& options) {
+    if (typed.rfind("--", 0) != 0 || typed.size() < 4) return std::nullopt;
+    const std::string name = typed.substr(2, typed.find('=') == std::string::npos ? std::string::npos : typed.find('=') - 2);
+    std::vector<std::string> names;
+    for (const auto& option : options.options()) {
+        if (!option->long_name().empty()) names.push_back(option->long_name());
+    }
+    if (names.empty()) return std::nullopt;
+    const std::string nearest = nearest_name(name, names);
+    const std::size_t allowed = std::max<std::size_t>(2, name.size() / 2);
+    if (edit_distance(name, nearest) > allowed) return std::nullopt;
+    return "--" + nearest;
+}
+
+}  // namespace
+
+std::string option_error_text(po::error& error, const std::string& program, const po::options_description* options) {
+    std::string suggestion;
+    if (const auto* unknown = dynamic_cast<const po::unknown_option*>(&error); unknown != nullptr && options != nullptr) {
+        if (const auto nearest = nearest_option(unknown->get_option_name(), *options)) {
+            suggestion = "; did you mean '" + *nearest + "'?";
+        }
+    }
     if (auto* named = dynamic_cast<po::error_with_option_name*>(&error)) {
         // boost quotes an unknown option as typed: keep a huge one short.
         const std::string name = named->get_option_name();
@@ -140,7 +170,7 @@ std::string option_error_text(po::error& error, const std::string& program) {
             named->set_original_token(excerpt(name));
         }
     }
-    return printable(error.what()) + " (see " + program + " --help)";
+    return printable(error.what()) + suggestion + " (see " + program + " --help)";
 }
 
 std::string run_options_help() {

@@ -46,8 +46,10 @@ boost::program_options::variables_map parse_run_options(int argc, char** argv, R
 boost::program_options::variables_map parse_strictly(int argc, char** argv,
                                                      const boost::program_options::options_description& options);
 // A command-line error's one line, an unknown option of any length quoted
-// by its first bytes only, and pointing at PROGRAM --help.
-std::string option_error_text(boost::program_options::error& error, const std::string& program);
+// by its first bytes only, and pointing at PROGRAM --help. An unknown option
+// close to one of `options` (a typo: --frmaes) is told the one it may mean.
+std::string option_error_text(boost::program_options::error& error, const std::string& program,
+                              const boost::program_options::options_description* options = nullptr);
 
 // The pieces of a command line that `cdvp run` and `cdvp bullet` share, so
 // that both spell and explain them alike.

@@ -136,7 +136,7 @@ int resolved_settings(int argc, char** argv) {
     try {
         vm = parse_strictly(argc, argv, options);
     } catch (po::error& e) {
-        throw InputError(option_error_text(e, "cdvp settings"));
+        throw InputError(option_error_text(e, "cdvp settings", &options));
     }
     std::string board_name;
     const SettingValues values = layered_settings(setting_layers_of(layers, vm), "", board_name);

@@ -104,7 +104,8 @@ TEST_F(Cli, SweepWhoseEveryPointIsRefusedExitsTwoWithTheFirstReasonAndLeavesNoth
     EXPECT_NE(r.err.find("block RAMs are too few for --m 28"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "res"));
     // A misspelt option is refused before any point runs.
-    expect_refusal(run("sweep --set m=1,2 --frmes 3 --out res"), "cdvp sweep: unrecognised option '--frmes'");
+    expect_refusal(run("sweep --set m=1,2 --frmes 3 --out res"),
+                   "cdvp sweep: unrecognised option '--frmes'; did you mean '--frames'? (see cdvp sweep --help)\n");
     EXPECT_FALSE(fs::exists(dir_ / "res"));
 }
 
@@ -244,6 +245,23 @@ TEST_F(Cli, InterruptedSweepLeavesOnlyCompletePointsAndNoTemporaries) {
     const Result resumed = run("sweep --set m=1:12:+1 --set objects=200,300 --frames 20 --jobs 2 --out res");
     ASSERT_EQ(resumed.status, 0) << resumed.err;
     EXPECT_EQ(untimed_rows(slurp(csv)).size(), 24u);
+}
+
+// A misspelt flag is told the flag it may mean, in every command that takes
+// flags, as a misspelt -c key is; one far from every flag gets no guess.
+TEST_F(Cli, AMisspeltFlagIsToldTheNearestOne) {
+    const std::vector<std::pair<std::string, std::string>> typos{
+        {"run --frmaes 3", "cdvp run: unrecognised option '--frmaes'; did you mean '--frames'?"},
+        {"run --baslien sap", "cdvp run: unrecognised option '--baslien'; did you mean '--baseline'?"},
+        {"run --frmaes=3", "cdvp run: unrecognised option '--frmaes=3'; did you mean '--frames'?"},
+        {"bullet --scnee boxes", "cdvp bullet: unrecognised option '--scnee'; did you mean '--scene'?"},
+        {"sweep --jbos 2 --out o", "cdvp sweep: unrecognised option '--jbos'; did you mean '--jobs'?"},
+        {"fidelity --otu o", "cdvp fidelity: unrecognised option '--otu'; did you mean '--out'?"},
+        {"calibrate --repat 2", "cdvp calibrate: unrecognised option '--repat'; did you mean '--repeat'?"}};
+    for (const auto& [words, line] : typos) expect_refusal(run(words), line, words);
+    const Result far = run("run --zzzzzzzz 1");
+    expect_refusal(far, "cdvp run: unrecognised option '--zzzzzzzz' (see cdvp run --help)\n");
+    EXPECT_FALSE(fs::exists(dir_ / "o"));
 }
 
 }  // namespace
