@@ -15,8 +15,10 @@ text = readme.read_text()
 for command in ["", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record", "calibrate", "rtl-variants"]:
     args = [binary] + ([command] if command else []) + ["--help"]
     help_text = subprocess.run(args, check=True, capture_output=True, text=True).stdout
-    usage = help_text.split("\n", 1)[0]
-    start = text.find("```\n" + usage + "\n")
+    # The block whose first line names the same command ("Usage: cdvp run "):
+    # the rest of the line may have been wrapped differently since.
+    usage = " ".join(help_text.split("\n", 1)[0].split()[:3]) + " "
+    start = text.find("```\n" + usage)
     if start < 0:
         sys.exit(f"README.md has no block starting with {usage!r}")
     end = text.find("```\n", start + 4)

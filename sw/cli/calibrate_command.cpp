@@ -14,6 +14,7 @@
 
 #include "models/common/user_text.h"
 #include "platform/settings/board_preset.h"
+#include "sw/run/machine_info.h"
 #include "sw/baselines/broad_phase.h"
 #include "sw/run/baseline_timing.h"
 #include "sw/cli/bullet_command.h"
@@ -57,15 +58,6 @@ struct CalibrateOptions {
     bool strict = false;
     bool quiet = false;
 };
-
-std::string utc_now() {
-    const std::time_t now = std::time(nullptr);
-    std::tm parts{};
-    gmtime_r(&now, &parts);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
-    return text;
-}
 
 // One run of one size: every baseline on each frame in turn (as cdvp run
 // times them), the scene stepped on the pairs they agree on; each

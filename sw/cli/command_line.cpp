@@ -7,6 +7,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/bullet/board_link.h"
+#include "sw/cli/help_text.h"
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/number_option.h"
 #include "sw/cli/run_command.h"
@@ -59,7 +60,7 @@ int run_command_line(const char* program, int argc, char** argv, const std::stri
         if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
             std::ostringstream help;
             help << usage << "\n\n" << options << '\n';
-            return print_to_stdout(program, help.str());
+            return print_help(program, help.str());
         }
     }
     return exit_status_of(program, [&] {

@@ -1,3 +1,4 @@
+#include "sw/cli/help_text.h"
 #include "sw/cli/fidelity_command.h"
 
 #include <sys/stat.h>
@@ -119,7 +120,7 @@ std::vector<std::string> formula_overrides(const RunSpec& scene) {
 
 int fidelity(int argc, char** argv) {
     for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
-        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return print_to_stdout("cdvp fidelity", kHelp);
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return print_help("cdvp fidelity", kHelp);
     }
     FidelityOptions o = parse_fidelity_options(argc, argv);
     // Declared first, so they go last: temporaries are removed before the

@@ -7,6 +7,7 @@
 #include <systemc>
 
 #include "platform/kernel.h"
+#include "sw/cli/help_text.h"
 #include "sw/cli/exit_status.h"
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/calibrate_command.h"
@@ -29,17 +30,21 @@ constexpr const char* kUsage =
     "collision detection (all-pairs AABB tests, after Woulfe, Dingliana and Manzke, 2007).\n"
     "\n"
     "Commands:\n"
-    "  run       simulate scene frames on the virtual board; write pairs, a report, waveforms\n"
-    "  fidelity  run a scene at every modelling level: simulator speed against timing error\n"
-    "  settings  list every setting (-c NAME=VALUE, --config FILE, presets) with its range and default\n"
-    "  sweep     run a grid of settings, boards and scenes: one CSV row per point, plots; resumable,\n"
-    "            parallel (--jobs) and sharded (--shard)\n"
-    "  merge     merge the shard directories of one sweep into one\n"
-    "  bullet    step a Bullet scene with the board as its broad phase, against Bullet's own\n"
-    "  record    write a Bullet scene's AABBs as a trace for 'cdvp run --trace'\n"
-    "  calibrate time the reference workload on this machine and write a host profile, from\n"
-    "            which runs take their host factors (docs/timing.md)\n"
-    "  rtl-variants  list the board RTL's parameter sets built in for --fidelity rtl (docs/rtl.md)\n"
+    "  run           simulate scene frames on the virtual board; write pairs, a\n"
+    "                report, waveforms\n"
+    "  fidelity      run a scene at every modelling level: simulator speed against\n"
+    "                timing error\n"
+    "  settings      list every setting (-c NAME=VALUE, --config FILE, presets)\n"
+    "                with its range and default\n"
+    "  sweep         run a grid of settings, boards and scenes: one CSV row per\n"
+    "                point, plots; resumable, parallel (--jobs), sharded (--shard)\n"
+    "  merge         merge the shard directories of one sweep into one\n"
+    "  bullet        step a Bullet scene with the board as its broad phase, against\n"
+    "                Bullet's own\n"
+    "  record        write a Bullet scene's AABBs as a trace for 'cdvp run --trace'\n"
+    "  calibrate     time the reference workload on this machine and write a host\n"
+    "                profile, from which runs take their host factors\n"
+    "  rtl-variants  list the board RTL's parameter sets built in for --fidelity rtl\n"
     "\n"
     "Run 'cdvp <command> --help' (or 'cdvp help <command>') for a command's options; 'cdvp --version'\n"
     "prints the version.\n"
@@ -59,7 +64,7 @@ int sc_main(int argc, char** argv) {
         return 2;
     }
     if (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
-        return cdvp::print_to_stdout("cdvp", kUsage);
+        return cdvp::print_help("cdvp", kUsage);
     }
     std::string command = argv[1];
     if (command == "--version") {
@@ -76,7 +81,7 @@ int sc_main(int argc, char** argv) {
             std::cerr << "cdvp help: unexpected argument '" << cdvp::excerpt(argv[3]) << "' (see cdvp --help)\n";
             return 2;
         }
-        if (argc == 2) return cdvp::print_to_stdout("cdvp", kUsage);
+        if (argc == 2) return cdvp::print_help("cdvp", kUsage);
         command = argv[2];
         help_argv[0] = argv[2];
         command_argc = 2;

@@ -7,6 +7,7 @@
 #include <boost/program_options.hpp>
 
 #include "models/common/user_text.h"
+#include "sw/cli/help_text.h"
 #include "sw/cli/exit_status.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/run_options.h"
@@ -84,7 +85,7 @@ int merge_command(int argc, char** argv) {
     return exit_status_of("cdvp merge", [&] {
         try {
             const std::optional<MergeSpec> options = parse_merge_options(argc, argv);
-            return options ? run_merge_command(*options) : print_to_stdout("cdvp merge", kHelp);
+            return options ? run_merge_command(*options) : print_help("cdvp merge", kHelp);
         } catch (po::error& e) {
             throw InputError(option_error_text(e, "cdvp merge"));
         }

@@ -1,3 +1,4 @@
+#include "sw/cli/help_text.h"
 #include "sw/cli/rtl_variants_command.h"
 
 #include <iomanip>
@@ -69,7 +70,7 @@ int rtl_variants_command(int argc, char** argv) {
         return kExitBadInput;
     }
     const std::string mode = argc == 2 ? argv[1] : "";
-    if (mode == "--help" || mode == "-h") return print_to_stdout("cdvp rtl-variants", kHelp);
+    if (mode == "--help" || mode == "-h") return print_help("cdvp rtl-variants", kHelp);
     if (mode == "--json") return print_to_stdout("cdvp rtl-variants", rtl_variants_json().dump(2) + "\n");
     if (!mode.empty()) {
         std::cerr << "cdvp rtl-variants: unknown option '" << excerpt(mode) << "'; expected --json\n";

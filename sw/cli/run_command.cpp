@@ -1,3 +1,4 @@
+#include "sw/cli/help_text.h"
 #include "sw/cli/run_command.h"
 
 #include <cstring>
@@ -65,7 +66,7 @@ int run_command(int argc, char** argv) {
     // After "--" every argument is positional, so a "--help" there is a stray word.
     for (int k = 1; k < argc && std::strcmp(argv[k], "--") != 0; ++k) {
         if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0) {
-            return print_to_stdout("cdvp run", run_options_help() + '\n');
+            return print_help("cdvp run", run_options_help() + '\n');
         }
     }
     return exit_status_of("cdvp run", [&] {

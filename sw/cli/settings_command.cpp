@@ -1,3 +1,4 @@
+#include "sw/cli/help_text.h"
 #include "sw/cli/exit_status.h"
 #include "sw/cli/settings_command.h"
 
@@ -167,7 +168,7 @@ int settings_command(int argc, char** argv) {
         return kExitBadInput;
     }
     const std::string mode = argc == 2 ? argv[1] : "";
-    if (mode == "--help" || mode == "-h") return print_to_stdout("cdvp settings", kHelp);
+    if (mode == "--help" || mode == "-h") return print_help("cdvp settings", kHelp);
     if (mode == "--json") return print_to_stdout("cdvp settings", settings_json().dump(2) + "\n");
     if (mode == "--markdown") return print_to_stdout("cdvp settings", settings_markdown());
     if (!mode.empty()) {

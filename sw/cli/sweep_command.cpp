@@ -1,3 +1,4 @@
+#include "sw/cli/help_text.h"
 #include "sw/cli/sweep_command.h"
 
 #include <sys/mman.h>
@@ -90,7 +91,7 @@ int run_sweep_command(SweepSpec spec) {
 int sweep_command(int argc, char** argv) {
     const int status = exit_status_of("cdvp sweep", [&] {
         const std::optional<SweepSpec> options = parse_sweep_options(argc, argv);
-        return options ? run_sweep_command(*options) : print_to_stdout("cdvp sweep", sweep_help());
+        return options ? run_sweep_command(*options) : print_help("cdvp sweep", sweep_help());
     });
     if (const int signal_number = sweep_stop_signal(); signal_number != 0) {
         // Every temporary is gone (the points removed theirs); end as the
