@@ -8,9 +8,7 @@ PlatformConfig platform_config(const SettingValues& values) {
     PlatformConfig platform;
     platform.board = settings.board;
     platform.bus = values.bus();
-    platform.driver = settings.driver;
-    platform.driver.transfer = settings.run.transfer;
-    platform.driver.wait = settings.run.wait;
+    platform.driver = settings.driver;  // run.transfer and run.wait bind its fields directly
     platform.fidelity = engine_of(settings.run.fidelity, settings.run.lockstep);
     platform.quantum_ns = settings.run.quantum_ns;
     return platform;

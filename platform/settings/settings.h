@@ -48,8 +48,6 @@ struct SceneSettings {
 struct RunSettings {
     // run.pin_cpu as a CPU number; nothing for "none".
     std::optional<uint32_t> pinned_cpu() const;
-    Transfer transfer = Transfer::kDma;
-    WaitMode wait = WaitMode::kIrq;
     ModelLevel fidelity = ModelLevel::kFast;
     double quantum_ns = 0.0;
     double max_error_percent = 1.0;  // run.fidelity auto's bound

@@ -1,5 +1,7 @@
 #include "sw/run/machine_info.h"
 
+#include <ctime>
+
 #include <sched.h>
 #include <sys/utsname.h>
 #include <unistd.h>
@@ -62,6 +64,15 @@ std::array<double, 3> load_average() {
     read_at = now;
     read = true;
     return loads;
+}
+
+std::string utc_now() {
+    const std::time_t now = std::time(nullptr);
+    std::tm parts{};
+    gmtime_r(&now, &parts);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
+    return text;
 }
 
 }  // namespace cdvp

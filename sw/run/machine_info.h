@@ -21,4 +21,7 @@ MachineInfo read_machine_info();
 // The 1, 5 and 15-minute load averages (zeros when unknown).
 std::array<double, 3> load_average();
 
+// Now, as a timing or a calibration records when it was made: "2026-12-06T08:19:09Z".
+std::string utc_now();
+
 }  // namespace cdvp

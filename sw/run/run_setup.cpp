@@ -110,8 +110,8 @@ RunDescription describe_run(BoardSetup& setup, uint32_t capacity, const RunBudge
     run.host_timing = setup.host;
     run.load_average_start = load_average();
     run.settings = &setup.values;
-    run.transfer = settings.run.transfer;
-    run.wait = settings.run.wait;
+    run.transfer = settings.driver.transfer;
+    run.wait = settings.driver.wait;
     run.quantum_ns = settings.run.quantum_ns;
     run.fidelity = setup.level;
     run.baseline_runs = settings.run.repeat;

@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 
 #include "models/common/user_text.h"
+#include "sw/run/machine_info.h"
 #include "sw/output/text_file.h"
 #include "sw/output/digest.h"
 #include "sw/run/report_summary.h"
@@ -43,15 +44,6 @@ std::vector<std::vector<double>> runs_of(const json& value, const std::string& p
         if (times.size() != runs.front().size()) refuse(path, field, "expected as many frames in every run");
     }
     return runs;
-}
-
-std::string utc_now() {
-    const std::time_t now = std::time(nullptr);
-    std::tm parts{};
-    gmtime_r(&now, &parts);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
-    return text;
 }
 
 }  // namespace

@@ -42,6 +42,9 @@ protected:
         // Runs look for a host profile in the user's config directory: each
         // test gets an empty one of its own, so none finds the developer's.
         ::setenv("XDG_CONFIG_HOME", (dir_ / ".config").c_str(), 1);
+#ifdef CDVP_TEST_RTL_CACHE
+        ::setenv("CDVP_RTL_CACHE", CDVP_TEST_RTL_CACHE, 0);  // a test's own CDVP_RTL_CACHE=... still wins
+#endif
     }
     void TearDown() override { fs::remove_all(dir_); }
 

@@ -90,6 +90,23 @@ TEST_F(Cli, ReadmeCarriesEveryCommandsHelpVerbatim) {
     }
 }
 
+// Every help fits a terminal of 80 columns and no line ends in spaces.
+TEST_F(Cli, EveryHelpFitsEightyColumnsWithoutTrailingSpaces) {
+    for (const char* command : {"", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record", "calibrate", "rtl-variants"}) {
+        const Result help = run(std::string(command) + " --help");
+        ASSERT_EQ(help.status, 0) << command;
+        std::istringstream lines(help.out);
+        std::string line;
+        int number = 0;
+        while (std::getline(lines, line)) {
+            ++number;
+            EXPECT_LE(line.size(), 80u) << "cdvp " << command << " --help, line " << number << ": " << line;
+            EXPECT_TRUE(line.empty() || line.back() != ' ') << "cdvp " << command << " --help, line " << number;
+        }
+        EXPECT_GT(number, 5) << command;
+    }
+}
+
 TEST_F(Cli, TopLevelCommandLine) {
     const Result none = run("");
     EXPECT_EQ(none.status, 2);

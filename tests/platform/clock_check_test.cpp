@@ -82,13 +82,13 @@ TEST(ClockCheck, AClockBeyondTheEstimateIsRefusedNamingItsOriginTheEstimateAndTh
     char fmax[32];
     std::snprintf(fmax, sizeof fmax, "%.1f MHz", fit.timing.fmax_mhz());
     const std::string error = refusal(preset("adm-xrc-ii", {"board.clock_mhz=500"}));
-    EXPECT_EQ(error.rfind("-c board.clock_mhz: 500.0 MHz is beyond the " + std::string(fmax) +
+    EXPECT_EQ(error.rfind("board.clock_mhz: 500.0 MHz is beyond the " + std::string(fmax) +
                               " the board reaches on the XC2V6000-4 (speed grade -4): its " +
                               fit.timing.limiting().piece + " takes ",
                           0),
               0u)
         << error;
-    EXPECT_NE(error.find("(synthesis timing for xc2v); --ignore-timing runs it anyway"), std::string::npos) << error;
+    EXPECT_NE(error.find("(synthesis timing for xc2v); run.ignore_timing=yes runs it anyway"), std::string::npos) << error;
     EXPECT_EQ(error.find('\n'), std::string::npos);
     // Without a speed grade in the name the family's slowest is assumed, and said.
     EXPECT_NE(refusal(preset("adm-xrc-ii", {"board.clock_mhz=500", "device.name=XC2V6000"}))
@@ -105,7 +105,7 @@ TEST(ClockCheck, IgnoreTimingWarnsInsteadAndAnUnknownGradeIsRefused) {
     EXPECT_EQ(warning->rfind("warning: board.clock_mhz: 500.0 MHz is beyond the ", 0), 0u) << *warning;
     EXPECT_NE(warning->find("; running it anyway (run.ignore_timing=yes)"), std::string::npos) << *warning;
     EXPECT_EQ(refusal(preset("adm-xrc-ii", {"device.name=XC2V6000-7"})),
-              "-c device.name: speed grade -7 of XC2V6000-7: the xc2v timing has -4, -5 or -6");
+              "device.name: speed grade -7 of XC2V6000-7: the xc2v timing has -4, -5 or -6");
 }
 
 }  // namespace

@@ -162,8 +162,8 @@ TEST(SettingsTable, ChoiceDefaultsAreTheTypedDefaults) {
     EXPECT_EQ(BoxMemory::kAuto, defaults.memory.memory);
     EXPECT_EQ(DeviceFamily::kNone, defaults.device.family);
     EXPECT_EQ(BusType::kIdeal, defaults.bus_type);
-    EXPECT_EQ(Transfer::kDma, defaults.run.transfer);
-    EXPECT_EQ(WaitMode::kIrq, defaults.run.wait);
+    EXPECT_EQ(Transfer::kDma, defaults.driver.transfer);
+    EXPECT_EQ(WaitMode::kIrq, defaults.driver.wait);
     EXPECT_EQ(ModelLevel::kFast, defaults.run.fidelity);
     EXPECT_FALSE(defaults.run.ignore_capacity);
     EXPECT_EQ(BusModel::kFormula, defaults.bus_model);
@@ -230,6 +230,9 @@ TEST(PlatformConfig, FoldsEverySettingThePlatformTakes) {
     const PlatformConfig folded = platform_config(values);
     EXPECT_FALSE(folded.driver.transfer == Transfer::kDma);
     EXPECT_FALSE(folded.driver.wait == WaitMode::kIrq);
+    // One field each: the table binds run.transfer and run.wait to the driver's own.
+    EXPECT_TRUE(values.settings().driver.transfer == Transfer::kPio);
+    EXPECT_TRUE(values.settings().driver.wait == WaitMode::kPoll);
     EXPECT_EQ(Fidelity::kCycle, folded.fidelity);
     EXPECT_EQ(250.0, folded.quantum_ns);
     EXPECT_EQ(4u, folded.board.m);
@@ -315,7 +318,7 @@ TEST_F(ConfigFile, TomlAndJsonGiveTheSameSettings) {
         EXPECT_EQ(s.get(from_json.settings()), s.get(from_toml.settings())) << s.name;
     }
     EXPECT_EQ(4u, from_toml.settings().pcie.lanes);
-    EXPECT_EQ(WaitMode::kPoll, from_toml.settings().run.wait);
+    EXPECT_EQ(WaitMode::kPoll, from_toml.settings().driver.wait);
     const Setting& m = *find_setting("board.m");
     EXPECT_EQ("config " + dir_ + "/c.toml:2", from_toml.origin_words(m));
 }
