@@ -1,25 +1,45 @@
 #!/bin/bash
-# A cdvp sweep spread over a Slurm job array: task K of N runs shard K/N into
-# its own directory. Submit, then merge once every task has finished:
+# A cdvp sweep spread over a Slurm job array, then merged (docs/sweep.md).
 #
-#   jobid=$(sbatch --parsable docs/sweep-slurm.sh)
-#   sbatch --dependency=afterok:$jobid --wrap "cdvp merge --out results/all results/shard-*"
+#   docs/sweep-slurm.sh [sbatch options...]      e.g. --partition=P --account=A
 #
-# Each shard is resumable: resubmitting a failed task (sbatch --array=K ...)
-# runs only the points it had not finished.
+# Run where you submit jobs, it makes the results directory (Slurm does not
+# make a log's directory), submits itself as a job array whose task K of N
+# sweeps shard K/N into RESULTS/shard-K, and a merge into RESULTS/all that
+# starts once every task has ended well; it prints both job ids. The sbatch
+# options given (partition, account, time, cpus per task, --wait) go to both.
+# Set in the environment (exported to the tasks):
+#   CDVP     the cdvp binary              (default: cdvp on PATH)
+#   RESULTS  shards, logs and the merge   (default: results)
+#   SHARDS   array tasks, N               (default: 8)
+#   GRID     the axes and run options     (default: the grid below)
+# A task that was killed or failed: submit it again alone with the same
+# environment, `docs/sweep-slurm.sh --array=K`: it runs only the points its
+# shard has not finished, and the merge after it takes every shard again.
 #SBATCH --job-name=cdvp-sweep
-#SBATCH --array=1-8
 #SBATCH --cpus-per-task=2
 #SBATCH --time=01:00:00
-#SBATCH --output=results/slurm-%A_%a.log
 set -euo pipefail
 
 CDVP=${CDVP:-cdvp}
-SHARDS=${SLURM_ARRAY_TASK_COUNT:-8}
-K=${SLURM_ARRAY_TASK_ID:?run this as a Slurm job array (sbatch docs/sweep-slurm.sh)}
+RESULTS=${RESULTS:-results}
+SHARDS=${SHARDS:-8}
+GRID=${GRID:---board adm-xrc-ii,pcie-gen3-x8 --set m=1,2,4,8,16,24 --set objects=50:2000:x2 --frames 30 --baseline sap,soa}
+export CDVP RESULTS SHARDS GRID
 
-# The same grid in every task; only --shard and --out differ.
-"$CDVP" sweep --board adm-xrc-ii,pcie-gen3-x8 --set m=1,2,4,8,16,24 --set objects=50:2000:x2 \
-    --frames 30 --baseline sap,soa \
-    --jobs "${SLURM_CPUS_PER_TASK:-1}" --no-plots -q \
-    --shard "$K/$SHARDS" --out "results/shard-$K"
+if [ -z "${SLURM_ARRAY_TASK_ID:-}" ]; then
+  # Submitting: the array, then the merge that waits for all of it.
+  mkdir -p "$RESULTS"
+  array=$(sbatch --parsable --array="1-$SHARDS" --output="$RESULTS/slurm-%A_%a.log" "$@" "$0")
+  array=${array%%;*}
+  merge=$(sbatch --parsable --job-name=cdvp-merge --dependency="afterok:$array" \
+          --output="$RESULTS/merge-%j.log" "$@" --wrap "\"$CDVP\" merge --out \"$RESULTS/all\" \"$RESULTS\"/shard-*")
+  echo "sweep: job array $array ($SHARDS tasks, logs in $RESULTS/); merge: job ${merge%%;*} into $RESULTS/all"
+  exit 0
+fi
+
+# A task: its shard of the same grid (only --shard and --out differ). The
+# summary line in its log says how many points it ran now.
+read -r -a grid <<< "$GRID"
+exec "$CDVP" sweep "${grid[@]}" --jobs "${SLURM_CPUS_PER_TASK:-1}" --no-plots \
+    --shard "$SLURM_ARRAY_TASK_ID/$SHARDS" --out "$RESULTS/shard-$SLURM_ARRAY_TASK_ID"
