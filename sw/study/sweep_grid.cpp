@@ -147,9 +147,7 @@ Grid::Grid(std::vector<Axis> axes) : axes_(std::move(axes)) {
         if (size_ > kMaxPoints / axis.values.size()) {
             long double points = 1;
             for (const Axis& each : axes_) points *= static_cast<long double>(each.values.size());
-            char count[64];
-            std::snprintf(count, sizeof count, points < 1e15L ? "%.0Lf" : "%.3Lg", points);
-            throw InputError("the grid has " + std::string(count) + " points, more than " + std::to_string(kMaxPoints));
+            throw InputError("the grid has " + count_text(points) + " points, more than " + std::to_string(kMaxPoints));
         }
         size_ *= axis.values.size();
         fragments_.push_back(axis_fragments(axis.values));

@@ -38,6 +38,9 @@ constexpr std::size_t kMaxAxisValues = 100000;
 std::vector<std::string> expand_list(const std::string& list, const std::string& label, bool ranges = true);
 // "A:B:xF" or "A:B:+S" alone (sw/study/sweep_range.cpp); the same errors.
 std::vector<std::string> expand_range(const std::string& list, const std::string& label);
+// How a refusal says a count of values or points: in full while a long
+// double holds it exactly (below 1e19), else to 3 significant digits.
+std::string count_text(long double count);
 
 // "NAME=LIST" of --set into an axis; the same errors, and a missing '=' or a
 // name that is not a flag or setting name ([a-z0-9_.-], starting with a

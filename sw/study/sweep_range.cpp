@@ -59,13 +59,6 @@ std::string format_real(double value) {
     return text;
 }
 
-// A count in full while a long double holds it exactly, else to 3 digits.
-std::string count_text(long double count) {
-    char text[64];
-    std::snprintf(text, sizeof text, count < 1e19L ? "%.0Lf" : "%.3Lg", count);
-    return text;
-}
-
 struct Range {
     std::string list, label;
     std::string from_text, to_text, step_text;
@@ -117,6 +110,12 @@ struct Range {
 };
 
 }  // namespace
+
+std::string count_text(long double count) {
+    char text[64];
+    std::snprintf(text, sizeof text, count < 1e19L ? "%.0Lf" : "%.3Lg", count);
+    return text;
+}
 
 std::vector<std::string> expand_range(const std::string& list, const std::string& label) {
     const std::size_t first_colon = list.find(':');

@@ -226,6 +226,23 @@ TEST(SweepGrid, RefusesRepeatedAxesAndNoAxes) {
     EXPECT_THROW(Grid(std::vector<Axis>{}), InputError);
 }
 
+TEST(SweepGrid, AGridPastAMillionPointsIsRefusedWithItsCount) {
+    const auto axis = [](const char* name, const std::string& list) { return Axis{name, expand_list(list, name)}; };
+    try {
+        Grid(std::vector<Axis>{axis("seed", "1:100000:+1"), axis("m", "1:11:+1")});
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "the grid has 1100000 points, more than 1000000");
+    }
+    try {
+        Grid(std::vector<Axis>{axis("seed", "1:100000:+1"), axis("objects", "1:100000:+1"), axis("m", "1:100000:+1")});
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "the grid has 1000000000000000 points, more than 1000000") << "no overflow";
+    }
+    EXPECT_EQ(Grid(std::vector<Axis>{axis("seed", "1:100000:+1"), axis("m", "1:10:+1")}).size(), 1000000u);
+}
+
 // A report as cdvp run writes it: four frames, the first a warm-up, and the
 // summary over the other three in the report's own schema.
 nlohmann::json report(double board_ns, double sap_ns) {
