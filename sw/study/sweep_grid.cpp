@@ -1,8 +1,5 @@
 #include "sw/study/sweep_grid.h"
 
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <set>
