@@ -6,6 +6,7 @@
 // level ran; a killed sweep of several jobs, resumed, ends in point order.
 #include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <string>
@@ -93,6 +94,25 @@ TEST_F(Edges, AnInputThatCannotBeOpenedSaysWhyWithItsPath) {
     fs::create_symlink("host-profile.json", dir_ / ".config" / "cdvp" / "host-profile.json");
     expect_refusal(run(kRun + "--board adm-xrc-ii"), "cdvp run: the default host profile: ");
     EXPECT_NE(run(kRun + "--board adm-xrc-ii").err.find(loop), std::string::npos);
+}
+
+// A file it may not read says EACCES, wherever it is named. Root reads
+// anything: as root the commands run as nobody (setpriv), so that the
+// permission is checked as a user's would be.
+TEST_F(Edges, AnInputItMayNotReadSaysPermissionDenied) {
+    const std::string as_user = ::geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups" : "";
+    fs::copy_file(preset("adm-xrc-ii"), dir_ / "board.json");
+    write("c.toml", "[board]\nm = 4\n");
+    fs::copy_file(trace("small.csv"), dir_ / "t.csv");
+    for (const char* name : {"board.json", "c.toml", "t.csv"}) fs::permissions(dir_ / name, fs::perms::none);
+    const std::string denied = "cannot open: Permission denied (EACCES)";
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {kRun + "--board board.json", "cdvp run: board.json: " + denied},
+        {kRun + "--config c.toml", "cdvp run: c.toml: " + denied},
+        {"run --trace t.csv", "cdvp run: t.csv: " + denied},
+        {"settings --config c.toml", "cdvp settings: c.toml: " + denied},
+    };
+    for (const auto& [args, message] : cases) expect_refusal(run(args, as_user), message, args);
 }
 
 TEST_F(Edges, AnEmptyPathIsRefusedAsEmpty) {
