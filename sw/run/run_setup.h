@@ -49,9 +49,10 @@ BoardSetup board_setup(const SettingLayers& layers, const std::optional<std::str
 // Every check cdvp run makes of its settings alone, whatever its frames and
 // outputs: board_setup's, the level's (model_level without waveforms: the
 // lockstep and the error bound against the fidelity; the analytic level's
-// quantum) and the host profile's (sets setup.host). cdvp run and cdvp
-// settings both come through here, so that settings accepts exactly what run
-// does of them (run.pin_cpu is tried when the run pins). Throws InputError.
+// quantum) and the host profile's (sets setup.host). cdvp run, cdvp bullet
+// and cdvp settings all come through here, so that each refuses the same
+// settings in the same words (run.pin_cpu is tried when a run pins). Throws
+// InputError.
 BoardSetup checked_board_setup(const SettingLayers& layers, const std::optional<std::string>& scene);
 
 // run.fidelity: fast unless waveforms are asked for, which need the clocked

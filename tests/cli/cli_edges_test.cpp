@@ -28,7 +28,8 @@ const std::string kRun = "run --scene spheres --objects 10 --frames 1 ";
 using Edges = Cli;
 
 // Each of these cdvp run refuses from its settings alone; cdvp settings,
-// which promises to check them as run does, must refuse each in the same words.
+// which promises to check them as run does, and cdvp bullet must refuse each
+// in the same words.
 TEST_F(Edges, SettingsRefusesWhatRunRefusesOfItsSettingsInTheSameWords) {
     write("c.toml", "[run]\nlockstep = \"yes\"\n");
     const std::vector<std::string> refused{
@@ -51,6 +52,10 @@ TEST_F(Edges, SettingsRefusesWhatRunRefusesOfItsSettingsInTheSameWords) {
         expect_refusal(by_run, "cdvp run: ", layers);
         expect_refusal(by_settings, "cdvp settings: ", layers);
         EXPECT_EQ(by_settings.err.substr(by_settings.err.find(": ")), by_run.err.substr(by_run.err.find(": "))) << layers;
+        // A run of Bullet's worlds comes through the same checks.
+        const Result by_bullet = run("bullet --scene stack --objects 5 --frames 1 " + layers);
+        expect_refusal(by_bullet, "cdvp bullet: ", layers);
+        EXPECT_EQ(by_bullet.err.substr(by_bullet.err.find(": ")), by_run.err.substr(by_run.err.find(": "))) << layers;
     }
     // And what run takes, settings takes.
     for (const char* layers : {"-c run.fidelity=analytic", "-c run.fidelity=auto -c run.max_error_percent=5",
