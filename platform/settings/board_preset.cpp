@@ -13,6 +13,7 @@
 
 #include "platform/settings/preset_json.h"
 #include "platform/settings/setting_values.h"
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
 
 namespace cdvp {
@@ -126,8 +127,9 @@ constexpr const char* kWhat = "a board preset";  // in refusals of the file as a
 
 std::string read_preset_text(const std::string& path, bool is_path, const std::string& name, const std::string& label) {
     if (const std::string* pinned = PinnedFiles::find(path)) return *pinned;
-    struct stat status {};
-    if (!is_path && stat(path.c_str(), &status) != 0) {
+    // Only a name with nothing behind it is unknown: a loop, a directory or a
+    // file it may not read is said as such, by read_small_file.
+    if (!is_path && input_presence(path).absent()) {
         std::string known;
         for (const std::string& n : board_preset_names()) known += (known.empty() ? "" : ", ") + n;
         const char* env = std::getenv("CDVP_BOARDS");

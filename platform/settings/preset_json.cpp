@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "models/common/input_path.h"
 #include "models/common/json_strings.h"
 #include "models/common/nesting_limit.h"
 
@@ -184,14 +185,14 @@ std::string read_small_file(const std::string& path, const std::string& what) {
     constexpr std::size_t kMaxBytes = 1 << 20;  // a hand-written file; anything bigger is not one
     // One descriptor for the check and the read (a sweep reads its preset at every point).
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0) throw InputError(path + ": cannot open: " + std::strerror(errno));
+    if (fd < 0) throw InputError(path + ": cannot open: " + errno_reason(errno));
     struct Closer {
         int fd;
         ~Closer() { close(fd); }
     } closer{fd};
     struct stat status {};
-    if (fstat(fd, &status) != 0) throw InputError(path + ": cannot open: " + std::strerror(errno));
-    if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot open: not a regular file");
+    if (fstat(fd, &status) != 0) throw InputError(path + ": cannot open: " + errno_reason(errno));
+    if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot open: " + errno_reason(S_ISDIR(status.st_mode) ? EISDIR : 0));
     if (static_cast<std::size_t>(status.st_size) > kMaxBytes) {
         throw InputError(path + ": larger than " + std::to_string(kMaxBytes) + " bytes; not " + what);
     }
@@ -206,7 +207,7 @@ std::string read_small_file(const std::string& path, const std::string& what) {
         }
         const ssize_t n = read(fd, &text[got], text.size() - got);
         if (n < 0 && errno == EINTR) continue;
-        if (n < 0) throw InputError(path + ": cannot read: " + std::strerror(errno));
+        if (n < 0) throw InputError(path + ": cannot read: " + errno_reason(errno));
         if (n == 0) break;
         got += static_cast<std::size_t>(n);
     }

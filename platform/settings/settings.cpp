@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "models/common/number_text.h"
@@ -20,12 +21,36 @@ std::string join(const std::vector<std::string>& words, const std::string& last)
     return text;
 }
 
+// The most a master can move on the bus, each way: PCI's width x clock, a
+// PCIe link's lanes x transfer rate after the line code. Background traffic
+// beyond it is no load the bus could carry (and the transaction level would
+// simulate every one of its bursts).
+double peak_bytes_per_s(const Settings& s, std::string& how) {
+    if (s.bus_type == BusType::kPci) {
+        how = std::to_string(s.pci.width_bits) + " bits at " + show_number(s.pci.clock_mhz) + " MHz";
+        return s.pci.width_bits / 8.0 * s.pci.clock_mhz * 1e6;
+    }
+    how = std::to_string(s.pcie.lanes) + " lanes at " + show_number(s.pcie.gigatransfers_per_s) + " GT/s after the line code";
+    return s.pcie.gigatransfers_per_s * 1e9 * s.pcie.lanes * s.pcie.encoding_efficiency / 8.0;
+}
+
 }  // namespace
 
 std::shared_ptr<const BusTiming> Settings::make_bus() const {
     if (bus_type != BusType::kIdeal && bus_model == BusModel::kFormula && bus_load.active()) {
         throw std::invalid_argument("bus.load_bytes_per_s: expected 0 with bus.model formula (it times an idle bus; "
                                     "give --bus-model transaction)");
+    }
+    if (bus_type != BusType::kIdeal) {
+        std::string how;
+        const double peak = peak_bytes_per_s(*this, how);
+        if (bus_load.bytes_per_s > peak) {
+            char times[32];
+            std::snprintf(times, sizeof times, "%.3g", bus_load.bytes_per_s / peak);
+            throw std::invalid_argument("bus.load_bytes_per_s: expected at most the bus's peak of " +
+                                        show_number(std::floor(peak)) + " B/s (" + how + "), got " +
+                                        show_number(bus_load.bytes_per_s) + ", " + times + " x it");
+        }
     }
     const bool detailed = bus_model == BusModel::kTransaction;
     switch (bus_type) {

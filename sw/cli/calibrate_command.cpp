@@ -221,6 +221,9 @@ std::string summary(const HostProfile& p, const std::string& out) {
 }
 
 int calibrate(const CalibrateOptions& o, const po::variables_map& vm) {
+    if (vm.count("out") != 0 && o.out.empty()) {
+        throw InputError("--out: expected a file path, got '' (leave --out out for the default place)");
+    }
     const std::string out = vm.count("out") ? o.out : default_host_profile_path();
     if (out.empty()) throw InputError("--out: no default location ($XDG_CONFIG_HOME and $HOME unset); give --out");
     if (vm.count("out") == 0) {

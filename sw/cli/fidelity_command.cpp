@@ -79,7 +79,8 @@ FidelityOptions parse_fidelity_options(int argc, char** argv) {
     }
     o.out_dir = line.values.count("out") ? line.values["out"].as<std::string>() : std::string();
     o.quiet = line.values["quiet"].as<bool>();
-    if (o.out_dir.empty()) throw InputError("--out DIR is required (see cdvp fidelity --help)");
+    if (line.values.count("out") == 0) throw InputError("--out DIR is required (see cdvp fidelity --help)");
+    if (o.out_dir.empty()) throw InputError("--out: expected a directory, got ''");
     struct stat status {};
     if (stat(o.out_dir.c_str(), &status) == 0 && !S_ISDIR(status.st_mode)) {
         throw InputError("--out: " + excerpt(o.out_dir) + ": expected a directory");

@@ -32,7 +32,9 @@ constexpr const char* kHelp =
     "\n"
     "With --board, --config or -c: the settings a run with those layers would use, each with its\n"
     "value and where it came from (the default, the preset file and key, the config file and line,\n"
-    "-c), checked as cdvp run checks them; --json prints an array of {name, value, origin}.\n";
+    "-c), checked by the code cdvp run checks its settings with (all but the checks against a run's\n"
+    "frames and outputs), so that what run refuses of them settings refuses in the same words; --json\n"
+    "prints an array of {name, value, origin}.\n";
 
 const char* type_name(SettingType type) {
     switch (type) {
@@ -139,9 +141,8 @@ int resolved_settings(int argc, char** argv) {
     } catch (po::error& e) {
         throw InputError(option_error_text(e, "cdvp settings", &options));
     }
-    std::string board_name;
-    const SettingValues values = layered_settings(setting_layers_of(layers, vm), "", board_name);
-    values.check_board();
+    // Exactly cdvp run's checks of its settings; the frames are not named here.
+    const SettingValues values = checked_board_setup(setting_layers_of(layers, vm), std::nullopt).values;
     nlohmann::json all = nlohmann::json::array();
     std::ostringstream text;
     for (const Setting* s : values.effective()) {

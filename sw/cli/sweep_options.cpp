@@ -1,12 +1,11 @@
 #include "sw/cli/sweep_options.h"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <set>
 
 #include <boost/program_options.hpp>
 
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
 #include "platform/settings/board_preset.h"
 #include "platform/settings/config_file.h"
@@ -90,10 +89,8 @@ bool is_axis_option(const std::string& key) {
     return key == "board" || key == "fidelity" || key == "scene" || key == "trace";
 }
 
-bool fs_exists(const std::string& path) {
-    struct stat status {};
-    return stat(path.c_str(), &status) == 0;
-}
+// Anything there, a file it cannot read included: the sweep refuses that with its reason.
+bool fs_exists(const std::string& path) { return !input_presence(path).absent(); }
 
 unsigned parse_jobs(const std::string& text) {
     if (text.empty() || text.size() > 2 || text.find_first_not_of("0123456789") != std::string::npos ||

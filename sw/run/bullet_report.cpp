@@ -1,6 +1,7 @@
 #include "sw/run/bullet_report.h"
 
 #include "sw/run/report_summary.h"
+#include "sw/timing/spread.h"
 
 #include <cstdio>
 #include <sstream>
@@ -54,21 +55,19 @@ void print_row(std::ostream& out, const std::string& label, uint32_t proxies, st
 
 }  // namespace
 
-double BulletFrame::share() const {
-    return software_step_host_ns > 0 ? software_broadphase_host_ns / software_step_host_ns : 0;
-}
+double BulletFrame::share() const { return finite_ratio(software_broadphase_host_ns, software_step_host_ns); }
 
 double BulletFrame::amdahl_bound() const {
-    return software_broadphase_host_ns < software_step_host_ns
-               ? software_step_host_ns / (software_step_host_ns - software_broadphase_host_ns)
-               : 0;
+    return finite_ratio(software_step_host_ns, software_step_host_ns - software_broadphase_host_ns);
 }
 
-double BulletFrame::broadphase_speedup() const { return software_broadphase_host_ns / (board_ns + bookkeeping_host_ns); }
+double BulletFrame::broadphase_speedup() const {
+    return finite_ratio(software_broadphase_host_ns, board_ns + bookkeeping_host_ns);
+}
 
 double BulletFrame::step_speedup() const {
-    return software_step_host_ns /
-           (software_step_host_ns - software_broadphase_host_ns + board_ns + bookkeeping_host_ns);
+    return finite_ratio(software_step_host_ns,
+                        software_step_host_ns - software_broadphase_host_ns + board_ns + bookkeeping_host_ns);
 }
 
 BulletTimes::BulletTimes(uint64_t warmup_frames)

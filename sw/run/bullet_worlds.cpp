@@ -247,7 +247,8 @@ RunSetup bullet_setup(const RunSpec& spec, const BulletWorlds& worlds) {
         throw InputError(names.input("scene") + ": " + *refused);
     }
     RunSetup setup;
-    static_cast<BoardSetup&>(setup) = board_setup(spec.settings, worlds.name);
+    // The settings' own checks, as cdvp run and cdvp settings make them.
+    static_cast<BoardSetup&>(setup) = checked_board_setup(spec.settings, worlds.name);
     setup.level = model_level(setup.values, spec.outputs.waves.has_value());
     if (setup.level == ModelLevel::kAnalytic) {
         throw InputError(setup.values.where(setting("run.fidelity")) +
@@ -261,8 +262,7 @@ RunSetup bullet_setup(const RunSpec& spec, const BulletWorlds& worlds) {
     setup.platform.fidelity = engine_of(setup.level, setup.values.settings().run.lockstep);
     setup.trace_window = vcd_window(spec.outputs.waves ? spec.outputs.waves->frames : std::nullopt, names);
     // Bullet's times are whole worlds, not the reference workload's
-    // baselines: they all take the overall factor.
-    setup.host = resolve_host_timing(setup.values);
+    // baselines: they all take setup.host's overall factor.
     if (worlds.software != "simple" && worlds.software != "sap" && worlds.software != "dbvt") {
         throw InputError(names.input("software") + ": expected simple, sap or dbvt, got '" + excerpt(worlds.software) + "'");
     }

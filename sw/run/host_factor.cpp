@@ -1,9 +1,10 @@
 #include "sw/run/host_factor.h"
 
-#include <sys/stat.h>
-
+#include <cmath>
 #include <cstdio>
 
+#include "models/common/input_path.h"
+#include "models/common/number_text.h"
 #include "models/common/user_text.h"
 #include "sw/run/reference_workload.h"
 #include "sw/timing/spread.h"
@@ -18,9 +19,34 @@ std::string factor_text(double factor) {
     return text;
 }
 
-bool file_exists(const std::string& path) {
-    struct stat status {};
-    return !path.empty() && stat(path.c_str(), &status) == 0;
+// Whether a profile is there to read; one that cannot be looked at (a link
+// loop, a directory it may not search) is refused, not passed over.
+bool file_exists(const std::string& path, const std::string& label) {
+    if (path.empty()) return false;
+    const InputPresence presence = input_presence(path);
+    if (presence.kind == InputPresence::Kind::kUnreadable) {
+        throw InputError(label + ": " + excerpt(path) + ": cannot open: " + presence.reason);
+    }
+    return presence.present();
+}
+
+// A factor must lie where --host-factor may: a profile (or a preset) whose
+// times give one outside it describes no machine, and would print inf or 0
+// for every speedup. Refused naming the profile's field, its time, and the
+// times that would be in range.
+void check_factors(const std::map<std::string, double>& factors, const HostConfig& host, const HostProfile& profile,
+                   const std::string& path) {
+    const Setting& bound = *find_setting("host.speed_factor");
+    for (const auto& [name, factor] : factors) {
+        if (name == "overall" || (std::isfinite(factor) && factor >= bound.min && factor <= bound.max)) continue;
+        const double modelled = host_reference_ns(host, name);
+        throw InputError(path + ": reference." + name + ".reference_native_ns: " +
+                         show_number(profile.reference.at(name).reference_native_ns) + " ns gives a host factor of " +
+                         (std::isfinite(factor) ? factor_text(factor) : std::string("over 1e308")) + " against " + printable(host.name) + "'s " + show_number(modelled) +
+                         " ns (host.reference_" + name + "_host_ns); expected a time from " +
+                         show_number(modelled / bound.max) + " to " + show_number(modelled / bound.min) +
+                         " ns, a factor of " + describe_range(bound.min, bound.max) + " as host.speed_factor allows");
+    }
 }
 
 }  // namespace
@@ -91,14 +117,14 @@ HostTiming resolve_host_timing(const HostConfig& host, bool factor_given, const 
         return timing;
     }
     // A profile named on the command line must be there; the default one may not be.
-    if (!host.profile.empty() && !file_exists(host.profile)) {
+    if (!host.profile.empty() && !file_exists(host.profile, profile_label)) {
         throw InputError(profile_label + ": " + excerpt(host.profile) + ": no such file (cdvp calibrate --out " +
                          excerpt(host.profile) + " writes one)");
     }
     // A profile named is read whatever the host states, so a damaged one is never passed over in silence.
     const bool named = !host.profile.empty();
     if (!stated && !named) return timing;
-    if (!named && !file_exists(timing.profile_path)) {
+    if (!named && !file_exists(timing.profile_path, "the default host profile")) {
         timing.basis = HostTiming::Basis::kUncalibrated;
         return timing;
     }
@@ -106,6 +132,7 @@ HostTiming resolve_host_timing(const HostConfig& host, bool factor_given, const 
     if (!stated) return timing;
     timing.basis = HostTiming::Basis::kCalibrated;
     timing.factors = derive_factors(host, profile);
+    check_factors(timing.factors, host, profile, timing.profile_path);
     timing.overall = timing.factors.at("overall");
     timing.factors.erase("overall");
     timing.profile_sha256 = profile.sha256;

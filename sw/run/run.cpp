@@ -42,17 +42,13 @@ void check_analytic_run(const RunSetup& setup, const RunSpec& spec) {
         throw InputError(names.input("inject") + ": " + level + " has no engine to inject faults into; use " +
                          names.setting_to(fidelity, "fast") + " or cycle");
     }
-    const Setting& quantum = setting("run.quantum_ns");
-    if (values.settings().run.quantum_ns != 0) {
-        throw InputError(values.where(quantum) + ": " + level +
-                         " times a host that synchronises at every access; expected 0 (docs/analytic.md)");
-    }
 }
 
 RunSetup make_setup(const RunSpec& spec) {
     const SettingNames& names = *spec.settings.names;
     RunSetup setup;
-    static_cast<BoardSetup&>(setup) = board_setup(spec.settings, scene_name(spec));
+    // The settings' own checks first, as cdvp settings makes them.
+    static_cast<BoardSetup&>(setup) = checked_board_setup(spec.settings, scene_name(spec));
     setup.platform.faults = fault_specs(spec.faults, setup.platform.driver, names);
     setup.level = model_level(setup.values, spec.outputs.waves.has_value());
     setup.platform.fidelity = engine_of(setup.level, setup.values.settings().run.lockstep);
@@ -66,7 +62,6 @@ RunSetup make_setup(const RunSpec& spec) {
                          " (cdvp record writes a Bullet scene's frames to one)");
     }
     setup.trace_window = vcd_window(spec.outputs.waves ? spec.outputs.waves->frames : std::nullopt, names);
-    setup.host = resolve_host_timing(setup.values);
     setup.baselines = BaselineTimer(spec.baselines, setup.host, setup.values.settings().run.retime_tries,
                                     names.input("baseline"));
     const Setting& repeat = setting("run.repeat");

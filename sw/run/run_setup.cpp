@@ -54,15 +54,30 @@ SettingValues layered_settings(const SettingLayers& layers, const std::string& s
     return values;
 }
 
-BoardSetup board_setup(const SettingLayers& layers, const std::string& scene) {
+BoardSetup board_setup(const SettingLayers& layers, const std::optional<std::string>& scene) {
     BoardSetup setup;
-    setup.values = layered_settings(layers, scene, setup.board);
-    if (const Setting& moving = *find_setting("scene.moving_fraction"); setup.values.settings().scene.moving_fraction != 1.0 && scene != "spheres") {
+    setup.values = layered_settings(layers, scene.value_or(""), setup.board);
+    const Setting& moving = *find_setting("scene.moving_fraction");
+    if (scene && setup.values.settings().scene.moving_fraction != 1.0 && *scene != "spheres") {
         const std::string scene_input = setup.values.names().input("scene");
         throw InputError(setup.values.where(moving) + ": only " + scene_input + " spheres holds some of its spheres still; " +
-                         (scene.empty() ? "a trace's boxes move as recorded" : scene_input + " " + scene + " is Bullet's"));
+                         (scene->empty() ? "a trace's boxes move as recorded" : scene_input + " " + *scene + " is Bullet's"));
     }
     setup.platform = platform_config(setup.values);
+    return setup;
+}
+
+BoardSetup checked_board_setup(const SettingLayers& layers, const std::optional<std::string>& scene) {
+    BoardSetup setup = board_setup(layers, scene);
+    const SettingValues& values = setup.values;
+    setup.level = model_level(values, false);
+    const Setting& quantum = *find_setting("run.quantum_ns");
+    if ((setup.level == ModelLevel::kAnalytic || setup.level == ModelLevel::kAuto) && values.settings().run.quantum_ns != 0) {
+        const Setting& fidelity = *find_setting("run.fidelity");
+        throw InputError(values.where(quantum) + ": the " + name_of(setup.level) + " level (" + values.where(fidelity) +
+                         ") times a host that synchronises at every access; expected 0 (docs/analytic.md)");
+    }
+    setup.host = resolve_host_timing(values);
     return setup;
 }
 

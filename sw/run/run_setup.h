@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,8 +41,19 @@ SettingValues layered_settings(const SettingLayers& layers, const std::string& s
 // The layers and the platform they give (platform_config: the board checked,
 // bus, driver, transfer and wait, engine, host quantum). The level as
 // waveforms need it (model_level) and the host timing (resolve_host_timing)
-// are the caller's to set, after whatever checks it makes first.
-BoardSetup board_setup(const SettingLayers& layers, const std::string& scene);
+// are the caller's to set, after whatever checks it makes first. scene:
+// nothing when the frames are not named (cdvp settings), which leaves out
+// the checks of settings against the frames.
+BoardSetup board_setup(const SettingLayers& layers, const std::optional<std::string>& scene);
+
+// Every check cdvp run makes of its settings alone, whatever its frames and
+// outputs: board_setup's, the level's (model_level without waveforms: the
+// lockstep and the error bound against the fidelity; the analytic level's
+// quantum) and the host profile's (sets setup.host). cdvp run, cdvp bullet
+// and cdvp settings all come through here, so that each refuses the same
+// settings in the same words (run.pin_cpu is tried when a run pins). Throws
+// InputError.
+BoardSetup checked_board_setup(const SettingLayers& layers, const std::optional<std::string>& scene);
 
 // run.fidelity: fast unless waveforms are asked for, which need the clocked
 // engine; an explicit other level with waveforms is refused naming where it came from.

@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
 #include "sw/scene/scene.h"
 
@@ -50,13 +51,12 @@ std::ifstream open_input(const std::string& path) {
     // reported as an empty file; name the real problem.
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
-        throw InputError(path + ": is a directory; expected a file");
+        throw InputError(path + ": cannot open: " + errno_reason(EISDIR) + "; expected a file");
     }
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        throw InputError(path + ": cannot open: " +
-                         std::strerror(errno != 0 ? errno : ENOENT));
+        throw InputError(path + ": cannot open: " + errno_reason(errno != 0 ? errno : ENOENT));
     }
     return in;
 }

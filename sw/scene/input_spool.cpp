@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
 
 namespace cdvp {
@@ -24,13 +25,13 @@ constexpr std::size_t kChunkBytes = 1 << 16;
 int open_for_reading(const std::string& path) {
     struct stat status {};
     if (stat(path.c_str(), &status) == 0 && S_ISDIR(status.st_mode)) {
-        throw InputError(path + ": is a directory; expected a file");
+        throw InputError(path + ": cannot open: " + errno_reason(EISDIR) + "; expected a file");
     }
     int fd;
     do {
         fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
     } while (fd < 0 && errno == EINTR);  // a FIFO waits for its writer here
-    if (fd < 0) throw InputError(path + ": cannot open: " + std::strerror(errno));
+    if (fd < 0) throw InputError(path + ": cannot open: " + errno_reason(errno));
     return fd;
 }
 

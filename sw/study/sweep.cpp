@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "models/common/input_path.h"
 #include "models/common/pinned_files.h"
 #include "models/common/user_text.h"
 #include "sw/study/child_runs.h"
@@ -52,7 +53,7 @@ public:
             if (regular && input.option != "--trace" && before.st_size <= kMaxPinnedBytes) {
                 // Read once: the digest covers exactly the text the points in this process read.
                 std::optional<std::string> text = read_whole_file(path);
-                if (!text) throw InputError(input.option + ": " + excerpt(input.value) + ": cannot read: " + std::strerror(errno));
+                if (!text) throw InputError(input.option + ": " + excerpt(input.value) + ": cannot read: " + errno_reason(errno));
                 digests_.push_back(digest_text(input.option, input.value, path, *text));
                 if (facts) digests_.back().facts = facts(input, *text);
                 pins_.pin(path, std::move(*text));

@@ -1,8 +1,5 @@
 #include "sw/study/sweep_grid.h"
 
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <set>
@@ -16,56 +13,6 @@ namespace {
 
 [[noreturn]] void refuse(const std::string& label, const std::string& list, const std::string& why) {
     throw InputError(label + ": '" + excerpt(list) + "': " + why);
-}
-
-// A finite decimal number, whole string; nothing else (no hex, no inf).
-bool parse_number(const std::string& text, double& value) {
-    if (text.empty() || text.find_first_not_of("0123456789.eE+-") != std::string::npos) return false;
-    char* end = nullptr;
-    value = std::strtod(text.c_str(), &end);
-    return end == text.c_str() + text.size() && std::isfinite(value);
-}
-
-std::string format_number(double value) {
-    char text[64];
-    if (std::fabs(value) < 9.0e15 && value == std::floor(value)) {
-        std::snprintf(text, sizeof text, "%.0f", value);
-    } else {
-        std::snprintf(text, sizeof text, "%.12g", value);
-    }
-    return text;
-}
-
-std::vector<std::string> expand_range(const std::string& list, const std::string& label) {
-    const std::size_t first_colon = list.find(':');
-    const std::size_t second_colon = list.find(':', first_colon + 1);
-    if (second_colon == std::string::npos || list.find(':', second_colon + 1) != std::string::npos) {
-        refuse(label, list, "expected a,b,c or A:B:xF or A:B:+S");
-    }
-    const std::string from_text = list.substr(0, first_colon);
-    const std::string to_text = list.substr(first_colon + 1, second_colon - first_colon - 1);
-    const std::string step_text = list.substr(second_colon + 1);
-    double from = 0, to = 0, step = 0;
-    if (!parse_number(from_text, from) || !parse_number(to_text, to)) {
-        refuse(label, list, "expected numbers A and B in A:B:xF or A:B:+S");
-    }
-    const bool geometric = !step_text.empty() && step_text[0] == 'x';
-    if (step_text.empty() || (!geometric && step_text[0] != '+') || !parse_number(step_text.substr(1), step)) {
-        refuse(label, list, "expected the step as xF (a factor) or +S (an increment) after A:B:");
-    }
-    if (from > to) refuse(label, list, "A is above B");
-    if (geometric && (step <= 1 || from <= 0)) refuse(label, list, "a geometric range needs A > 0 and a factor above 1");
-    if (!geometric && step <= 0) refuse(label, list, "an arithmetic range needs an increment above 0");
-    // B is included when the sequence lands on it up to rounding.
-    const double limit = to + std::fabs(to) * 1e-9;
-    std::vector<std::string> values;
-    for (std::size_t k = 0;; ++k) {
-        const double value = geometric ? from * std::pow(step, static_cast<double>(k)) : from + step * static_cast<double>(k);
-        if (value > limit) break;
-        if (values.size() == kMaxAxisValues) refuse(label, list, "more than " + std::to_string(kMaxAxisValues) + " values");
-        values.push_back(format_number(value));
-    }
-    return values;
 }
 
 // Text safe in a file name: anything but letters, digits, '.', '+', '-' and
@@ -195,7 +142,9 @@ Grid::Grid(std::vector<Axis> axes) : axes_(std::move(axes)) {
         }
         if (axis.values.empty()) throw InputError(excerpt(axis.name) + ": an axis without values");
         if (size_ > kMaxPoints / axis.values.size()) {
-            throw InputError("the grid has more than " + std::to_string(kMaxPoints) + " points");
+            long double points = 1;
+            for (const Axis& each : axes_) points *= static_cast<long double>(each.values.size());
+            throw InputError("the grid has " + count_text(points) + " points, more than " + std::to_string(kMaxPoints));
         }
         size_ *= axis.values.size();
         fragments_.push_back(axis_fragments(axis.values));

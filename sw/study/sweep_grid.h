@@ -27,12 +27,20 @@ struct Axis {
 
 // Expands LIST: "a,b,c" (as written) and, with 'ranges', "A:B:xF" (A, A*F, A*F^2, ... up to B
 // inclusive; F > 1) or "A:B:+S" (A, A+S, ... up to B inclusive; S > 0).
-// Numbers of a range print as integers when they are whole, else with up to
-// 12 significant digits. Throws InputError (one line naming 'label' and the
-// list) for an empty item, a repeated value, a bad number or step, A > B,
-// or more than kMaxAxisValues values.
+// A range whose A and step are whole numbers steps exactly in 64-bit
+// integers and prints every value in full; any other steps in doubles, B
+// counting as reached up to 1e-9 of a step, and prints whole values as
+// integers, others with up to 12 significant digits. Throws InputError (one
+// line naming 'label' and the list) for an empty item, a repeated value, a
+// bad number or step, A > B, or more than kMaxAxisValues values (a range's
+// count is known, and refused, before any value is made).
 constexpr std::size_t kMaxAxisValues = 100000;
 std::vector<std::string> expand_list(const std::string& list, const std::string& label, bool ranges = true);
+// "A:B:xF" or "A:B:+S" alone (sw/study/sweep_range.cpp); the same errors.
+std::vector<std::string> expand_range(const std::string& list, const std::string& label);
+// How a refusal says a count of values or points: in full while a long
+// double holds it exactly (below 1e19), else to 3 significant digits.
+std::string count_text(long double count);
 
 // "NAME=LIST" of --set into an axis; the same errors, and a missing '=' or a
 // name that is not a flag or setting name ([a-z0-9_.-], starting with a

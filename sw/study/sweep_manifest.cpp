@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
 #include "models/common/nesting_limit.h"
 #include "sw/study/child_runs.h"
@@ -100,7 +101,7 @@ RecordMode parse_record_mode(const std::string& text, const std::string& label) 
 SweepInput digest_input(std::string option, std::string value, std::string path) {
     const std::optional<FileDigest> digest = digest_file(path);
     if (!digest) {
-        throw InputError(option + ": " + excerpt(value) + ": cannot read: " + std::strerror(errno));
+        throw InputError(option + ": " + excerpt(value) + ": cannot read: " + errno_reason(errno));
     }
     return {std::move(option), std::move(value), std::move(path), digest->sha256, digest->bytes, nullptr};
 }
@@ -135,7 +136,7 @@ std::optional<Manifest> read_manifest(const std::string& path) {
     struct stat status {};
     if (lstat(path.c_str(), &status) != 0) {
         if (errno == ENOENT) return std::nullopt;
-        throw InputError(excerpt(path) + ": cannot read: " + std::strerror(errno));
+        throw InputError(excerpt(path) + ": cannot read: " + errno_reason(errno));
     }
     if (!S_ISREG(status.st_mode)) throw InputError(excerpt(path) + ": expected a regular file (a sweep's manifest)");
     if (static_cast<uint64_t>(status.st_size) > kMaxManifestBytes) {

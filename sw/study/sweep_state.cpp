@@ -183,6 +183,9 @@ TableRead read_table(const std::string& dir, const Grid& grid, const Shard& shar
             conflicted.push_back(index);
             continue;
         }
+        // Rows a killed sweep of several jobs appended as they finished: put
+        // back in point order before anything is appended to them.
+        if (!lines.empty() && index < lines.rbegin()->first) result.rewrite = true;
         lines.emplace(index, records.line());
         table.add(index, PointRow{{}, row});
     }

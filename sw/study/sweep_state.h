@@ -33,6 +33,7 @@ struct TableRead {
     std::vector<std::string> invalid;  // rows left out (with keep_going), one line each: FILE:LINE: why
     bool torn = false;                  // the last row was cut short (a killed sweep): left out
     bool rewrite = false;               // the file must be written again before rows are appended
+                                        // (torn, rows left out, or rows out of point order)
 };
 
 // Reads DIR/sweep.csv (nothing when there is none) into 'table', checking

@@ -34,8 +34,11 @@ Spread spread_of(std::vector<double> samples) {
             samples.size()};
 }
 
-double speedup(const Spread& software, const Spread& board) {
-    return board.mean > 0 ? software.mean / board.mean : 0.0;
+double finite_ratio(double numerator, double denominator) {
+    const double ratio = numerator / denominator;
+    return std::isfinite(numerator) && denominator > 0 && std::isfinite(ratio) ? ratio : 0.0;
 }
+
+double speedup(const Spread& software, const Spread& board) { return finite_ratio(software.mean, board.mean); }
 
 }  // namespace cdvp

@@ -37,8 +37,13 @@ struct Spread {
 // The mean, p50, p99 and maximum of samples in any order.
 Spread spread_of(std::vector<double> samples);
 
+// numerator / denominator when both are finite and the denominator is above
+// 0, else 0: a ratio a summary or report shows, which may say "no figure"
+// but never inf or nan.
+double finite_ratio(double numerator, double denominator);
+
 // The board's speedup over software whose frames cost 'software' (on the
-// modelled host): the ratio of their mean frame times; 0 when the board's is 0.
+// modelled host): the ratio of their mean frame times (finite_ratio).
 double speedup(const Spread& software, const Spread& board);
 
 }  // namespace cdvp

@@ -277,7 +277,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"EmptyBoard", nullptr, "--board ''", "--board: expected a preset name or a .json path, got ''"},
         BadInput{"EmptyReportPath", nullptr, "--report ''", "--report: expected a file path, got ''"},
         BadInput{"EmptyScene", nullptr, "--scene ''", "--scene: expected spheres or one of Bullet's scenes"},
-        BadInput{"BoardIsADirectory", nullptr, "--board ./", "./: cannot open: not a regular file"},
+        BadInput{"BoardIsADirectory", nullptr, "--board ./", "./: cannot open: Is a directory (EISDIR)"},
         BadInput{"OutputIsADirectory", nullptr, "--report .", "--report: .: cannot write: is a directory"},
         BadInput{"OutputInAFile", nullptr, "--report " CDVP_SOURCE_DIR "/README.md/r.json", "is not a directory"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });

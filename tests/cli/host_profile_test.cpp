@@ -10,11 +10,13 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
 #include "sw/run/host_factor.h"
+#include "sw/timing/spread.h"
 #include "sw/run/host_profile.h"
 #include "sw/run/reference_workload.h"
 
@@ -249,6 +251,48 @@ TEST_F(HostProfileFile, AHostWithoutReferenceTimesKeepsItsSpeedFactorButANamedPr
     EXPECT_THROW(resolve_host_timing(host, false), InputError);
     write(host_profile_json(profile_of(500)));
     EXPECT_EQ(resolve_host_timing(host, false).basis, HostTiming::Basis::kUnstated);
+}
+
+// A reference time that gives a factor outside host.speed_factor's range
+// (0.001 to 1000) describes no machine: tiny, denormal, huge; 0, negative,
+// inf and nan are refused as numbers. Refused on one line naming the file,
+// the field and the times expected; no factor is ever inf.
+TEST_F(HostProfileFile, AReferenceTimeGivingAnAbsurdFactorIsRefusedNamingFieldAndRange) {
+    HostConfig host = paper_host(360470);
+    host.profile = path_;
+    for (const double ns : {1e-300, 4.9e-324, 1e-3, 360.0, 3.7e8, 1e12}) {
+        write(host_profile_json(profile_of(1000, [ns](HostProfile& p) { p.reference["sap"].reference_native_ns = ns; })));
+        try {
+            resolve_host_timing(host, false);
+            ADD_FAILURE() << ns << " ns accepted";
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.rfind(path_ + ": reference.sap.reference_native_ns: ", 0), 0u) << what;
+            EXPECT_NE(what.find("expected a time from 360.47 to 360470000 ns, a factor of 0.001 to 1000"),
+                      std::string::npos) << what;
+            EXPECT_EQ(what.find("inf"), std::string::npos) << what;
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        }
+    }
+    for (const double ns : {361.0, 3.6e8}) {
+        write(host_profile_json(profile_of(1000, [ns](HostProfile& p) { p.reference["sap"].reference_native_ns = ns; })));
+        EXPECT_TRUE(std::isfinite(resolve_host_timing(host, false).factor("sap"))) << ns << " ns: in range";
+    }
+    for (const char* bad : {"0", "-5", "1e13", "\"nan\""}) {
+        const std::string what = refusal([bad](json& j) { j["reference"]["sap"]["reference_native_ns"] = json::parse(bad); });
+        EXPECT_NE(what.find("reference.sap.reference_native_ns: expected a"), std::string::npos) << bad << ": " << what;
+    }
+}
+
+// No ratio a summary or report shows is inf or nan, whatever its parts.
+TEST(FiniteRatio, IsZeroWhereTheRatioIsUndefined) {
+    EXPECT_DOUBLE_EQ(finite_ratio(6, 3), 2);
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    for (const auto& [n, d] : std::vector<std::pair<double, double>>{{1, 0}, {0, 0}, {1, -2}, {inf, 1}, {nan, 1},
+                                                                      {1, nan}, {1e300, 1e-300}, {1, inf}}) {
+        EXPECT_EQ(finite_ratio(n, d), 0.0) << n << " / " << d;
+    }
+    EXPECT_EQ(speedup(Spread{1e308, 0, 0, 0, 1}, Spread{1e-308, 0, 0, 0, 1}), 0.0);
 }
 
 }  // namespace

@@ -203,6 +203,27 @@ TEST_F(SweepDir, RowsAreAppendedOneLineEachAndPutInPointOrderAtTheEnd) {
     EXPECT_EQ(csv(), table.csv()) << "a new column: the file is written again with it";
 }
 
+// A sweep of several jobs killed midway leaves its rows in the order they
+// finished: resumed, the file is put back in point order before a row is
+// appended, whatever the rows still to run.
+TEST_F(SweepDir, RowsOutOfPointOrderFromAKilledSweepAreRewrittenInOrderOnResume) {
+    SweepTable written(grid_);
+    written.add(0, report_row(grid_, grid_.point(0), kReport, 0.5));
+    written.add(2, report_row(grid_, grid_.point(2), kReport, 0.5));
+    write_file(table_path(dir()), written.header_line() + written.line(2) + written.line(0));
+    SweepTable table(grid_);
+    const TableRead read = read_table(dir(), grid_, Shard{}, table, false);
+    EXPECT_TRUE(read.rewrite) << "rows 2, 0";
+    EXPECT_EQ(table.size(), 2u);
+    {
+        TableFile file(table_path(dir()), table, read.rewrite);
+        EXPECT_EQ(csv(), written.csv()) << "in point order before anything is appended";
+    }
+    write_file(table_path(dir()), written.csv());
+    SweepTable again(grid_);
+    EXPECT_FALSE(read_table(dir(), grid_, Shard{}, again, false).rewrite) << "rows 0, 2: kept as they are";
+}
+
 TEST(SweepCsv, RecordsMayHoldLineEndsInQuotesAndALastRecordMayBeCutShort) {
     std::istringstream in("a,\"b\nc\",d\ne,f");
     CsvRecords records(in, "t.csv");

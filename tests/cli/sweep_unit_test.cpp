@@ -39,6 +39,71 @@ TEST(SweepList, ArithmeticRangesStepUpToTheEndInclusive) {
     EXPECT_EQ(expand_list("5:5:+1", "--set q"), (Values{"5"}));
 }
 
+TEST(SweepList, WholeRangesStepExactlyInIntegersWhateverTheirSize) {
+    // B's size once widened the end by a billionth of B: 1,003 points here.
+    EXPECT_EQ(expand_list("999999999999:1000000000001:+1", "--set seed"),
+              (Values{"999999999999", "1000000000000", "1000000000001"}));
+    EXPECT_EQ(expand_list("999999999998:1000000000000:+1", "--set seed").back(), "1000000000000");
+    EXPECT_EQ(expand_list("999999999999:1000000000000:+1", "--set seed").size(), 2u);
+    // Past 2^53 a double cannot step by one; integers do.
+    EXPECT_EQ(expand_list("9007199254740993:9007199254740995:+1", "--set seed"),
+              (Values{"9007199254740993", "9007199254740994", "9007199254740995"}));
+    EXPECT_EQ(expand_list("18446744073709551:18446744073709560:+4", "--set seed"),
+              (Values{"18446744073709551", "18446744073709555", "18446744073709559"}));
+    const Values tens = expand_list("1:1e17:x10", "--set scene.seed");
+    ASSERT_EQ(tens.size(), 18u);
+    EXPECT_EQ(tens[16], "10000000000000000") << "an integer setting takes it; 1e+16 it refuses";
+    EXPECT_EQ(tens.back(), "100000000000000000");
+    EXPECT_EQ(expand_list("1:1e30:x1000", "--set x").back(), "1000000000000000000") << "no overflow past INT64_MAX";
+    EXPECT_EQ(expand_list("-3:3:+3", "--set x"), (Values{"-3", "0", "3"}));
+    EXPECT_EQ(expand_list("1:10.5:+3", "--set x"), (Values{"1", "4", "7", "10"}));
+}
+
+TEST(SweepList, RealRangesReachTheEndUpToAFractionOfTheStepNotOfTheEnd) {
+    EXPECT_EQ(expand_list("0:0.3:+0.1", "--set q"), (Values{"0", "0.1", "0.2", "0.3"})) << "0.1 x 3 rounds above 0.3";
+    EXPECT_EQ(expand_list("0.5:1e12:x10", "--set q").back(), "500000000000");
+    EXPECT_EQ(expand_list("0.001:1000:x10", "--set q"), (Values{"0.001", "0.01", "0.1", "1", "10", "100", "1000"}));
+    EXPECT_EQ(expand_list("0.25:1:+0.375", "--set q"), (Values{"0.25", "0.625", "1"}));
+}
+
+TEST(SweepList, LongRangesAreRefusedWithTheirCountBeforeAnyValueIsMade) {
+    const auto message = [](const std::string& list) {
+        try {
+            expand_list(list, "--set seed");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(message("1:100001:+1"), "--set seed: '1:100001:+1': 100001 values, more than 100000");
+    EXPECT_EQ(expand_list("1:100000:+1", "--set seed").size(), 100000u);
+    EXPECT_EQ(message("0:9e18:+1"), "--set seed: '0:9e18:+1': 9000000000000000001 values, more than 100000");
+    EXPECT_EQ(message("0:1e300:+1e-300"), "--set seed: '0:1e300:+1e-300': 1e+600 values, more than 100000")
+        << "counted as a double: inf";
+    EXPECT_EQ(message("0:1:+0.000001"), "--set seed: '0:1:+0.000001': 1000001 values, more than 100000");
+}
+
+TEST(SweepList, ARepeatedValueInALongListIsFoundInLogLinearTime) {
+    std::string list;
+    for (int k = 0; k < 100000; ++k) list += std::to_string(k) + ",";
+    list += "99999";
+    try {
+        expand_list(list, "--set seed");
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("more than 100000 values"), std::string::npos) << e.what();
+    }
+    list.resize(list.rfind(','));
+    list.resize(list.rfind(',') + 1);
+    list += "5";  // 99,999 distinct values, then 5 again
+    try {
+        expand_list(list, "--set seed");
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("'5' is given twice"), std::string::npos) << e.what();
+    }
+}
+
 TEST(SweepList, ColonsAreKeptInPlainListsWithoutRanges) {
     EXPECT_EQ(expand_list("a:b:c", "--trace", false), (Values{"a:b:c"}));
 }
@@ -50,7 +115,7 @@ TEST(SweepList, BadListsAreRefusedWithOneLineNamingTheList) {
         {"1:8:x", "expected the step"},  {"a:8:x2", "expected numbers"}, {"8:1:x2", "A is above B"},
         {"1:8:x1", "a factor above 1"},  {"0:8:x2", "a factor above 1"}, {"1:8:+0", "an increment above 0"},
         {"1:8:+-1", "an increment above 0"}, {"1:8:x2:3", "expected a,b,c or"}, {"0x10:20:+1", "expected numbers"},
-        {"1:inf:+1", "expected numbers"}, {"1:1e9:+1", "more than 100000 values"}};
+        {"1:inf:+1", "expected numbers"}, {"1:1e9:+1", "1000000000 values, more than 100000"}};
     for (const auto& [list, why] : cases) {
         try {
             expand_list(list, "--set m");
@@ -159,6 +224,23 @@ TEST(SweepGrid, AnAxisKeyedByItsSettingIsOneAxisWhateverItsName) {
 TEST(SweepGrid, RefusesRepeatedAxesAndNoAxes) {
     EXPECT_THROW(Grid(std::vector<Axis>{{"m", {"1"}}, {"m", {"2"}}}), InputError);
     EXPECT_THROW(Grid(std::vector<Axis>{}), InputError);
+}
+
+TEST(SweepGrid, AGridPastAMillionPointsIsRefusedWithItsCount) {
+    const auto axis = [](const char* name, const std::string& list) { return Axis{name, expand_list(list, name)}; };
+    try {
+        Grid(std::vector<Axis>{axis("seed", "1:100000:+1"), axis("m", "1:11:+1")});
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "the grid has 1100000 points, more than 1000000");
+    }
+    try {
+        Grid(std::vector<Axis>{axis("seed", "1:100000:+1"), axis("objects", "1:100000:+1"), axis("m", "1:100000:+1")});
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "the grid has 1000000000000000 points, more than 1000000") << "no overflow";
+    }
+    EXPECT_EQ(Grid(std::vector<Axis>{axis("seed", "1:100000:+1"), axis("m", "1:10:+1")}).size(), 1000000u);
 }
 
 // A report as cdvp run writes it: four frames, the first a warm-up, and the

@@ -150,7 +150,7 @@ TEST_F(PresetFile, OnlyASmallRegularFileIsAPreset) {
         load_board_preset(dir_ + "/");
         ADD_FAILURE() << "a directory was read as a preset";
     } catch (const InputError& e) {
-        EXPECT_EQ(dir_ + "/: cannot open: not a regular file", std::string(e.what()));
+        EXPECT_EQ(dir_ + "/: cannot open: Is a directory (EISDIR)", std::string(e.what()));
     }
     EXPECT_EQ(path_ + ": larger than 1048576 bytes; not a board preset", error_for(std::string(2 << 20, ' ')));
     // A named pipe is refused at once, not waited on for a writer.

@@ -88,7 +88,7 @@ TEST(TraceCsv, ReadsFileAndReportsMissingFile) {
         read_trace_csv(missing);
         FAIL() << "no exception";
     } catch (const InputError& e) {
-        EXPECT_EQ(missing + ": cannot open: No such file or directory", e.what());
+        EXPECT_EQ(missing + ": cannot open: No such file or directory (ENOENT)", e.what());
     }
 }
 

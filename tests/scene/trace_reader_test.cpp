@@ -93,7 +93,7 @@ TEST(TraceReader, DirectoryIsNamedAsSuch) {
         read_trace_csv(dir.path().string());
         FAIL() << "no exception";
     } catch (const InputError& e) {
-        EXPECT_EQ(dir.path().string() + ": is a directory; expected a file", std::string(e.what()));
+        EXPECT_EQ(dir.path().string() + ": cannot open: Is a directory (EISDIR); expected a file", std::string(e.what()));
     }
 }
 
