@@ -91,7 +91,7 @@ std::string presets_json() {
 // One run: (the report as JSON text, its summary as JSON text, the pairs CSV or "").
 py::tuple run(const py::dict& keywords, const py::object& settings, bool pairs, const std::string& cdvp_binary) {
     RunResult result = as_call("cdvp.run", [&] {
-        RunRequest request{run_spec_of(keywords, settings, "cdvp.run"), pairs, cdvp_binary, true};
+        RunRequest request{run_spec_of(keywords, settings, "cdvp.run"), pairs, cdvp_binary, true, true};
         py::gil_scoped_release unlocked;
         return run_configuration(request);
     });

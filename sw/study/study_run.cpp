@@ -79,6 +79,7 @@ RunResult run_configuration(const RunRequest& request) {
         RunObserver quiet;
         RunContext context;
         context.kernel_free = true;
+        context.check_first = request.check_in_process;
         const RunOutcome outcome = run(spec, quiet, context);
         if (outcome.ran && outcome.status != kExitDone) {
             throw RunFailed(outcome.status, std::string("cdvp ") + command_of(spec) + ": " + outcome.message);

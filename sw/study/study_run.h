@@ -27,6 +27,10 @@ struct RunRequest {
     // A run that elaborates no SystemC kernel (the analytic level) runs in
     // this process; any other in a child.
     bool in_process = false;
+    // With in_process: a run that goes to a child is first checked in this
+    // process as far as it can be without a kernel (RunContext::check_first),
+    // so that its refusals name settings in the spec's words.
+    bool check_in_process = false;
 };
 
 struct RunResult {

@@ -88,3 +88,12 @@ def test_empty_tables_keep_their_columns_and_dtypes():
     assert none.frames.dtypes.sort_index().equals(some.frames.dtypes.sort_index())
     assert list(none.pairs.columns) == ["frame", "a", "b"]
     assert (none.pairs.dtypes == "int64").all() and (some.pairs.dtypes == "int64").all()
+
+
+def test_a_run_for_a_child_is_checked_first_in_the_modules_words():
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.run(board="adm-xrc-ii", scene="spheres", objects=4000, m=32, memory="block_ram", fidelity="fast")
+    assert "too few for m=32 at 4000 objects (objects=)" in str(refused.value)
+    assert "ignore_capacity=True runs it anyway" in str(refused.value)
+    with pytest.raises(cdvp.InputError, match=r"inject=: .* past the run's last frame 1 \(frames=2\)"):
+        cdvp.run(**SMALL, inject="board-error@frame=5")
