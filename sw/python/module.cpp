@@ -10,13 +10,16 @@
 // A good citizen of the interpreter: cdvp's signal handlers are in place
 // only while a call works (HandlersInstalled), Python's own Ctrl-C handler
 // is never replaced but by a sweep's stop handler for the sweep's length,
-// and a Ctrl-C during a call is raised as KeyboardInterrupt when it returns.
+// and a Ctrl-C during a call is raised as KeyboardInterrupt: between the
+// frames of a run in this process, else when the call returns.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <atomic>
 #include <csignal>
 #include <exception>
+#include <memory>
+#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -26,6 +29,7 @@
 #include "sw/output/output_cleanup.h"
 #include "sw/python/keywords.h"
 #include "sw/run/exit_codes.h"
+#include "sw/run/run.h"
 #include "sw/run/run_budgets.h"
 #include "sw/study/child_runs.h"
 #include "sw/study/study_run.h"
@@ -88,12 +92,41 @@ std::string presets_json() {
     });
 }
 
+// Between the frames of a run in this process, Python's signal handlers
+// run (the GIL taken for it): a Ctrl-C's KeyboardInterrupt, or whatever a
+// handler of the user's raises, stops the run there and is raised by run().
+class SignalsBetweenFrames : public RunObserver {
+public:
+    struct Stopped : std::runtime_error {
+        Stopped() : std::runtime_error("stopped by a Python exception raised by a signal handler") {}
+    };
+    void frame_done(std::size_t, std::size_t) override {
+        if (raised_) return;
+        py::gil_scoped_acquire locked;
+        if (PyErr_CheckSignals() == 0) return;
+        raised_ = std::make_unique<py::error_already_set>();
+        throw Stopped();
+    }
+    void rethrow_any() {
+        if (raised_) throw *raised_;
+    }
+
+private:
+    std::unique_ptr<py::error_already_set> raised_;
+};
+
 // One run: (the report as JSON text, its summary as JSON text, the pairs CSV or "").
-py::tuple run(const py::dict& keywords, const py::object& settings, bool pairs, const std::string& cdvp_binary) {
+py::tuple run_keywords(const py::dict& keywords, const py::object& settings, bool pairs, const std::string& cdvp_binary) {
+    SignalsBetweenFrames signals;
     RunResult result = as_call("cdvp.run", [&] {
-        RunRequest request{run_spec_of(keywords, settings, "cdvp.run"), pairs, cdvp_binary, true, true};
-        py::gil_scoped_release unlocked;
-        return run_configuration(request);
+        RunRequest request{run_spec_of(keywords, settings, "cdvp.run"), pairs, cdvp_binary, true, true, &signals};
+        try {
+            py::gil_scoped_release unlocked;
+            return run_configuration(request);
+        } catch (const RunFailed&) {
+            signals.rethrow_any();
+            throw;
+        }
     });
     const auto text = [](const nlohmann::json& json) { return json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); };
     return py::make_tuple(text(result.report), text(to_json(result.summary)), py::bytes(result.pairs_csv));
@@ -153,7 +186,7 @@ public:
 };
 
 // The sweep's outcome as a dict.
-py::dict sweep(const py::dict& axes, const py::dict& own, const py::dict& keywords, const py::object& settings,
+py::dict sweep_keywords(const py::dict& axes, const py::dict& own, const py::dict& keywords, const py::object& settings,
                const std::string& cdvp_binary, py::object progress) {
     ProgressCallback observer(std::move(progress));
     const SweepOutcome outcome = as_call("cdvp.sweep", [&] {
@@ -192,9 +225,9 @@ PYBIND11_MODULE(_cdvp, module) {
     });
     module.def("presets_json", &cdvp::presets_json, "Every board preset: name, description, path, values.");
     module.def("boards_directory", &cdvp::boards_directory, "Where the presets are read.");
-    module.def("run", &cdvp::run, py::arg("keywords"), py::arg("settings"), py::arg("pairs"), py::arg("cdvp_binary"),
+    module.def("run", &cdvp::run_keywords, py::arg("keywords"), py::arg("settings"), py::arg("pairs"), py::arg("cdvp_binary"),
                "One run, in this process at the analytic level, else in a child: (report JSON, summary JSON, pairs CSV bytes).");
-    module.def("sweep", &cdvp::sweep, py::arg("axes"), py::arg("own"), py::arg("keywords"), py::arg("settings"),
+    module.def("sweep", &cdvp::sweep_keywords, py::arg("axes"), py::arg("own"), py::arg("keywords"), py::arg("settings"),
                py::arg("cdvp_binary"), py::arg("progress"),
                "One sweep in this process, its points children but the analytic ones: the outcome as a dict.");
 }

@@ -77,10 +77,11 @@ RunResult run_configuration(const RunRequest& request) {
     bool ran = false;
     if (request.in_process) {
         RunObserver quiet;
+        RunObserver& observer = request.observer != nullptr ? *request.observer : quiet;
         RunContext context;
         context.kernel_free = true;
         context.check_first = request.check_in_process;
-        const RunOutcome outcome = run(spec, quiet, context);
+        const RunOutcome outcome = run(spec, observer, context);
         if (outcome.ran && outcome.status != kExitDone) {
             throw RunFailed(outcome.status, std::string("cdvp ") + command_of(spec) + ": " + outcome.message);
         }
