@@ -14,16 +14,9 @@ import os
 import statistics
 import subprocess
 import tempfile
-import time
 
 import cdvp
-
-
-def timed(call):
-    start = time.perf_counter()
-    call()
-    return time.perf_counter() - start
-
+from run_overhead import timed  # beside this script
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
