@@ -12,8 +12,8 @@
 #include "platform/settings/settings.h"
 #include "sw/cli/flag_names.h"
 #include "sw/cli/forwarded_options.h"
-#include "sw/run/host_profile.h"
 #include "sw/cli/run_options.h"
+#include "sw/study/sweep_inputs.h"
 #include "sw/study/sweep_state.h"
 
 namespace po = boost::program_options;
@@ -88,9 +88,6 @@ po::options_description own_options(std::vector<std::string>& sets) {
 bool is_axis_option(const std::string& key) {
     return key == "board" || key == "fidelity" || key == "scene" || key == "trace";
 }
-
-// Anything there, a file it cannot read included: the sweep refuses that with its reason.
-bool fs_exists(const std::string& path) { return !input_presence(path).absent(); }
 
 unsigned parse_jobs(const std::string& text) {
     if (text.empty() || text.size() > 2 || text.find_first_not_of("0123456789") != std::string::npos ||
@@ -217,42 +214,6 @@ void read_forwarded_options(const ParsedCommandLine& line, SweepSpec& o) {
     }
 }
 
-// Every file an axis names (traces, configs, presets, host profiles), for the
-// manifest's digests; one source of frames at most.
-void name_axis_inputs(SweepSpec& o) {
-    std::set<std::string> sources;
-    for (const Axis& axis : o.axes) {
-        if (axis.key == "scene" || axis.key == "trace") sources.insert(axis.key);
-        for (const std::string& value : axis.values) {
-            if (axis.key == "trace" || axis.key == "config") o.inputs.push_back({"--" + axis.key, value, value});
-            if (axis.key == "board") o.inputs.push_back({"--board", value, board_preset_path(value)});
-            if (axis.key == "host.profile") o.inputs.push_back({"--host-profile", value, value});
-        }
-    }
-    if (sources.size() == 2) throw InputError("--scene and --trace: give one of them (the points' frames come from it)");
-    if (sources.empty()) o.run.frames = SceneFrames{"spheres"};
-}
-
-// A host profile's reference times and, as what each may move by on a
-// resume, its recorded spread (the worst of its sizes).
-nlohmann::json host_profile_facts(const NamedInput& input, const std::string& text) {
-    if (input.option != "--host-profile") return nullptr;
-    HostProfile profile;
-    try {
-        profile = parse_host_profile(input.path, text);
-    } catch (const InputError&) {
-        return nullptr;  // the points refuse it, naming the field
-    }
-    nlohmann::json values = nlohmann::json::object(), tolerance = nlohmann::json::object();
-    for (const auto& [name, baseline] : profile.reference) {
-        values[name + "'s reference time (ns)"] = baseline.reference_native_ns;
-        double spread = 0;
-        for (const ReferenceTiming& t : baseline.sizes) spread = std::max(spread, t.spread());
-        tolerance[name + "'s reference time (ns)"] = spread;
-    }
-    return {{"values", values}, {"tolerance", tolerance}};
-}
-
 }  // namespace
 
 std::string sweep_help() { return kHelp; }
@@ -274,15 +235,7 @@ std::optional<SweepSpec> parse_sweep_options(int argc, char** argv) {
     o.plots = !line.values["no-plots"].as<bool>();
     o.rerun_invalid = line.values["rerun-invalid"].as<bool>();
     if (o.out_dir.empty()) throw InputError("--out DIR is required (see cdvp sweep --help)");
-    name_axis_inputs(o);
-    o.input_facts = host_profile_facts;
-    // The host profile the points read when none is named: a calibration
-    // between two runs of the sweep changes its factors.
-    const bool profile_named = std::any_of(o.inputs.begin(), o.inputs.end(),
-                                           [](const NamedInput& input) { return input.option == "--host-profile"; });
-    if (const std::string path = default_host_profile_path(); !profile_named && !path.empty() && fs_exists(path)) {
-        o.inputs.push_back({"--host-profile", "(its default place)", path});
-    }
+    name_sweep_inputs(o);
     return o;
 }
 

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cstring>
+#include <iterator>
 #include <stdexcept>
 
 namespace cdvp {
@@ -18,6 +19,7 @@ constexpr int kSlots = 32;
 char g_paths[kSlots][PATH_MAX];
 volatile std::sig_atomic_t g_in_use[kSlots];
 bool g_installed = false;
+int g_scopes = 0;  // open HandlersInstalled scopes that put the previous actions back
 
 extern "C" void unlink_temporaries_and_reraise(int signal_number) {
     const int saved_errno = errno;
@@ -41,7 +43,11 @@ void TemporaryRegistry::install_handlers() {
     g_installed = true;
     for (int signal_number : TemporaryRegistry::kSignals) {
         struct sigaction previous {};
-        if (sigaction(signal_number, nullptr, &previous) != 0 || previous.sa_handler == SIG_IGN) continue;
+        // SIG_DFL only: an ignored signal stays ignored, a handler of the process's own stays its own.
+        if (sigaction(signal_number, nullptr, &previous) != 0 || (previous.sa_flags & SA_SIGINFO) != 0 ||
+            previous.sa_handler != SIG_DFL) {
+            continue;
+        }
         struct sigaction action {};
         action.sa_handler = unlink_temporaries_and_reraise;
         sigemptyset(&action.sa_mask);
@@ -52,6 +58,24 @@ void TemporaryRegistry::install_handlers() {
 
 const int TemporaryRegistry::kSignals[12] = {SIGINT,  SIGTERM, SIGHUP,  SIGPIPE, SIGQUIT,   SIGALRM,
                                              SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF};
+
+HandlersInstalled::HandlersInstalled() {
+    if (g_installed && g_scopes == 0) return;  // installed for good
+    restores_ = true;
+    if (g_scopes++ > 0) return;  // the outermost scope restores
+    for (std::size_t k = 0; k < std::size(TemporaryRegistry::kSignals); ++k) {
+        sigaction(TemporaryRegistry::kSignals[k], nullptr, &previous_[k]);
+    }
+    TemporaryRegistry::install_handlers();
+}
+
+HandlersInstalled::~HandlersInstalled() {
+    if (!restores_ || --g_scopes > 0) return;
+    for (std::size_t k = 0; k < std::size(TemporaryRegistry::kSignals); ++k) {
+        sigaction(TemporaryRegistry::kSignals[k], &previous_[k], nullptr);
+    }
+    g_installed = false;
+}
 
 int TemporaryRegistry::hold(const std::string& path) {
     if (path.size() >= PATH_MAX) throw std::length_error(path + ": path too long for a temporary");

@@ -41,6 +41,25 @@ std::string temporary_pattern(const fs::path& directory, std::string name) {
     return (directory / name).string() + ".part-XXXXXX";
 }
 
+}  // namespace
+
+void remove_temporaries_of(const std::string& final_path) noexcept {
+    try {
+        const fs::path target = resolve_output_target(final_path).path;
+        const std::string prefix = temporary_pattern(fs::path(), target.filename().string());
+        const std::string stem = prefix.substr(0, prefix.size() - std::strlen("XXXXXX"));
+        std::error_code error;
+        const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
+        for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
+            if (entry.path().filename().string().rfind(stem, 0) == 0) fs::remove(entry.path(), error);
+        }
+    } catch (const std::exception&) {
+        // Nothing to remove where the target cannot be resolved.
+    }
+}
+
+namespace {
+
 // Creates a unique file from pattern + suffix; returns its descriptor and
 // sets 'pattern' to the file's path. -1 with errno on failure.
 int make_unique_file(std::string& pattern, const std::string& suffix) {

@@ -39,6 +39,11 @@ private:
     char buffer_[1 << 16];
 };
 
+// Removes what a process killed by SIGKILL left of its outputs to
+// final_path: the temporaries "<target>.part-*" beside the file the path
+// leads to. For a parent whose child was killed while it wrote them.
+void remove_temporaries_of(const std::string& final_path) noexcept;
+
 class OutputFile {
 public:
     // Resolves final_path (resolve_output_target), then creates

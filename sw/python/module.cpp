@@ -1,30 +1,37 @@
-// _cdvp: the C++ half of the Python module cdvp (docs/python.md). It hands
-// the settings table, the presets, one run and one sweep to Python as JSON
-// text and plain values; the package (cdvp/__init__.py) makes them Python
-// objects. Every simulation is a `cdvp run` child (the study library), so no
-// SystemC kernel ever elaborates in the Python process.
+// _cdvp: the C++ half of the Python module cdvp (docs/python.md). Keyword
+// arguments become the run layer's typed RunSpec and SweepSpec
+// (keywords.h), never command-line words; the presets, one run and one
+// sweep come back to Python as JSON text and plain values, which the package
+// (cdvp/__init__.py) makes Python objects. A run at the analytic level runs
+// in this process; any other level in a `cdvp run` child (SystemC
+// elaborates a design once a process), as do a sweep's points but its
+// analytic ones.
+//
+// A good citizen of the interpreter: cdvp's signal handlers are in place
+// only while a call works (HandlersInstalled), Python's own Ctrl-C handler
+// is never replaced but by a sweep's stop handler for the sweep's length,
+// and a Ctrl-C during a call is raised as KeyboardInterrupt: between the
+// frames of a run in this process, else when the call returns.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <boost/program_options/errors.hpp>
-
+#include <atomic>
+#include <csignal>
 #include <exception>
-#include <functional>
-#include <new>
-#include <optional>
+#include <memory>
+#include <stdexcept>
 #include <string>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
 #include "platform/settings/board_preset.h"
-#include "sw/cli/exit_status.h"
-#include "sw/cli/run_command.h"
-#include "sw/run/run_budgets.h"
-#include "sw/cli/settings_command.h"
-#include "sw/cli/sweep_options.h"
+#include "sw/output/output_cleanup.h"
+#include "sw/python/keywords.h"
 #include "sw/run/exit_codes.h"
+#include "sw/run/run.h"
+#include "sw/run/run_budgets.h"
+#include "sw/study/child_runs.h"
 #include "sw/study/study_run.h"
 #include "sw/study/sweep.h"
 
@@ -41,28 +48,39 @@ struct Refusal {
     std::string message;
 };
 
-// Runs body and turns whatever C++ throws into a Refusal worded as
-// exit_status_of and run_command_line word it, so that no C++ exception
-// reaches the interpreter (where it would abort). A Python exception raised
-// inside (a progress callback's) passes through as it is.
+// A Ctrl-C (or another signal Python handles) that arrived while cdvp
+// worked: raised now, before anything else the call would return or raise.
+void raise_pending_signals() {
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
+// Runs body with cdvp's signal handlers in place and turns whatever C++
+// throws into a Refusal under `program`'s name, so that no C++ exception
+// reaches the interpreter. A Python exception (a TypeError of a keyword, a
+// progress callback's) passes through as it is.
 template <typename Body>
-auto as_command(const std::string& program, Body&& body) -> decltype(body()) {
+auto as_call(const std::string& program, Body&& body) -> decltype(body()) {
     try {
-        return body();
+        const HandlersInstalled handlers;
+        auto result = body();
+        raise_pending_signals();
+        return result;
     } catch (const py::error_already_set&) {
         throw;
+    } catch (const py::builtin_exception&) {
+        throw;
     } catch (const RunFailed& e) {
-        throw Refusal{e.status(), e.what()};
-    } catch (const boost::program_options::error& e) {
-        throw Refusal{kExitBadInput, program + ": " + printable(e.what()) + " (see " + program + " --help)"};
+        raise_pending_signals();
+        throw Refusal{e.status(), renamed_message(e.what(), program)};
     } catch (const std::exception&) {
-        const CommandFailure failure = failure_of_current_exception(program);
-        throw Refusal{failure.status, failure.line};
+        raise_pending_signals();
+        const Failure failure = failure_of_current_exception();
+        throw Refusal{failure.status, program + ": " + failure.message};
     }
 }
 
 std::string presets_json() {
-    return as_command("cdvp presets", [] {
+    return as_call("cdvp.presets", [] {
         nlohmann::json all = nlohmann::json::array();
         for (const std::string& name : board_preset_names()) {
             const BoardPreset preset = load_board_preset(name);
@@ -70,25 +88,48 @@ std::string presets_json() {
             for (const Assignment& assignment : preset.values) values[assignment.setting->name] = to_json(assignment.value);
             all.push_back({{"name", name}, {"description", preset.description}, {"path", preset.path}, {"values", values}});
         }
-        return all.dump();
+        return all.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     });
 }
 
+// Between the frames of a run in this process, Python's signal handlers
+// run (the GIL taken for it): a Ctrl-C's KeyboardInterrupt, or whatever a
+// handler of the user's raises, stops the run there and is raised by run().
+class SignalsBetweenFrames : public RunObserver {
+public:
+    struct Stopped : std::runtime_error {
+        Stopped() : std::runtime_error("stopped by a Python exception raised by a signal handler") {}
+    };
+    void frame_done(std::size_t, std::size_t) override {
+        if (raised_) return;
+        py::gil_scoped_acquire locked;
+        if (PyErr_CheckSignals() == 0) return;
+        raised_ = std::make_unique<py::error_already_set>();
+        throw Stopped();
+    }
+    void rethrow_any() {
+        if (raised_) throw *raised_;
+    }
+
+private:
+    std::unique_ptr<py::error_already_set> raised_;
+};
+
 // One run: (the report as JSON text, its summary as JSON text, the pairs CSV or "").
-py::tuple run(const std::vector<std::string>& options, bool pairs, const std::string& cdvp_binary) {
-    RunResult result = as_command("cdvp run", [&] {
-        std::vector<std::string> words{"run"};
-        words.insert(words.end(), options.begin(), options.end());
-        std::vector<char*> argv;
-        for (std::string& word : words) argv.push_back(word.data());
-        argv.push_back(nullptr);
-        RunOptions parsed;
-        const auto vm = parse_run_options(static_cast<int>(words.size()), argv.data(), parsed);
-        RunRequest request{run_spec_of(parsed, vm), pairs, cdvp_binary, false};
-        py::gil_scoped_release unlocked;
-        return run_configuration(request);
+py::tuple run_keywords(const py::dict& keywords, const py::object& settings, bool pairs, const std::string& cdvp_binary) {
+    SignalsBetweenFrames signals;
+    RunResult result = as_call("cdvp.run", [&] {
+        RunRequest request{run_spec_of(keywords, settings, "cdvp.run"), pairs, cdvp_binary, true, true, &signals};
+        try {
+            py::gil_scoped_release unlocked;
+            return run_configuration(request);
+        } catch (const RunFailed&) {
+            signals.rethrow_any();
+            throw;
+        }
     });
-    return py::make_tuple(result.report.dump(), to_json(result.summary).dump(), py::bytes(result.pairs_csv));
+    const auto text = [](const nlohmann::json& json) { return json.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); };
+    return py::make_tuple(text(result.report), text(to_json(result.summary)), py::bytes(result.pairs_csv));
 }
 
 // Calls a Python progress callable as (done, total) with the GIL held. The
@@ -126,21 +167,35 @@ private:
     std::exception_ptr failure_;
 };
 
-// argv: cdvp sweep's arguments after "sweep". Returns the outcome as a dict.
-py::dict sweep(const std::vector<std::string>& arguments, const std::string& cdvp_binary, py::object progress) {
+// One sweep at a time a process: the sweep waits for any child and keeps its
+// points in process-wide state, so one started from another's progress
+// callback (or another thread) is refused.
+std::atomic<bool> g_sweeping{false};
+
+class OneSweep {
+public:
+    OneSweep() {
+        if (g_sweeping.exchange(true)) {
+            throw InputError("another sweep is running in this process (this one was started from its progress "
+                             "callback or another thread); start it after that one returns");
+        }
+    }
+    ~OneSweep() { g_sweeping = false; }
+    OneSweep(const OneSweep&) = delete;
+    OneSweep& operator=(const OneSweep&) = delete;
+};
+
+// The sweep's outcome as a dict.
+py::dict sweep_keywords(const py::dict& axes, const py::dict& own, const py::dict& keywords, const py::object& settings,
+               const std::string& cdvp_binary, py::object progress) {
     ProgressCallback observer(std::move(progress));
-    const SweepOutcome outcome = as_command("cdvp sweep", [&] {
-        std::vector<std::string> words{"sweep"};
-        words.insert(words.end(), arguments.begin(), arguments.end());
-        std::vector<char*> argv;
-        for (std::string& word : words) argv.push_back(word.data());
-        argv.push_back(nullptr);
-        std::optional<SweepSpec> spec = parse_sweep_options(static_cast<int>(words.size()), argv.data());
-        if (!spec) throw InputError("--help is the command's: see help(cdvp.sweep)");
-        spec->trace_limits = spooled_trace_limits();
-        spec->cdvp_binary = cdvp_binary;
+    const SweepOutcome outcome = as_call("cdvp.sweep", [&] {
+        const OneSweep only;
+        SweepSpec spec = sweep_spec_of(axes, own, keywords, settings);
+        spec.trace_limits = spooled_trace_limits();
+        spec.cdvp_binary = cdvp_binary;
         py::gil_scoped_release unlocked;
-        return run_sweep(*spec, &observer);
+        return run_sweep(spec, &observer);
     });
     observer.rethrow_any();
     py::dict result;
@@ -159,7 +214,7 @@ py::dict sweep(const std::vector<std::string>& arguments, const std::string& cdv
 }  // namespace cdvp
 
 PYBIND11_MODULE(_cdvp, module) {
-    module.doc() = "The C++ half of cdvp: the settings table, presets, runs and sweeps (docs/python.md).";
+    module.doc() = "The C++ half of cdvp: presets, runs and sweeps from typed keywords (docs/python.md).";
     py::register_exception_translator([](std::exception_ptr thrown) {
         try {
             if (thrown) std::rethrow_exception(thrown);
@@ -168,12 +223,11 @@ PYBIND11_MODULE(_cdvp, module) {
             PyErr_SetObject(error_class.ptr(), py::make_tuple(refusal.message, refusal.status).ptr());
         }
     });
-    module.def("settings_json", [] { return cdvp::as_command("cdvp settings", [] { return cdvp::settings_json().dump(); }); },
-               "The settings table as cdvp settings --json gives it.");
     module.def("presets_json", &cdvp::presets_json, "Every board preset: name, description, path, values.");
     module.def("boards_directory", &cdvp::boards_directory, "Where the presets are read.");
-    module.def("run", &cdvp::run, py::arg("options"), py::arg("pairs"), py::arg("cdvp_binary"),
-               "One cdvp run in a child: (report JSON, summary JSON, pairs CSV bytes).");
-    module.def("sweep", &cdvp::sweep, py::arg("arguments"), py::arg("cdvp_binary"), py::arg("progress"),
-               "One cdvp sweep in this process, its points children: the outcome as a dict.");
+    module.def("run", &cdvp::run_keywords, py::arg("keywords"), py::arg("settings"), py::arg("pairs"), py::arg("cdvp_binary"),
+               "One run, in this process at the analytic level, else in a child: (report JSON, summary JSON, pairs CSV bytes).");
+    module.def("sweep", &cdvp::sweep_keywords, py::arg("axes"), py::arg("own"), py::arg("keywords"), py::arg("settings"),
+               py::arg("cdvp_binary"), py::arg("progress"),
+               "One sweep in this process, its points children but the analytic ones: the outcome as a dict.");
 }

@@ -95,12 +95,14 @@ RunOutcome run_frames_of(const RunSpec& spec, RunObserver& observer, const RunCo
     const SettingNames& names = *spec.settings.names;
     check_frame_input(spec.frames, names);
     RunSetup setup = make_setup(spec);
-    if (context.kernel_free && setup.level != ModelLevel::kAnalytic) return RunOutcome{false, 0, {}};
+    const bool needs_kernel = context.kernel_free && setup.level != ModelLevel::kAnalytic;
+    if (needs_kernel && !context.check_first) return RunOutcome{false, 0, {}};
     // Outputs next (the level says what the waveforms hold): a path that
     // cannot be written, or that names an input or another output, is
-    // refused before any work.
+    // refused before any work. A run only checked here for a child opens
+    // none: the child writes them.
     RunFiles files;
-    open_run_files(spec, setup.level, files);
+    if (!needs_kernel) open_run_files(spec, setup.level, files);
     const bool trace = std::holds_alternative<TraceFrames>(*spec.frames);
     check_scene_settings(trace, setup.values);
     const FrameOrigin origin = trace ? FrameOrigin{std::get<TraceFrames>(*spec.frames).path, ""}
@@ -119,6 +121,7 @@ RunOutcome run_frames_of(const RunSpec& spec, RunObserver& observer, const RunCo
         check_inject_frames(setup.platform.faults, last, [](uint64_t) { return true; },
                             setup.values.names().setting_to(setting("scene.frames"), std::to_string(scene.frames)), names);
     }
+    if (needs_kernel) return RunOutcome{false, 0, {}};  // checked first: the child reads the frames
     std::unique_ptr<FrameSource> source = open_source(spec, setup.values, budgets, context.memo);
     if (const auto warning = check_scene_fits(origin, setup.values, source->max_objects(), source->frame_count(), budgets)) {
         observer.note(*warning);

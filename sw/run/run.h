@@ -72,6 +72,11 @@ struct RunContext {
     // Only a run that elaborates no SystemC kernel (the analytic level) is
     // run; any other comes back with RunOutcome::ran false, nothing done.
     bool kernel_free = false;
+    // With kernel_free: a run that needs a kernel is first checked as far as
+    // it can be without one (its settings, budgets, the scene's fit and its
+    // faults' frames), so that a refusal names what the caller's face calls
+    // them (Python's keywords) before the run goes to a child.
+    bool check_first = false;
     RunMemo* memo = nullptr;          // pairs and scenes kept across runs (sw/run/run_memo.h)
     nlohmann::json* report = nullptr; // the report's frames and summary kept here, not written
 };

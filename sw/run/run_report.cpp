@@ -22,9 +22,11 @@ double phase_value(const FramePhases& p, int k) {
     return values[k];
 }
 
-// 'value' as nlohmann's dump(2) prints it nested 'depth' levels deep.
+// 'value' as nlohmann's dump(2) prints it nested 'depth' levels deep. A
+// file name that is no UTF-8 (Latin-1, say) is shown with U+FFFD for its
+// stray bytes: JSON text is UTF-8.
 std::string nested(const nlohmann::json& value, int depth) {
-    std::string text = value.dump(2);
+    std::string text = value.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
     const std::string indent(static_cast<std::size_t>(2 * depth), ' ');
     std::string out;
     out.reserve(text.size());

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "models/common/user_text.h"
+#include "sw/output/output_file.h"
 #include "sw/study/child_runs.h"
 #include "sw/run/exit_codes.h"
 #include "sw/run/run.h"
@@ -40,6 +41,10 @@ void run_child_configuration(const RunRequest& request, const RunSpec& spec) {
     const int wait_status = run_child(args, streams);
     const std::string program = std::string("cdvp ") + command_of(spec);
     if (WIFSIGNALED(wait_status)) {
+        // A child killed by SIGKILL leaves its outputs' temporaries beside them.
+        for (const std::optional<std::string>& output : {spec.outputs.report, spec.outputs.pairs_csv}) {
+            if (output) remove_temporaries_of(*output);
+        }
         throw RunFailed(kExitInternal, program + ": killed by signal " + std::to_string(WTERMSIG(wait_status)));
     }
     if (const int status = WEXITSTATUS(wait_status); status != kExitDone) {
@@ -72,9 +77,11 @@ RunResult run_configuration(const RunRequest& request) {
     bool ran = false;
     if (request.in_process) {
         RunObserver quiet;
+        RunObserver& observer = request.observer != nullptr ? *request.observer : quiet;
         RunContext context;
         context.kernel_free = true;
-        const RunOutcome outcome = run(spec, quiet, context);
+        context.check_first = request.check_in_process;
+        const RunOutcome outcome = run(spec, observer, context);
         if (outcome.ran && outcome.status != kExitDone) {
             throw RunFailed(outcome.status, std::string("cdvp ") + command_of(spec) + ": " + outcome.message);
         }

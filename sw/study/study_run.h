@@ -18,6 +18,8 @@
 
 namespace cdvp {
 
+class RunObserver;
+
 struct RunRequest {
     // The run (sw/run/run_spec.h): its settings, frames, baselines, faults.
     // Its outputs are the study's own: the report comes back as a RunResult.
@@ -27,6 +29,13 @@ struct RunRequest {
     // A run that elaborates no SystemC kernel (the analytic level) runs in
     // this process; any other in a child.
     bool in_process = false;
+    // With in_process: a run that goes to a child is first checked in this
+    // process as far as it can be without a kernel (RunContext::check_first),
+    // so that its refusals name settings in the spec's words.
+    bool check_in_process = false;
+    // Told of a run in this process frame by frame (none: nothing is told);
+    // an exception it throws stops the run, nothing written.
+    RunObserver* observer = nullptr;
 };
 
 struct RunResult {

@@ -14,6 +14,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/output/output_cleanup.h"
+#include "sw/output/output_file.h"
 #include "sw/run/exit_codes.h"
 #include "sw/run/run.h"
 #include "sw/run/run_arguments.h"
@@ -102,6 +103,7 @@ int SweepRunner::run(const std::vector<std::size_t>& todo, SweepObserver& observ
     // in place while points run in process (their outputs are committed or
     // discarded before the sweep ends by the signal).
     if (o_.in_process) TemporaryRegistry::install_handlers();
+    g_stop_signal = 0;  // a process may run many sweeps (Python): none stops the next
     const StopSignalsHandled handled;
     std::size_t next = 0;
     const auto go_on = [&] { return next < todo.size() && g_stop_signal == 0 && failing_ == 0; };
@@ -215,6 +217,7 @@ int SweepRunner::finish(Slot& slot) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - slot.started).count();
     const std::string& id = slot.point.id;
     if (WIFSIGNALED(slot.wait_status)) {
+        remove_temporaries_of(report_file(slot.point));  // SIGKILL leaves them
         if (g_stop_signal != 0 || failing_ != 0) return 0;  // stopped with the sweep: it runs again on resume
         std::cerr << o_.program << ": point " << id << ": cdvp run was killed by signal " << WTERMSIG(slot.wait_status)
                   << "; the point is not recorded\n";

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include <filesystem>
+#include <fstream>
 #include <utility>
 
 #include "sw/output/output_cleanup.h"
@@ -279,6 +280,58 @@ TEST(OutputFile, IgnoredSignalStaysIgnored) {
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(0, WEXITSTATUS(status));
     EXPECT_EQ(0u, dir.count()) << "the child went on and discarded its temporary";
+}
+
+extern "C" void handled_by_the_process(int) {}
+
+void (*handler_of(int signal_number))(int) {
+    struct sigaction action {};
+    sigaction(signal_number, nullptr, &action);
+    return action.sa_handler;
+}
+
+// In a child: a HandlersInstalled scope puts cdvp's handler over SIGTERM's
+// default action only, leaves the process's own SIGUSR1 handler and ignored
+// SIGHUP alone, and puts SIGTERM's default back when it ends; a temporary
+// held in the scope is still removed by SIGTERM. Exit 0: all held.
+TEST(OutputFile, HandlersInstalledForAScopeArePutBack) {
+    test::TempDir dir;
+    const pid_t child = fork();
+    if (child == 0) {
+        signal(SIGTERM, SIG_DFL);
+        signal(SIGUSR1, handled_by_the_process);
+        signal(SIGHUP, SIG_IGN);
+        {
+            const HandlersInstalled handlers;
+            if (handler_of(SIGTERM) == SIG_DFL) _exit(10);
+            if (handler_of(SIGUSR1) != handled_by_the_process) _exit(11);
+            if (handler_of(SIGHUP) != SIG_IGN) _exit(12);
+            { const HandlersInstalled nested; }
+            if (handler_of(SIGTERM) == SIG_DFL) _exit(13);  // only the outermost scope puts back
+        }
+        if (handler_of(SIGTERM) != SIG_DFL || handler_of(SIGUSR1) != handled_by_the_process) _exit(14);
+        const HandlersInstalled again;
+        OutputFile file(dir.file("out.csv"));
+        file.stream() << "partial" << std::flush;
+        raise(SIGTERM);
+        _exit(15);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "exit " << WEXITSTATUS(status);
+    EXPECT_EQ(SIGTERM, WTERMSIG(status));
+    EXPECT_EQ(0u, dir.count()) << "a temporary held in the scope stayed";
+}
+
+TEST(OutputFile, TheTemporariesOfAKilledWriterAreRemovedByName) {
+    test::TempDir dir;
+    for (const char* name : {"report.json.part-Ab12Cd", "report.json.part-Zz99Yy.vcd", "report.json", "other.json.part-Ab12Cd"}) {
+        std::ofstream(dir.file(name)) << "x";
+    }
+    remove_temporaries_of(dir.file("report.json"));
+    EXPECT_EQ(2u, dir.count()) << "the report and another file's temporary stay";
+    EXPECT_TRUE(std::filesystem::exists(dir.file("report.json")));
+    EXPECT_TRUE(std::filesystem::exists(dir.file("other.json.part-Ab12Cd")));
 }
 
 }  // namespace

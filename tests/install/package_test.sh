@@ -81,7 +81,7 @@ expect study_api "status 0, 2 rows (2 ok, 0 refused, 0 faulted)"
 
 # Python: the installed module, imported with the prefix's site-packages on
 # PYTHONPATH by Debian's python3, runs several configurations in one process on
-# the prefix's own binary and presets, and refuses bad input with the CLI's line.
+# the prefix's own binary and presets, and refuses a bad value naming its keyword.
 site=$(find "$work/prefix" -type d -name dist-packages | head -1)
 [ -n "$site" ] && [ -f "$site/cdvp/__init__.py" ] || fail "no cdvp Python package under $work/prefix"
 PYTHONPATH=$site /usr/bin/python3 - "$work/prefix" > "$work/python.out" 2>&1 <<'PYTHON' || fail "the installed Python module failed: $(cat "$work/python.out")"
@@ -94,13 +94,13 @@ for m in (4, 8):
     report = cdvp.run(board="adm-xrc-ii", scene="spheres", objects=60, frames=2, m=m)
     print("m", m, "frames", len(report.frames), "pairs", int(report.frames["pairs"].sum()))
 try:
-    cdvp.run(board="adm-xrc-ii", scene="spheres", objects="lots")
-    raise SystemExit("a bad option was not refused")
+    cdvp.run(board="adm-xrc-ii", scene="spheres", objects=-1)
+    raise SystemExit("a bad value was not refused")
 except cdvp.InputError as error:
     print("refused", error.status, error)
 PYTHON
 [ "$(grep -c '^m [48] frames 2 pairs [0-9]' "$work/python.out")" = 2 ] || fail "the installed module's runs: $(cat "$work/python.out")"
-grep -qF "refused 2 cdvp run: --objects: expected an integer" "$work/python.out" ||
+grep -qF "refused 2 cdvp.run: objects=: expected 0 to" "$work/python.out" ||
   fail "the installed module's refusal: $(cat "$work/python.out")"
 
 # pkg-config: the board's headers and every library, in link order.

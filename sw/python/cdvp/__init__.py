@@ -1,22 +1,24 @@
 """cdvp from Python: the settings, the presets, runs and sweeps of the virtual
 platform (docs/python.md).
 
-Every simulation is a `cdvp run` child process, as `cdvp sweep` runs its
-points: SystemC elaborates a design once per process, so a session may run
-any number of configurations, a refused or faulting run cannot take Python
-down, and the results are the command's byte for byte.
+Keyword arguments are typed values (the run layer's RunSpec), never
+command-line words. A run at the analytic level runs in this process; any
+other level in a `cdvp run` child, as `cdvp sweep` runs its points: SystemC
+elaborates a design once per process, so a session may run any number of
+configurations and a refused or faulting run cannot take Python down.
 """
 
+import functools
 import json
 import os
 import signal
+import subprocess
 
 import pandas as pd
 
 from . import _cdvp
 from ._errors import DeviceFault, Error, InputError, InternalError, SystemFailure, error_class
 from ._locate import find_binary, use_installed_boards
-from ._options import flag_words, setting_words, value_text
 from ._report import PHASES, Baseline, Report, Summary, frames_table
 
 __all__ = ["settings", "presets", "run", "sweep", "find_binary", "Report", "Summary", "Baseline", "PHASES",
@@ -25,11 +27,22 @@ __all__ = ["settings", "presets", "run", "sweep", "find_binary", "Report", "Summ
 use_installed_boards()
 
 
+@functools.lru_cache(maxsize=1)
+def _settings_json():
+    done = subprocess.run([find_binary(), "settings", "--json"], capture_output=True, check=False)
+    if done.returncode != 0:
+        raise error_class(done.returncode)(done.stderr.decode(errors="replace").strip(), done.returncode)
+    return json.loads(done.stdout)
+
+
 def settings():
     """The settings table (`cdvp settings --json`) as a DataFrame, one row a setting: name, type,
-    unit, default, min, max, choices, flag (of cdvp run, or None), help, source."""
-    columns = ["name", "type", "unit", "default", "min", "max", "choices", "flag", "help", "source"]
-    return pd.DataFrame(json.loads(_cdvp.settings_json()), columns=columns)
+    unit, default, min, max, choices, flag (of cdvp run, or None), keyword (of cdvp.run, or None),
+    help, source."""
+    columns = ["name", "type", "unit", "default", "min", "max", "choices", "flag", "keyword", "help", "source"]
+    rows = [{**row, "keyword": row["flag"][2:].replace("-", "_") if row["flag"] else None}
+            for row in _settings_json()]
+    return pd.DataFrame(rows, columns=columns)
 
 
 def presets():
@@ -40,52 +53,58 @@ def presets():
 
 
 def run(board=None, scene=None, trace=None, settings=None, pairs=False, **options):
-    """One `cdvp run` in a child process; returns its Report.
+    """One run of the virtual platform; returns its Report.
 
-    board: a preset's name or a .json path; scene ("spheres", ...) or trace (a CSV path), one of them.
-    settings: {"bus.interrupt_ns": 5000, ...}, each as -c NAME=VALUE.
+    board: a preset's name or a .json path; scene ("spheres", ...) or trace (a CSV path), one of
+    them. Paths may be str, bytes or os.PathLike.
+    settings: {"bus.interrupt_ns": 5000, ...}: any setting by its dotted name, typed.
     pairs: also read the pairs back (Report.pairs, Report.pairs_csv).
-    options: any other flag of cdvp run, underscores for dashes: objects=500 -> --objects 500,
-    quantum_ns=100 -> --quantum-ns 100, baseline=["sap", "soa"] -> --baseline sap,soa,
-    ignore_capacity=True -> --ignore-capacity.
-    Raises InputError (status 2), DeviceFault (3), SystemFailure (4) or InternalError (1), each
-    with the command's one-line message."""
-    words = flag_words({"board": board, "scene": scene, "trace": trace, **options}) + setting_words(settings)
-    report_text, summary_text, pairs_csv = _cdvp.run(words, pairs, find_binary())
+    options: every setting with a keyword (its flag of cdvp run, '_' for '-'), typed: objects=500,
+    quantum_ns=100.0, transfer="pio", ignore_capacity=True; and baseline (a str or list of str),
+    inject (a fault, or a list of them), config, software_timings. None leaves one out.
+    At the analytic level the run is in this process, at any other in a `cdvp run` child.
+    Raises TypeError for a value of the wrong type or an unknown keyword, InputError (status 2)
+    for a value cdvp refuses, naming the keyword; DeviceFault (3), SystemFailure (4) or
+    InternalError (1) with the run's one-line message."""
+    keywords = {"board": board, "scene": scene, "trace": trace, **options}
+    report_text, summary_text, pairs_csv = _cdvp.run(keywords, settings, bool(pairs), find_binary())
     report = json.loads(report_text)
     return Report(config=report["config"], summary=Summary.from_json(json.loads(summary_text)),
-                  frames=frames_table(report["frames"]), raw=report, pairs_csv=pairs_csv if pairs else None)
+                  frames=frames_table(report["frames"], report["config"].get("baselines", [])), raw=report,
+                  pairs_csv=pairs_csv if pairs else None)
+
+
+_SWEEP_OWN = ("shard", "record", "software_timings", "rerun_invalid")
 
 
 def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=True, **options):
-    """`cdvp sweep` into the directory out; returns out/sweep.csv as a DataFrame (one row a point).
+    """A sweep into the directory out; returns out/sweep.csv as a DataFrame (one row a point).
 
-    axes: {"m": [1, 2, 4], "objects": "50:800:x2", "bus.interrupt_ns": [...]}, each as --set
-    NAME=LIST (a list, or the command's own list text); a board list is board=["adm-xrc-ii", ...].
-    options: the sweep's own (board, scene, trace, fidelity, shard, rerun_invalid) and every other
-    flag of cdvp run passed on to each point, as run() spells them; settings as run()'s.
+    axes: {"m": [1, 2, 4], "objects": "50:800:x2", "bus.interrupt_ns": [...]}: a setting by its
+    keyword or dotted name, or board, trace, scene, config; a list of typed values, or the command
+    line's list text. board, scene, trace and fidelity given as keywords are axes too (a value or
+    a list).
+    options: the sweep's own (shard="1/4", record="compact", software_timings, rerun_invalid) and
+    every keyword of run() for each point; settings as run()'s.
     progress: called as progress(done, total) before the first point and after each.
     Resumable: the same call into the same out runs only the points not done yet (outcome in
-    DataFrame.attrs["outcome"], its "run_now" the points this call ran). Raises as run() does."""
+    DataFrame.attrs["outcome"], its "run_now" the points this call ran). Raises as run() does;
+    KeyboardInterrupt when Ctrl-C stops it."""
     if not isinstance(axes, dict):
         raise TypeError(f"cdvp.sweep: axes must be a dict of name -> values, not {type(axes).__name__}")
     if progress is not None and not callable(progress):
         raise TypeError(f"cdvp.sweep: progress must be callable as progress(done, total), not {type(progress).__name__}")
-    words = []
-    for name, values in axes.items():
-        words += ["--set", f"{name}={value_text(values)}"]
-    words += flag_words({**options, "out": os.fspath(out), "jobs": jobs, "no_plots": not plots, "quiet": quiet})
-    words += setting_words(settings)
-    outcome = _cdvp.sweep(words, find_binary(), progress)
+    own = {"out": out, "jobs": jobs, "plots": plots, "quiet": quiet,
+           **{key: options.pop(key) for key in _SWEEP_OWN if key in options}}
+    outcome = _cdvp.sweep(axes, own, options, settings, find_binary(), progress)
     if outcome["stop_signal"] == signal.SIGINT:
         raise KeyboardInterrupt
     if outcome["stop_signal"]:
-        raise InternalError(f"cdvp sweep: stopped by signal {outcome['stop_signal']}", 1)
+        raise InternalError(f"cdvp.sweep: stopped by signal {outcome['stop_signal']}", 1)
     if outcome["status"] != 0:
         status = outcome["status"]
-        raise error_class(status)(f"cdvp sweep: ended with status {status} after {outcome['points']} points "
+        raise error_class(status)(f"cdvp.sweep: ended with status {status} after {outcome['points']} points "
                                  "(the reason is on standard error)", status)
-    table = pd.read_csv(os.path.join(os.fspath(out), "sweep.csv"))
+    table = pd.read_csv(os.path.join(os.fsdecode(os.fspath(out)), "sweep.csv"))
     table.attrs["outcome"] = outcome
     return table
-

@@ -63,15 +63,37 @@ class Report:
     @property
     def pairs(self):
         """The pairs of every frame (columns frame, a, b), or None if the run was not asked for them."""
-        return None if self.pairs_csv is None else pd.read_csv(io.BytesIO(self.pairs_csv))
+        if self.pairs_csv is None:
+            return None
+        return pd.read_csv(io.BytesIO(self.pairs_csv), dtype={"frame": "int64", "a": "int64", "b": "int64"})
 
 
-def frames_table(frames):
-    """The report's frames as a DataFrame, each baseline's nested times flattened into columns."""
+# A frame's numbers as the report gives them (sw/run/run_report.cpp, its keys in order), and each
+# baseline's times of a frame: the columns of a run of no frames too.
+FRAME_COLUMNS = ("boxes_sent", "compute_cycles", "compute_ns", "driver_ns", "extra_driver_ns", "extra_pairs",
+                 "extra_readback_ns", "extra_share", "frame", "irq_ns", "latency_ns", "load_wait_slots", "objects",
+                 "overflow_pauses", "overlap_ns", "pairs", "readback_bytes", "readback_ns", "reference_pairs",
+                 "sim_wall_native_ns", "stall_cycles", "start_ns", "sweep_cycles", "timeouts_recovered",
+                 "total_ns", "upload_bytes", "upload_ns")
+BASELINE_TIMES = ("host_ns", "involuntary_switches", "migrated", "native_ns", "probe_native_ns", "wall_native_ns")
+
+
+def _dtype(column):
+    if column.endswith("_migrated"):
+        return "bool"
+    return "float64" if column.endswith("_ns") or column == "extra_share" else "int64"
+
+
+def frames_table(frames, baselines=()):
+    """The report's frames as a DataFrame, each baseline's nested times flattened into columns;
+    a run of no frames has the same columns, typed."""
     rows = []
     for frame in frames:
         row = {key: value for key, value in frame.items() if key != "baselines"}
         for name, times in frame.get("baselines", {}).items():
             row.update({f"{name}_{key}": value for key, value in times.items()})
         rows.append(row)
-    return pd.DataFrame(rows)
+    if rows:
+        return pd.DataFrame(rows)
+    columns = list(FRAME_COLUMNS) + [f"{name}_{key}" for name in baselines for key in BASELINE_TIMES]
+    return pd.DataFrame({column: pd.Series(dtype=_dtype(column)) for column in columns})

@@ -34,13 +34,45 @@ def test_a_point_that_does_not_fit_is_a_refused_row(tmp_path):
         cdvp.sweep({"m": [32]}, tmp_path / "none", **fits_not)
 
 
-def test_a_bad_axis_is_the_commands_input_error(cli, tmp_path):
+def test_a_bad_axis_value_is_an_input_error_naming_the_axis(tmp_path):
     with pytest.raises(cdvp.InputError) as refused:
         cdvp.sweep({"m": [0, 4]}, tmp_path, **POINT_OPTIONS)
-    done = cli("sweep", "--set", "m=0,4", "--board", "adm-xrc-ii", "--scene", "spheres", "--frames", "2",
-               "--out", str(tmp_path), "--no-plots", "-q")
-    assert refused.value.status == 2 == done.returncode
-    assert str(refused.value) == done.stderr.splitlines()[0]
+    assert refused.value.status == 2
+    assert str(refused.value) == "cdvp.sweep: axes['m']: expected 1 to 32, got 0"
+    with pytest.raises(cdvp.InputError, match=r"axes\['m'\]: expected an integer from 1 to 32, got '0'"):
+        cdvp.sweep({"m": "0,4"}, tmp_path, **POINT_OPTIONS)
+    with pytest.raises(cdvp.InputError, match="is the same value as"):
+        cdvp.sweep({"bus.interrupt_ns": [5000, 5000.0]}, tmp_path, **POINT_OPTIONS)
+    with pytest.raises(cdvp.InputError, match=r"axes\['mm'\]: no setting or input has this name; the nearest is 'm'"):
+        cdvp.sweep({"mm": [1]}, tmp_path, **POINT_OPTIONS)
+    assert not any(tmp_path.iterdir())
+
+
+def test_a_sweep_from_a_progress_callback_is_refused(tmp_path):
+    refusals = []
+
+    def nested(done, total):
+        if done == 0:
+            try:
+                cdvp.sweep({"m": [1]}, tmp_path / "inner", objects=20, **POINT_OPTIONS)
+            except cdvp.InputError as refused:
+                refusals.append(refused)
+
+    table = cdvp.sweep({"m": [1, 2]}, tmp_path / "outer", progress=nested, objects=20, **POINT_OPTIONS)
+    assert len(table) == 2
+    assert len(refusals) == 1 and "another sweep is running in this process" in str(refusals[0])
+    assert refusals[0].status == 2
+
+
+def test_a_sweep_takes_typed_values_and_list_text(tmp_path):
+    table = cdvp.sweep({"objects": "20:40:x2", "bus.interrupt_ns": [5000, 6000.5]}, tmp_path, m=4,
+                       **POINT_OPTIONS)
+    assert sorted(zip(table["objects"], table["bus.interrupt_ns"])) == [(20, 5000), (20, 6000.5), (40, 5000),
+                                                                         (40, 6000.5)]
+    with pytest.raises(TypeError, match="jobs=: expected an int"):
+        cdvp.sweep({"m": [1]}, tmp_path / "x", jobs="2", **POINT_OPTIONS)
+    with pytest.raises(cdvp.InputError, match="m=: board.m is an axis of the sweep"):
+        cdvp.sweep({"m": [1]}, tmp_path / "y", m=2, **POINT_OPTIONS)
 
 
 def test_an_exception_in_progress_is_raised_after_the_sweep(tmp_path):
@@ -59,5 +91,5 @@ def test_wrong_types_are_refused_before_any_point_runs(tmp_path):
         cdvp.sweep({"m": [1]}, tmp_path / "b", board="adm-xrc-ii", scene="spheres", progress=5)
     assert not (tmp_path / "b").exists()
     with pytest.raises(cdvp.InputError, match="NUL") as refused:
-        cdvp.run(board="adm-xrc-ii", scene="spheres", objects="5\0")
+        cdvp.run(board="adm-xrc-ii", scene="spheres\0")
     assert refused.value.status == 2

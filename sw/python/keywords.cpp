@@ -1,0 +1,325 @@
+#include "sw/python/keywords.h"
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "models/common/user_text.h"
+#include "platform/settings/board_preset.h"
+#include "platform/settings/config_file.h"
+#include "platform/settings/settings.h"
+#include "sw/python/python_names.h"
+#include "sw/run/run_arguments.h"
+#include "sw/study/sweep_inputs.h"
+#include "sw/study/sweep_manifest.h"
+#include "sw/study/sweep_state.h"
+
+namespace py = pybind11;
+
+namespace cdvp {
+
+namespace {
+
+std::string type_name(py::handle value) { return py::str(py::type::handle_of(value).attr("__name__")); }
+
+[[noreturn]] void wrong_type(const std::string& label, const std::string& expected, py::handle value) {
+    throw py::type_error(label + ": expected " + expected + ", got " + type_name(value));
+}
+
+std::string without_nul(std::string text, const std::string& label) {
+    if (text.find('\0') != std::string::npos) throw InputError(label + ": a value may not hold a NUL character");
+    return text;
+}
+
+// A text as the file system has it: str (non-UTF-8 names from os.listdir
+// by their escapes), bytes, or os.PathLike, through os.fsencode.
+std::string path_of(py::handle value, const std::string& label) {
+    if (!py::isinstance<py::str>(value) && !py::isinstance<py::bytes>(value) && !py::hasattr(value, "__fspath__")) {
+        wrong_type(label, "a str, bytes or os.PathLike", value);
+    }
+    const py::bytes encoded = py::module_::import("os").attr("fsencode")(value);
+    return without_nul(encoded, label);
+}
+
+std::string text_of(py::handle value, const std::string& label) {
+    if (!py::isinstance<py::str>(value)) wrong_type(label, "a str", value);
+    return path_of(value, label);
+}
+
+bool is_list(py::handle value) { return py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value); }
+
+// A str, or a list or tuple of them.
+std::vector<std::string> texts_of(py::handle value, const std::string& label) {
+    if (py::isinstance<py::str>(value)) return {text_of(value, label)};
+    if (!is_list(value)) wrong_type(label, "a str or a list of str", value);
+    std::vector<std::string> texts;
+    for (py::handle item : value) texts.push_back(text_of(item, label));
+    return texts;
+}
+
+bool yes_no(const Setting& s) {
+    return s.type == SettingType::kChoice && s.choices.size() == 2 &&
+           std::set<std::string>(s.choices.begin(), s.choices.end()) == std::set<std::string>{"no", "yes"};
+}
+
+SettingValue count_value(const Setting& s, py::handle value, const std::string& label) {
+    if (py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr())) wrong_type(label, "an int", value);
+    const py::int_ number = py::reinterpret_steal<py::int_>(PyNumber_Index(value.ptr()));
+    if (!number) throw py::error_already_set();
+    const unsigned long long count = PyLong_AsUnsignedLongLong(number.ptr());
+    if (PyErr_Occurred() != nullptr) {  // below 0 or above 2^64 - 1
+        PyErr_Clear();
+        const std::string shown = py::str(static_cast<py::handle>(number));
+        return s.from_number(number < py::int_(0) ? -1.0 : HUGE_VAL, shown);
+    }
+    return s.from_count(count);
+}
+
+SettingValue real_value(const Setting& s, py::handle value, const std::string& label) {
+    if (py::isinstance<py::bool_>(value) ||
+        !(PyFloat_Check(value.ptr()) || PyIndex_Check(value.ptr()) || py::hasattr(value, "__float__"))) {
+        wrong_type(label, "a number", value);
+    }
+    const double number = PyFloat_AsDouble(value.ptr());
+    if (PyErr_Occurred() != nullptr) throw py::error_already_set();
+    return s.from_number(number, py::str(value));
+}
+
+// A setting's value from Python: an int for a count, an int or float for a
+// number, a str for a choice (True or False for yes or no), a str or path
+// for a text.
+SettingValue typed_value(const Setting& s, py::handle value, const std::string& label) {
+    try {
+        switch (s.type) {
+            case SettingType::kCount:
+                return count_value(s, value, label);
+            case SettingType::kReal:
+                return real_value(s, value, label);
+            case SettingType::kChoice:
+                if (yes_no(s) && py::isinstance<py::bool_>(value)) return s.from_string(value.cast<bool>() ? "yes" : "no");
+                if (!py::isinstance<py::str>(value)) wrong_type(label, yes_no(s) ? "True, False or a str" : "a str", value);
+                return s.from_string(text_of(value, label));
+            case SettingType::kText:
+                if (PyIndex_Check(value.ptr()) && !py::isinstance<py::bool_>(value)) return s.from_string(py::str(value));
+                return s.from_string(path_of(value, label));
+        }
+    } catch (const std::invalid_argument& e) {
+        throw InputError(label + ": " + e.what());
+    }
+    throw std::logic_error("a setting of no type");
+}
+
+Assignment given(const Setting& s, py::handle value, const std::string& label) {
+    return {&s, typed_value(s, value, label), {SettingOrigin::Kind::kGiven, "", 0}};
+}
+
+std::string keyword_label(const std::string& key) { return key + "="; }
+
+void set_frames(RunSpec& spec, FrameInput frames) {
+    if (spec.frames) throw InputError("scene= and trace=: give one of them (the run's frames come from it)");
+    spec.frames = std::move(frames);
+}
+
+// One of cdvp.run's keywords: an input that is no setting, or a setting's.
+void set_keyword(RunSpec& spec, const std::string& key, py::handle value, const std::string& function) {
+    const std::string label = keyword_label(key);
+    if (key == "board") {
+        spec.settings.board = path_of(value, label);
+    } else if (key == "config") {
+        spec.settings.config = path_of(value, label);
+    } else if (key == "scene") {
+        set_frames(spec, SceneFrames{text_of(value, label)});
+    } else if (key == "trace") {
+        set_frames(spec, TraceFrames{path_of(value, label)});
+    } else if (key == "baseline") {
+        spec.baselines = py::isinstance<py::str>(value) ? comma_list(text_of(value, label)) : texts_of(value, label);
+    } else if (key == "inject") {
+        for (std::string& fault : texts_of(value, label)) spec.faults.push_back(std::move(fault));
+    } else if (key == "software_timings") {
+        spec.software_timings = path_of(value, label);
+    } else if (key == "report" || key == "pairs_out" || key == "vcd" || key == "vcd_frames" || key == "vcd_format") {
+        throw InputError(label + ": the module's own: the report comes back as a Report (its pairs with pairs=True); "
+                                 "waveforms are the command line's (cdvp run --vcd)");
+    } else if (const Setting* s = setting_of_keyword(key)) {
+        spec.settings.given.push_back(given(*s, value, label));
+    } else {
+        std::vector<std::string> keywords{"board", "config", "scene", "trace", "baseline", "inject", "software_timings"};
+        for (const Setting& setting : settings_table()) {
+            if (!setting.flag.empty()) keywords.push_back(keyword_of(setting));
+        }
+        throw py::type_error(function + "() got an unexpected keyword argument '" + key + "' (the nearest is '" +
+                             nearest_name(key, keywords) + "'; any setting goes in settings={NAME: VALUE})");
+    }
+}
+
+void set_settings(RunSpec& spec, py::handle settings) {
+    if (settings.is_none()) return;
+    if (!py::isinstance<py::dict>(settings)) wrong_type("settings", "a dict of setting name -> value", settings);
+    for (const auto& [name, value] : py::reinterpret_borrow<py::dict>(settings)) {
+        if (!py::isinstance<py::str>(name)) wrong_type("settings", "setting names as str", name);
+        const std::string key = name.cast<std::string>();
+        const std::string label = "settings['" + printable(key) + "']";
+        const Setting* s = find_setting(key);
+        if (s == nullptr) {
+            throw InputError(label + ": no setting has this name; the nearest is '" + nearest_name(key, setting_names()) +
+                             "' (cdvp.settings() lists them)");
+        }
+        if (!value.is_none()) spec.settings.given.push_back(given(*s, value, label));
+    }
+}
+
+// A sweep's axis: a setting (by its dotted name or keyword) or an input
+// (board, trace, scene, config), with its values checked before any point runs.
+Axis axis_of(const std::string& name, py::handle values, const std::string& label) {
+    Axis axis{name, {}};
+    const Setting* s = find_setting(name);
+    if (s == nullptr) s = setting_of_keyword(name);
+    const bool input = name == "board" || name == "trace" || name == "scene" || name == "config";
+    if (s == nullptr && !input) {
+        std::vector<std::string> names = setting_names();
+        for (const Setting& setting : settings_table()) {
+            if (!setting.flag.empty()) names.push_back(keyword_of(setting));
+        }
+        throw InputError(label + ": no setting or input has this name; the nearest is '" + nearest_name(name, names) +
+                         "' (cdvp.settings() lists the settings)");
+    }
+    axis.key = s != nullptr ? s->name : name;
+    axis.flag = s != nullptr ? (s->value_name.empty() ? std::string() : s->flag) : name;
+    std::vector<std::string> canonical;
+    if (py::isinstance<py::str>(values)) {  // the command line's list text
+        axis.values = expand_list(text_of(values, label), label, s != nullptr);
+        for (const std::string& value : axis.values) {
+            try {
+                canonical.push_back(s != nullptr ? to_text(s->parse_text(value)) : value);
+            } catch (const std::invalid_argument& e) {
+                throw InputError(label + ": " + e.what());
+            }
+        }
+    } else if (is_list(values)) {
+        for (py::handle value : values) {
+            axis.values.push_back(s != nullptr ? to_text(typed_value(*s, value, label))
+                                               : name == "scene" ? text_of(value, label) : path_of(value, label));
+            canonical.push_back(axis.values.back());
+        }
+    } else {
+        wrong_type(label, "a list of values or a list's text (\"50:800:x2\")", values);
+    }
+    if (axis.values.empty()) throw InputError(label + ": expected at least one value");
+    for (std::size_t k = 0; k < canonical.size(); ++k) {
+        for (std::size_t j = 0; j < k; ++j) {
+            if (canonical[j] == canonical[k]) {
+                throw InputError(label + ": '" + excerpt(axis.values[k]) + "' is the same value as '" +
+                                 excerpt(axis.values[j]) + "'; give each value once");
+            }
+        }
+    }
+    for (const std::string& value : axis.values) {
+        if (axis.key == "board") load_board_preset(value, label);
+        if (axis.key == "config") read_config_file(value);
+    }
+    return axis;
+}
+
+bool flag_of(const py::dict& own, const char* key, bool otherwise) {
+    if (!own.contains(key) || own[key].is_none()) return otherwise;
+    const py::object value = own[key];
+    if (!py::isinstance<py::bool_>(value)) wrong_type(keyword_label(key), "True or False", value);
+    return value.cast<bool>();
+}
+
+unsigned jobs_of(py::handle value) {
+    if (py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr())) wrong_type("jobs=", "an int", value);
+    const long long jobs = value.cast<long long>();
+    if (jobs < 1 || jobs > kMaxJobs) {
+        throw InputError("jobs=: expected a whole number from 1 to " + std::to_string(kMaxJobs) + ", got " +
+                         std::to_string(jobs));
+    }
+    return static_cast<unsigned>(jobs);
+}
+
+void read_own(const py::dict& own, SweepSpec& spec) {
+    if (!own.contains("out") || own["out"].is_none()) throw py::type_error("cdvp.sweep() needs out, the sweep's directory");
+    spec.out_dir = path_of(own["out"], "out=");
+    if (spec.out_dir.empty()) throw InputError("out=: expected a directory, got ''");
+    while (spec.out_dir.size() > 1 && spec.out_dir.back() == '/') spec.out_dir.pop_back();
+    if (own.contains("jobs") && !own["jobs"].is_none()) spec.jobs = jobs_of(own["jobs"]);
+    if (own.contains("shard") && !own["shard"].is_none()) spec.shard = parse_shard(text_of(own["shard"], "shard="));
+    if (own.contains("record") && !own["record"].is_none()) {
+        spec.record = parse_record_mode(text_of(own["record"], "record="), "record=");
+    }
+    spec.software_timings = software_timings_dir(spec.out_dir);
+    if (own.contains("software_timings") && !own["software_timings"].is_none()) {
+        std::string dir = path_of(own["software_timings"], "software_timings=");
+        if (dir.empty()) throw InputError("software_timings=: expected a directory or 'none', got ''");
+        while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
+        spec.software_timings = dir == "none" ? std::string() : dir;
+        spec.software_timings_given = dir != "none";
+    }
+    spec.plots = flag_of(own, "plots", true);
+    spec.quiet = flag_of(own, "quiet", true);
+    spec.rerun_invalid = flag_of(own, "rerun_invalid", false);
+}
+
+}  // namespace
+
+RunSpec run_spec_of(const py::dict& keywords, const py::handle& settings, const std::string& function) {
+    RunSpec spec;
+    spec.settings.names = python_names();
+    set_settings(spec, settings);
+    for (const auto& [name, value] : keywords) {
+        if (!value.is_none()) set_keyword(spec, name.cast<std::string>(), value, function);
+    }
+    return spec;
+}
+
+SweepSpec sweep_spec_of(const py::dict& axes, const py::dict& own, const py::dict& keywords,
+                        const py::handle& settings) {
+    SweepSpec spec;
+    spec.program = "cdvp.sweep";
+    read_own(own, spec);
+    std::set<std::string> axis_keys;
+    const auto add_axis = [&](Axis axis) {
+        if (!axis_keys.insert(axis.key).second) {
+            throw InputError("axes['" + printable(axis.name) + "']: " + axis.key + " is an axis already; give it once");
+        }
+        spec.axes.push_back(std::move(axis));
+    };
+    for (const auto& [name, values] : axes) {
+        if (!py::isinstance<py::str>(name)) wrong_type("axes", "axis names as str", name);
+        const std::string key = name.cast<std::string>();
+        add_axis(axis_of(key, values, "axes['" + printable(key) + "']"));
+    }
+    // board, scene, trace and fidelity are axes of the sweep, as on the command line.
+    py::dict point_keywords;
+    for (const auto& [name, value] : keywords) {
+        const std::string key = name.cast<std::string>();
+        if (value.is_none()) continue;
+        if (key == "board" || key == "scene" || key == "trace" || key == "fidelity") {
+            add_axis(axis_of(key, is_list(value) ? value : py::make_tuple(value), keyword_label(key)));
+        } else {
+            point_keywords[name] = value;
+        }
+    }
+    spec.run = run_spec_of(point_keywords, settings, "cdvp.sweep");
+    for (const Assignment& a : spec.run.settings.given) {
+        if (axis_keys.count(a.setting->name) != 0) {
+            throw InputError(spec.run.settings.names->given(*a.setting) + ": " + a.setting->name +
+                             " is an axis of the sweep; give it once");
+        }
+        if (a.setting->name == "host.profile") {
+            const std::string path = to_text(a.value);
+            if (!path.empty()) spec.inputs.push_back({"--host-profile", path, path});
+        }
+    }
+    if (spec.run.settings.config) {
+        if (axis_keys.count("config") != 0) throw InputError("config=: config is an axis of the sweep; give it once");
+        read_config_file(*spec.run.settings.config);  // refused here, naming file and line
+        spec.inputs.push_back({"--config", *spec.run.settings.config, *spec.run.settings.config});
+    }
+    if (spec.run.frames) throw InputError("scene= and trace= of a sweep are axes: give them as keywords or in axes");
+    spec.in_process = true;  // analytic points in this process
+    name_sweep_inputs(spec);
+    return spec;
+}
+
+}  // namespace cdvp

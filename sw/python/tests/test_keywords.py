@@ -1,0 +1,99 @@
+"""Keyword arguments as typed values: types, values that look like options, file names, empty tables."""
+
+import os
+import pathlib
+import shutil
+
+import numpy as np
+import pytest
+
+import cdvp
+from conftest import SMALL
+
+REPO = pathlib.Path(__file__).resolve().parents[3]
+
+
+def test_a_value_beginning_with_dashes_is_a_value():
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.run(**SMALL, baseline="--help")
+    assert refused.value.status == 2
+    assert "baseline=" in str(refused.value) and "--help" in str(refused.value)
+    with pytest.raises(cdvp.InputError, match="scene="):
+        cdvp.run(board="adm-xrc-ii", scene="--version")
+
+
+@pytest.mark.parametrize("keywords, message", [
+    ({"objects": "40"}, "objects=: expected an int, got str"),
+    ({"objects": True}, "objects=: expected an int, got bool"),
+    ({"objects": 40.0}, "objects=: expected an int, got float"),
+    ({"quantum_ns": "100"}, "quantum_ns=: expected a number, got str"),
+    ({"transfer": 1}, "transfer=: expected a str, got int"),
+    ({"baseline": 3}, "baseline=: expected a str or a list of str, got int"),
+    ({"settings": ["bus.interrupt_ns", 5000]}, "settings: expected a dict of setting name -> value, got list"),
+    ({"settings": {"bus.interrupt_ns": "5000"}}, r"settings\['bus.interrupt_ns'\]: expected a number, got str"),
+])
+def test_a_value_of_the_wrong_type_is_a_type_error_naming_the_keyword(keywords, message):
+    options = {key: value for key, value in SMALL.items() if key not in keywords}
+    with pytest.raises(TypeError, match=message):
+        cdvp.run(**options, **keywords)
+
+
+@pytest.mark.parametrize("keywords, message", [
+    ({"m": -1}, "m=: expected 1 to 32, got -1"),
+    ({"m": 2**70}, "m=: expected 1 to 32, got 1180591620717411303424"),
+    ({"transfer": "dmaa"}, "transfer=: expected dma or pio"),
+    ({"settings": {"bus.interrupt_ns": -5.0}}, r"settings\['bus.interrupt_ns'\]: expected"),
+    ({"settings": {"no.such": 1}}, r"settings\['no.such'\]: no setting has this name"),
+])
+def test_a_refused_value_is_an_input_error_naming_the_keyword(keywords, message):
+    with pytest.raises(cdvp.InputError, match=message) as refused:
+        cdvp.run(**{**SMALL, **{k: v for k, v in keywords.items() if k != "settings"}},
+                 settings=keywords.get("settings"))
+    assert refused.value.status == 2
+
+
+def test_typed_values_of_numpy_lists_and_switches_run():
+    report = cdvp.run(**{**SMALL, "objects": np.int64(40)}, fidelity="analytic", quantum_ns=np.float64(0), baseline=["sap"],
+                      ignore_capacity=True, settings={"bus.interrupt_ns": 5000})
+    assert report.config["settings"]["run.ignore_capacity"]["value"] == "yes"
+    assert report.config["settings"]["bus.interrupt_ns"]["value"] == 5000
+    assert report.config["settings"]["scene.objects"]["origin"] == "keyword objects"
+    assert list(report.summary.baselines) == ["sap"]
+
+
+def test_file_names_may_be_str_bytes_paths_and_not_utf8(tmp_path):
+    trace = os.fsencode(tmp_path) + b"/tr\xe9ce.csv"
+    shutil.copy(REPO / "traces" / "small.csv", trace)
+    listed = [name for name in os.listdir(tmp_path) if name.startswith("tr")][0]  # surrogate-escaped str
+    runs = [cdvp.run(trace=name, pairs=True) for name in (trace, os.path.join(tmp_path, listed),
+                                                          pathlib.Path(os.fsdecode(trace)))]
+    assert runs[0].pairs_csv == runs[1].pairs_csv == runs[2].pairs_csv and runs[0].summary.pairs > 0
+
+
+def test_a_latin1_preset_name_works(tmp_path):
+    preset = os.fsencode(tmp_path) + b"/caf\xe9.json"
+    shutil.copy(REPO / "platform" / "boards" / "adm-xrc-ii.json", preset)
+    for fidelity in ("analytic", "fast"):
+        ours = cdvp.run(board=preset, scene="spheres", objects=40, frames=2, fidelity=fidelity)
+        paper = cdvp.run(board="adm-xrc-ii", scene="spheres", objects=40, frames=2, fidelity=fidelity)
+        assert ours.summary.total_ns == paper.summary.total_ns
+        assert ours.config["settings"]["bus.type"]["origin"].endswith("caf\ufffd.json")
+
+
+def test_empty_tables_keep_their_columns_and_dtypes():
+    some = cdvp.run(**SMALL, baseline="sap", pairs=True)
+    none = cdvp.run(**{**SMALL, "frames": 0}, baseline="sap", pairs=True)
+    assert len(none.frames) == 0 and len(none.pairs) == 0
+    assert sorted(none.frames.columns) == sorted(some.frames.columns)
+    assert none.frames.dtypes.sort_index().equals(some.frames.dtypes.sort_index())
+    assert list(none.pairs.columns) == ["frame", "a", "b"]
+    assert (none.pairs.dtypes == "int64").all() and (some.pairs.dtypes == "int64").all()
+
+
+def test_a_run_for_a_child_is_checked_first_in_the_modules_words():
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.run(board="adm-xrc-ii", scene="spheres", objects=4000, m=32, memory="block_ram", fidelity="fast")
+    assert "too few for m=32 at 4000 objects (objects=)" in str(refused.value)
+    assert "ignore_capacity=True runs it anyway" in str(refused.value)
+    with pytest.raises(cdvp.InputError, match=r"inject=: .* past the run's last frame 1 \(frames=2\)"):
+        cdvp.run(**SMALL, inject="board-error@frame=5")
