@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/board_spec/board_config.h"
+#include "models/board_spec/board_engine.h"
 #include "models/fast_engine/pair_finder.h"
 
 namespace cdvp::testing {
@@ -51,5 +52,16 @@ PairList lane_hit_pairs(const WordScene& scene, NumberFormat format = NumberForm
 // Returns the number of segments (pauses + 1); failures are gtest failures.
 uint32_t expect_lockstep(const BoardConfig& config, const WordScene& scene, uint32_t probes_per_segment,
                          std::mt19937& rng);
+
+// The scene as the board's coordinate memories hold it.
+CoordinateStore store_of(const WordScene& scene);
+// The buffer's valid entries after `edges` edges of the segment.
+PairList buffer_of(BoardEngine& engine, uint64_t edges);
+// Two engines of one board through the seam, segment by segment: at
+// `probes` random edges whether the segment has ended and the counters,
+// then its end, how it ends, the counters past it and the whole buffer.
+// The reference is asked first at each edge (a clocked one steps there).
+void expect_same_engines(BoardEngine& reference, BoardEngine& other, const WordScene& scene, std::mt19937& rng,
+                         int probes = 40);
 
 }  // namespace cdvp::testing
