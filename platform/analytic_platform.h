@@ -1,8 +1,9 @@
 // The analytic level of the platform (--fidelity analytic): no SystemC kernel,
 // no engine stepping. A frame's pairs are those the board's comparison unit
 // accepts in its number format, found by the fast engine's PairFinder (so the
-// application and the float32 check see the board's exact pairs); its time is
-// AnalyticFrame's closed forms for those pairs (docs/analytic.md says which
+// application and the float32 check see the board's exact pairs; on a grid
+// board by its GridSearch, which places each pair in its slot by the grid's
+// closed forms); its time is AnalyticFrame's closed forms for those pairs (docs/analytic.md says which
 // phases are exact and measures the rest). Nothing is elaborated, so a process
 // may build any number of these: a sweep evaluates analytic points in process.
 #pragma once
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "models/fast_engine/pair_finder.h"
+#include "models/grid_fast_engine/grid_search.h"
 #include "platform/driver/analytic_frame.h"
 #include "platform/driver/analytic_pipeline.h"
 #include "platform/host_cpu.h"
@@ -80,6 +82,9 @@ private:
     uint32_t host_bank_ = 0;
     std::optional<AnalyticPipeline> pipeline_;  // two box banks
     PairList in_flight_pairs_;
+    // A grid board: its search, and the slots of the frame being timed.
+    std::optional<GridSearch> grid_;
+    std::vector<uint64_t> grid_slots_;
 };
 
 }  // namespace cdvp

@@ -101,21 +101,30 @@ uint64_t BoardDriver::read_counter(uint32_t low_offset) {
 }
 
 void BoardDriver::open() {
-    if (read(R::kId) != R::kIdValue) throw std::runtime_error("no collision board answers at the BAR");
+    const uint32_t id = read(R::kId);
+    if (id != R::kIdValue && id != R::kGridIdValue) throw std::runtime_error("no collision board answers at the BAR");
+    const bool grid_board = id == R::kGridIdValue;
     capacity_ = read(R::kCapacity);
     buffer_depth_ = read(R::kPairBufferDepth);
     parallelism_ = read(R::kParallelism);
     format_ = NumberFormat::from_register(read(R::kFormat));
     // Where the boxes sit bounds a sweep's cycles (the timeouts): block RAM,
-    // or SSRAM swept in tiles.
+    // or SSRAM swept in tiles; a grid board's SSRAM and grid.
     TileConfig tiles;
     tiles.boxes = read(R::kTileBoxes);
-    if (tiles.tiled()) {
+    if (tiles.tiled() || grid_board) {
         const uint32_t timing = read(R::kTileTiming);
         tiles.load_latency_cycles = timing & R::kTileTimingLatencyMask;
         tiles.cycles_per_box = timing >> R::kTileTimingCyclesShift;
     }
     time_.emplace(config_, *bus_, period_, parallelism_, buffer_depth_, tiles);
+    if (grid_board) {
+        GridConfig grid;
+        grid.dims = read(R::kGridDims);
+        grid.cell_capacity = read(R::kGridCellCapacity);
+        grid.max_span = read(R::kGridMaxSpan);
+        time_->set_grid(grid);
+    }
     if (port_.memory_size() < host_memory_bytes(capacity_, buffer_depth_, config_)) {
         throw std::runtime_error("host memory too small for the board's capacity and pair buffer");
     }

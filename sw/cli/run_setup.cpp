@@ -77,7 +77,7 @@ RunConfig describe_run(BoardSetup& setup, uint32_t capacity, const RunBudgets& b
     RunConfig run;
     run.capacity = capacity;
     const MemoryPlan memory = plan_memory(settings, capacity);
-    setup.platform.board.tiles = memory.tiles;
+    memory.apply(setup.platform.board);
     run.config = setup.platform.board;
     describe_memory(run, memory.ssram);
     run.board = setup.board;

@@ -59,26 +59,9 @@ TEST(FastBoardEngine, AnswersAsTheClockedEngineInEveryFormat) {
 TEST(FastBoardEngine, AbortKeepsTheBufferOfThatEdge) {
     std::mt19937 rng(22);
     const auto scene = testing::overlapping_scene(150, rng);
-    const CoordinateStore store = testing::store_of(scene);
     const BoardConfig config = small_board(4, 500);
-    for (int trial = 0; trial < 20; ++trial) {
-        ClockedEngine clocked(config, scene.size());
-        FastBoardEngine fast(config);
-        clocked.start(store, scene.size());
-        fast.start(store, scene.size());
-        if (trial % 2 == 1) {  // abort in the second segment
-            clocked.segment_edges();
-            clocked.resume();
-            fast.resume();
-        }
-        const uint64_t at = std::uniform_int_distribution<uint64_t>(0, fast.segment_edges() + 3)(rng);
-        clocked.abort(at);
-        fast.abort(at);
-        EXPECT_EQ(testing::buffer_of(clocked, at), testing::buffer_of(fast, at)) << "abort at edge " << at;
-        EXPECT_EQ(clocked.counters_after(at), fast.counters_after(at)) << "abort at edge " << at;
-        EXPECT_FALSE(fast.segment_finishes());
-        EXPECT_TRUE(fast.ended_by(at));
-    }
+    testing::expect_same_aborts([&] { return std::make_unique<ClockedEngine>(config, scene.size()); },
+                                [&] { return std::make_unique<FastBoardEngine>(config); }, scene, rng);
 }
 
 }  // namespace

@@ -282,4 +282,26 @@ void expect_same_engines(BoardEngine& reference, BoardEngine& other, const WordS
     }
 }
 
+void expect_same_aborts(const MakeEngine& make_reference, const MakeEngine& make_other, const WordScene& scene,
+                        std::mt19937& rng, int trials) {
+    const CoordinateStore store = store_of(scene);
+    for (int trial = 0; trial < trials; ++trial) {
+        const std::unique_ptr<BoardEngine> reference = make_reference(), other = make_other();
+        reference->start(store, scene.size());
+        other->start(store, scene.size());
+        if (trial % 2 == 1) {  // abort in the second segment
+            reference->segment_edges();
+            reference->resume();
+            other->resume();
+        }
+        const uint64_t at = std::uniform_int_distribution<uint64_t>(0, other->segment_edges() + 3)(rng);
+        reference->abort(at);
+        other->abort(at);
+        EXPECT_EQ(buffer_of(*reference, at), buffer_of(*other, at)) << "abort at edge " << at;
+        EXPECT_EQ(reference->counters_after(at), other->counters_after(at)) << "abort at edge " << at;
+        EXPECT_FALSE(other->segment_finishes());
+        EXPECT_TRUE(other->ended_by(at));
+    }
+}
+
 }  // namespace cdvp::testing

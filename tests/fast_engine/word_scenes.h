@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -63,5 +65,11 @@ PairList buffer_of(BoardEngine& engine, uint64_t edges);
 // The reference is asked first at each edge (a clocked one steps there).
 void expect_same_engines(BoardEngine& reference, BoardEngine& other, const WordScene& scene, std::mt19937& rng,
                          int probes = 40);
+
+// ABORT at a random edge of the first or the second segment, over `trials`
+// pairs of engines made afresh: the buffer and the counters at that edge agree.
+using MakeEngine = std::function<std::unique_ptr<BoardEngine>()>;
+void expect_same_aborts(const MakeEngine& reference, const MakeEngine& other, const WordScene& scene,
+                        std::mt19937& rng, int trials = 20);
 
 }  // namespace cdvp::testing
