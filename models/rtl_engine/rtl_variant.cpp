@@ -49,6 +49,10 @@ bool RtlVariant::serves(const BoardConfig& config, uint32_t boxes) const {
 }
 
 std::string rtl_unsupported(const BoardConfig& config) {
+    if (config.grid_board()) {
+        return "the board RTL is the all-pairs board's; the grid board (board.algorithm grid) runs on the cycle or "
+               "fast engine";
+    }
     if (config.box_banks != 1) {
         return "the board RTL has one box bank (pipelined frames run on the cycle or fast engine); box_banks is " +
                std::to_string(config.box_banks);
