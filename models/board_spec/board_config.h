@@ -71,6 +71,12 @@ struct BoardConfig {
     // The most slots a sweep of `objects` boxes can take, whatever the boxes:
     // sweep_cycles(), or a grid board's worst case.
     uint64_t worst_sweep_slots(uint64_t objects) const;
+    // The slots a sweep of `objects` boxes took, from the cycles and stalls
+    // its counters showed: sweep_cycles(), or on a grid board, whose slots
+    // depend on its boxes, the cycles less the pipeline's latency and stalls.
+    uint64_t swept_slots(uint64_t objects, uint64_t cycles, uint64_t stalls) const {
+        return grid_board() ? cycles - pipeline_latency() - stalls : sweep_cycles(objects);
+    }
     // The runs a row's pairs may come in over a sweep (the pair formats'
     // worst case): one in block RAM, one a column tile when tiled, any
     // number on a grid board (0).

@@ -280,7 +280,9 @@ int step_worlds(const BulletOptions& o, const SceneSpec& spec, Setup& setup, Out
             std::cerr << "cdvp bullet: frame " << frame << ": " << *lost << '\n';
             return kExitDeviceFault;
         }
-        const FrameStats stats{frame, board.proxies, board.board_pairs, run.config.sweep_cycles(board.proxies),
+        const FrameStats stats{frame, board.proxies, board.board_pairs,
+                               run.config.swept_slots(board.proxies, board.phases.compute_cycles,
+                                                      board.phases.stall_cycles),
                                load_wait_slots(run, board.proxies), board.phases, {}, board.simulate_ns, check.extra};
         if (report) report->frame(stats);
         totals.add(stats);

@@ -224,12 +224,9 @@ int simulate(const RunOptions& o, FrameSource& source, Setup& setup, Outputs& ou
             return kExitDeviceFault;
         }
         if (out.pairs) write_frame_pairs(out.pairs->stream(), frame.number, to_id_pairs(frame, result.pairs));
-        // A grid board's slots depend on its boxes: the board's cycles less its latency and stalls.
-        const uint64_t slots = run.config.grid_board() ? result.phases.compute_cycles - result.phases.stall_cycles -
-                                                             run.config.pipeline_latency()
-                                                       : run.config.sweep_cycles(boxes.size());
-        FrameStats stats{frame.number, boxes.size(), result.pairs.size(), slots, 0, result.phases, {}, sim_wall_native_ns,
-                         check.extra};
+        FrameStats stats{frame.number, boxes.size(), result.pairs.size(),
+                         run.config.swept_slots(boxes.size(), result.phases.compute_cycles, result.phases.stall_cycles),
+                         0, result.phases, {}, sim_wall_native_ns, check.extra};
         stats.load_wait_slots = load_wait_slots(run, boxes.size());
         if (time_baselines) {
             const auto baselines_start = std::chrono::steady_clock::now();
