@@ -29,4 +29,4 @@ get_directory_property(cdvp_compile_options DIRECTORY "${CMAKE_SOURCE_DIR}" COMP
 list(JOIN cdvp_compile_options " " cdvp_compile_options)
 string(STRIP "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${cdvp_build_type_upper}} ${cdvp_compile_options}"
        CDVP_BUILD_FLAGS)
-configure_file("${CMAKE_SOURCE_DIR}/sw/cli/build_info.cpp.in" "${CMAKE_BINARY_DIR}/generated/build_info.cpp" @ONLY)
+configure_file("${CMAKE_SOURCE_DIR}/sw/run/build_info.cpp.in" "${CMAKE_BINARY_DIR}/generated/build_info.cpp" @ONLY)

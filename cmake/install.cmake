@@ -1,8 +1,16 @@
 # `cmake --install build --prefix P`: P/bin/cdvp, the presets in
-# P/share/cdvp/boards, the README, LICENSE and docs in P/share/doc/cdvp, and a
-# man page in P/share/man/man1/cdvp.1 generated from the --help texts.
+# P/share/cdvp/boards, the RTL kit in P/share/cdvp/rtl, the README, LICENSE
+# and docs in P/share/doc/cdvp, and a man page in P/share/man/man1/cdvp.1
+# generated from the --help texts.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/platform/boards/ DESTINATION ${CDVP_INSTALL_BOARDS_DIR}
         FILES_MATCHING PATTERN "*.json")
+# The RTL kit (models/rtl_engine/rtl_kit.h): what --fidelity rtl compiles a
+# variant the binary does not hold from, laid out as in the source tree.
+get_property(cdvp_rtl_kit GLOBAL PROPERTY CDVP_RTL_KIT)
+foreach(file IN LISTS cdvp_rtl_kit)
+  get_filename_component(directory ${file} DIRECTORY)
+  install(FILES ${CMAKE_SOURCE_DIR}/${file} DESTINATION ${CDVP_INSTALL_RTL_DIR}/${directory})
+endforeach()
 install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 # docs/ keeps its name, so the README's links into it hold.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR})
@@ -43,13 +51,15 @@ set(cdvp_package_libraries
     cdvp_models             board_core     # BoardCore and the engine factory, no SystemC
     cdvp_models_systemc     board          # CollisionBoard, PciBus, PciBridge: the board as SystemC IP
     cdvp_driver             driver         # BoardDriver against a HostPort
-    cdvp_platform           platform       # VirtualBoard, presets, the settings table
+    cdvp_settings           settings       # the settings table, their values and origins, presets, config files
+    cdvp_platform           platform       # VirtualBoard, the analytic platform, the device fit
     cdvp_timing             timing
     cdvp_scene              scene          # traces, pairs CSV, spheres
     cdvp_baselines          baselines      # software broad phases
     cdvp_apps               apps           # the bouncing spheres
     cdvp_bullet             bullet         # BoardBroadphase for btDiscreteDynamicsWorld
-    cdvp_study_output       study_output   # transactional output files
+    cdvp_output             output         # transactional output files
+    cdvp_run                run            # RunSpec and run(): one run in this process
     cdvp_study              study)         # child runs, reports, sweeps, merges, fidelity
 if(TARGET cdvp_models_rtl_verilated)
   list(APPEND cdvp_package_libraries cdvp_models_rtl_verilated rtl_verilated)  # the Verilator-built board RTL
@@ -69,7 +79,7 @@ set_target_properties(cdvp PROPERTIES EXPORT_NAME cdvp)
 install(TARGETS cdvp EXPORT cdvpTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # Headers: every header of the layers the libraries hold (the public surface
 # and the internals it includes; docs/library.md says which is which).
-foreach(dir models platform sw/timing sw/scene sw/baselines sw/apps sw/bullet sw/study)
+foreach(dir models platform sw/timing sw/scene sw/baselines sw/apps sw/bullet sw/output sw/run sw/study)
   install(DIRECTORY ${CMAKE_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cdvp/${dir}
           FILES_MATCHING PATTERN "*.h" PATTERN "rtl" EXCLUDE PATTERN "boards" EXCLUDE PATTERN "figures" EXCLUDE)
 endforeach()
@@ -78,7 +88,7 @@ install(EXPORT cdvpTargets NAMESPACE cdvp:: DESTINATION ${cdvp_cmake_dir})
 include(CMakePackageConfigHelpers)
 configure_package_config_file(${CMAKE_SOURCE_DIR}/cmake/cdvpConfig.cmake.in ${CMAKE_BINARY_DIR}/cdvpConfig.cmake
                               INSTALL_DESTINATION ${cdvp_cmake_dir}
-                              PATH_VARS CDVP_INSTALL_BOARDS_DIR CMAKE_INSTALL_INCLUDEDIR)
+                              PATH_VARS CDVP_INSTALL_BOARDS_DIR CDVP_INSTALL_RTL_DIR CMAKE_INSTALL_INCLUDEDIR)
 write_basic_package_version_file(${CMAKE_BINARY_DIR}/cdvpConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_BINARY_DIR}/cdvpConfig.cmake ${CMAKE_BINARY_DIR}/cdvpConfigVersion.cmake
         DESTINATION ${cdvp_cmake_dir})

@@ -64,6 +64,12 @@ installed in (found from the running binary, so a moved prefix still works), and
 a binary run from its build tree reads the source tree's \fIplatform/boards\fR.
 A \fB\-\-board\fR value that contains a slash or ends in .json is a file path.
 .TP
+.B CDVP_RTL_CACHE
+Where \fB\-\-fidelity rtl\fR keeps the board RTL's variants it compiles on first
+use (those not built into the binary: \fBcdvp rtl\-variants\fR). Unset, it is
+\fI$XDG_CACHE_HOME/cdvp/rtl\fR, else \fI~/.cache/cdvp/rtl\fR. Compiling needs
+\fBverilator\fR, \fBmake\fR and the C++ compiler cdvp was built with.
+.TP
 .B CDVP_MEMORY_SHARE
 Set by \fBcdvp sweep \-\-jobs\fR \fIJ\fR for its points: J runs share the machine, so each run's
 default memory budget (\fB\-\-max\-memory\fR 0) is 1/J of half the memory.
@@ -71,6 +77,9 @@ default memory budget (\fB\-\-max\-memory\fR 0) is 1/J of half the memory.
 .TP
 .I PREFIX/share/cdvp/boards/*.json
 The board presets: adm\-xrc\-ii, adm\-xrc\-ii\-64, pcie\-gen3\-x8.
+.TP
+.I PREFIX/share/cdvp/rtl
+The board's Verilog and what \fB\-\-fidelity rtl\fR compiles a variant from.
 .TP
 .I PREFIX/share/doc/cdvp
 The README (file formats, timing assumptions, the worked example) and docs/.

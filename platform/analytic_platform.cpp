@@ -66,16 +66,7 @@ uint64_t AnalyticPlatform::prepare(const std::vector<FloatBox>& boxes, PairList&
         view[c] = words_[c].data();
     }
     // The boxes whose words differ from what the host's bank holds (every one when unknown).
-    Bank& bank = banks_[host_bank_];
-    uint64_t changed = objects;
-    if (bank.valid) {
-        changed = 0;
-        for (uint32_t i = 0; i < objects; ++i) {
-            bool same = i < bank.objects;
-            for (uint32_t c = 0; same && c < kCoordinates; ++c) same = words_[c][i] == bank.words[c][i];
-            changed += !same;
-        }
-    }
+    const uint64_t changed = banks_.compare(view.data(), objects, [](uint32_t) {});
     // In the order the board finds them, as the engines give them: a tiled
     // board's by block, which depends on the tile size alone (not on m).
     PairMemo::Order by_block;
@@ -94,15 +85,11 @@ uint64_t AnalyticPlatform::prepare(const std::vector<FloatBox>& boxes, PairList&
             find_pairs(memo_.get(), finder_, objects, view, pairs, &by_block);
         }
     } catch (const PairBudgetExceeded&) {
-        for (Bank& b : banks_) b.valid = false;  // the driver fails the frame and forgets the board's words
+        banks_.forget();  // the driver fails the frame and forgets the board's words
         throw;
     }
-    if (objects > 0) {
-        // The bank takes this frame's words; words_ is rewritten whole by the next frame.
-        for (uint32_t c = 0; c < kCoordinates; ++c) bank.words[c].swap(words_[c]);
-        bank.objects = objects;
-        bank.valid = true;
-    }
+    // The bank takes this frame's words; words_ is rewritten whole by the next frame.
+    if (objects > 0) banks_.take(words_, objects);
     return changed;
 }
 
@@ -152,26 +139,21 @@ const FrameResult* AnalyticPlatform::try_submit_frame(const std::vector<FloatBox
     } catch (const PairBudgetExceeded& e) {
         budget_fault(e, fault);  // as the driver does, the frame in flight fails with it
         pipeline_.emplace(frame_);
-        in_flight_pairs_.clear();
         return nullptr;
     }
-    host_bank_ = 1 - host_bank_;  // START hands the bank over
-    const std::optional<FramePhases> finished = pipeline_->submit(static_cast<uint32_t>(boxes.size()), pairs, changed);
-    if (finished) {
-        result_.pairs.swap(in_flight_pairs_);
-        result_.phases = *finished;
-        order_as_read_back(result_.pairs);
-    }
-    in_flight_pairs_ = std::move(pairs);
-    return finished ? &result_ : nullptr;
+    banks_.hand_over();  // START hands the bank over
+    const std::optional<FramePhases> finished =
+        pipeline_->submit(static_cast<uint32_t>(boxes.size()), std::move(pairs), changed, result_.pairs);
+    if (!finished) return nullptr;
+    result_.phases = *finished;
+    order_as_read_back(result_.pairs);
+    return &result_;
 }
 
 const FrameResult* AnalyticPlatform::try_finish_frames(FrameFault& fault) {
     fault = FrameFault{};
-    const std::optional<FramePhases> finished = pipeline_ ? pipeline_->finish() : std::nullopt;
+    const std::optional<FramePhases> finished = pipeline_ ? pipeline_->finish(result_.pairs) : std::nullopt;
     if (!finished) return nullptr;
-    result_.pairs.swap(in_flight_pairs_);
-    in_flight_pairs_.clear();
     result_.phases = *finished;
     order_as_read_back(result_.pairs);
     return &result_;

@@ -17,7 +17,8 @@
 #include "models/grid_fast_engine/grid_search.h"
 #include "platform/driver/analytic_frame.h"
 #include "platform/driver/analytic_pipeline.h"
-#include "platform/host_cpu.h"
+#include "platform/driver/bank_copies.h"
+#include "platform/frame_platform.h"
 #include "platform/virtual_board.h"
 
 namespace cdvp {
@@ -26,7 +27,7 @@ namespace cdvp {
 // to femtoseconds as sc_time rounds the board's (CollisionBoard::period()).
 AnalyticBoard analytic_board(const BoardConfig& board);
 
-class AnalyticPlatform {
+class AnalyticPlatform : public FramePlatform {
 public:
     // config's faults must be empty (there is no engine to inject into) and its
     // quantum is not modelled: callers refuse both with the setting's name.
@@ -34,14 +35,14 @@ public:
 
     // As VirtualBoard::try_run_frame: the frame's result, or null with fault
     // set (only a pair budget's refusal: nothing here can fault).
-    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) override;
     // Frames pipelined on a board with two box banks (AnalyticPipeline), as
     // VirtualBoard's: submit a frame and get the one before it, finished (null
     // for the first, with fault empty); finish the frame in flight.
-    bool pipelined() const { return pipeline_.has_value(); }
-    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
-    const FrameResult* try_finish_frames(FrameFault& fault);
-    const BusTiming& bus_timing() const { return *bus_; }
+    bool pipelined() const override { return pipeline_.has_value(); }
+    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) override;
+    const FrameResult* try_finish_frames(FrameFault& fault) override;
+    const BusTiming& bus_timing() const override { return *bus_; }
     // Whether every phase of a frame this platform timed one at a time is exact by bound,
     // not by estimate: its pairs and a full row of lane hits fit the pair
     // FIFO together (so the FIFO never pushes back) and the pair buffer took
@@ -72,16 +73,9 @@ private:
     std::vector<uint64_t> block_ends_;
     FrameResult result_;
     // The words each box bank holds from the last frame uploaded into it,
-    // for delta uploads (as the driver keeps them); the host's bank.
-    struct Bank {
-        std::vector<uint32_t> words[kCoordinates];
-        uint32_t objects = 0;
-        bool valid = false;
-    };
-    Bank banks_[2];
-    uint32_t host_bank_ = 0;
+    // for delta uploads (as the driver keeps them).
+    BankCopies banks_;
     std::optional<AnalyticPipeline> pipeline_;  // two box banks
-    PairList in_flight_pairs_;
     // A grid board: its search, and the slots of the frame being timed.
     std::optional<GridSearch> grid_;
     std::vector<uint64_t> grid_slots_;

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "models/resources/resource_model.h"
-#include "platform/settings.h"
+#include "platform/settings/settings.h"
 
 namespace cdvp {
 

@@ -18,7 +18,7 @@ std::string valid_kinds() {
 }
 
 [[noreturn]] void fail(const std::string& spec, const std::string& what) {
-    throw InputError("--inject: '" + excerpt(spec) + "': " + what);
+    throw InputError("'" + excerpt(spec) + "': " + what);
 }
 
 // A positive decimal integer up to max, all of text.
@@ -77,7 +77,7 @@ std::vector<FaultSpec> parse_fault_specs(const std::string& text) {
     }
     std::istringstream words(normalised);
     for (std::string spec; words >> spec;) specs.push_back(parse_one(spec));
-    if (specs.empty()) throw InputError("--inject: expected KIND@frame=N[,n=K]; kinds: " + valid_kinds());
+    if (specs.empty()) throw InputError("expected KIND@frame=N[,n=K]; kinds: " + valid_kinds());
     return specs;
 }
 

@@ -12,7 +12,8 @@
 
 namespace cdvp {
 
-// Throws InputError naming the spec and what was expected (the valid kinds or keys).
+// Throws InputError naming the spec and what was expected (the valid kinds
+// or keys); the caller prefixes the input it came from ("--inject: ").
 std::vector<FaultSpec> parse_fault_specs(const std::string& text);
 
 // The spec back as text, e.g. "retry@frame=3,n=2".

@@ -104,7 +104,9 @@ void write_save_file(std::ostream& out, const SaveFile& save) {
 }
 
 void write_translate_filter(std::ostream& out, const StateNames& states) {
-    for (std::size_t value = 0; value < states.names.size(); ++value) out << value << ' ' << states.names[value] << '\n';
+    for (std::size_t value = 0; value < states.names.size(); ++value) {
+        if (!states.names[value].empty()) out << value << ' ' << states.names[value] << '\n';
+    }
 }
 
 }  // namespace cdvp

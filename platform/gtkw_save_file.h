@@ -12,9 +12,9 @@
 
 namespace cdvp {
 
-// Where the viewer opens: a span of simulated time in the dump's unit
-// (femtoseconds in the platform's VCD, picoseconds in the RTL's), with named
-// markers at moments inside it.
+// Where the viewer opens: a span of simulated time in femtoseconds (the
+// unit of the platform's VCD and of the RTL's), with named markers at
+// moments inside it.
 struct WaveView {
     uint64_t begin_fs = 0;
     uint64_t end_fs = 0;  // begin_fs == end_fs: nothing to frame, the viewer's default view
@@ -50,7 +50,7 @@ std::string viewer_name(const TracedSignal& signal, const std::string& top_scope
 double viewer_zoom(uint64_t span_fs);
 
 void write_save_file(std::ostream& out, const SaveFile& save);
-// A translate filter file: one "value name" line per state.
+// A translate filter file: one "value name" line per named state.
 void write_translate_filter(std::ostream& out, const StateNames& states);
 
 }  // namespace cdvp

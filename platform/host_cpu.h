@@ -12,35 +12,17 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/tlm_quantumkeeper.h>
 
+#include "platform/frame_platform.h"
 #include "platform/host_memory.h"
 #include "platform/driver/board_driver.h"
 #include "platform/driver/host_port.h"
 
 namespace cdvp {
 
-struct FrameResult {
-    PairList pairs;  // in the order the board found them
-    FramePhases phases;
-};
-
 // What the CPU thread does with the next request: one whole frame; with
 // frames pipelined (two box banks), start a frame and finish the one before
 // it; or finish the frame in flight.
 enum class HostRequest : uint8_t { kFrame, kSubmit, kFinish };
-
-// Why a frame did not complete. Faults travel by value from the CPU thread to
-// the caller: an exception rethrown on the main stack after the coroutines
-// have run trips AddressSanitizer's stale stack bounds (docs/testing.md).
-// kPairBudget: the frame's pairs outgrew the run's pair budget, bad input
-// like kTimeLimit (the system did not fault); pairs_found says where the
-// search stopped.
-struct FrameFault {
-    enum class Kind : uint8_t { kNone, kDevice, kTimeLimit, kPairBudget };
-    Kind kind = Kind::kNone;
-    std::string message;  // the driver's message, one line
-    uint64_t pairs_found = 0;
-    explicit operator bool() const { return kind != Kind::kNone; }
-};
 
 // The CPU's own quantum (the global one is shared by every platform in a
 // process), with sync points aligned to multiples of it as the global one's.
@@ -108,8 +90,7 @@ private:
     HostQuantumKeeper quantum_keeper_;
     sc_core::sc_time last_interrupt_ = sc_core::sc_max_time();
     // The interrupt wait_for_interrupt_since last returned for without
-    // waiting: each is taken once (on an untimed bus no time passes between
-    // two status reads, and the same interrupt would be taken forever).
+    // waiting: each is taken once (HostPort's contract, host_port.h).
     sc_core::sc_time taken_interrupt_ = sc_core::sc_max_time();
     const sc_core::sc_event& interrupt_;
     BoardDriver driver_;

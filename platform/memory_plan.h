@@ -6,8 +6,8 @@
 #include <string>
 
 #include "models/board_spec/board_config.h"
-#include "platform/setting_values.h"
-#include "platform/settings.h"
+#include "platform/settings/setting_values.h"
+#include "platform/settings/settings.h"
 
 namespace cdvp {
 

@@ -3,7 +3,7 @@
 // presets) calls platform_config, so a setting means the same to each.
 #pragma once
 
-#include "platform/setting_values.h"
+#include "platform/settings/setting_values.h"
 #include "platform/virtual_board.h"
 
 namespace cdvp {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "models/rtl_engine/rtl_waves.h"
 #include "platform/gtkw_save_file.h"
 #include "platform/kernel.h"
 
@@ -161,7 +162,8 @@ void VirtualBoard::show_interrupts() {
     interrupts_.show();
 }
 
-std::vector<const StateNames*> VirtualBoard::state_tables() {
+std::vector<const StateNames*> VirtualBoard::state_tables(bool rtl_waves) {
+    if (rtl_waves) return {&rtl_controller_states()};
     return {&CollisionBoard::kControllerStates, &PciBridge::kDmaStates};
 }
 
@@ -176,14 +178,11 @@ void VirtualBoard::write_gtkw(std::ostream& out, const std::string& dump_path,
                               const std::map<std::string, std::string>& filter_paths) const {
     SaveFile save{dump_path, traced_, {}, filter_paths};
     if (rtl_traced_) save.top_scope.clear();  // the RTL's names are full
-    // The save file's times are in its dump's unit: Verilator's VCD counts picoseconds.
-    const uint64_t per_unit = rtl_traced_ ? 1000 : 1;
-    auto at = [&](const sc_time& t) { return in_fs(t) / per_unit; };
     if (first_traced_begin_ && first_traced_end_) {
-        save.view.begin_fs = at(*first_traced_begin_);
-        save.view.end_fs = at(*first_traced_end_);
-        if (const auto& start = board_.first_traced_start()) save.view.markers.push_back({"START", at(*start)});
-        if (const auto& done = board_.first_traced_done()) save.view.markers.push_back({"DONE", at(*done)});
+        save.view.begin_fs = in_fs(*first_traced_begin_);
+        save.view.end_fs = in_fs(*first_traced_end_);
+        if (const auto& start = board_.first_traced_start()) save.view.markers.push_back({"START", in_fs(*start)});
+        if (const auto& done = board_.first_traced_done()) save.view.markers.push_back({"DONE", in_fs(*done)});
         // The RTL's dump holds the board alone: open on its first sweep, a
         // twentieth of it either side, not on the bus transfers around it.
         if (rtl_traced_ && save.view.markers.size() == 2) {
@@ -197,3 +196,10 @@ void VirtualBoard::write_gtkw(std::ostream& out, const std::string& dump_path,
 }
 
 }  // namespace cdvp
+
+// libsystemc.so refers to the program's sc_main (its own main calls it). A
+// program that links the platform but elaborates no design before its own
+// main returns (a study, a Python module, a benchmark, a run at the
+// analytic level) need not write one: this weak one stands in, and a
+// program's own sc_main takes its place.
+extern "C" __attribute__((weak)) int sc_main(int, char*[]) { return 1; }

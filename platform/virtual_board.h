@@ -17,6 +17,7 @@
 #include "models/fast_engine/pair_memo.h"
 #include "models/pci/pci_bridge.h"
 #include "models/pci/pci_bus.h"
+#include "platform/frame_platform.h"
 #include "platform/host_cpu.h"
 #include "platform/host_memory.h"
 
@@ -47,7 +48,7 @@ struct PlatformConfig {
 // Elaborate once, then run any number of frames: each run_frame() hands the
 // boxes to the CPU thread and simulates until all is idle again (the board's
 // clock does not tick between frames, so the kernel simply starves).
-class VirtualBoard : public sc_core::sc_module {
+class VirtualBoard : public sc_core::sc_module, public FramePlatform {
 public:
     SC_HAS_PROCESS(VirtualBoard);
 
@@ -63,7 +64,7 @@ public:
     // Runs the frame numbered 'number' (a trace's own frame number: the
     // number --inject's frame=N selects). Returns the result, or null with
     // fault set when the simulated system faulted; never partial pairs.
-    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
+    const FrameResult* try_run_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) override;
     // The same, throwing DeviceFault, SimulatedTimeLimit or PairBudgetExceeded for a fault (for
     // callers that never run under AddressSanitizer's checks of the main
     // stack, such as tests). Without a number, frames are numbered 0, 1, 2, ...
@@ -77,9 +78,9 @@ public:
     // fault, which ends every frame in flight); the board sweeps on between
     // calls. try_finish_frames completes the frame in flight (null, fault
     // unset, when none is). A trace window counts the calls' numbers.
-    bool pipelined() const { return board_.core().config().box_banks > 1; }
-    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault);
-    const FrameResult* try_finish_frames(FrameFault& fault);
+    bool pipelined() const override { return board_.core().config().box_banks > 1; }
+    const FrameResult* try_submit_frame(const std::vector<FloatBox>& boxes, uint64_t number, FrameFault& fault) override;
+    const FrameResult* try_finish_frames(FrameFault& fault) override;
     const FaultPlan& faults() const { return faults_; }
     // Flushes and closes the waveform file (also done by the destructor).
     void close_trace();
@@ -93,12 +94,14 @@ public:
     // traced frame with markers at its START and DONE.
     void write_gtkw(std::ostream& out, const std::string& dump_path,
                     const std::map<std::string, std::string>& filter_paths) const;
-    // The named-state tables the waveforms use, each a translate filter file.
-    static std::vector<const StateNames*> state_tables();
+    // The named-state tables the waveforms use, each a translate filter
+    // file: the platform's (the controller's and the DMA engine's), or with
+    // rtl_waves (--fidelity rtl) the RTL controller's alone.
+    static std::vector<const StateNames*> state_tables(bool rtl_waves);
 
     const CollisionBoard& board() const { return board_; }
     const PciBridge& bridge() const { return bridge_; }
-    const BusTiming& bus_timing() const { return bus_.timing(); }
+    const BusTiming& bus_timing() const override { return bus_.timing(); }
 
 private:
     FaultPlan faults_;

@@ -25,7 +25,8 @@ strip_report() {
     /usr/bin/python3 - "$1" <<'EOF'
 import json, sys
 measured = ("wall", "native", "host", "load", "provenance", "calibration", "baselines", "command_line",
-            "speedup", "repeat", "version", "amdahl_bound", "broadphase_share", "step_ns", "_ms")
+            "speedup", "repeat", "version", "amdahl_bound", "broadphase_share", "step_ns", "_ms", "timing_quality",
+            "retimed")
 def keep(key):
     return not any(word in key for word in measured)
 def clean(value):
@@ -90,7 +91,7 @@ strip_report "$work/bullet.json" >"$out/bullet.report.json"
 
 # fidelity: the simulated columns.
 "$cdvp" fidelity --board adm-xrc-ii --scene spheres --objects 200 --frames 4 --m 8 --out "$work/fidelity" -q
-cut -d, -f1-4,6- "$work/fidelity/fidelity.csv" >"$out/fidelity.csv"
+cut -d, -f1-5,7- "$work/fidelity/fidelity.csv" >"$out/fidelity.csv"
 
 for command in "" run fidelity settings sweep merge bullet record calibrate; do
     "$cdvp" $command --help >"$out/help-${command:-cdvp}.txt"

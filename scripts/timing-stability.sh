@@ -13,6 +13,9 @@
 #   grid       the README's 72-point sweep with shared timings and with each point timing its own:
 #              timings used, falls in speedup from one m to the next, wall time (three of each, alternated)
 #   bullet     cdvp bullet --scene boxes beside a busy loop and alone: the board's gains and verdict
+#   neighbour  what CPU time leaves: the paper's point with all four baselines pinned to CPU 0, alone,
+#              beside a busy loop on CPU 1 and beside a memory-streaming job on CPU 1 (shared cache and
+#              memory bandwidth), three of each in turn: each baseline's native CPU time against alone
 #
 # CDVP (default build/sw/cli/cdvp) is the binary; WORK (default a temporary
 # directory, removed at the end) holds the runs. The calibrations write
@@ -209,8 +212,52 @@ for k in (1, 2, 3):
 EOF
 }
 
+# A job that streams memory, on CPU $1: copies of a 256 MiB buffer, over and
+# over, so that it holds the shared cache and the memory bandwidth.
+start_streamer() {
+  taskset -c "$1" python3 -c 'b = bytearray(1 << 28)
+while True:
+    c = bytes(b)' &
+  busy+=($!)
+}
+
+section_neighbour() {
+  echo "## neighbour: the paper's point, all four baselines, pinned to CPU 0: alone, beside a busy loop and beside a memory stream on CPU 1 (load $(load))"
+  calibrate
+  for k in 1 2 3; do
+    for beside in alone loop stream; do
+      [[ $beside == loop ]] && start_busy 1
+      [[ $beside == stream ]] && start_streamer 1
+      sleep 1
+      "$CDVP" run --board adm-xrc-ii --scene spheres --objects 500 --m 24 --frames 40 --repeat 3 --pin-cpu 0 \
+          --baseline sap,dbvt,brute,soa --host-profile "$PROFILE" -q --report "$WORK/neighbour-$beside-$k.json"
+      stop_busy
+    done
+  done
+  python3 - "$WORK" <<'EOF2'
+import json, statistics, sys
+work = sys.argv[1]
+def means(beside):
+    out = {}
+    for k in (1, 2, 3):
+        for name, b in json.load(open(f"{work}/neighbour-{beside}-{k}.json"))["summary"]["baselines"].items():
+            out.setdefault(name, []).append(b["mean_native_ns"] / 1e3)
+    return out
+alone, loop, stream = means("alone"), means("loop"), means("stream")
+print("| baseline | alone: CPU time a frame (us) | beside a busy loop | beside a memory stream |")
+print("|---|---|---|---|")
+for name in sorted(alone):
+    a = statistics.median(alone[name])
+    cells = [f"{', '.join(f'{v:.1f}' for v in alone[name])}"]
+    for other in (loop, stream):
+        o = statistics.median(other[name])
+        cells.append(f"{', '.join(f'{v:.1f}' for v in other[name])} ({100 * (o / a - 1):+.1f}%)")
+    print(f"| {name} | " + " | ".join(cells) + " |")
+EOF2
+}
+
 sections=("$@")
-[[ ${#sections[@]} -gt 0 ]] || sections=(paper pinned worked sweep grid bullet)
+[[ ${#sections[@]} -gt 0 ]] || sections=(paper pinned worked sweep grid bullet neighbour)
 echo "# timing stability on $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) CPUs, $(date -u +%Y-%m-%d)"
 for s in "${sections[@]}"; do
   declare -F "section_$s" > /dev/null || { echo "timing-stability: no section '$s' (see the header)" >&2; exit 2; }

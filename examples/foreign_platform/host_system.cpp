@@ -60,7 +60,8 @@ HostProcessor::HostProcessor(const sc_module_name& name, HostRam& ram, const sc_
       ram_(ram),
       interrupt_latency_(interrupt_latency),
       program_(std::move(program)) {
-    // HostPort counts femtoseconds: now() is the kernel's time value.
+    // HostPort keeps time in whole femtoseconds (platform/driver/host_port.h):
+    // now() is the kernel's time value at a 1 fs resolution.
     if (sc_get_time_resolution() != sc_time(1, SC_FS)) throw std::logic_error("set a 1 fs time resolution first");
     SC_THREAD(run);
     SC_METHOD(raise_handler);

@@ -4,7 +4,11 @@
 // preset through cdvp's settings; cdvp's BoardDriver as the CPU's software.
 // Every frame's pairs are checked against a brute-force all-pairs test.
 //
-//   foreign_platform [PRESET.json [OBJECTS [FRAMES]]]
+//   foreign_platform [PRESET.json [OBJECTS [FRAMES [SETTING=VALUE ...]]]]
+//
+// SETTING=VALUE as `cdvp run -c` takes it, e.g. driver.upload=delta or
+// driver.pair_format=bitmap: the host's RAM is sized from the same call the
+// platform uses, BoardDriver::host_memory_bytes with the driver's settings.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -20,8 +24,8 @@
 #include "models/board/collision_board.h"
 #include "models/common/user_text.h"
 #include "models/pci/pci_bridge.h"
-#include "platform/board_preset.h"
-#include "platform/config_file.h"
+#include "platform/settings/board_preset.h"
+#include "platform/settings/config_file.h"
 #include "platform/driver/board_driver.h"
 #include "platform/memory_plan.h"
 #include "platform/platform_settings.h"
@@ -99,6 +103,7 @@ struct Outcome {
     uint64_t pairs = 0;
     uint32_t mismatches = 0;
     double total_ns = 0;
+    uint64_t upload_bytes = 0, readback_bytes = 0;
 };
 
 // The host software: cdvp's driver on the example's own HostPort.
@@ -114,6 +119,8 @@ void run_frames(cdvp::HostPort& port, const Scene& scene, const cdvp::PlatformCo
         outcome.mismatches += equal ? 0 : 1;
         outcome.pairs += pairs.size();
         outcome.total_ns += phases.total_ns;
+        outcome.upload_bytes += phases.upload_bytes;
+        outcome.readback_bytes += phases.readback_bytes;
         std::printf("frame %u: %zu boxes, %zu pairs (%s), %.1f us simulated (upload %.1f, compute %.1f, "
                     "readback %.1f)\n",
                     frame, boxes.size(), pairs.size(), equal ? "= all-pairs test" : "MISMATCH with all-pairs test",
@@ -130,11 +137,13 @@ int sc_main(int argc, char* argv[]) {
     Scene scene;
     if (argc > 2) scene.objects = static_cast<uint32_t>(std::stoul(argv[2]));
     if (argc > 3) scene.frames = static_cast<uint32_t>(std::stoul(argv[3]));
+    std::vector<std::string> overrides = {"board.m=8", "run.quantum_ns=1000"};
+    for (int k = 4; k < argc; ++k) overrides.emplace_back(argv[k]);
 
     show_refusals(preset);
     cdvp::PlatformConfig config;
     try {
-        const cdvp::SettingValues values = settings_for(preset, {"board.m=8", "run.quantum_ns=1000"});
+        const cdvp::SettingValues values = settings_for(preset, overrides);
         config = cdvp::platform_config(values);
         config.board = cdvp::planned_board(values.settings(), scene.objects);
     } catch (const cdvp::InputError& e) {
@@ -147,7 +156,9 @@ int sc_main(int argc, char* argv[]) {
     cdvp::CollisionBoard board("board", config.board, scene.objects, config.fidelity);
     cdvp::PciBridge bridge("bridge", config.bus);
     example::Interconnect interconnect("interconnect");
-    example::HostRam ram("ram", cdvp::BoardDriver::host_memory_bytes(scene.objects, config.board.collector.buffer_depth));
+    // As the platform sizes it: the pair area for the pair format, the delta records' area when it may upload deltas.
+    example::HostRam ram("ram", cdvp::BoardDriver::host_memory_bytes(scene.objects, config.board.collector.buffer_depth,
+                                                                      config.driver));
     Outcome outcome;
     example::HostProcessor cpu("cpu", ram, sc_core::sc_time(config.bus->interrupt_ns(), sc_core::SC_NS),
                                [&](cdvp::HostPort& port) { run_frames(port, scene, config, board, outcome); });
@@ -179,5 +190,8 @@ int sc_main(int argc, char* argv[]) {
                 static_cast<unsigned long long>(outcome.pairs), outcome.mismatches,
                 outcome.total_ns / scene.frames / 1e3, preset.substr(preset.find_last_of('/') + 1).c_str(),
                 config.board.m);
+    std::printf("bus: %llu bytes of boxes uploaded, %llu bytes of pairs read back\n",
+                static_cast<unsigned long long>(outcome.upload_bytes),
+                static_cast<unsigned long long>(outcome.readback_bytes));
     return outcome.mismatches == 0 ? 0 : 1;
 }

@@ -1,6 +1,8 @@
 // cdvp's study library from a program of one's own: runs on the paper's
-// board for a few scene sizes with their mean frame time by phase, a refused
-// run as RunFailed, and a small sweep over m into a temporary directory.
+// board for a few scene sizes with their mean frame time by phase (each a
+// RunSpec: the run layer's typed description of a run), a refused run as
+// RunFailed, one at the analytic level in this process, and a small sweep
+// over m into a temporary directory.
 //
 //   study_api [OBJECTS...]   (default: 100 200 400)
 #include <cstdio>
@@ -9,17 +11,25 @@
 #include <string>
 #include <vector>
 
+#include "sw/run/run_arguments.h"
 #include "sw/study/study_run.h"
 #include "sw/study/sweep.h"
 
 namespace {
 
-const std::vector<std::string> kPaperBoard = {"--board", "adm-xrc-ii", "--scene", "spheres", "--frames", "4"};
+// The paper's board on its bouncing spheres, `frames` frames of `objects` each.
+cdvp::RunSpec paper_board(const std::string& objects, const std::string& frames) {
+    cdvp::RunSpec spec;
+    spec.settings.board = "adm-xrc-ii";
+    spec.frames = cdvp::SceneFrames{"spheres"};
+    cdvp::set_input(spec, "scene.objects", objects, true);
+    cdvp::set_input(spec, "scene.frames", frames, true);
+    return spec;
+}
 
 void print_phases(const std::string& objects) {
     cdvp::RunRequest request;
-    request.options = kPaperBoard;
-    request.options.insert(request.options.end(), {"--objects", objects});
+    request.spec = paper_board(objects, "4");
     request.cdvp_binary = CDVP_EXECUTABLE;
     const cdvp::RunResult run = cdvp::run_configuration(request);
     std::printf("N=%-4s %llu frames, %llu pairs; mean us a frame:", objects.c_str(),
@@ -31,10 +41,11 @@ void print_phases(const std::string& objects) {
     std::printf("\n");
 }
 
-// A bad option is the child's refusal, with its exit status and message.
+// A bad setting is the run's refusal, with its exit status and message.
 int show_refused_run() {
     cdvp::RunRequest request;
-    request.options = {"--board", "adm-xrc-ii", "--objects", "lots"};
+    request.spec = paper_board("100", "1");
+    request.spec.settings.overrides = {"board.m=99"};
     request.cdvp_binary = CDVP_EXECUTABLE;
     try {
         cdvp::run_configuration(request);
@@ -46,13 +57,24 @@ int show_refused_run() {
     return 0;
 }
 
+// The analytic level elaborates no SystemC kernel: it runs in this process.
+void print_analytic_run() {
+    cdvp::RunRequest request;
+    request.spec = paper_board("500", "3");
+    cdvp::set_input(request.spec, "run.fidelity", "analytic", true);
+    request.in_process = true;
+    const cdvp::RunResult run = cdvp::run_configuration(request);
+    std::printf("analytic, in this process: %llu frames, %.1f us a frame\n",
+                static_cast<unsigned long long>(run.summary.frames), run.summary.mean_phase_ns.back() / 1e3);
+}
+
 std::size_t run_small_sweep(const std::string& out_dir) {
     cdvp::SweepSpec spec;
     cdvp::Axis m{"m", {"4", "8"}};
-    m.key = "board.m";  // what the axis sets, and the flag of cdvp run it is given by
+    m.key = "board.m";  // what the axis sets, given typed as cdvp run's --m gives it
     m.flag = "m";
     spec.axes = {m};
-    spec.run_options = {"--board", "adm-xrc-ii", "--scene=spheres", "--objects", "100", "--frames", "2"};
+    spec.run = paper_board("100", "2");
     // The preset the points read, digested into the sweep's manifest.
     spec.inputs = {{"--board", "adm-xrc-ii", std::string(CDVP_BOARDS_DIR) + "/adm-xrc-ii.json"}};
     spec.out_dir = out_dir;
@@ -75,6 +97,7 @@ int main(int argc, char* argv[]) {
     try {
         for (const std::string& objects : sizes) print_phases(objects);
         if (show_refused_run() != 2) return 1;
+        print_analytic_run();
         std::string dir = (std::filesystem::temp_directory_path() / "study_api.XXXXXX").string();
         if (mkdtemp(dir.data()) == nullptr) return 1;
         const std::size_t rows = run_small_sweep(dir + "/sweep");

@@ -1,5 +1,6 @@
 #include "models/board/collision_board.h"
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -108,7 +109,9 @@ std::vector<TracedSignal> CollisionBoard::trace_rtl(const std::string& path) {
     traced_rtl_ = dynamic_cast<RtlEngine*>(&core_.engine());
     if (auto* lockstep = dynamic_cast<LockstepEngine*>(&core_.engine())) traced_rtl_ = &lockstep->rtl();
     if (traced_rtl_ == nullptr) throw std::logic_error("RTL waveforms need the rtl engine");
-    traced_rtl_->trace_to(path, [this] { return static_cast<uint64_t>(access_time_.to_seconds() * 1e12 + 0.5); });
+    // In femtoseconds, the platform's waveforms' unit.
+    const auto fs_per_unit = static_cast<uint64_t>(std::llround(sc_get_time_resolution().to_seconds() * 1e15));
+    traced_rtl_->trace_to(path, [this, fs_per_unit] { return access_time_.value() * fs_per_unit; });
     return rtl_waves(traced_rtl_->variant());
 }
 

@@ -3,7 +3,7 @@
 // host profiles, so that every point it runs in process reads what the
 // manifest's digest covers (a file changed meanwhile stops the sweep after
 // the point, as before). While a PinnedFiles lives, read_small_file
-// (platform/preset_json.h) gives a pinned path's text. One at a time; not for
+// (platform/settings/preset_json.h) gives a pinned path's text. One at a time; not for
 // threads.
 #pragma once
 

@@ -24,7 +24,7 @@ enum class WaveFormat : uint8_t {
 // Names a viewer shows for a state vector's values instead of numbers.
 struct StateNames {
     std::string table;               // names the table (and its filter file): "controller"
-    std::vector<std::string> names;  // the name of value k
+    std::vector<std::string> names;  // the name of value k; empty: none (a one-hot state's other values)
 };
 
 struct TracedSignal {

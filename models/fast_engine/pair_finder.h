@@ -66,7 +66,7 @@ public:
     // boxes spanning many cells) is dropped for the plain sweep along x.
     static constexpr uint64_t kMaxEntriesPerBox = 4;
     // The most scratch a search keeps a box searched and a pair found, for
-    // the memory estimate before a run (sw/cli/run_footprint.h).
+    // the memory estimate before a run (sw/run/run_footprint.h).
     static constexpr uint64_t scratch_bytes_per_box();
     static constexpr uint64_t scratch_bytes_per_pair();
 

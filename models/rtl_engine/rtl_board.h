@@ -1,16 +1,28 @@
 // The board RTL as compiled by Verilator, seen from C++: one clock edge at a
 // time, the host register bus, the behavioural SSRAM of a tiled board, the
 // signals an engine and a lockstep check read after each edge, and tracing.
-// VerilatedBoard (verilated_board.h) implements it for each built variant.
+// VerilatedBoard (verilated_board.h) implements it for each variant, built in
+// or compiled on first use into a shared object (rtl_model_cache.h): this
+// header is compiled into those too, so it includes only the standard
+// library and models/common/aabb.h (the RTL kit that `cmake --install` ships).
 #pragma once
 
 #include <cstdint>
 #include <string>
 
 #include "models/common/aabb.h"
-#include "models/rtl_engine/rtl_variant.h"
 
 namespace cdvp {
+
+// What the C++ side of a Verilated model needs of its parameters (the others
+// are the RTL's alone): how the pair and the SSRAM are addressed.
+struct RtlMemoryShape {
+    uint32_t address_bits = 9;  // AW: 2^AW boxes
+    uint32_t tile_boxes = 0;    // TILE_BOXES (0: block RAM, no SSRAM)
+    uint32_t tile_latency = 2;  // TILE_LATENCY
+
+    uint64_t capacity() const { return uint64_t{1} << address_bits; }
+};
 
 // What the RTL shows after a rising edge.
 struct RtlProbes {
@@ -35,7 +47,6 @@ struct RtlProbes {
 class RtlBoard {
 public:
     virtual ~RtlBoard() = default;
-    virtual const RtlVariant& variant() const = 0;
 
     // One clock period: the rising edge, the SSRAM's answer, the falling edge.
     virtual void edge() = 0;
@@ -47,16 +58,22 @@ public:
     // The signals after the last edge.
     virtual RtlProbes probes() const = 0;
 
-    // Waveforms of every RTL signal into a VCD file (before the first edge
-    // that should appear); each later edge is dumped at the time
-    // set_time_ps() gave plus one period an edge.
-    virtual void trace_to(const std::string& path, uint64_t period_ps) = 0;
-    virtual void set_time_ps(uint64_t time_ps) = 0;
+    // Waveforms of every RTL signal into a VCD file in femtoseconds, the
+    // platform's unit (before the first edge that should appear); each later
+    // edge is dumped at the time set_time_fs() gave plus one period an edge.
+    virtual void trace_to(const std::string& path, uint64_t period_fs) = 0;
+    virtual void set_time_fs(uint64_t time_fs) = 0;
     // Closed: edges step without being dumped (a window of traced frames);
     // reopened, the next dump writes what changed meanwhile.
     virtual void set_trace_open(bool open) = 0;
     virtual void flush_trace() = 0;
     virtual void close_trace() = 0;
 };
+
+// The C entry point of a model compiled into a shared object (and the
+// signature of a built-in variant's maker): a new board of that model, owned
+// by the caller. rtl_model_entry.cpp.in defines it.
+using RtlBoardMaker = RtlBoard* (*)(const RtlMemoryShape* shape);
+constexpr const char* kRtlBoardMakerSymbol = "cdvp_rtl_make_board";
 
 }  // namespace cdvp

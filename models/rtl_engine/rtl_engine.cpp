@@ -10,18 +10,19 @@ namespace cdvp {
 
 using R = ControlRegisters;
 
-RtlEngine::RtlEngine(const BoardConfig& config, uint32_t capacity)
-    : config_(config),
-      board_(rtl_variant_for(config, capacity).make()),
-      period_ps_(static_cast<uint64_t>(config.period_ps() + 0.5)) {
+RtlEngine::RtlEngine(const BoardConfig& config, uint32_t capacity) : config_(config) {
+    const BuiltRtlVariant& built = rtl_variant_for(config, capacity);
+    variant_ = built.variant;
+    board_ = built.make();
+    period_fs_ = static_cast<uint64_t>(config.period_ps() * 1000 + 0.5);
     for (auto& words : loaded_) words.assign(capacity, kUnknown);
 }
 
 RtlEngine::~RtlEngine() = default;
 
-void RtlEngine::trace_to(const std::string& path, std::function<uint64_t()> command_time_ps) {
-    command_time_ps_ = std::move(command_time_ps);
-    board_->trace_to(path, period_ps_);
+void RtlEngine::trace_to(const std::string& path, std::function<uint64_t()> command_time_fs) {
+    command_time_fs_ = std::move(command_time_fs);
+    board_->trace_to(path, period_fs_);
 }
 
 void RtlEngine::upload(const CoordinateStore& store, uint32_t objects) {
@@ -40,10 +41,10 @@ void RtlEngine::upload(const CoordinateStore& store, uint32_t objects) {
         for (const Word& w : words) board_->load_ssram(w.coordinate, w.index, w.value);
     } else {
         // The host's writes come before START: place them on the edges just before it.
-        if (command_time_ps_) {
-            const uint64_t now = command_time_ps_();
-            const uint64_t lead = words.size() * period_ps_;
-            board_->set_time_ps(now > lead ? now - lead : 0);
+        if (command_time_fs_) {
+            const uint64_t now = command_time_fs_();
+            const uint64_t lead = words.size() * period_fs_;
+            board_->set_time_fs(now > lead ? now - lead : 0);
         }
         for (const Word& w : words) {
             board_->write(static_cast<uint32_t>(address_map::kCoordinateBase + w.coordinate * address_map::kWindowSize +
@@ -55,7 +56,7 @@ void RtlEngine::upload(const CoordinateStore& store, uint32_t objects) {
 }
 
 void RtlEngine::command(uint32_t control) {
-    if (command_time_ps_) board_->set_time_ps(command_time_ps_());
+    if (command_time_fs_) board_->set_time_fs(command_time_fs_());
     board_->write(R::kControl, control);
     probes_ = board_->probes();
 }

@@ -17,12 +17,13 @@
 #include "models/board_spec/board_engine.h"
 #include "models/board_spec/segment_history.h"
 #include "models/rtl_engine/rtl_board.h"
+#include "models/rtl_engine/rtl_variant.h"
 
 namespace cdvp {
 
 class RtlEngine : public BoardEngine {
 public:
-    // Throws std::invalid_argument (one line) when no built variant serves the board.
+    // Throws as rtl_variant_for() does when no variant can serve the board.
     RtlEngine(const BoardConfig& config, uint32_t capacity);
     ~RtlEngine() override;
 
@@ -45,12 +46,13 @@ public:
     SweepState state() const { return state_; }
     // The RTL's signals after the last edge (for a lockstep check).
     const RtlProbes& probes() const { return probes_; }
-    const RtlVariant& variant() const { return board_->variant(); }
+    const RtlVariant& variant() const { return variant_; }
 
-    // Waveforms of the RTL's own signals into `path` (Verilator's VCD). Each
-    // command's edge is placed at the time `command_time_ps` gives when the
-    // engine takes it (the shell's simulated time), later edges one period apart.
-    void trace_to(const std::string& path, std::function<uint64_t()> command_time_ps);
+    // Waveforms of the RTL's own signals into `path` (Verilator's VCD, in
+    // femtoseconds). Each command's edge is placed at the time
+    // `command_time_fs` gives when the engine takes it (the shell's simulated
+    // time), later edges one period apart.
+    void trace_to(const std::string& path, std::function<uint64_t()> command_time_fs);
     void set_trace_open(bool open) { board_->set_trace_open(open); }
     void flush_trace() { board_->flush_trace(); }
     void close_trace() { board_->close_trace(); }
@@ -61,9 +63,10 @@ private:
     void upload(const CoordinateStore& store, uint32_t objects);
 
     BoardConfig config_;
+    RtlVariant variant_;
     std::unique_ptr<RtlBoard> board_;
-    uint64_t period_ps_;
-    std::function<uint64_t()> command_time_ps_;
+    uint64_t period_fs_;
+    std::function<uint64_t()> command_time_fs_;
     // What the RTL's coordinate memories hold (kUnknown before the first write).
     static constexpr uint64_t kUnknown = uint64_t{1} << 32;
     std::array<std::vector<uint64_t>, kCoordinates> loaded_;

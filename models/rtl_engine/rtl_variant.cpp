@@ -1,7 +1,11 @@
 #include "models/rtl_engine/rtl_variant.h"
 
+#include <deque>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
+
+#include "models/rtl_engine/rtl_model_cache.h"
 
 namespace cdvp {
 
@@ -11,6 +15,27 @@ std::string RtlVariant::spec() const {
       << ",latency=" << compare_latency << ",fifo=" << fifo_depth << ",buffer=" << buffer_depth
       << ",tile=" << tile_boxes << ",tile_latency=" << tile_latency << ",capacity=" << capacity();
     return s.str();
+}
+
+std::string RtlVariant::name() const {
+    std::ostringstream s;
+    s << 'm' << m << '_' << format().name() << "_l" << compare_latency << "_f" << fifo_depth << "_b" << buffer_depth
+      << "_t" << tile_boxes << "_s" << tile_latency << "_a" << address_bits;
+    return s.str();
+}
+
+std::vector<std::string> RtlVariant::verilator_parameters() const {
+    const bool is_float = format_bits == 0;
+    auto parameter = [](const char* name, uint64_t value) { return std::string("-G") + name + "=" + std::to_string(value); };
+    return {parameter("M", m),
+            parameter("AW", address_bits),
+            parameter("FLOAT", is_float ? 1 : 0),
+            parameter("WIDTH", is_float ? 32 : format_bits),
+            parameter("COMPARE_LATENCY", compare_latency),
+            parameter("FIFO_DEPTH", fifo_depth),
+            parameter("BUFFER_DEPTH", buffer_depth),
+            parameter("TILE_BOXES", tile_boxes),
+            parameter("TILE_LATENCY", tile_latency)};
 }
 
 RtlVariant RtlVariant::for_board(const BoardConfig& config, uint32_t capacity) {
@@ -68,6 +93,24 @@ std::string rtl_unsupported(const BoardConfig& config) {
     return {};
 }
 
+namespace {
+// The variants compiled on first use (or loaded from the cache) by this
+// process: each once, kept, since their models live in shared objects that
+// stay loaded.
+const BuiltRtlVariant& compiled_rtl_variant(const RtlVariant& variant) {
+    static std::mutex mutex;
+    static std::deque<BuiltRtlVariant> compiled;
+    const std::lock_guard<std::mutex> lock(mutex);
+    for (const BuiltRtlVariant& built : compiled) {
+        if (built.variant.spec() == variant.spec()) return built;
+    }
+    const RtlBoardMaker maker = process_rtl_model_cache().load(variant);
+    const RtlMemoryShape shape = variant.memory();
+    return compiled.emplace_back(
+        BuiltRtlVariant{variant, [maker, shape] { return std::unique_ptr<RtlBoard>(maker(&shape)); }});
+}
+}  // namespace
+
 const BuiltRtlVariant& rtl_variant_for(const BoardConfig& config, uint32_t capacity) {
     if (const std::string why = rtl_unsupported(config); !why.empty()) {
         throw std::invalid_argument("fidelity rtl: " + why);
@@ -80,11 +123,7 @@ const BuiltRtlVariant& rtl_variant_for(const BoardConfig& config, uint32_t capac
         }
     }
     if (best != nullptr) return *best;
-    const std::size_t count = built_rtl_variants().size();
-    throw std::invalid_argument("fidelity rtl: no Verilator build of the board RTL serves this board (" +
-                                std::to_string(count) + " built); add '" +
-                                RtlVariant::for_board(config, capacity).spec() +
-                                "' to CDVP_RTL_VARIANTS and rebuild (docs/rtl.md; cdvp rtl-variants lists them)");
+    return compiled_rtl_variant(RtlVariant::for_board(config, capacity));
 }
 
 }  // namespace cdvp

@@ -12,6 +12,19 @@ int log2_ceiling(uint64_t value) {  // Verilog's $clog2
 }
 }  // namespace
 
+const StateNames& rtl_controller_states() {
+    static const StateNames states = [] {
+        StateNames one_hot{"controller", std::vector<std::string>(RtlProbes::kDone + 1)};
+        one_hot.names[RtlProbes::kIdle] = "idle";
+        one_hot.names[RtlProbes::kSweep] = "sweep";
+        one_hot.names[RtlProbes::kDrain] = "drain";
+        one_hot.names[RtlProbes::kPaused] = "paused";
+        one_hot.names[RtlProbes::kDone] = "done";
+        return one_hot;
+    }();
+    return states;
+}
+
 std::vector<TracedSignal> rtl_waves(const RtlVariant& v) {
     const std::string top = "board.collision_board_top.";
     const int aw = static_cast<int>(v.address_bits);
@@ -25,8 +38,7 @@ std::vector<TracedSignal> rtl_waves(const RtlVariant& v) {
         {"board: host bus", "board.wdata", 32, F::kHex},
         {"board: host bus", "board.we", 1, F::kBit},
         {"board: host bus", "board.irq", 1, F::kBit},
-        // One-hot: 1 idle, 2 sweep, 4 drain, 8 paused, 16 done.
-        {"board: control", top + "state", 5, F::kBinary},
+        {"board: control", top + "state", 5, F::kNamed, &rtl_controller_states()},
         {"board: control", top + "enable", 1, F::kBit},
         {"board: control", top + "cycles", 64, F::kDecimal},
         {"board: control", top + "stalls", 64, F::kDecimal},

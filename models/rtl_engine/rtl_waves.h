@@ -13,4 +13,9 @@ namespace cdvp {
 
 std::vector<TracedSignal> rtl_waves(const RtlVariant& variant);
 
+// The controller's one-hot state by name (1 idle, 2 sweep, 4 drain, 8
+// paused, 16 done): the RTL's table "controller", as the platform's
+// controller state has one of its own.
+const StateNames& rtl_controller_states();
+
 }  // namespace cdvp

@@ -12,7 +12,7 @@ namespace cdvp {
 
 // How the driver moves boxes and pairs (run.transfer), and how it waits for
 // the board (run.wait); their names are the settings table's
-// (platform/setting_choices.h).
+// (platform/settings/setting_choices.h).
 enum class Transfer : uint8_t { kDma, kPio };
 enum class WaitMode : uint8_t { kIrq, kPoll };
 // How the boxes reach the board (run.upload): all six arrays every frame;

@@ -3,6 +3,7 @@
 #include "models/grid_schedule/grid_slots.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "models/address_generator/address_generator.h"
@@ -43,6 +44,14 @@ FrameTime::FrameTime(const DriverConfig& config, const BusTiming& bus, SimTime p
       buffer_depth_(std::max<uint32_t>(buffer_depth, 1)),
       tiles_(tiles),
       quantum_ns_(quantum_ns) {}
+
+SimTime poll_gap_fs(const DriverConfig& config, SimTime period_fs, uint32_t k) {
+    const SimTime gap = fs_from_ns(config.poll_gap_ns);
+    const SimTime base = gap > 0 ? gap : period_fs;
+    if (config.poll_backoff <= 1.0) return base;
+    const double grown = ns_from_fs(base) * std::pow(config.poll_backoff, std::min<uint32_t>(k, 64));
+    return fs_from_ns(std::max(ns_from_fs(base), std::min(grown, config.poll_gap_max_ns)));
+}
 
 double FrameTime::timeout_ns(double worst_ns) const {
     return config_.timeout_floor_ns + config_.timeout_factor * worst_ns;

@@ -1,6 +1,6 @@
 // How long the driver lets each wait take, and how long a frame can take at
 // most, from the same numbers: the estimate that cdvp run makes before any
-// work (sw/cli/run_budgets.h) therefore covers every deadline the driver will
+// work (sw/run/run_budgets.h) therefore covers every deadline the driver will
 // set, and both are held to one limit, kSimulatedTimeLimit.
 #pragma once
 
@@ -37,6 +37,11 @@ double full_upload_bus_ns(const BusTiming& bus, Transfer transfer, uint32_t obje
 double delta_upload_bus_ns(const BusTiming& bus, Transfer transfer, uint64_t records);
 // Whether run.upload sends the `changed` boxes of a frame of `objects` as deltas.
 bool upload_as_delta(const DriverConfig& config, const BusTiming& bus, uint32_t objects, uint64_t changed);
+
+// The pause after the k-th poll of a wait: the poll gap (a board period when
+// it is 0, so that an untimed bus still lets time pass), growing by the
+// back-off factor each poll up to the largest gap.
+SimTime poll_gap_fs(const DriverConfig& config, SimTime period_fs, uint32_t k);
 
 // What a frame's waits and work cost on one board and bus. All times in ns.
 class FrameTime {

@@ -1,5 +1,7 @@
 #include "sw/bullet/board_broadphase.h"
 
+#include <LinearMath/btAabbUtil2.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -27,34 +29,6 @@ uint64_t pair_key(int slot_a, int slot_b) {
     const auto lo = static_cast<uint64_t>(std::min(slot_a, slot_b));
     const auto hi = static_cast<uint64_t>(std::max(slot_a, slot_b));
     return lo << 32 | hi;
-}
-
-bool closed_overlap(const btVector3& min_a, const btVector3& max_a, const btVector3& min_b, const btVector3& max_b) {
-    for (int axis = 0; axis < 3; ++axis) {
-        if (!(min_a[axis] <= max_b[axis] && min_b[axis] <= max_a[axis])) return false;
-    }
-    return true;
-}
-
-// Does the segment from + t (to - from), t in [0, lambda_max], meet the closed box [lo, hi]?
-bool segment_meets_box(const btVector3& from, const btVector3& to, btScalar lambda_max, const btVector3& lo,
-                       const btVector3& hi) {
-    btScalar t_enter = 0;
-    btScalar t_leave = lambda_max;
-    for (int axis = 0; axis < 3; ++axis) {
-        const btScalar direction = to[axis] - from[axis];
-        if (direction == 0) {
-            if (from[axis] < lo[axis] || from[axis] > hi[axis]) return false;
-            continue;
-        }
-        btScalar t_lo = (lo[axis] - from[axis]) / direction;
-        btScalar t_hi = (hi[axis] - from[axis]) / direction;
-        if (t_lo > t_hi) std::swap(t_lo, t_hi);
-        t_enter = std::max(t_enter, t_lo);
-        t_leave = std::min(t_leave, t_hi);
-        if (t_enter > t_leave) return false;
-    }
-    return true;
 }
 
 }  // namespace
@@ -134,15 +108,24 @@ void BoardBroadphase::getAabb(btBroadphaseProxy* proxy, btVector3& aabbMin, btVe
     aabbMax = proxy->m_aabbMax;
 }
 
-void BoardBroadphase::rayTest(const btVector3& rayFrom, const btVector3& rayTo, btBroadphaseRayCallback& rayCallback,
-                              const btVector3& aabbMin, const btVector3& aabbMax) {
+void BoardBroadphase::rayTest(const btVector3& rayFrom, const btVector3& /*rayTo*/,
+                              btBroadphaseRayCallback& rayCallback, const btVector3& aabbMin,
+                              const btVector3& aabbMax) {
+    // The ray is the callback's, as btDbvtBroadphase reads it: from rayFrom along
+    // the direction whose inverse is m_rayDirectionInverse (Bullet's callbacks
+    // normalize it, so m_lambda_max is the length), up to m_lambda_max. It is read
+    // again before each proxy: a callback that shortens it clips the rest.
+    btVector3 bounds[2];
     for (uint32_t index = 0; index < capacity_; ++index) {
         const Slot& slot = slots_[index];
         if (!slot.live) continue;
-        // The swept box's Minkowski sum with the proxy: a point ray against the grown box.
-        if (segment_meets_box(rayFrom, rayTo, rayCallback.m_lambda_max, slot.m_aabbMin - aabbMax,
-                              slot.m_aabbMax - aabbMin)) {
-            rayCallback.process(&slot);
+        // The swept box's Minkowski sum with the proxy, as btDbvt grows its nodes.
+        bounds[0] = slot.m_aabbMin - aabbMax;
+        bounds[1] = slot.m_aabbMax - aabbMin;
+        btScalar entry = 0;
+        if (btRayAabb2(rayFrom, rayCallback.m_rayDirectionInverse, rayCallback.m_signs, bounds, entry, 0,
+                       rayCallback.m_lambda_max)) {
+            rayCallback.process(&slot);  // its result is ignored, as Bullet's broad phases ignore it
         }
     }
 }
@@ -151,7 +134,10 @@ void BoardBroadphase::aabbTest(const btVector3& aabbMin, const btVector3& aabbMa
                                btBroadphaseAabbCallback& callback) {
     for (uint32_t index = 0; index < capacity_; ++index) {
         const Slot& slot = slots_[index];
-        if (slot.live && closed_overlap(aabbMin, aabbMax, slot.m_aabbMin, slot.m_aabbMax)) callback.process(&slot);
+        // btSimpleBroadphase's test: closed boxes, touching counts.
+        if (slot.live && TestAabbAgainstAabb2(aabbMin, aabbMax, slot.m_aabbMin, slot.m_aabbMax)) {
+            callback.process(&slot);
+        }
     }
 }
 

@@ -57,11 +57,16 @@ public:
     void setAabb(btBroadphaseProxy* proxy, const btVector3& aabbMin, const btVector3& aabbMax,
                  btDispatcher* dispatcher) override;
     void getAabb(btBroadphaseProxy* proxy, btVector3& aabbMin, btVector3& aabbMax) const override;
-    // Host-side tests over the live proxies in slot order (the board answers
-    // only all-pairs questions): rayTest calls process() for every proxy whose
-    // AABB, grown by the swept box [aabbMin, aabbMax], the segment from rayFrom
-    // towards rayTo meets within the callback's m_lambda_max; aabbTest for every
-    // proxy whose closed AABB overlaps the given one.
+    // Host-side queries over the live proxies in slot order, btSimpleBroadphase's
+    // handle order (the board answers only all-pairs questions; docs/bullet.md,
+    // "The query contract"). rayTest calls process() for every proxy whose AABB,
+    // grown by the swept box [aabbMin, aabbMax], the callback's ray meets: from
+    // rayFrom along 1 / m_rayDirectionInverse for a parameter up to m_lambda_max,
+    // in btRayAabb2's test, as btDbvtBroadphase tests its nodes (rayTo is not
+    // read, there either). m_lambda_max is read again before each proxy, so a
+    // callback that shortens it clips the rest of the query. aabbTest calls it
+    // for every proxy whose closed AABB overlaps the query (btSimpleBroadphase's
+    // test). process()'s result is ignored, as Bullet's broad phases ignore it.
     void rayTest(const btVector3& rayFrom, const btVector3& rayTo, btBroadphaseRayCallback& rayCallback,
                  const btVector3& aabbMin = btVector3(0, 0, 0),
                  const btVector3& aabbMax = btVector3(0, 0, 0)) override;

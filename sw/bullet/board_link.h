@@ -36,7 +36,7 @@ public:
 // beyond the capacity the board was built for is refused (std::length_error).
 class PlatformLink : public BoardLink {
 public:
-    PlatformLink(VirtualBoard& board, uint32_t capacity) : board_(board), capacity_(capacity) {}
+    PlatformLink(FramePlatform& board, uint32_t capacity) : board_(board), capacity_(capacity) {}
 
     uint32_t capacity() const override { return capacity_; }
     const FrameResult& run(const std::vector<FloatBox>& boxes) override;
@@ -47,7 +47,7 @@ public:
     const FrameResult* last_result() const { return result_; }
 
 private:
-    VirtualBoard& board_;
+    FramePlatform& board_;
     uint32_t capacity_;
     uint64_t frames_ = 0;
     FrameFault fault_;

@@ -1,5 +1,7 @@
 #include "sw/bullet/scenes.h"
 
+#include "models/common/user_text.h"
+
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 
 #include <algorithm>
@@ -164,6 +166,16 @@ const std::vector<std::string>& bullet_scene_names() {
 bool is_bullet_scene(const std::string& name) {
     const auto& names = bullet_scene_names();
     return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::optional<std::string> bullet_scene_refusal(const std::string& name) {
+    // The old name of Bullet's spheres, now cdvp run's alone.
+    if (name == "spheres") {
+        return std::string("'spheres' is cdvp run's scene, stepped by the paper's application; Bullet's spheres, "
+                           "with the six walls of their cube, are 'bullet-spheres'");
+    }
+    if (!is_bullet_scene(name)) return "expected one of " + bullet_scene_list() + ", got '" + excerpt(name) + "'";
+    return std::nullopt;
 }
 
 std::string describe(const SceneSpec& spec) {

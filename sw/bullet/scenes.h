@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ std::string describe(const SceneSpec& spec);
 
 const std::vector<std::string>& bullet_scene_names();
 bool is_bullet_scene(const std::string& name);
+// Why `name` is none of Bullet's scenes, in one line without the input's
+// name ("expected one of ..., got 'x'"), or nothing for one of them.
+std::optional<std::string> bullet_scene_refusal(const std::string& name);
 // "pyramid, boxes, mixed, stack, bullet-spheres": for messages and help.
 std::string bullet_scene_list();
 // "pyramid 120, boxes 3000, ...": each scene's default object count.

@@ -1,7 +1,7 @@
 // `cdvp bullet`: a Bullet scene stepped on the virtual board as its broad
 // phase beside the same scene on one of Bullet's own, with the modelled board
 // time against Bullet's broad-phase time and the whole step's time; its
-// settings, checks and report are `cdvp run`'s (sw/cli/run_setup.h).
+// settings, checks and report are `cdvp run`'s (sw/run/run_setup.h).
 // `cdvp record`: a Bullet scene's AABBs written as a trace for `cdvp run`.
 #pragma once
 

@@ -13,17 +13,17 @@
 #include <sstream>
 
 #include "models/common/user_text.h"
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 #include "sw/baselines/broad_phase.h"
-#include "sw/cli/baseline_timing.h"
+#include "sw/run/baseline_timing.h"
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/exit_status.h"
-#include "sw/cli/frame_source.h"
-#include "sw/cli/host_factor.h"
+#include "sw/run/frame_source.h"
+#include "sw/run/host_factor.h"
 #include "sw/cli/number_option.h"
-#include "sw/cli/reference_workload.h"
+#include "sw/run/reference_workload.h"
 #include "sw/scene/conversion.h"
-#include "sw/study/output/output_set.h"
+#include "sw/output/output_set.h"
 #include "sw/timing/frame_samples.h"
 #include "sw/timing/speed_probe.h"
 

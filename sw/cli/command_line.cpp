@@ -10,6 +10,7 @@
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/number_option.h"
 #include "sw/cli/run_command.h"
+#include "sw/cli/exit_status.h"
 #include "sw/cli/run_options.h"
 
 namespace po = boost::program_options;
@@ -25,14 +26,7 @@ std::string bullet_scene_help() { return bullet_scene_list() + " (docs/bullet.md
 std::string bullet_objects_help() { return "(default: the scene's own: " + bullet_scene_defaults() + ")"; }
 
 void check_bullet_scene_name(const std::string& name) {
-    // The old name of Bullet's spheres, now cdvp run's alone.
-    if (name == "spheres") {
-        throw InputError("--scene: 'spheres' is cdvp run's scene, stepped by the paper's application; Bullet's "
-                         "spheres, with the six walls of their cube, are 'bullet-spheres'");
-    }
-    if (!is_bullet_scene(name)) {
-        throw InputError("--scene: expected one of " + bullet_scene_list() + ", got '" + excerpt(name) + "'");
-    }
+    if (const std::optional<std::string> refused = bullet_scene_refusal(name)) throw InputError("--scene: " + *refused);
 }
 
 po::options_description scene_options(SceneOptions& o) {

@@ -8,23 +8,14 @@
 #include <new>
 
 #include "models/common/user_text.h"
-#include "sw/study/output/output_set.h"
-#include "sw/study/output/output_target.h"
+#include "sw/output/output_set.h"
+#include "sw/output/output_target.h"
 
 namespace cdvp {
 
 CommandFailure failure_of_current_exception(const std::string& program) {
-    try {
-        throw;
-    } catch (const InputError& e) {
-        return {kExitBadInput, program + ": " + printable(e.what())};
-    } catch (const SystemError& e) {
-        return {kExitSystem, program + ": " + printable(e.what())};
-    } catch (const std::bad_alloc&) {
-        return {kExitInternal, program + ": internal error (a cdvp bug): out of memory past the run's memory budget"};
-    } catch (const std::exception& e) {
-        return {kExitInternal, program + ": internal error (a cdvp bug): " + printable(e.what())};
-    }
+    const Failure failure = failure_of_current_exception();
+    return {failure.status, program + ": " + failure.message};
 }
 
 int exit_status_of(const std::string& program, const std::function<int()>& body) {

@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-#include "sw/study/exit_codes.h"
+#include "sw/run/exit_codes.h"
 
 namespace cdvp {
 

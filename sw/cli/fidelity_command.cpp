@@ -9,15 +9,17 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "sw/cli/flag_names.h"
 #include "sw/cli/forwarded_options.h"
-#include "sw/cli/run_budgets.h"
+#include "sw/run/run_budgets.h"
+#include "sw/cli/exit_status.h"
 #include "sw/cli/run_options.h"
-#include "sw/cli/run_setup.h"
+#include "sw/run/run_setup.h"
 #include "sw/cli/run_command.h"
 #include "sw/scene/scene.h"
 #include "sw/study/child_runs.h"
 #include "sw/study/fidelity.h"
-#include "sw/study/output/output_set.h"
+#include "sw/output/output_set.h"
 
 namespace cdvp {
 
@@ -27,9 +29,10 @@ constexpr const char* kHelp =
     "Usage: cdvp fidelity (--trace FILE | --scene spheres [--objects N] [--frames F] [--seed S])\n"
     "                     [board and host options of cdvp run] --out DIR [-q]\n"
     "\n"
-    "Runs the scene at every modelling level: the clocked engine, the board RTL under Verilator (where a\n"
-    "built variant serves the board, else its rows say 'not run' and why: cdvp rtl-variants), the fast\n"
-    "engine with the host CPU's quantum at 0, 100 ns, 1 us, 10 us and 100 us, and the analytic level\n"
+    "Runs the scene at every modelling level: the clocked engine, the board RTL under Verilator (a board\n"
+    "no built-in variant serves has its own compiled on first use; where the RTL cannot run the board or\n"
+    "verilator is missing, its rows say 'not run' and why), the fast engine with the host CPU's quantum\n"
+    "at 0, 100 ns, 1 us, 10 us and 100 us, and the analytic level\n"
     "(closed forms), each with the host bus at its transaction level and as the formula (which drops a\n"
     "background load, from any layer: the formula times an idle bus). Writes DIR/fidelity.csv (per level:\n"
     "the simulator's wall time per frame, the median over the frames after --warmup; the mean simulated\n"
@@ -54,7 +57,7 @@ bool reserved(const std::string& key) {
 }
 
 struct FidelityOptions {
-    std::vector<std::string> forwarded;  // the options of cdvp run every level takes
+    RunSpec scene;  // what every level runs
     std::string out_dir;
     bool quiet = false;
 };
@@ -65,12 +68,13 @@ FidelityOptions parse_fidelity_options(int argc, char** argv) {
     own.add_options()("out", po::value<std::string>(), "")("quiet,q", po::bool_switch(), "");
     const ParsedCommandLine line = parse_with_run_options(argc, argv, own, "cdvp fidelity");
     FidelityOptions o;
+    o.scene.settings.names = flag_names();
     for (const ForwardedOption& option : line.forwarded) {
         if (reserved(option.key)) {
             throw InputError((option.typed.rfind("-c", 0) == 0 ? "-c " + option.key : excerpt(option.typed)) +
                              ": set by cdvp fidelity for each level, or not for it; leave it out");
         }
-        o.forwarded.insert(o.forwarded.end(), option.words.begin(), option.words.end());
+        apply_forwarded(option, o.scene);
     }
     o.out_dir = line.values.count("out") ? line.values["out"].as<std::string>() : std::string();
     o.quiet = line.values["quiet"].as<bool>();
@@ -105,17 +109,12 @@ int write_outputs(const FidelityOptions& o, const std::vector<FidelityResult>& r
 // A background load, from whichever layer, is dropped at the formula levels
 // (which refuse one): the formula's idle-bus times against the loaded bus
 // are the error the ladder reports.
-std::vector<std::string> formula_extra(const std::vector<std::string>& forwarded) {
-    std::vector<std::string> words{"run"};
-    words.insert(words.end(), forwarded.begin(), forwarded.end());
-    std::vector<char*> argv;
-    for (std::string& word : words) argv.push_back(word.data());
-    RunOptions o;
-    const boost::program_options::variables_map vm = parse_run_options(static_cast<int>(argv.size()), argv.data(), o);
+std::vector<std::string> formula_overrides(const RunSpec& scene) {
+    const SceneFrames* generated = scene.frames ? std::get_if<SceneFrames>(&*scene.frames) : nullptr;
     std::string board_name;
-    const SettingValues values = layered_settings(o.layers, vm, vm.count("scene") ? o.scene : "", board_name);
+    const SettingValues values = layered_settings(scene.settings, generated ? generated->name : "", board_name);
     if (values.settings().bus_load.bytes_per_s == 0) return {};
-    return {"-c", "bus.load_bytes_per_s=0"};
+    return {"bus.load_bytes_per_s=0"};
 }
 
 int fidelity(int argc, char** argv) {
@@ -127,22 +126,24 @@ int fidelity(int argc, char** argv) {
     // directories this run made, and a failed run leaves neither.
     CreatedDirectories made;
     OutputSet files;
-    for (const std::string input : {"--trace", "--board", "--config"}) {
-        const std::string path = option_value(o.forwarded, input);
-        // A board given by name is a shipped preset; only a path can be an output's target.
-        if (!path.empty() && (input != "--board" || path.find('/') != std::string::npos)) {
-            files.add_input(input, path);
-        }
+    TraceFrames* trace = o.scene.frames ? std::get_if<TraceFrames>(&*o.scene.frames) : nullptr;
+    if (trace != nullptr && !trace->path.empty()) files.add_input("--trace", trace->path);
+    // A board given by name is a shipped preset; only a path can be an output's target.
+    if (const std::optional<std::string>& board = o.scene.settings.board; board && board->find('/') != std::string::npos) {
+        files.add_input("--board", *board);
+    }
+    if (const std::optional<std::string>& config = o.scene.settings.config; config && !config->empty()) {
+        files.add_input("--config", *config);
     }
     // Every level reads the trace from the start (a pipe is copied once).
     std::optional<TraceSpool> spool;
-    if (const std::optional<OptionValue> at = find_option(o.forwarded, "--trace")) {
-        spool.emplace(o.forwarded[at->index].substr(at->offset), spooled_trace_limits());
-        o.forwarded[at->index].replace(at->offset, std::string::npos, spool->path());
+    if (trace != nullptr && !trace->path.empty()) {
+        spool.emplace(trace->path, spooled_trace_limits());
+        trace->path = spool->path();
     }
     const bool show_progress = !o.quiet && isatty(STDERR_FILENO);
     std::vector<FidelityResult> results;
-    const std::optional<int> failed = run_fidelity(o.forwarded, formula_extra(o.forwarded), spool ? &*spool : nullptr, results,
+    const std::optional<int> failed = run_fidelity(o.scene, formula_overrides(o.scene), spool ? &*spool : nullptr, results,
                                                    [&](std::size_t k, const FidelityLevel& level, bool done) {
         if (!show_progress) return;
         if (done) {

@@ -1,9 +1,10 @@
 #include "sw/cli/forwarded_options.h"
 
 #include "models/common/user_text.h"
-#include "platform/config_file.h"
-#include "platform/settings.h"
+#include "platform/settings/config_file.h"
+#include "platform/settings/settings.h"
 #include "sw/cli/run_options.h"
+#include "sw/run/run_arguments.h"
 
 namespace po = boost::program_options;
 
@@ -24,7 +25,7 @@ ForwardedOption forwarded(const po::option& option) {
     f.typed = option.original_tokens.empty() ? option.string_key : option.original_tokens.front();
     f.value = option.value.empty() ? std::string() : option.value.front();
     if (option.string_key == "-c") {
-        f.key = parse_override(f.value).setting->name;  // a bad name or value refused here
+        f.key = parse_override(f.value, "-c").setting->name;  // a bad name or value refused here
         f.words = {"-c", f.value};  // NAME=VALUE starts with a letter: never an option
         return f;
     }
@@ -35,6 +36,16 @@ ForwardedOption forwarded(const po::option& option) {
 }
 
 }  // namespace
+
+void apply_forwarded(const ForwardedOption& option, RunSpec& spec) {
+    if (option.words.size() == 2 && option.words[0] == "-c") {
+        spec.settings.overrides.push_back(option.value);
+        return;
+    }
+    const Setting* s = find_setting(option.key);
+    const bool is_switch = s != nullptr && s->value_name.empty();
+    set_input(spec, option.key, is_switch ? "yes" : option.value, true);
+}
 
 std::set<std::string> run_option_names() {
     RunOptions unused;

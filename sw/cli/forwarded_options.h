@@ -11,6 +11,8 @@
 
 #include <boost/program_options.hpp>
 
+#include "sw/run/run_spec.h"
+
 namespace cdvp {
 
 // An option of `cdvp run` passed on to every child.
@@ -36,5 +38,10 @@ ParsedCommandLine parse_with_run_options(int argc, char** argv, const boost::pro
 
 // The names of `cdvp run`'s long options (without dashes).
 std::set<std::string> run_option_names();
+
+// Adds a passed-on option to what every child runs: a setting's flag as a
+// value given typed (a switch as "yes"), -c as an override, any other input
+// as set_input sets it. Throws InputError for a value its setting refuses.
+void apply_forwarded(const ForwardedOption& option, RunSpec& spec);
 
 }  // namespace cdvp

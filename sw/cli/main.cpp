@@ -7,16 +7,18 @@
 #include <systemc>
 
 #include "platform/kernel.h"
+#include "sw/cli/exit_status.h"
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/calibrate_command.h"
 #include "sw/cli/fidelity_command.h"
 #include "sw/cli/rtl_variants_command.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/settings_command.h"
-#include "sw/study/version.h"
+#include "sw/run/version.h"
 #include "sw/cli/sweep_command.h"
-#include "sw/study/output/output_target.h"
+#include "sw/output/output_target.h"
 #include "models/common/user_text.h"
+#include "models/rtl_engine/rtl_model_cache.h"
 
 namespace {
 
@@ -87,7 +89,10 @@ int sc_main(int argc, char** argv) {
         {"record", cdvp::record_command}, {"calibrate", cdvp::calibrate_command},
         {"rtl-variants", cdvp::rtl_variants_command}};
     for (const auto& [name, run] : commands) {
-        if (command == name) return run(command_argc, command_argv);
+        if (command == name) {
+            cdvp::set_rtl_notice_program("cdvp " + command);  // names the RTL's compile on first use
+            return run(command_argc, command_argv);
+        }
     }
     std::cerr << "cdvp: unknown command '" << cdvp::excerpt(command)
               << "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, calibrate, rtl-variants, help (see cdvp --help)\n";

@@ -5,9 +5,10 @@
 
 #include "models/common/user_text.h"
 #include "sw/bullet/scene_recording.h"
+#include "sw/cli/exit_status.h"
 #include "sw/cli/bullet_command.h"
 #include "sw/cli/run_command.h"
-#include "sw/study/output/output_set.h"
+#include "sw/output/output_set.h"
 #include "sw/scene/trace_csv.h"
 
 namespace po = boost::program_options;

@@ -8,7 +8,7 @@
 #include "models/common/user_text.h"
 #include "models/rtl_engine/rtl_variant.h"
 #include "sw/cli/exit_status.h"
-#include "sw/study/exit_codes.h"
+#include "sw/run/exit_codes.h"
 
 namespace cdvp {
 
@@ -18,10 +18,12 @@ constexpr const char* kHelp =
     "Usage: cdvp rtl-variants [--json]\n"
     "\n"
     "Lists the parameter sets of the whole-board RTL (models/board/rtl/collision_board_top.v)\n"
-    "compiled into this binary by Verilator: the boards --fidelity rtl runs. A board runs on\n"
+    "compiled into this binary by Verilator (the CMake list CDVP_RTL_VARIANTS). A board runs on\n"
     "the variant with its m, number format, comparator latency, FIFO and pair-buffer depths\n"
-    "and tiles, and a capacity (a power of two) of at least its largest frame; any other board\n"
-    "is refused naming the entry to add to the CMake list CDVP_RTL_VARIANTS (docs/rtl.md).\n"
+    "and tiles, and a capacity (a power of two) of at least its largest frame; for any other\n"
+    "board --fidelity rtl compiles its own on first use (verilator and the C++ compiler cdvp was\n"
+    "built with, about half a minute) into $CDVP_RTL_CACHE, else $XDG_CACHE_HOME/cdvp/rtl, else\n"
+    "~/.cache/cdvp/rtl, and later runs load it from there (docs/rtl.md).\n"
     "\n"
     "  --json   one JSON object a variant, with the fields of the text table\n";
 

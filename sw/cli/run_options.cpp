@@ -34,7 +34,7 @@ void add_board_option(po::options_description& group, std::string& board_name) {
          "without it: the board alone on an ideal, untimed bus");
 }
 
-po::options_description settings_options(SettingLayers& layers) {
+po::options_description settings_options(SettingLayersText& layers) {
     po::options_description settings("Settings (every one: cdvp settings; docs/settings.md)");
     settings.add_options()
         ("config", po::value(&layers.config)->value_name("FILE"),

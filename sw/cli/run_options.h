@@ -1,4 +1,4 @@
-// The options of `cdvp run` and their parsing. Settings (platform/settings.h)
+// The options of `cdvp run` and their parsing. Settings (platform/settings/settings.h)
 // come in layers: defaults < --board preset < --config FILE < -c NAME=VALUE
 // < dedicated flags (--m, --objects, ...), one flag per setting that has one.
 #pragma once
@@ -10,13 +10,13 @@
 
 #include <boost/program_options.hpp>
 
-#include "platform/setting_values.h"
+#include "platform/settings/setting_values.h"
 
 namespace cdvp {
 
-// Where a command's settings come from besides the defaults, each layer over
-// the last (sw/cli/run_setup.h layers them).
-struct SettingLayers {
+// Where a command's settings come from besides the defaults, as its options
+// give them (sw/run/run_spec.h's SettingLayers, once read).
+struct SettingLayersText {
     std::string board_name;              // --board NAME or PATH
     std::string config;                  // --config FILE
     std::vector<std::string> overrides;  // -c NAME=VALUE, in order
@@ -26,9 +26,9 @@ struct SettingLayers {
 struct RunOptions {
     std::string trace;
     std::string scene;
-    SettingLayers layers;
+    SettingLayersText layers;
     std::string baselines;
-    std::string software_timings;  // a directory of shared software timings (sw/cli/shared_baselines.h)
+    std::string software_timings;  // a directory of shared software timings (sw/run/shared_baselines.h)
     std::vector<std::string> inject;  // fault specs, docs/faults.md
     std::string pairs_out, report, vcd;
     std::string vcd_frames;  // A:B
@@ -60,7 +60,7 @@ void add_setting_flags(boost::program_options::options_description& group, const
 // --board NAME.
 void add_board_option(boost::program_options::options_description& group, std::string& board_name);
 // The group of --config FILE and -c NAME=VALUE.
-boost::program_options::options_description settings_options(SettingLayers& layers);
+boost::program_options::options_description settings_options(SettingLayersText& layers);
 // --vcd FILE, --vcd-frames A:B and --vcd-format vcd|fst.
 void add_wave_options(boost::program_options::options_description& group, std::string& vcd, std::string& frames,
                       std::string& format);

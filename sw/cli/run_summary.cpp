@@ -4,8 +4,9 @@
 #include <cstdio>
 
 #include "models/common/user_text.h"
-#include "sw/cli/machine_info.h"
-#include "sw/cli/run_report.h"
+#include "sw/run/machine_info.h"
+#include "sw/cli/command_observer.h"
+#include "sw/run/run_report.h"
 
 namespace cdvp {
 
@@ -67,7 +68,7 @@ void print_timing_quality(std::ostream& out, const RunTotals& totals) {
 }
 
 // The means the speedups are taken from, with p50, p99 and the maximum.
-void print_timing(std::ostream& out, const RunConfig& run, const RunTotals& totals) {
+void print_timing(std::ostream& out, const RunDescription& run, const RunTotals& totals) {
     if (totals.frames() == 0) return;
     const TimingFigures board = totals.board_figures();
     const std::map<std::string, TimingFigures> baselines = totals.baseline_figures();
@@ -116,7 +117,7 @@ void print_timing(std::ostream& out, const RunConfig& run, const RunTotals& tota
 
 }  // namespace
 
-void print_summary(std::ostream& out, const RunConfig& run, const RunTotals& totals, const RunWallTimes& wall) {
+void print_summary(std::ostream& out, const RunDescription& run, const RunTotals& totals, const RunWallTimes& wall) {
     const BoardConfig& c = run.config;
     char line[512];
     // Names may be long and come from files: printed whole and escaped.

@@ -29,7 +29,7 @@ void SettingFlag::parse(boost::any& store, const std::vector<std::string>& token
 
 void SettingFlag::notify(const boost::any& store) const {
     if (store.empty()) return;
-    given_->push_back({&setting_, boost::any_cast<SettingValue>(store), {SettingOrigin::Kind::kFlag, "", 0}});
+    given_->push_back({&setting_, boost::any_cast<SettingValue>(store), {SettingOrigin::Kind::kGiven, "", 0}});
 }
 
 }  // namespace cdvp

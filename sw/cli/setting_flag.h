@@ -1,5 +1,5 @@
 // A dedicated flag of `cdvp run` for one setting of the table
-// (platform/settings.h): its range, default and help come from the setting,
+// (platform/settings/settings.h): its range, default and help come from the setting,
 // its value is checked by the setting's own parser ("--m: expected an
 // integer from 1 to 32, got '-4294967295'"), and a flag given is a layer
 // over the defaults, the preset, the config file and -c.
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "platform/setting_values.h"
+#include "platform/settings/setting_values.h"
 
 namespace cdvp {
 

@@ -1,3 +1,4 @@
+#include "sw/cli/exit_status.h"
 #include "sw/cli/settings_command.h"
 
 #include <cstring>
@@ -9,10 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
-#include "platform/setting_values.h"
+#include "platform/settings/setting_values.h"
 #include "sw/cli/run_command.h"
 #include "sw/cli/run_options.h"
-#include "sw/cli/run_setup.h"
+#include "sw/run/run_setup.h"
 
 namespace cdvp {
 
@@ -118,7 +119,7 @@ std::string origin_of(const SettingValues& values, const Setting& s) {
         case SettingOrigin::Kind::kConfig:
             return "config " + origin.file + (origin.line > 0 ? ":" + std::to_string(origin.line) : "") + ": " + s.name;
         case SettingOrigin::Kind::kOverride: return "-c " + s.name;
-        case SettingOrigin::Kind::kFlag: return "--" + s.flag;
+        case SettingOrigin::Kind::kGiven: return "--" + s.flag;
     }
     return "default";
 }
@@ -126,7 +127,7 @@ std::string origin_of(const SettingValues& values, const Setting& s) {
 // The settings the layers give, each with its value and origin.
 int resolved_settings(int argc, char** argv) {
     namespace po = boost::program_options;
-    SettingLayers layers;
+    SettingLayersText layers;
     bool json = false;
     po::options_description options;
     options.add_options()("board", po::value(&layers.board_name), "")("config", po::value(&layers.config), "")(
@@ -138,7 +139,7 @@ int resolved_settings(int argc, char** argv) {
         throw InputError(option_error_text(e, "cdvp settings"));
     }
     std::string board_name;
-    const SettingValues values = layered_settings(layers, vm, "", board_name);
+    const SettingValues values = layered_settings(setting_layers_of(layers, vm), "", board_name);
     values.check_board();
     nlohmann::json all = nlohmann::json::array();
     std::ostringstream text;

@@ -1,5 +1,5 @@
 // `cdvp settings [--json | --markdown]`: every setting of the table
-// (platform/settings.h) with its type, unit, default, range or choices,
+// (platform/settings/settings.h) with its type, unit, default, range or choices,
 // dedicated flag, help and the source behind its default.
 #pragma once
 

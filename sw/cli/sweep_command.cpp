@@ -16,8 +16,7 @@
 #include <string>
 
 #include "sw/cli/exit_status.h"
-#include "sw/cli/run_command.h"
-#include "sw/cli/run_budgets.h"
+#include "sw/run/run_budgets.h"
 #include "sw/cli/sweep_options.h"
 #include "sw/cli/sweep_progress.h"
 #include "sw/study/sweep.h"
@@ -75,12 +74,9 @@ void print_summary(const std::string& out, const SweepOutcome& outcome) {
 
 int run_sweep_command(SweepSpec spec) {
     spec.trace_limits = spooled_trace_limits();
-    RunMemo memo;  // scenes and pairs the points share
     if (spec.cdvp_binary.empty()) {
         // Analytic points need no child.
-        spec.in_process = [&memo](const std::vector<std::string>& args, std::string& errors, nlohmann::json* report) {
-            return run_analytic_in_process(args, errors, report, &memo);
-        };
+        spec.in_process = true;
         keep_freed_memory();
     }
     SweepProgress progress(!spec.quiet && isatty(STDERR_FILENO));

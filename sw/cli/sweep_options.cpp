@@ -8,11 +8,12 @@
 #include <boost/program_options.hpp>
 
 #include "models/common/user_text.h"
-#include "platform/board_preset.h"
-#include "platform/config_file.h"
-#include "platform/settings.h"
+#include "platform/settings/board_preset.h"
+#include "platform/settings/config_file.h"
+#include "platform/settings/settings.h"
+#include "sw/cli/flag_names.h"
 #include "sw/cli/forwarded_options.h"
-#include "sw/cli/host_profile.h"
+#include "sw/run/host_profile.h"
 #include "sw/cli/run_options.h"
 #include "sw/study/sweep_state.h"
 
@@ -151,7 +152,7 @@ void resolve_axis(Axis& axis, const std::string& label, const std::set<std::stri
     axis.key = axis.flag = axis.name;
     // Refused here, naming the file and key or line, rather than by every point.
     for (const std::string& value : axis.values) {
-        if (axis.key == "board") load_board_preset(value);
+        if (axis.key == "board") load_board_preset(value, "--board");
         if (axis.key == "config") read_config_file(value);
     }
 }
@@ -207,7 +208,7 @@ void read_forwarded_options(const ParsedCommandLine& line, SweepSpec& o) {
                                  excerpt(axis.name) + "); give it once");
             }
         }
-        o.run_options.insert(o.run_options.end(), option.words.begin(), option.words.end());
+        apply_forwarded(option, o.run);
         if (option.key == "config") {
             if (option.value.empty()) throw InputError("--config: expected a file path, got ''");
             read_config_file(option.value);  // refused here, naming file and line
@@ -232,7 +233,7 @@ void name_axis_inputs(SweepSpec& o) {
         }
     }
     if (sources.size() == 2) throw InputError("--scene and --trace: give one of them (the points' frames come from it)");
-    if (sources.empty()) o.run_options.insert(o.run_options.begin(), "--scene=spheres");
+    if (sources.empty()) o.run.frames = SceneFrames{"spheres"};
 }
 
 // A host profile's reference times and, as what each may move by on a
@@ -269,6 +270,7 @@ std::optional<SweepSpec> parse_sweep_options(int argc, char** argv) {
     for (const char* own : {"help", "quiet", "report", "pairs-out", "vcd", "vcd-frames", "vcd-format"}) run_flags.erase(own);
 
     SweepSpec o;
+    o.run.settings.names = flag_names();
     read_own_options(line, run_flags, o);
     read_forwarded_options(line, o);
     o.quiet = line.values["quiet"].as<bool>();

@@ -18,12 +18,13 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 #include "sw/cli/exit_status.h"
-#include "sw/cli/run_budgets.h"
+#include "sw/cli/run_command.h"
+#include "sw/run/run_budgets.h"
 #include "sw/cli/settings_command.h"
 #include "sw/cli/sweep_options.h"
-#include "sw/study/exit_codes.h"
+#include "sw/run/exit_codes.h"
 #include "sw/study/study_run.h"
 #include "sw/study/sweep.h"
 
@@ -76,8 +77,16 @@ std::string presets_json() {
 // One run: (the report as JSON text, its summary as JSON text, the pairs CSV or "").
 py::tuple run(const std::vector<std::string>& options, bool pairs, const std::string& cdvp_binary) {
     RunResult result = as_command("cdvp run", [&] {
+        std::vector<std::string> words{"run"};
+        words.insert(words.end(), options.begin(), options.end());
+        std::vector<char*> argv;
+        for (std::string& word : words) argv.push_back(word.data());
+        argv.push_back(nullptr);
+        RunOptions parsed;
+        const auto vm = parse_run_options(static_cast<int>(words.size()), argv.data(), parsed);
+        RunRequest request{run_spec_of(parsed, vm), pairs, cdvp_binary, false};
         py::gil_scoped_release unlocked;
-        return run_configuration(RunRequest{options, pairs, cdvp_binary});
+        return run_configuration(request);
     });
     return py::make_tuple(result.report.dump(), to_json(result.summary).dump(), py::bytes(result.pairs_csv));
 }
@@ -148,11 +157,6 @@ py::dict sweep(const std::vector<std::string>& arguments, const std::string& cdv
 }  // namespace
 
 }  // namespace cdvp
-
-// libsystemc.so refers to the program's sc_main (its own main calls it), and
-// the module links it through the platform's libraries, so the module must
-// define one to load. It is never called: no design elaborates in Python.
-extern "C" __attribute__((visibility("default"))) int sc_main(int, char*[]) { return cdvp::kExitInternal; }
 
 PYBIND11_MODULE(_cdvp, module) {
     module.doc() = "The C++ half of cdvp: the settings table, presets, runs and sweeps (docs/python.md).";

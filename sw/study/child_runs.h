@@ -1,9 +1,9 @@
 // What the commands that drive `cdvp run` as child processes share (`cdvp
-// fidelity`, `cdvp sweep`, `cdvp merge`): a child's output captured in
-// memory, children that die with their parent, scratch files removed on every
-// way out, a trace from a pipe spooled once, forwarded options found by name,
-// directories made for --out, and text files committed whole (temporary
-// file, synced, then rename).
+// fidelity`, `cdvp sweep`, `cdvp merge`), beside the child processes
+// themselves (sw/output/child_process.h) and whole text files
+// (sw/output/text_file.h): scratch files removed on every way out, a trace
+// from a pipe spooled once, forwarded options found by name, directories made
+// for --out, and gnuplot.
 #pragma once
 
 #include <sys/types.h>
@@ -14,26 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "sw/output/child_process.h"
+#include "sw/output/text_file.h"
+
 namespace cdvp {
-
-// A child's stdout or stderr kept in an anonymous in-memory file (memfd): no
-// name in any directory, so nothing is left behind however the process ends,
-// and no $TMPDIR is needed.
-class CapturedOutput {
-public:
-    explicit CapturedOutput(const char* name);
-    ~CapturedOutput();
-    CapturedOutput(const CapturedOutput&) = delete;
-    CapturedOutput& operator=(const CapturedOutput&) = delete;
-    int fd() const { return fd_; }
-    // What was written, from the start, at most 'max_bytes'.
-    std::string text(std::size_t max_bytes = std::size_t{1} << 20) const;
-    // Empties it for the next child.
-    void clear();
-
-private:
-    int fd_ = -1;
-};
 
 // A file in $TMPDIR for a child's output, removed on every way out but
 // SIGKILL (a cleanup signal included: see TemporaryRegistry). Throws
@@ -51,38 +35,7 @@ private:
     int slot_ = -1;
 };
 
-// The whole file (empty when it cannot be read).
-std::string slurp(const std::string& path);
-// The whole file, or nothing when it cannot be opened or read (errno tells why).
-std::optional<std::string> read_whole_file(const std::string& path);
 
-// The environment variable through which a parent running J children at once
-// tells each that its default memory budget is a J-th of the machine's.
-constexpr const char* kMemoryShareVariable = "CDVP_MEMORY_SHARE";
-
-// The running cdvp executable, for its child runs.
-std::string self_path();
-
-// Where a child's standard streams go and which descriptors it inherits.
-struct ChildStreams {
-    int in = -1;   // standard input; -1: /dev/null
-    int out = -1;  // standard output; -1: this process's
-    int err = -1;  // standard error; -1: this process's
-    std::vector<int> inherited;  // descriptors the child keeps open (its /proc/self/fd/N paths)
-};
-
-// The first executable named 'name' on PATH (a name with a '/' is taken as
-// a path), or nothing when there is none.
-std::optional<std::string> find_program(const std::string& name);
-
-// Starts args[0] (an absolute path, or looked up in PATH) with 'streams'; the
-// child gets SIGTERM should this process die first (even by SIGKILL), so no
-// point outlives its sweep. Returns its pid; throws when it cannot start.
-pid_t start_child(const std::vector<std::string>& args, const ChildStreams& streams);
-// Waits for that child (restarting after a signal handler ran); its wait status.
-int wait_child(pid_t pid);
-// start_child, then wait_child.
-int run_child(const std::vector<std::string>& args, const ChildStreams& streams);
 
 // Runs gnuplot (found on PATH) on 'script'; nothing when it drew, else
 // what it said on stderr.
@@ -144,11 +97,5 @@ private:
     std::vector<std::string> made_;
 };
 
-// Replaces 'path' with 'text' whole: written to a temporary beside it,
-// synced, then renamed over it, with the cleanup signals held back meanwhile
-// so that an interrupted command leaves the old file or the new one, never a
-// part. Throws SystemError (a full disk, an I/O error) or InputError, naming
-// 'label' and the path, with the system's own error text.
-void commit_text_file(const std::string& path, const std::string& text, const std::string& label);
 
 }  // namespace cdvp

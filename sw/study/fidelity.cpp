@@ -1,5 +1,7 @@
 #include "sw/study/fidelity.h"
 
+#include "sw/run/run_arguments.h"
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -11,9 +13,9 @@
 #include <variant>
 
 #include "models/common/user_text.h"
-#include "platform/setting_choices.h"
+#include "platform/settings/setting_choices.h"
 #include "sw/scene/scene.h"
-#include "sw/study/exit_codes.h"
+#include "sw/run/exit_codes.h"
 #include "sw/study/fidelity_figure.h"
 #include "sw/study/figure_plan.h"
 
@@ -56,17 +58,19 @@ FidelityResult read_level(const std::string& report_path, const std::string& pai
 
 // Runs `cdvp run` at one level; its report and pairs, or the exit status
 // to end with (its own one-line error already printed, under this name).
-std::variant<FidelityResult, int> run_level(const FidelityLevel& level, const std::vector<std::string>& forwarded,
-                                            const TraceSpool* spool) {
+std::variant<FidelityResult, int> run_level(const FidelityLevel& level, RunSpec spec, const TraceSpool* spool) {
     ScratchFile report(".json"), pairs(".csv");
     CapturedOutput errors("cdvp-level-stderr");
-    std::vector<std::string> args{self_path(), "run"};
-    args.insert(args.end(), forwarded.begin(), forwarded.end());
     std::ostringstream quantum;
     quantum << level.quantum_ns;
-    args.insert(args.end(), {"--fidelity", level.fidelity(), "--bus-model", level.bus_model, "--quantum-ns", quantum.str(),
-                             "--report", report.path(),
-                             "--pairs-out", pairs.path(), "-q"});
+    set_input(spec, "run.fidelity", level.fidelity(), true);
+    set_input(spec, "bus.model", level.bus_model, true);
+    set_input(spec, "run.quantum_ns", quantum.str(), true);
+    spec.outputs.report = report.path();
+    spec.outputs.pairs_csv = pairs.path();
+    spec.outputs.summary = false;
+    std::vector<std::string> args{self_path(), command_of(spec)};
+    for (std::string& word : to_arguments(spec)) args.push_back(std::move(word));
     ChildStreams streams;
     streams.err = errors.fd();
     if (spool != nullptr && spool->descriptor() >= 0) streams.inherited = {spool->descriptor()};
@@ -74,7 +78,8 @@ std::variant<FidelityResult, int> run_level(const FidelityLevel& level, const st
     if (WIFSIGNALED(wait_status)) return 128 + WTERMSIG(wait_status);
     if (WEXITSTATUS(wait_status) == kExitBadInput && level.level == ModelLevel::kRtl) {
         // The scene and flags ran at the reference level before: what the
-        // rtl level refuses is the board (no built variant serves it).
+        // rtl level refuses is the board (the RTL cannot run it) or its
+        // model (verilator missing, a failed compile).
         FidelityResult skipped;
         skipped.not_run = renamed_message(errors.text(64 * 1024), "cdvp fidelity");
         while (!skipped.not_run.empty() && skipped.not_run.back() == '\n') skipped.not_run.pop_back();
@@ -129,14 +134,16 @@ const char* FidelityLevel::fidelity() const { return name_of(level); }
 
 const std::array<FidelityLevel, kFidelityLevels>& fidelity_levels() { return kLevels; }
 
-std::optional<int> run_fidelity(const std::vector<std::string>& forwarded, const std::vector<std::string>& formula_extra,
+std::optional<int> run_fidelity(const RunSpec& scene, const std::vector<std::string>& formula_overrides,
                                 const TraceSpool* spool,
                                 std::vector<FidelityResult>& results, const FidelityProgress& progress) {
     for (std::size_t k = 0; k < kLevels.size(); ++k) {
         if (progress) progress(k, kLevels[k], false);
-        std::vector<std::string> options = forwarded;
-        if (kLevels[k].bus_model == kFormula) options.insert(options.end(), formula_extra.begin(), formula_extra.end());
-        std::variant<FidelityResult, int> level = run_level(kLevels[k], options, spool);
+        RunSpec spec = scene;
+        if (kLevels[k].bus_model == kFormula) {
+            spec.settings.overrides.insert(spec.settings.overrides.end(), formula_overrides.begin(), formula_overrides.end());
+        }
+        std::variant<FidelityResult, int> level = run_level(kLevels[k], spec, spool);
         if (progress) progress(k, kLevels[k], true);
         if (const int* status = std::get_if<int>(&level)) return *status;
         results.push_back(std::move(std::get<FidelityResult>(level)));

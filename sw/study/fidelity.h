@@ -18,9 +18,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/setting_choices.h"
+#include "platform/settings/setting_choices.h"
 #include "sw/study/child_runs.h"
-#include "sw/study/report_summary.h"
+#include "sw/run/report_summary.h"
+#include "sw/run/run_spec.h"
 
 namespace cdvp {
 
@@ -55,16 +56,16 @@ struct FidelityResult {
     std::string not_run;
 };
 
-// Runs every level with `forwarded` (options of cdvp run) and the trace
-// spool if any; results in level order. Returns the exit status to end with
-// when a level failed (its one-line error printed on stderr under the name
-// cdvp fidelity), else none. progress(k, level, done) before and after each.
-// Throws InputError when the scene has no frame to time.
+// Runs every level of `scene` (a run of it, a trace read where the spool
+// put it) as a child; results in level order. Returns the exit status to
+// end with when a level failed (its one-line error printed on stderr under
+// the name cdvp fidelity), else none. progress(k, level, done) before and
+// after each. Throws InputError when the scene has no frame to time.
 using FidelityProgress = std::function<void(std::size_t, const FidelityLevel&, bool)>;
-// `formula_extra`: options the formula levels take after `forwarded` (the
-// command drops a background load there: the formula cannot time one, and
-// the difference is the error the ladder measures).
-std::optional<int> run_fidelity(const std::vector<std::string>& forwarded, const std::vector<std::string>& formula_extra,
+// `formula_overrides`: NAME=VALUE the formula levels take over the scene's
+// (the command drops a background load there: the formula cannot time one,
+// and the difference is the error the ladder measures).
+std::optional<int> run_fidelity(const RunSpec& scene, const std::vector<std::string>& formula_overrides,
                                 const TraceSpool* spool,
                                 std::vector<FidelityResult>& results, const FidelityProgress& progress);
 

@@ -36,6 +36,13 @@ SeriesStyle baseline_style(std::size_t k) {
     return style;
 }
 
+SeriesStyle mark_style() {
+    SeriesStyle style;
+    style.family = SeriesStyle::Family::kMark;
+    style.filled = false;
+    return style;
+}
+
 std::string number_text(double v) {
     char t[40];
     std::snprintf(t, sizeof t, "%.10g", v);
@@ -171,6 +178,11 @@ std::string figure_script(const Figure& figure, const std::string& png_path) {
     for (const auto& [name, value] : figure.numbers) gp << name << " = " << number_text(value) << '\n';
     // gnuplot's arrays count from 1, so do the palettes' places.
     gp << "n_series = " << figure.series.size() << '\n';
+    // The marks come after every line (speedup.gp draws them as points alone).
+    gp << "n_marks = "
+       << std::count_if(figure.series.begin(), figure.series.end(),
+                        [](const PlotSeries& s) { return s.style.family == SeriesStyle::Family::kMark; })
+       << '\n';
     series_array(gp, "series_title", figure.series, [](const PlotSeries& s) { return text(s.title); });
     series_array(gp, "series_family", figure.series, [](const PlotSeries& s) { return static_cast<int>(s.style.family); });
     series_array(gp, "series_colour", figure.series, [](const PlotSeries& s) { return s.style.colour + 1; });

@@ -19,7 +19,9 @@ namespace cdvp {
 // software baselines black or grey with their own dashes and shapes, so no
 // baseline looks like another or like the board.
 struct SeriesStyle {
-    enum class Family { kBoard = 1, kBaseline = 2 };
+    // kMark: points drawn over the lines without a line of their own (the
+    // points whose software timing was disturbed), after every other series.
+    enum class Family { kBoard = 1, kBaseline = 2, kMark = 3 };
     Family family = Family::kBoard;
     std::size_t colour = 0;  // kColours of them for the board, kBaselineStyles for baselines
     std::size_t shape = 0;   // kShapes point shapes, each open or filled
@@ -38,6 +40,8 @@ constexpr std::size_t kColours = 6, kShapes = 6, kDashes = 5, kBaselineStyles = 
 SeriesStyle series_style(std::size_t first, std::size_t first_count, std::size_t second, std::size_t second_count);
 // The k-th software baseline's style.
 SeriesStyle baseline_style(std::size_t k);
+// The style of a mark series (Family::kMark).
+SeriesStyle mark_style();
 
 struct SeriesPoint {
     SeriesPoint() = default;

@@ -9,7 +9,9 @@
 
 #include "models/common/user_text.h"
 #include "sw/study/child_runs.h"
-#include "sw/study/exit_codes.h"
+#include "sw/run/exit_codes.h"
+#include "sw/run/run.h"
+#include "sw/run/run_arguments.h"
 
 namespace cdvp {
 
@@ -20,18 +22,29 @@ bool executable(const std::filesystem::path& path) {
     return std::filesystem::is_regular_file(path, error) && access(path.c_str(), X_OK) == 0;
 }
 
-// Options a request may not give: where the report and pairs go is the study's.
-void check_options(const std::vector<std::string>& options) {
-    for (const std::string& option : options) {
-        // A command-line word ends at its first NUL: the rest would be lost, not refused.
-        if (option.find('\0') != std::string::npos) {
-            throw InputError("option " + excerpt(option.substr(0, option.find('\0'))) + "...: holds a NUL character");
-        }
-        for (const char* own : {"--report", "--pairs-out"}) {
-            if (option == own || option.rfind(std::string(own) + "=", 0) == 0) {
-                throw InputError(std::string(own) + " is the study's own: the report comes back as a RunResult");
-            }
-        }
+// Outputs a request may not name: where the report and pairs go is the study's.
+void check_outputs(const RunSpec& spec) {
+    if (spec.outputs.report || spec.outputs.pairs_csv || spec.outputs.waves) {
+        throw InputError("the report, the pairs and the waveforms of a study's run are the study's own: the report "
+                         "comes back as a RunResult");
+    }
+}
+
+// The run in a child: its exit status, and its stderr's first line.
+void run_child_configuration(const RunRequest& request, const RunSpec& spec) {
+    CapturedOutput errors("cdvp-run-stderr");
+    std::vector<std::string> args{request.cdvp_binary.empty() ? find_cdvp() : request.cdvp_binary, command_of(spec)};
+    for (std::string& word : to_arguments(spec)) args.push_back(std::move(word));
+    ChildStreams streams;
+    streams.err = errors.fd();
+    const int wait_status = run_child(args, streams);
+    const std::string program = std::string("cdvp ") + command_of(spec);
+    if (WIFSIGNALED(wait_status)) {
+        throw RunFailed(kExitInternal, program + ": killed by signal " + std::to_string(WTERMSIG(wait_status)));
+    }
+    if (const int status = WEXITSTATUS(wait_status); status != kExitDone) {
+        const std::string text = errors.text(64 * 1024);
+        throw RunFailed(status, text.substr(0, text.find('\n')));
     }
 }
 
@@ -50,23 +63,24 @@ std::string find_cdvp() {
 }
 
 RunResult run_configuration(const RunRequest& request) {
-    check_options(request.options);
+    check_outputs(request.spec);
     ScratchFile report(".json"), pairs(".csv");
-    CapturedOutput errors("cdvp-run-stderr");
-    std::vector<std::string> args{request.cdvp_binary.empty() ? find_cdvp() : request.cdvp_binary, "run"};
-    args.insert(args.end(), request.options.begin(), request.options.end());
-    args.insert(args.end(), {"--report", report.path(), "-q"});
-    if (request.pairs) args.insert(args.end(), {"--pairs-out", pairs.path()});
-    ChildStreams streams;
-    streams.err = errors.fd();
-    const int wait_status = run_child(args, streams);
-    if (WIFSIGNALED(wait_status)) {
-        throw RunFailed(kExitInternal, "cdvp run: killed by signal " + std::to_string(WTERMSIG(wait_status)));
+    RunSpec spec = request.spec;
+    spec.outputs.report = report.path();
+    if (request.pairs) spec.outputs.pairs_csv = pairs.path();
+    spec.outputs.summary = false;
+    bool ran = false;
+    if (request.in_process) {
+        RunObserver quiet;
+        RunContext context;
+        context.kernel_free = true;
+        const RunOutcome outcome = run(spec, quiet, context);
+        if (outcome.ran && outcome.status != kExitDone) {
+            throw RunFailed(outcome.status, std::string("cdvp ") + command_of(spec) + ": " + outcome.message);
+        }
+        ran = outcome.ran;
     }
-    if (const int status = WEXITSTATUS(wait_status); status != kExitDone) {
-        const std::string text = errors.text(64 * 1024);
-        throw RunFailed(status, text.substr(0, text.find('\n')));
-    }
+    if (!ran) run_child_configuration(request, spec);
     RunResult result;
     result.report = nlohmann::json::parse(slurp(report.path()));
     result.summary = summary_from_json(result.report.at("summary"), "the run's report");

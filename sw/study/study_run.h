@@ -1,9 +1,10 @@
 // One configuration run on a scene or trace, from a program of one's own: the
-// C++ entry point of the study library (docs/library.md). The run is `cdvp
-// run` in a child process, so that a program may run any number of them
-// (SystemC elaborates a design once per process), a refused or faulting run
-// cannot take the caller down, and the results are the command's byte for
-// byte; its report is read back typed.
+// C++ entry point of the study library (docs/library.md). A run on the
+// SystemC platform is `cdvp run` in a child process, so that a program may
+// run any number of them (SystemC elaborates a design once per process) and
+// a faulting run cannot take the caller down; a run at the analytic level may
+// run in the caller's process (RunRequest::in_process). Either way the
+// results are the command's byte for byte; its report is read back typed.
 #pragma once
 
 #include <stdexcept>
@@ -12,17 +13,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sw/study/report_summary.h"
+#include "sw/run/report_summary.h"
+#include "sw/run/run_spec.h"
 
 namespace cdvp {
 
 struct RunRequest {
-    // Options of cdvp run, one word each: {"--board", "adm-xrc-ii", "--scene",
-    // "spheres", "--objects", "500", "-c", "bus.interrupt_ns=5000"}. --report,
-    // --pairs-out and -q are the study's own.
-    std::vector<std::string> options;
+    // The run (sw/run/run_spec.h): its settings, frames, baselines, faults.
+    // Its outputs are the study's own: the report comes back as a RunResult.
+    RunSpec spec;
     bool pairs = false;        // also read back the pairs (RunResult::pairs_csv)
     std::string cdvp_binary;   // empty: find_cdvp()
+    // A run that elaborates no SystemC kernel (the analytic level) runs in
+    // this process; any other in a child.
+    bool in_process = false;
 };
 
 struct RunResult {
@@ -43,7 +47,7 @@ private:
     int status_;
 };
 
-// Throws RunFailed, or InputError when the options are the study's own.
+// Throws RunFailed, or InputError when the spec names outputs (they are the study's own).
 RunResult run_configuration(const RunRequest& request);
 
 // The cdvp the study runs: $CDVP_BINARY when set, else a cdvp beside the

@@ -18,10 +18,12 @@
 #include "sw/study/directory_lock.h"
 #include "sw/study/sweep_figures.h"
 #include "sw/study/sweep_manifest.h"
-#include "sw/study/software_timing.h"
+#include "sw/run/run_arguments.h"
+#include "sw/run/software_timing.h"
+#include "sw/study/sweep_software_timings.h"
 #include "sw/study/sweep_runner.h"
 #include "sw/study/sweep_state.h"
-#include "sw/study/version.h"
+#include "sw/run/version.h"
 
 namespace cdvp {
 
@@ -173,7 +175,7 @@ SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
     // Shards of one sweep each keep OUT/software unless one directory is named for all.
     const std::string timings_named = o.software_timings_given || o.software_timings.empty() ? o.software_timings
                                                                                               : "OUT/software";
-    const Manifest wanted{grid.axes(), o.run_options, inputs.digests(), o.shard, kCdvpVersion, o.record, timings_named};
+    const Manifest wanted{grid.axes(), to_arguments(o.run), inputs.digests(), o.shard, kCdvpVersion, o.record, timings_named};
     LockedOutDirectory out(o.out_dir);
     CreatedDirectories& made = out.made();
     const std::optional<Manifest> existing = read_manifest(manifest_path(o.out_dir));

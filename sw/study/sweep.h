@@ -1,5 +1,5 @@
 // A sweep: every point of a grid run as `cdvp run` in a child process, J at a
-// time, gathered into OUT/sweep.csv (one row per point, appended and synced as
+// time (or in this process, at the analytic level), gathered into OUT/sweep.csv (one row per point, appended and synced as
 // each point ends) with each point's report in OUT/points and the figures the
 // table supports. Resumable: the same spec into the same OUT runs only the
 // points not done yet, after checking every row kept; another grid, other
@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sw/run/run_spec.h"
 #include "sw/scene/input_spool.h"
 #include "sw/study/sweep_grid.h"
 #include "sw/study/sweep_manifest.h"
@@ -31,18 +32,12 @@ struct NamedInput {
     std::string option, value, path;
 };
 
-// Runs `cdvp run ARGS` inside this process when it can (a point at the
-// analytic level elaborates no SystemC kernel): its exit status, with what it
-// printed on stderr in `errors`; none when the point needs a process of its
-// own. With `report` (a compact record), ARGS name no --report and the run
-// leaves its report's "frames" and "summary" there instead of in a file.
-// Set by the command line, which owns `cdvp run`.
-using InProcessRun = std::function<std::optional<int>(const std::vector<std::string>& args, std::string& errors,
-                                                      nlohmann::json* report)>;
-
 struct SweepSpec {
     std::vector<Axis> axes;                // in the order given, named by what they set
-    std::vector<std::string> run_options;  // passed on to every point, in order, one word each
+    // What every point runs: its settings, frames, baselines and faults, the
+    // axes set over it (sw/run/run_arguments.h's set_input). It names no
+    // output: each point's report, and whether it prints, are the sweep's.
+    RunSpec run;
     std::vector<NamedInput> inputs;        // every file the points read
     std::string out_dir;
     unsigned jobs = 1;                     // 1 to kMaxJobs
@@ -54,7 +49,10 @@ struct SweepSpec {
     InputLimits trace_limits;              // what a trace read from a pipe may hold when it is spooled
     std::string program = "cdvp sweep";    // the name notes and errors are printed under
     std::string cdvp_binary;               // the cdvp the points run; empty: this process's executable
-    InProcessRun in_process;               // points it takes run here, one at a time; empty: every point a child
+    // Points that elaborate no SystemC kernel (the analytic level) run in
+    // this process, one at a time, sharing scenes and pairs (RunMemo);
+    // false: every point is a child.
+    bool in_process = false;
     // Where the points share their software timings, one a workload
     // (sw/study/software_timing.h; --software-timings): OUT/software unless
     // given; empty: each point times its own.

@@ -6,7 +6,7 @@
 #include "models/common/user_text.h"
 #include "sw/study/child_runs.h"
 #include "sw/study/sweep_plots.h"
-#include "sw/study/output/output_set.h"
+#include "sw/output/output_set.h"
 
 namespace cdvp {
 

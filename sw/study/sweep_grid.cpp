@@ -8,7 +8,7 @@
 #include <set>
 
 #include "models/common/user_text.h"
-#include "sw/study/digest.h"
+#include "sw/output/digest.h"
 
 namespace cdvp {
 

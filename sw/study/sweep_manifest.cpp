@@ -10,7 +10,7 @@
 #include "models/common/user_text.h"
 #include "models/common/nesting_limit.h"
 #include "sw/study/child_runs.h"
-#include "sw/study/digest.h"
+#include "sw/output/digest.h"
 
 namespace cdvp {
 

@@ -17,7 +17,8 @@
 #include "sw/study/sweep_figures.h"
 #include "sw/study/sweep_manifest.h"
 #include "sw/study/sweep_state.h"
-#include "sw/study/software_timing.h"
+#include "sw/run/software_timing.h"
+#include "sw/study/sweep_software_timings.h"
 
 #include <iostream>
 

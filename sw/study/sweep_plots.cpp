@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <tuple>
 
 namespace cdvp {
 
@@ -162,6 +163,18 @@ Figure speedup_figure(const Samples& samples, const std::string& board, const st
     figure.file = "speedup-" + file_part(board) + "-" + file_part(baseline) + ".png";
     figure.template_name = "speedup";
     figure.series = board_series(series(samples, board, baseline + "_speedup", 1), samples);
+    // A speedup that rests on a disturbed software timing is ringed, so a
+    // reader does not take its bend for the board's.
+    PlotSeries disturbed;
+    disturbed.title = "disturbed software timing (docs/timing.md)";
+    disturbed.style = mark_style();
+    for (const Sample* s : points) {
+        const double y = number(s->row, baseline + "_speedup");
+        if (!std::isnan(y) && text(s->row, baseline + "_timing_quality") == "disturbed") disturbed.points.push_back({s->n, y});
+    }
+    std::sort(disturbed.points.begin(), disturbed.points.end(),
+              [](const SeriesPoint& a, const SeriesPoint& b) { return std::tie(a.x, a.y) < std::tie(b.x, b.y); });
+    if (!disturbed.points.empty()) figure.series.push_back(disturbed);
     figure.x = n_axis(points);
     figure.y = log_y_axis("speedup (x): software's mean frame time / board's", figure.series, 1.0);
     figure.numbers["reference_y"] = 1;

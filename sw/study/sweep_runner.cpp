@@ -13,8 +13,10 @@
 #include <stdexcept>
 
 #include "models/common/user_text.h"
-#include "sw/study/output/output_cleanup.h"
-#include "sw/study/exit_codes.h"
+#include "sw/output/output_cleanup.h"
+#include "sw/run/exit_codes.h"
+#include "sw/run/run.h"
+#include "sw/run/run_arguments.h"
 
 namespace cdvp {
 
@@ -81,6 +83,7 @@ SweepRunner::SweepRunner(const SweepSpec& spec, const Grid& grid, SweepTable& ta
                          const std::map<std::string, std::string>& trace_paths, std::function<void()> check_inputs)
     : o_(spec), grid_(grid), table_(table), file_(file), trace_paths_(trace_paths),
       check_inputs_(std::move(check_inputs)), self_(spec.cdvp_binary.empty() ? self_path() : spec.cdvp_binary) {
+    if (o_.in_process) memo_ = std::make_unique<RunMemo>();
     for (unsigned k = 0; k < o_.jobs; ++k) slots_.push_back(std::make_unique<Slot>());
 }
 
@@ -134,16 +137,20 @@ int SweepRunner::run(const std::vector<std::size_t>& todo, SweepObserver& observ
 
 bool SweepRunner::run_in_process(const Point& point, SweepObserver& observer) {
     if (!o_.in_process) return false;
-    std::string errors;
     const auto started = std::chrono::steady_clock::now();
     const bool compact = o_.record == RecordMode::kCompact;
     const std::string report = report_file(point);
     nlohmann::json in_memory;
-    const std::optional<int> code =
-        o_.in_process(point_arguments(point, compact ? nullptr : &report), errors, compact ? &in_memory : nullptr);
-    if (!code) return false;
+    RunObserver quiet;  // a point prints nothing: its row says what it did
+    RunContext context;
+    context.kernel_free = true;
+    context.memo = memo_.get();
+    context.report = compact ? &in_memory : nullptr;
+    const RunOutcome outcome = cdvp::run(point_spec(point, compact ? nullptr : &report), quiet, context);
+    if (!outcome.ran) return false;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const int status = record(point, *code, reason_of(errors, trace_paths_), wall, false, compact ? &in_memory : nullptr);
+    const int status = record(point, outcome.status, reason_of(outcome.message, trace_paths_), wall, false,
+                              compact ? &in_memory : nullptr);
     if (status != 0 && failing_ == 0) failing_ = status;
     // Rows of fast points are synced together, a few times a second.
     if (std::chrono::steady_clock::now() - last_sync_ > std::chrono::milliseconds(250)) {
@@ -166,16 +173,18 @@ void SweepRunner::signal_running(int signal_number) {
     }
 }
 
-std::vector<std::string> SweepRunner::point_arguments(const Point& point, const std::string* report) const {
-    std::vector<std::string> args = o_.run_options;
-    for (std::string& arg : grid_.run_arguments(point)) {
-        if (arg.rfind("--trace=", 0) == 0) arg = "--trace=" + trace_paths_.at(arg.substr(8));
-        args.push_back(std::move(arg));
+RunSpec SweepRunner::point_spec(const Point& point, const std::string* report) const {
+    RunSpec spec = o_.run;
+    for (std::size_t a = 0; a < grid_.axes().size(); ++a) {
+        const Axis& axis = grid_.axes()[a];
+        // A trace is read where the sweep spooled it (a pipe's copy).
+        const std::string& value = axis.key == "trace" ? trace_paths_.at(point.values[a]) : point.values[a];
+        set_input(spec, axis.key, value, !axis.flag.empty());
     }
-    if (report != nullptr) args.push_back("--report=" + *report);
-    if (!o_.software_timings.empty()) args.push_back("--software-timings=" + o_.software_timings);
-    args.push_back("-q");
-    return args;
+    if (report != nullptr) spec.outputs.report = *report;
+    if (!o_.software_timings.empty()) spec.software_timings = o_.software_timings;
+    spec.outputs.summary = false;
+    return spec;
 }
 
 std::string SweepRunner::report_file(const Point& point) const {
@@ -185,9 +194,10 @@ std::string SweepRunner::report_file(const Point& point) const {
 }
 
 void SweepRunner::launch(Slot& slot, std::size_t k, const Point& point) {
-    std::vector<std::string> args{self_, "run"};
     const std::string report = report_file(point);
-    for (std::string& arg : point_arguments(point, &report)) args.push_back(std::move(arg));
+    const RunSpec spec = point_spec(point, &report);
+    std::vector<std::string> args{self_, command_of(spec)};
+    for (std::string& arg : to_arguments(spec)) args.push_back(std::move(arg));
     slot.point = point;
     slot.errors.clear();
     slot.started = std::chrono::steady_clock::now();

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "sw/run/run_memo.h"
 #include "sw/study/child_runs.h"
 #include "sw/study/sweep.h"
 #include "sw/study/sweep_grid.h"
@@ -40,8 +41,9 @@ public:
 
 private:
     struct Slot;
-    // Of cdvp run; `report` names where its report goes (none: kept in memory).
-    std::vector<std::string> point_arguments(const Point& point, const std::string* report) const;
+    // The point's run: the sweep's with the point's axes set over it;
+    // `report` names where its report goes (none: kept in memory).
+    RunSpec point_spec(const Point& point, const std::string* report) const;
     // Where a point's report is written: its place in OUT/points, or for a
     // compact record a temporary there, read and removed when the point ends.
     std::string report_file(const Point& point) const;
@@ -62,6 +64,7 @@ private:
     const std::map<std::string, std::string>& trace_paths_;
     std::function<void()> check_inputs_;
     std::string self_;
+    std::unique_ptr<RunMemo> memo_;  // what points run in process share
     std::vector<std::unique_ptr<Slot>> slots_;
     std::chrono::steady_clock::time_point last_sync_{};
     int failing_ = 0;  // the status a failed point ends the sweep with: no new points start

@@ -13,7 +13,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/study/child_runs.h"
-#include "sw/study/digest.h"
+#include "sw/output/digest.h"
 #include "sw/study/directory_lock.h"
 #include "sw/study/sweep_csv.h"
 

@@ -5,8 +5,8 @@
 #include <set>
 
 #include "models/common/user_text.h"
-#include "sw/study/digest.h"
-#include "sw/study/report_summary.h"
+#include "sw/output/digest.h"
+#include "sw/run/report_summary.h"
 #include "sw/study/sweep_csv.h"
 
 namespace cdvp {

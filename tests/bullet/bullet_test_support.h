@@ -1,9 +1,10 @@
 // Shared checks for the Bullet tests: pair sets by unique id, the exact set
-// the cache must hold, and bitwise comparisons of two worlds.
+// the cache must hold, and bitwise comparisons of two worlds (bodies, contacts).
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <set>
 #include <utility>
@@ -70,6 +71,46 @@ inline ::testing::AssertionResult same_state(BulletWorld& a, BulletWorld& b) {
                     same_bits(x.getAngularVelocity(), y.getAngularVelocity());
         for (int row = 0; row < 3; ++row) same = same && same_bits(tx.getBasis()[row], ty.getBasis()[row]);
         if (!same) return ::testing::AssertionFailure() << "body " << k << " differs";
+    }
+    return ::testing::AssertionSuccess();
+}
+
+// Every contact point of every manifold (predictive ones too), by the two
+// bodies' indices in the world, bit for bit. Manifolds are compared as sorted
+// sets: other broad phases create them in another order.
+inline ::testing::AssertionResult same_contacts(const btCollisionWorld& a, const btCollisionWorld& b) {
+    using Point = std::vector<unsigned char>;
+    const auto points = [](const btCollisionWorld& world) {
+        std::vector<std::pair<std::pair<int, int>, Point>> all;
+        btDispatcher* dispatcher = const_cast<btCollisionWorld&>(world).getDispatcher();
+        for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+            const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+            const std::pair<int, int> bodies(manifold->getBody0()->getWorldArrayIndex(),
+                                             manifold->getBody1()->getWorldArrayIndex());
+            for (int k = 0; k < manifold->getNumContacts(); ++k) {
+                const btManifoldPoint& point = manifold->getContactPoint(k);
+                Point bits;
+                for (const btVector3* v : {&point.m_positionWorldOnA, &point.m_positionWorldOnB, &point.m_normalWorldOnB}) {
+                    const auto* bytes = reinterpret_cast<const unsigned char*>(v);
+                    bits.insert(bits.end(), bytes, bytes + 3 * sizeof(btScalar));
+                }
+                const auto* distance = reinterpret_cast<const unsigned char*>(&point.m_distance1);
+                bits.insert(bits.end(), distance, distance + sizeof(btScalar));
+                all.emplace_back(bodies, std::move(bits));
+            }
+        }
+        std::sort(all.begin(), all.end());
+        return all;
+    };
+    const auto x = points(a), y = points(b);
+    if (x.size() != y.size()) {
+        return ::testing::AssertionFailure() << x.size() << " contact points against " << y.size();
+    }
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        if (x[k] != y[k]) {
+            return ::testing::AssertionFailure() << "a contact point of bodies " << x[k].first.first << " and "
+                                                 << x[k].first.second << " differs";
+        }
     }
     return ::testing::AssertionSuccess();
 }

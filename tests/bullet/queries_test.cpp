@@ -1,5 +1,6 @@
-// rayTest and aabbTest against brute force, and the broad phase's own
-// bookkeeping (slots, capacity, faults) on a plain C++ link: no board needed.
+// aabbTest against brute force, and the broad phase's own bookkeeping (slots,
+// capacity, faults) on a plain C++ link: no board needed. Rays and swept boxes
+// against Bullet's broad phases: query_contract_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,11 +31,6 @@ private:
     FrameResult result_;
 };
 
-struct Collect : btBroadphaseRayCallback {
-    std::set<const btBroadphaseProxy*> hits;
-    bool process(const btBroadphaseProxy* proxy) override { return hits.insert(proxy).second; }
-};
-
 std::vector<btBroadphaseProxy*> random_proxies(BoardBroadphase& broadphase, std::size_t n, std::mt19937& rng) {
     std::uniform_real_distribution<float> corner(-10, 10), size(0, 2);
     std::vector<btBroadphaseProxy*> proxies;
@@ -44,58 +40,6 @@ std::vector<btBroadphaseProxy*> random_proxies(BoardBroadphase& broadphase, std:
         proxies.push_back(broadphase.createProxy(lo, hi, BOX_SHAPE_PROXYTYPE, nullptr, 1, -1, nullptr));
     }
     return proxies;
-}
-
-// Reference in double: the segment's parameter interval inside each slab.
-bool segment_hits(const btVector3& from, const btVector3& to, const btVector3& lo, const btVector3& hi) {
-    double enter = 0, leave = 1;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double d = double(to[axis]) - from[axis];
-        if (d == 0) {
-            if (from[axis] < lo[axis] || from[axis] > hi[axis]) return false;
-            continue;
-        }
-        const double a = (lo[axis] - double(from[axis])) / d, b = (hi[axis] - double(from[axis])) / d;
-        enter = std::max(enter, std::min(a, b));
-        leave = std::min(leave, std::max(a, b));
-    }
-    return enter <= leave;
-}
-
-TEST(BoardBroadphaseQueries, RayTestFindsExactlyTheBoxesTheSegmentMeets) {
-    BruteLink link(300);
-    BoardBroadphase broadphase(link);
-    std::mt19937 rng(3);
-    const auto proxies = random_proxies(broadphase, 300, rng);
-    std::uniform_real_distribution<float> point(-12, 12);
-    std::size_t total = 0;
-    for (int ray = 0; ray < 200; ++ray) {
-        const btVector3 from(point(rng), point(rng), point(rng));
-        btVector3 to(point(rng), point(rng), point(rng));
-        if (ray % 10 == 0) to[1] = from[1];  // some rays parallel to a slab
-        Collect collect;
-        collect.m_lambda_max = 1;
-        broadphase.rayTest(from, to, collect);
-        std::set<const btBroadphaseProxy*> expected;
-        for (const btBroadphaseProxy* p : proxies) {
-            if (segment_hits(from, to, p->m_aabbMin, p->m_aabbMax)) expected.insert(p);
-        }
-        ASSERT_EQ(collect.hits, expected) << "ray " << ray;
-        total += expected.size();
-    }
-    EXPECT_GT(total, 100u);  // the rays do hit boxes
-    // A ray that ends on a face touches it (closed boxes), and lambda_max shortens the ray.
-    const btBroadphaseProxy* p = proxies[0];
-    const btVector3 mid = (p->m_aabbMin + p->m_aabbMax) / 2;
-    const btVector3 face(p->m_aabbMin[0], mid[1], mid[2]);
-    Collect touching;
-    touching.m_lambda_max = 1;
-    broadphase.rayTest(face - btVector3(5, 0, 0), face, touching);
-    EXPECT_EQ(touching.hits.count(p), 1u);
-    Collect short_ray;
-    short_ray.m_lambda_max = 0.5f;
-    broadphase.rayTest(face - btVector3(5, 0, 0), face, short_ray);
-    EXPECT_EQ(short_ray.hits.count(p), 0u);
 }
 
 struct CollectAabb : btBroadphaseAabbCallback {

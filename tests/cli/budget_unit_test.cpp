@@ -10,8 +10,8 @@
 #include <limits>
 #include <string>
 
-#include "sw/cli/machine_memory.h"
-#include "sw/cli/run_footprint.h"
+#include "sw/run/machine_memory.h"
+#include "sw/run/run_footprint.h"
 
 namespace cdvp {
 namespace {
@@ -75,21 +75,21 @@ TEST(MachineMemory, TheLeastLimitDecidesAndIsNamed) {
 }
 
 TEST(Footprint, GrowsWithWhatTheRunHolds) {
-    RunShape fast;
+    BudgetShape fast;
     fast.trace = true;
     const Footprint plain = estimate_footprint(fast, 10000, 100);
     EXPECT_EQ(plain.model, 0u) << "the fast engine keeps no block RAM words";
     EXPECT_EQ(plain.boxes, 10000 * bytes_per_box(fast));
     EXPECT_EQ(plain.frames, 100 * bytes_per_frame(fast));
 
-    RunShape clocked = fast;
+    BudgetShape clocked = fast;
     clocked.clocked = true;
     clocked.board.m = 32;
     const Footprint words = estimate_footprint(clocked, 10000, 100);
     EXPECT_EQ(words.model, clocked.board.block_ram_bytes(10000));
     EXPECT_LT(words.per_pair, plain.per_pair) << "the clocked engine keeps no more pairs than its buffer";
 
-    RunShape everything = fast;
+    BudgetShape everything = fast;
     everything.baselines = {"sap", "dbvt", "brute", "soa"};
     everything.repeat = 3;
     everything.pairs_out = true;

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sw/cli/format_reference.h"
+#include "sw/run/format_reference.h"
 #include "sw/study/sweep_csv.h"
 #include "sw/study/sweep_table.h"
 #include "tests/cli/cli_support.h"

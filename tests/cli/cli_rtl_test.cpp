@@ -45,11 +45,11 @@ TEST_F(Cli, RtlRunsThePlatformAsTheClockedEngineDoes) {
     }
 }
 
-TEST_F(Cli, RtlRefusesABoardNoBuiltVariantServesAndLockstepWithoutRtl) {
-    Result r = run("run --board adm-xrc-ii --m 4 --fidelity rtl --scene spheres --objects 60 --frames 1 --report r.json");
-    expect_refusal(r, "cdvp run: --fidelity rtl at 60 objects", "an unbuilt variant");
-    EXPECT_NE(r.err.find("add 'm=4,format=float32"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("cdvp rtl-variants"), std::string::npos) << r.err;
+TEST_F(Cli, RtlRefusesABoardItCannotRunAndLockstepWithoutRtl) {
+    Result r = run("run --board adm-xrc-ii --drain-rate 2 --fidelity rtl --scene spheres --objects 60 --frames 1 "
+                   "--report r.json");
+    expect_refusal(r, "cdvp run: --fidelity rtl at 60 objects", "two pairs a cycle");
+    EXPECT_NE(r.err.find("moves one pair a cycle into the pair buffer; drain_per_cycle is 2"), std::string::npos) << r.err;
     r = run("run --board adm-xrc-ii --lockstep --scene spheres --objects 60 --frames 1 --report r.json");
     expect_refusal(r, "cdvp run: --lockstep: compares the RTL with the clocked engine", "lockstep on fast");
     EXPECT_TRUE(files().empty() || files() == std::vector<std::string>{".config"}) << "no output left behind";

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "platform/settings.h"
+#include "platform/settings/settings.h"
 #include "sw/timing/frame_samples.h"
 #include "sw/timing/timing_quality.h"
 #include "tests/cli/cli_support.h"
@@ -57,7 +57,7 @@ TEST_F(CliSettings, LayersApplyInOrderAndTheReportNamesEachOrigin) {
 }
 
 // Every choice a run is given, the report and the summary name as the
-// choice's names table does (platform/setting_choices.h): in the settings
+// choice's names table does (platform/settings/setting_choices.h): in the settings
 // section, and in the config's own keys for the transfer, wait and engine.
 template <class T>
 void expect_named_as_chosen(CliSettings& cli, const char* setting, const char* config_key = nullptr) {

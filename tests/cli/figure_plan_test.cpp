@@ -101,6 +101,33 @@ TEST(FigurePlan, EverySeriesOfAFigureHasAStyleOfItsOwnAndEachBaselineItsOwnToo) 
     for (const PlotSeries& s : speedup.series) EXPECT_EQ(s.style, style_of(s.title)) << s.title;
 }
 
+TEST(FigurePlan, ASpeedupOnADisturbedSoftwareTimingIsRingedAndACleanOneIsNot) {
+    const Grid grid(std::vector<Axis>{{"m", {"1", "8"}}, {"objects", {"100", "200", "400"}}});
+    const FigurePlan plan = plan_figures(grid, table_of(grid, [](const Row& axes, Row& row) {
+        timed(axes, row);
+        const bool disturbed = axes.at("objects") == "200";
+        row["sap_timing_quality"] = disturbed ? "disturbed" : "clean";
+        row["soa_timing_quality"] = "clean";
+    }));
+    const Figure& sap = figure_named(plan, "speedup-adm-xrc-ii-sap.png");
+    ASSERT_EQ(sap.series.size(), 3u) << "m=1, m=8 and the marks";
+    const PlotSeries& marks = sap.series.back();
+    EXPECT_EQ(marks.style.family, SeriesStyle::Family::kMark);
+    ASSERT_EQ(marks.points.size(), 2u) << "N = 200 at m = 1 and m = 8";
+    for (const SeriesPoint& p : marks.points) EXPECT_EQ(p.x, 200);
+    // Each mark sits on a point of a line.
+    for (const SeriesPoint& p : marks.points) {
+        bool on_a_line = false;
+        for (std::size_t k = 0; k + 1 < sap.series.size(); ++k) {
+            for (const SeriesPoint& q : sap.series[k].points) on_a_line |= q.x == p.x && q.y == p.y;
+        }
+        EXPECT_TRUE(on_a_line) << p.x << ", " << p.y;
+    }
+    EXPECT_NE(figure_script(sap, "/tmp/s.png").find("n_marks = 1"), std::string::npos);
+    const Figure& soa = figure_named(plan, "speedup-adm-xrc-ii-soa.png");
+    for (const PlotSeries& s : soa.series) EXPECT_NE(s.style.family, SeriesStyle::Family::kMark) << "every soa timing was clean";
+}
+
 TEST(FigurePlan, StylesStayDistinctPastThePalettesLength) {
     std::set<SeriesStyle> styles;
     for (std::size_t m = 0; m < 36; ++m) {

@@ -14,9 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
-#include "sw/cli/host_factor.h"
-#include "sw/cli/host_profile.h"
-#include "sw/cli/reference_workload.h"
+#include "sw/run/host_factor.h"
+#include "sw/run/host_profile.h"
+#include "sw/run/reference_workload.h"
 
 namespace cdvp {
 namespace {

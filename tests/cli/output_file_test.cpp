@@ -1,4 +1,4 @@
-#include "sw/study/output/output_file.h"
+#include "sw/output/output_file.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <utility>
 
-#include "sw/study/output/output_cleanup.h"
+#include "sw/output/output_cleanup.h"
 #include "sw/scene/scene.h"
 #include "tests/scene/temp_dir.h"
 

@@ -1,6 +1,6 @@
 // The outputs of a run as one transaction: no output names an input or
 // another output, and either all are committed or none.
-#include "sw/study/output/output_set.h"
+#include "sw/output/output_set.h"
 
 #include <gtest/gtest.h>
 

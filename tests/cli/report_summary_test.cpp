@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
-#include "sw/study/report_summary.h"
+#include "sw/run/report_summary.h"
 
 namespace cdvp {
 namespace {

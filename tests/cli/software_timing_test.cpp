@@ -13,7 +13,8 @@
 
 #include "models/common/user_text.h"
 #include "sw/study/child_runs.h"
-#include "sw/study/software_timing.h"
+#include "sw/run/software_timing.h"
+#include "sw/study/sweep_software_timings.h"
 #include "sw/study/sweep_manifest.h"
 #include "sw/study/sweep_table.h"
 

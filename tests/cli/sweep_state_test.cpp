@@ -21,7 +21,7 @@
 #include "sw/study/directory_lock.h"
 #include "sw/study/sweep_csv.h"
 #include "sw/study/sweep_manifest.h"
-#include "sw/study/report_summary.h"
+#include "sw/run/report_summary.h"
 #include "sw/study/sweep_state.h"
 #include "sw/study/sweep_table.h"
 #include "tests/scene/temp_dir.h"

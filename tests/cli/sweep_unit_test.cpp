@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
-#include "sw/study/report_summary.h"
+#include "sw/run/report_summary.h"
 #include "sw/study/sweep_grid.h"
 #include "sw/study/sweep_csv.h"
 #include "sw/study/sweep_plots.h"

@@ -4,75 +4,19 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <random>
 #include <vector>
 
 #include "models/address_generator/address_generator.h"
 #include "models/board/board_core.h"
 #include "sw/baselines/brute_force.h"
+#include "tests/driver/direct_port.h"
 #include "tests/support/core_driver.h"
 
 namespace cdvp {
 namespace {
 
-// A host whose bus takes a fixed time per access, with the board behind it
-// clocked from that time; PIO and polling only (no DMA engine, no interrupt).
-class DirectPort : public HostPort {
-public:
-    DirectPort(BoardCore& board, SimTime period, SimTime access_time)
-        : board_(board), period_(period), access_(access_time), memory_(1 << 20) {}
-
-    std::string read(uint64_t address, void* data, uint32_t length) override {
-        return access(address, static_cast<unsigned char*>(data), length, false);
-    }
-    std::string write(uint64_t address, const void* data, uint32_t length) override {
-        return access(address, static_cast<unsigned char*>(const_cast<void*>(data)), length, true);
-    }
-    unsigned char* memory(uint64_t address) override { return memory_.data() + address; }
-    uint64_t memory_size() const override { return memory_.size(); }
-    SimTime now() const override { return now_; }
-    void wait(SimTime duration) override { now_ += duration; }
-    void wait_for_interrupt(SimTime timeout) override { now_ += timeout; }  // never comes: no interrupt line here
-
-private:
-    std::string access(uint64_t address, unsigned char* data, uint32_t length, bool write) {
-        if (board_.running()) board_.advance_to((now_ - segment_start_) / period_);
-        const uint64_t segments = board_.segments_started();
-        std::string error;
-        for (uint32_t k = 0; k < length && error.empty(); k += 4) error = word(address + k, data + k, write);
-        if (board_.segments_started() != segments) segment_start_ = now_;
-        now_ += access_;
-        return error;
-    }
-    std::string word(uint64_t address, unsigned char* data, bool write) {
-        uint32_t value = 0;
-        if (write) std::memcpy(&value, data, 4);
-        if (address < address_map::kRegistersSize) {
-            const auto offset = static_cast<uint32_t>(address);
-            if (write) return board_.write_register(offset, value) == RegisterResult::kDone ? "" : "refused";
-            if (!board_.read_register(offset, value)) return "unmapped";
-        } else if (address >= address_map::kPairBuffer) {
-            const uint64_t k = (address - address_map::kPairBuffer) / 4;
-            if (write || k / 2 >= board_.buffered_pairs()) return "unmapped";
-            const IndexPair& p = board_.buffered_pair(static_cast<uint32_t>(k / 2));
-            value = k % 2 == 0 ? p.first : p.second;
-        } else {
-            const uint64_t offset = address - address_map::kCoordinateBase;
-            const auto c = static_cast<Coordinate>(offset / address_map::kWindowSize);
-            const auto i = static_cast<uint32_t>(offset % address_map::kWindowSize / 4);
-            if (!write) return "write-only here";
-            if (board_.write_coordinate(c, i, value) != RegisterResult::kDone) return "refused";
-        }
-        if (!write) std::memcpy(data, &value, 4);
-        return "";
-    }
-
-    BoardCore& board_;
-    SimTime period_, access_;
-    std::vector<unsigned char> memory_;
-    SimTime now_ = 0, segment_start_ = 0;
-};
+using testing::DirectPort;
 
 TEST(DriverWithoutKernel, RunsFramesThroughOverflowPausesByPioAndPolling) {
     BoardConfig config;

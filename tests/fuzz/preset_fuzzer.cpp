@@ -1,4 +1,4 @@
-// libFuzzer target: the board preset loader (platform/board_preset.h).
+// libFuzzer target: the board preset loader (platform/settings/board_preset.h).
 //
 // Each input is written to an in-memory file (memfd) that the loader opens by
 // its /proc/self/fd path, so nothing is left on disk. Invariants, each a
@@ -20,7 +20,7 @@
 #include <memory>
 #include <string>
 
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 #include "sw/scene/scene.h"
 
 namespace {

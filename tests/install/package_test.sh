@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # package_test.sh BUILD_DIR CMAKE SOURCE_DIR
 # Installs the build into a temporary prefix and uses it as a user would:
-# each of examples/ configured and built from a copy outside the tree against
-# the prefix (find_package(cdvp), warnings as errors), run and its output
-# checked; the Python module imported from the prefix and run; a small program
-# built with `pkg-config --cflags --libs cdvp`; then
+# Bullet named in the installed targets only as the imported target the
+# package finds again; each of examples/ configured and built from a copy
+# outside the tree against the prefix (find_package(cdvp), warnings as
+# errors), run and its output checked; the Python module imported from the
+# prefix and run; a small program built with `pkg-config --cflags --libs cdvp`; then
 # the prefix moved, and the package must still configure from its new place.
 set -euo pipefail
 build=$1 cmake=$2 source=$3
@@ -13,6 +14,16 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "package test: $*" >&2; exit 1; }
 
 "$cmake" --install "$build" --prefix "$work/prefix" > "$work/install.log" || fail "cmake --install failed: $(cat "$work/install.log")"
+# Bullet reaches the package's users as an imported target found again at
+# their configure time (pkg-config's bullet.pc), not as this machine's include
+# path and bare library names.
+targets=$(cat "$work"/prefix/lib/cmake/cdvp/cdvpTargets*.cmake)
+grep -qF 'PkgConfig::Bullet' <<< "$targets" || fail "cdvp::bullet does not link PkgConfig::Bullet"
+if grep -nE 'include/bullet|[";:<]((BulletSoftBody|BulletDynamics|BulletCollision|LinearMath))[";>]' <<< "$targets"; then
+  fail "the installed targets name Bullet by path or bare library name (above)"
+fi
+grep -qF 'pkg_check_modules(Bullet REQUIRED IMPORTED_TARGET bullet)' "$work/prefix/lib/cmake/cdvp/cdvpConfig.cmake" ||
+  fail "cdvpConfig.cmake does not find Bullet"
 cp -r "$source/examples" "$work/examples"
 unset CDVP_BOARDS CDVP_BINARY
 generator=()
@@ -36,22 +47,36 @@ cd "$work/run"
 
 build_example foreign_platform "$work/prefix"
 "$work/build-foreign_platform/foreign_platform" > "$work/foreign_platform.out" 2>/dev/null || fail "foreign_platform failed: $(cat "$work/foreign_platform.out")"
-expect foreign_platform "refused m too large: -c board.m: expected an integer from 1 to 32, got '40'"
+expect foreign_platform "refused m too large: override board.m: expected an integer from 1 to 32, got '40'"
 expect foreign_platform "refused a bad preset value: bad-preset.json: board.clock_mhz: expected 1 to 1000 MHz, got -66"
 [ "$(grep -c '^frame [0-9]*: 400 boxes, [0-9]* pairs (= all-pairs test)' "$work/foreign_platform.out")" = 4 ] ||
   fail "foreign_platform did not match the all-pairs test on 4 frames: $(cat "$work/foreign_platform.out")"
 expect foreign_platform "4 frames, 491 pairs, 0 mismatches"
+expect foreign_platform "bus: 38400 bytes of boxes uploaded, 3928 bytes of pairs read back"
+# Delta uploads and the encoded pair formats need host memory for their
+# records and words: the example sizes it as the platform does.
+preset=$(find "$work/prefix" -name adm-xrc-ii.json | head -1)
+for format in counted bitmap; do
+  "$work/build-foreign_platform/foreign_platform" "$preset" 400 4 \
+    driver.upload=delta driver.pair_format=$format > "$work/foreign_platform.out" 2>&1 ||
+    fail "foreign_platform with delta uploads and $format pairs failed: $(cat "$work/foreign_platform.out")"
+  expect foreign_platform "4 frames, 491 pairs, 0 mismatches"
+  expect foreign_platform "bus: 44800 bytes of boxes uploaded"  # 28-byte records
+done
 
 build_example bullet_app "$work/prefix"
 "$work/build-bullet_app/bullet_app" > "$work/bullet_app.out" 2>/dev/null || fail "bullet_app failed: $(cat "$work/bullet_app.out")"
 expect bullet_app "120 steps, 40 bodies"
 expect bullet_app "0 failing steps"
-expect bullet_app "41 of 41 bodies bit-identical to btSimpleBroadphase"
+expect bullet_app "43 of 43 bodies bit-identical to btSimpleBroadphase; rays the same"
+expect bullet_app "240 rays"
+expect bullet_app "the same as btSimpleBroadphase's; the CCD projectile stopped by the wall 4 times of 4"
 
 build_example study_api "$work/prefix"
 "$work/build-study_api/study_api" > "$work/study_api.out" 2>&1 || fail "study_api failed: $(cat "$work/study_api.out")"
 for objects in 100 200 400; do expect study_api "N=$objects  4 frames"; done
-expect study_api "refused: status 2: cdvp run: --objects: expected an integer"
+expect study_api "refused: status 2: cdvp run: -c board.m: expected an integer from 1 to 32"
+expect study_api "analytic, in this process: 3 frames"
 expect study_api "status 0, 2 rows (2 ok, 0 refused, 0 faulted)"
 
 # Python: the installed module, imported with the prefix's site-packages on

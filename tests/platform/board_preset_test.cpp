@@ -1,6 +1,6 @@
 // Board presets: every key declared, every number range-checked against its
 // unit, and every error naming the file and the key.
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/nesting_limit.h"
-#include "platform/preset_json.h"
+#include "platform/settings/preset_json.h"
 #include "sw/scene/scene.h"
 #include "tests/platform/nested_text.h"
 

@@ -1,7 +1,7 @@
 // The settings table: every preset key maps to exactly one setting, layers
 // apply in order with their origins, and config files and -c overrides are
 // checked against the table with messages naming file, line and setting.
-#include "platform/settings.h"
+#include "platform/settings/settings.h"
 
 #include <gtest/gtest.h>
 
@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
-#include "platform/board_preset.h"
-#include "platform/config_file.h"
+#include "platform/settings/board_preset.h"
+#include "platform/settings/config_file.h"
 #include "platform/platform_settings.h"
 #include "models/pci/pci_transaction_bus.h"
 #include "models/common/nesting_limit.h"
@@ -244,10 +244,10 @@ TEST(SettingValues, LayersApplyInOrderAndKeepTheirOrigins) {
     values.apply({parse_override("bus.interrupt_ns=5000"), parse_override("board.m=4")});
     const Setting& interrupt = *find_setting("bus.interrupt_ns");
     EXPECT_EQ(5000.0, values.settings().pci.interrupt_ns);
-    EXPECT_EQ("-c", values.origin(interrupt).describe(interrupt));
+    EXPECT_EQ("override", values.origin_words(interrupt)) << "below the faces, an override is named as one";
     const Setting& clock = *find_setting("board.clock_mhz");
-    EXPECT_EQ("preset " + boards_directory() + "/adm-xrc-ii.json", values.origin(clock).describe(clock));
-    EXPECT_EQ("-c board.m=4", values.value_and_origin(*find_setting("board.m")));
+    EXPECT_EQ("preset " + boards_directory() + "/adm-xrc-ii.json", values.origin_words(clock));
+    EXPECT_EQ("board.m=4", values.value_and_origin(*find_setting("board.m")));
     EXPECT_EQ(5000.0, values.bus()->interrupt_ns());
 }
 
@@ -257,7 +257,7 @@ TEST(SettingValues, ABusKeyOfAnotherBusIsRefusedNamingTheBus) {
         values.apply({parse_override("bus.lanes=4")});
         ADD_FAILURE();
     } catch (const InputError& e) {
-        EXPECT_EQ(0u, std::string(e.what()).rfind("-c bus.lanes: a setting of a pcie bus; the bus is ideal", 0))
+        EXPECT_EQ(0u, std::string(e.what()).rfind("bus.lanes: a setting of a pcie bus; the bus is ideal", 0))
             << e.what();
     }
     // bus.type goes first within a layer, whatever the order given.
@@ -270,7 +270,7 @@ TEST(SettingValues, UnknownOverridesSuggestTheNearestSetting) {
         parse_override("bus.interupt_ns=5");
         ADD_FAILURE();
     } catch (const InputError& e) {
-        EXPECT_STREQ("-c bus.interupt_ns: unknown setting; did you mean 'bus.interrupt_ns'?", e.what());
+        EXPECT_STREQ("override bus.interupt_ns: unknown setting; did you mean 'bus.interrupt_ns'?", e.what());
     }
 }
 
@@ -317,7 +317,7 @@ TEST_F(ConfigFile, TomlAndJsonGiveTheSameSettings) {
     EXPECT_EQ(4u, from_toml.settings().pcie.lanes);
     EXPECT_EQ(WaitMode::kPoll, from_toml.settings().run.wait);
     const Setting& m = *find_setting("board.m");
-    EXPECT_EQ("config " + dir_ + "/c.toml:2", from_toml.origin(m).describe(m));
+    EXPECT_EQ("config " + dir_ + "/c.toml:2", from_toml.origin_words(m));
 }
 
 TEST_F(ConfigFile, RefusalsNameFileLineAndSetting) {

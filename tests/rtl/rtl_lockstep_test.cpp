@@ -147,24 +147,51 @@ TEST(RtlLockstepCheck, StopsAtTheFirstDifferenceWithItsCycleAndSignal) {
     EXPECT_EQ(lockstep.counters_after(edges).total_pairs, alone_rtl.counters_after(edges).total_pairs);
 }
 
-TEST(RtlVariants, ABoardNoVariantServesIsRefusedWithTheEntryToAdd) {
-    BoardConfig config;
-    config.m = 7;
-    config.collector.fifo_depth = 77;
-    try {
-        rtl_variant_for(config, 300);
-        FAIL() << "no variant has a 77-pair FIFO";
-    } catch (const std::invalid_argument& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find("m=7,format=float32,latency=2,fifo=77,buffer=262144,tile=0,tile_latency=2,capacity=512"),
-                  std::string::npos)
-            << what;
-        EXPECT_NE(what.find("CDVP_RTL_VARIANTS"), std::string::npos) << what;
-        EXPECT_EQ(what.find('\n'), std::string::npos);
+// What the RTL cannot run at all is refused in one line saying why, before
+// any model is looked for (a board any variant could serve compiles one).
+TEST(RtlVariants, ABoardTheRtlCannotRunIsRefusedSayingWhy) {
+    BoardConfig two_banks, fast_drain, slow_tiles;
+    two_banks.box_banks = 2;
+    fast_drain.collector.drain_per_cycle = 4;
+    slow_tiles.tiles.boxes = 64;
+    slow_tiles.tiles.cycles_per_box = 2;
+    const std::pair<BoardConfig, const char*> refused[] = {
+        {two_banks, "one box bank"}, {fast_drain, "one pair a cycle"}, {slow_tiles, "in one cycle"}};
+    for (const auto& [config, why] : refused) {
+        EXPECT_NE(rtl_unsupported(config).find(why), std::string::npos) << why;
+        try {
+            rtl_variant_for(config, 300);
+            ADD_FAILURE() << "the RTL cannot run a board with " << why;
+        } catch (const std::invalid_argument& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.rfind("fidelity rtl: ", 0), 0u) << what;
+            EXPECT_NE(what.find(why), std::string::npos) << what;
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        }
     }
-    config.collector.fifo_depth = 512;
-    config.collector.drain_per_cycle = 4;
-    EXPECT_NE(rtl_unsupported(config).find("one pair a cycle"), std::string::npos);
+    EXPECT_EQ(rtl_unsupported(BoardConfig{}), "");
+}
+
+// A variant's name and Verilator parameters follow its spec, as the CMake
+// list's built-in variants spell them.
+TEST(RtlVariants, NameAndParametersFollowTheSpec) {
+    BoardConfig config;
+    config.m = 3;
+    config.format = NumberFormat::fixed(12);
+    config.compare.latency_cycles = 1;
+    config.collector.fifo_depth = 16;
+    config.collector.buffer_depth = 32;
+    config.tiles.boxes = 32;
+    config.tiles.load_latency_cycles = 0;
+    const RtlVariant v = RtlVariant::for_board(config, 300);
+    EXPECT_EQ(v.spec(), "m=3,format=fixed12,latency=1,fifo=16,buffer=32,tile=32,tile_latency=0,capacity=512");
+    EXPECT_EQ(v.name(), "m3_fixed12_l1_f16_b32_t32_s0_a9");
+    EXPECT_EQ(v.verilator_parameters(),
+              (std::vector<std::string>{"-GM=3", "-GAW=9", "-GFLOAT=0", "-GWIDTH=12", "-GCOMPARE_LATENCY=1",
+                                        "-GFIFO_DEPTH=16", "-GBUFFER_DEPTH=32", "-GTILE_BOXES=32", "-GTILE_LATENCY=0"}));
+    config.format = NumberFormat::float32();
+    EXPECT_EQ(RtlVariant::for_board(config, 16).verilator_parameters()[2], "-GFLOAT=1");
+    EXPECT_EQ(RtlVariant::for_board(config, 16).verilator_parameters()[3], "-GWIDTH=32");
 }
 
 TEST(RtlVariants, EachServesItsOwnBoardAndNoLargerOne) {

@@ -1,6 +1,6 @@
 // SceneMemo replays a generated scene frame for frame, keys it by every
 // setting, keeps nothing of a run that stopped early and stays in its bound.
-#include "sw/cli/scene_memo.h"
+#include "sw/run/scene_memo.h"
 
 #include "sw/scene/conversion.h"
 

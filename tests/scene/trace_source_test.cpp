@@ -1,6 +1,6 @@
 // The CLI's trace source: checked up front, then read again frame by frame
 // (a pipe through an unlinked copy), with the board's per-frame limit.
-#include "sw/cli/frame_source.h"
+#include "sw/run/frame_source.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 #include "platform/platform_settings.h"
 
 namespace cdvp::testing {

@@ -6,7 +6,7 @@
 #include <memory>
 #include <random>
 
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 #include "tests/support/preset_platform.h"
 #include "platform/fault_injection.h"
 #include "platform/virtual_board.h"
@@ -74,12 +74,12 @@ TEST(FaultSpecs, RejectBadSpecsNamingWhatWasExpected) {
         return std::string("accepted");
     };
     EXPECT_EQ(message("explode@frame=1"),
-              "--inject: 'explode@frame=1': unknown fault kind 'explode'; expected one of: target-abort, "
+              "'explode@frame=1': unknown fault kind 'explode'; expected one of: target-abort, "
               "master-abort, retry, disconnect, lost-irq, dma-hang, board-error");
-    EXPECT_EQ(message("retry"), "--inject: 'retry': expected KIND@frame=N[,n=K]");
-    EXPECT_EQ(message("retry@n=2"), "--inject: 'retry@n=2': expected frame=N after '@'");
+    EXPECT_EQ(message("retry"), "'retry': expected KIND@frame=N[,n=K]");
+    EXPECT_EQ(message("retry@n=2"), "'retry@n=2': expected frame=N after '@'");
     EXPECT_EQ(message("retry@frame=x"),
-              "--inject: 'retry@frame=x': frame: expected an integer from 0 to 18446744073709551615, found 'x'");
+              "'retry@frame=x': frame: expected an integer from 0 to 18446744073709551615, found 'x'");
     EXPECT_EQ(parse_fault_specs("retry@frame=0")[0].frame, 0u);
     EXPECT_NE(message("retry@frame=-1").find("found '-1'"), std::string::npos);
     EXPECT_NE(message("retry@frame=2.5").find("found '2.5'"), std::string::npos);

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 #include "tests/support/preset_platform.h"
 #include "platform/virtual_board.h"
 #include "tests/support/core_driver.h"

@@ -7,7 +7,7 @@
 #include <memory>
 #include <random>
 
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 #include "tests/support/preset_platform.h"
 #include "platform/virtual_board.h"
 #include "sw/baselines/brute_force.h"

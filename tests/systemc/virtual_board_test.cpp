@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "platform/board_preset.h"
+#include "platform/settings/board_preset.h"
 #include "tests/support/preset_platform.h"
 #include "sw/baselines/brute_force.h"
 #include "tests/support/core_driver.h"

@@ -29,10 +29,18 @@ if [ "$format" = rtl ]; then
   script=check_rtl_view.tcl
   "$cdvp" run --board adm-xrc-ii --fidelity rtl --scene spheres --objects 40 --frames 2 --m 8 -q \
     --vcd waves.vcd || fail "cdvp run --fidelity rtl --vcd failed"
+  filters="controller"  # the RTL's dump names no DMA state
+  idle="1 idle"         # the RTL's controller is one-hot
 else
   "$cdvp" run --board adm-xrc-ii --scene spheres --objects 40 --frames 2 --m 4 -q \
     --vcd "waves.$format" --vcd-format "$format" || fail "cdvp run --vcd failed"
+  filters="controller dma"
+  idle="0 idle"
 fi
+# A translate filter file for each named state the dump holds, and no other.
+[ "$(ls *-states.txt | tr '\n' ' ')" = "$(for f in $filters; do printf '%s ' "waves.$f-states.txt"; done)" ] ||
+  fail "filter files $(ls *-states.txt | tr '\n' ' ')where the dump names the states of: $filters"
+grep -qx "$idle" waves.controller-states.txt || fail "waves.controller-states.txt: $(cat waves.controller-states.txt)"
 # A screen larger than the window the save file asks for, so none of it is cut.
 status=0
 timeout 120 xvfb-run -a -s "-screen 0 1600x1000x24" \

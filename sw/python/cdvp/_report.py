@@ -5,7 +5,7 @@ from dataclasses import dataclass, field
 
 import pandas as pd
 
-# The phases of a frame in simulated time, as the report names them (sw/study/report_summary.h).
+# The phases of a frame in simulated time, as the report names them (sw/run/report_summary.h).
 PHASES = ("upload", "start", "compute", "irq", "readback", "driver", "total")
 
 

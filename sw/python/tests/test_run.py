@@ -77,5 +77,5 @@ def test_an_injected_fault_is_a_device_fault_and_the_session_goes_on(cli):
 
 
 def test_the_report_path_is_the_studys_own():
-    with pytest.raises(cdvp.InputError, match="--report is the study's own"):
+    with pytest.raises(cdvp.InputError, match="the study's own"):
         cdvp.run(**SMALL, report="x.json")

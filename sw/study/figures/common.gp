@@ -6,7 +6,7 @@
 #   for each axis A of x, y and y2: A_label, A_log (0 or 1) and, where the
 #     figure fixes them, A_min, A_max and A_ticks ('("text" value, ...)')
 #   n_series and, for series i: series_title[i], series_family[i] (1 board,
-#     2 software baseline), series_colour[i], series_shape[i], series_dash[i],
+#     2 software baseline, 3 a mark: points alone, the last n_marks series), series_colour[i], series_shape[i], series_dash[i],
 #     series_filled[i] (places in the palettes below), series_axis[i] (1, or
 #     2 for the second y axis or panel), series_beneath[i] (how many later
 #     series cover it along some stretch)
@@ -30,13 +30,17 @@ array baseline_colour[4] = ["#000000", "#505050", "#000000", "#505050"]
 array baseline_shape[4] = [1, 2, 3, 1]
 array baseline_dash[4] = [2, 4, 5, 3]
 
-series_lc(i) = series_family[i] == 2 ? baseline_colour[series_colour[i]] : palette[series_colour[i]]
-series_pt(i) = series_family[i] == 2 ? baseline_shape[series_shape[i]] : \
+series_lc(i) = series_family[i] == 3 ? "#000000" : \
+               series_family[i] == 2 ? baseline_colour[series_colour[i]] : palette[series_colour[i]]
+series_pt(i) = series_family[i] == 3 ? 6 : series_family[i] == 2 ? baseline_shape[series_shape[i]] : \
                (series_filled[i] ? shape_filled[series_shape[i]] : shape_open[series_shape[i]])
 series_dt(i) = series_family[i] == 2 ? baseline_dash[series_dash[i]] : dash_type[series_dash[i]]
 series_lw(i) = (series_family[i] == 2 ? 2.5 : 1.5) + 2 * series_beneath[i]
 # Use as: plot ... with linespoints @series_style title series_title[i]
 series_style = "lc rgb series_lc(i) pt series_pt(i) dt series_dt(i) lw series_lw(i) ps 1.3"
+# A mark (family 3) rings the point it marks, large enough to show around any series' own shape.
+# Use as: plot ... with points @mark_style title series_title[i]
+mark_style = "lc rgb series_lc(i) pt series_pt(i) lw 1.5 ps 2.6"
 
 # The title across the whole picture, from its left edge: its lines are
 # long (board, engine, frames, host factor) and a key beside the plot would

@@ -1,0 +1,25 @@
+// The fixed workload `cdvp calibrate` times on this machine and every preset
+// states its modelled host's times for: the software baselines on the
+// spheres scene, seeded, at a few sizes. Its times on two machines give the
+// ratio between them (sw/run/host_factor.h); changing it makes every profile
+// and every preset's reference timings foreign, so it is versioned.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cdvp::reference_workload {
+
+constexpr int kVersion = 1;
+constexpr const char* kScene = "spheres";
+constexpr uint64_t kSeed = 1;
+constexpr uint64_t kFrames = 30;
+constexpr uint64_t kWarmup = 2;  // the run's default (sw/timing/frame_samples.h)
+// Small, the paper's largest, and the 72-point sweep's largest: each weighs
+// the same in the geometric mean a baseline's reference time is.
+const std::vector<uint64_t>& objects();
+// The baselines timed: every one cdvp run has (sw/baselines).
+const std::vector<std::string>& baselines();
+
+}  // namespace cdvp::reference_workload

@@ -1,0 +1,175 @@
+#include "sw/run/report_summary.h"
+
+#include <nlohmann/json.hpp>
+
+#include "models/common/user_text.h"
+
+namespace cdvp {
+
+const std::array<const char*, ReportSummary::kPhases> ReportSummary::kPhaseKeys = {
+    "upload_ns", "start_ns", "compute_ns", "irq_ns", "readback_ns", "driver_ns", "total_ns"};
+
+namespace {
+
+// mean_KEY, p50_KEY, p99_KEY and max_KEY: flat, like the phases' mean_ keys beside them.
+void put_spread(nlohmann::json& json, const std::string& key, const Spread& s) {
+    json["mean_" + key] = s.mean;
+    json["p50_" + key] = s.p50;
+    json["p99_" + key] = s.p99;
+    json["max_" + key] = s.max;
+}
+
+// Reads one key, naming it and the report when it is missing or of another type.
+class Reader {
+public:
+    Reader(const nlohmann::json& json, std::string where) : json_(json), where_(std::move(where)) {}
+
+    template <class T>
+    T get(const std::string& key) const {
+        const auto at = json_.find(key);
+        if (at == json_.end()) throw InputError(where_ + ": no " + key + " (expected a report of cdvp run)");
+        try {
+            return at->get<T>();
+        } catch (const nlohmann::json::exception&) {
+            throw InputError(where_ + ": " + key + " is " + at->type_name() + " (expected a report of cdvp run)");
+        }
+    }
+    Spread spread(const std::string& key) const {
+        Spread s;
+        s.mean = get<double>("mean_" + key);
+        s.p50 = get<double>("p50_" + key);
+        s.p99 = get<double>("p99_" + key);
+        s.max = get<double>("max_" + key);
+        return s;
+    }
+    Reader in(const std::string& key) const {
+        const auto at = json_.find(key);
+        if (at == json_.end() || !at->is_object()) {
+            throw InputError(where_ + ": no " + key + " section (expected a report of cdvp run)");
+        }
+        return Reader(*at, where_ + ": " + key);
+    }
+    const nlohmann::json& json() const { return json_; }
+
+private:
+    const nlohmann::json& json_;
+    std::string where_;
+};
+
+}  // namespace
+
+nlohmann::json to_json(const TimingQuality& q) {
+    return {{"verdict", q.verdict()},
+            {"frames_timed", q.frames_timed},
+            {"frames_disturbed", q.frames_disturbed},
+            {"frames_retimed", q.frames_retimed},
+            {"frames_slowed", q.frames_slowed},
+            {"probe_native_ns", q.probe_ns},
+            {"tries", q.tries},
+            {"never_clean", q.never_clean},
+            {"runs", q.runs},
+            {"repeat_spread", q.repeat_spread},
+            {"load_average_start", q.load_start},
+            {"load_average_end", q.load_end}};
+}
+
+TimingQuality timing_quality_from_json(const nlohmann::json& json, const std::string& where) {
+    if (!json.is_object()) throw InputError(where + ": timing_quality is not an object (expected a report of cdvp run)");
+    const Reader r(json, where + ": timing_quality");
+    TimingQuality q;
+    q.frames_timed = r.get<uint64_t>("frames_timed");
+    q.frames_disturbed = r.get<uint64_t>("frames_disturbed");
+    q.frames_retimed = r.get<uint64_t>("frames_retimed");
+    q.frames_slowed = r.get<uint64_t>("frames_slowed");
+    q.probe_ns = r.get<double>("probe_native_ns");
+    q.tries = r.get<uint64_t>("tries");
+    q.never_clean = r.get<uint64_t>("never_clean");
+    q.runs = r.get<uint32_t>("runs");
+    q.repeat_spread = r.get<double>("repeat_spread");
+    q.load_start = r.get<std::array<double, 3>>("load_average_start");
+    q.load_end = r.get<std::array<double, 3>>("load_average_end");
+    return q;
+}
+
+nlohmann::json to_json(const ReportSummary& s) {
+    nlohmann::json baselines = nlohmann::json::object();
+    for (const auto& [name, b] : s.baselines) {
+        nlohmann::json& json = baselines[name];
+        put_spread(json, "native_ns", b.native_ns);
+        put_spread(json, "wall_native_ns", b.wall_native_ns);
+        put_spread(json, "host_ns", b.host_ns);
+        json["run_means_native_ns"] = b.run_means_native_ns;
+        json["host_factor"] = b.host_factor;
+        json["speedup"] = b.speedup;
+        json["timing_quality"] = to_json(b.quality);
+        json["retimed"] = b.retimed;
+        if (!b.timing.empty()) json["timing"] = b.timing;
+    }
+    nlohmann::json json = {{"frames", s.frames},
+                           {"warmup_frames", s.warmup_frames},
+                           {"frames_in_means", s.frames_in_means},
+                           {"too_few_frames", s.too_few_frames},
+                           {"baselines", baselines},
+                           {"timing_quality", to_json(s.timing_quality)},
+                           {"retime_tries", s.retime_tries},
+                           {"pairs", s.pairs},
+                           {"load_average_end", s.load_average_end},
+                           {"reference_pairs", s.extra.reference_pairs},
+                           {"extra_pairs", s.extra.extra_pairs},
+                           {"extra_share", s.extra.share()},
+                           {"extra_readback_ns", s.extra.extra_readback_ns},
+                           {"extra_driver_ns", s.extra.extra_driver_ns}};
+    put_spread(json, "total_ns", s.total_ns);
+    put_spread(json, "latency_ns", s.latency_ns);
+    put_spread(json, "sim_wall_native_ns", s.sim_wall_native_ns);
+    // After the spread: mean_total_ns is the phases' mean, summed as they are.
+    for (std::size_t k = 0; k < ReportSummary::kPhases; ++k) {
+        json[std::string("mean_") + ReportSummary::kPhaseKeys[k]] = s.mean_phase_ns[k];
+    }
+    return json;
+}
+
+ReportSummary summary_from_json(const nlohmann::json& json, const std::string& source) {
+    if (!json.is_object()) throw InputError(source + ": summary is not an object (expected a report of cdvp run)");
+    const Reader r(json, source + ": summary");
+    ReportSummary s;
+    s.frames = r.get<uint64_t>("frames");
+    s.warmup_frames = r.get<uint64_t>("warmup_frames");
+    s.frames_in_means = r.get<uint64_t>("frames_in_means");
+    s.too_few_frames = r.get<bool>("too_few_frames");
+    s.pairs = r.get<uint64_t>("pairs");
+    s.load_average_end = r.get<std::array<double, 3>>("load_average_end");
+    s.extra.reference_pairs = r.get<uint64_t>("reference_pairs");
+    s.extra.extra_pairs = r.get<uint64_t>("extra_pairs");
+    s.extra.extra_readback_ns = r.get<double>("extra_readback_ns");
+    s.extra.extra_driver_ns = r.get<double>("extra_driver_ns");
+    s.total_ns = r.spread("total_ns");
+    // Reports from before frames were pipelined ran one frame at a time.
+    s.latency_ns = json.contains("mean_latency_ns") ? r.spread("latency_ns") : s.total_ns;
+    s.sim_wall_native_ns = r.spread("sim_wall_native_ns");
+    for (std::size_t k = 0; k < ReportSummary::kPhases; ++k) {
+        s.mean_phase_ns[k] = r.get<double>(std::string("mean_") + ReportSummary::kPhaseKeys[k]);
+    }
+    const Reader baselines = r.in("baselines");
+    for (const auto& [name, ignored] : baselines.json().items()) {
+        const Reader b = baselines.in(name);
+        BaselineSummary& out = s.baselines[name];
+        out.native_ns = b.spread("native_ns");
+        out.host_ns = b.spread("host_ns");
+        out.run_means_native_ns = b.get<std::vector<double>>("run_means_native_ns");
+        out.host_factor = b.get<double>("host_factor");
+        out.speedup = b.get<double>("speedup");
+        // Reports from before CPU time was the estimator have no wall time beside it, nor a quality.
+        if (b.json().contains("mean_wall_native_ns")) out.wall_native_ns = b.spread("wall_native_ns");
+        if (b.json().contains("timing_quality")) {
+            out.quality = timing_quality_from_json(b.json()["timing_quality"], source + ": summary: baselines: " + name);
+        }
+        if (b.json().contains("timing")) out.timing = b.get<std::string>("timing");
+        if (b.json().contains("retimed")) out.retimed = b.get<std::vector<std::array<double, 3>>>("retimed");
+    }
+    if (json.contains("timing_quality")) s.timing_quality = timing_quality_from_json(json["timing_quality"], source + ": summary");
+    if (json.contains("retime_tries")) s.retime_tries = r.get<uint32_t>("retime_tries");
+    return s;
+}
+
+}  // namespace cdvp

@@ -1,0 +1,7 @@
+#include "sw/run/version.h"
+
+namespace cdvp {
+
+const char* const kCdvpVersion = CDVP_VERSION;
+
+}  // namespace cdvp

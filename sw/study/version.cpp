@@ -1,7 +1,0 @@
-#include "sw/study/version.h"
-
-namespace cdvp {
-
-const char* const kCdvpVersion = CDVP_VERSION;
-
-}  // namespace cdvp
