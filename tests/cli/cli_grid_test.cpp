@@ -89,8 +89,9 @@ TEST_F(CliGrid, ScenesPastTheCellBufferOrTheSsramAreRefused) {
     expect_refusal(run(spheres(100, 1) + "-c board.algorithm=grid -c board.grid.dims=300"),
                    "cdvp run: -c board.grid.dims: expected an integer from 0 to 256, got '300'");
     expect_refusal(run(spheres(100, 1) + "-c board.algorithm=grid --fidelity rtl"),
-                   "cdvp run: --fidelity rtl at 100 objects (--objects): fidelity rtl: the board RTL is the all-pairs "
-                   "board's");
+                   "cdvp run: --fidelity rtl at 100 objects (--objects): fidelity rtl: the grid board (board.algorithm "
+                   "grid) has no RTL: its binning, cell memory and schedule blocks are modelled in C++ only; run it at "
+                   "the cycle, fast or analytic level");
     EXPECT_EQ(files(), std::vector<std::string>{}) << "a refused run leaves no output";
 }
 
