@@ -4,6 +4,9 @@
 #
 #   scripts/grid-answers.sh [OUT]      (default OUT: grid-answers/; CDVP=path/to/cdvp)
 #
+# A loaded machine may shorten it: SOFTWARE_OBJECTS (the N timed against Bullet), BOARD_OBJECTS (the
+# N run on the boards alone) and FRAMES/WARMUP replace the lists below.
+#
 #   OUT/software/  board.algorithm x m x N = 100 .. 10^5 against Bullet's sweep and prune (sap) and
 #                  dynamic tree (dbvt): time-BOARD.png, speedup-BOARD-BASELINE.png, crossover.csv
 #   OUT/million/   the same boards at N = 10^6, without software: Bullet's sap inserts its first
@@ -19,8 +22,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cdvp=${CDVP:-$root/build/sw/cli/cdvp}
 out=${1:-grid-answers}
 common=(--board adm-xrc-ii,pcie-gen3-x8 --set board.algorithm=all_pairs,grid --set m=4,8,11,32
-        --fidelity analytic --frames 4 --warmup 2)
+        --fidelity analytic --frames "${FRAMES:-4}" --warmup "${WARMUP:-2}")
 
-"$cdvp" sweep "${common[@]}" --set objects=100,300,1000,3000,10000,30000,100000 --baseline sap,dbvt \
-    --out "$out/software"
-"$cdvp" sweep "${common[@]}" --set objects=1000000 --out "$out/million"
+"$cdvp" sweep "${common[@]}" --set objects="${SOFTWARE_OBJECTS:-100,300,1000,3000,10000,30000,100000}" \
+    --baseline sap,dbvt --out "$out/software"
+"$cdvp" sweep "${common[@]}" --set objects="${BOARD_OBJECTS:-1000000}" --out "$out/million"
