@@ -44,6 +44,7 @@ AnalyticPlatform::AnalyticPlatform(const PlatformConfig& config, uint32_t capaci
       buffer_depth_(std::max<uint32_t>(config.board.collector.buffer_depth, 1)) {
     if (!config.faults.empty()) throw std::invalid_argument("the analytic level has no engine to inject faults into");
     if (config.board.box_banks > 1) pipeline_.emplace(frame_);
+    if (config.board.grid_board()) grid_.emplace(config.board, config.pair_budget);
 }
 
 bool AnalyticPlatform::exact_by_bound(const FrameResult& result) const {
@@ -76,7 +77,13 @@ uint64_t AnalyticPlatform::prepare(const std::vector<FloatBox>& boxes, PairList&
         };
     }
     try {
-        find_pairs(memo_.get(), finder_, objects, view, pairs, &by_block);
+        if (grid_) {
+            // The grid board's pairs in its order, each in its slot; AnalyticFrame times them.
+            const uint64_t end = grid_->run(objects, view, pairs, grid_slots_);
+            frame_.set_listed_schedule(&grid_slots_, end);
+        } else {
+            find_pairs(memo_.get(), finder_, objects, view, pairs, &by_block);
+        }
     } catch (const PairBudgetExceeded&) {
         banks_.forget();  // the driver fails the frame and forgets the board's words
         throw;

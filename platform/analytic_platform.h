@@ -1,8 +1,9 @@
 // The analytic level of the platform (--fidelity analytic): no SystemC kernel,
 // no engine stepping. A frame's pairs are those the board's comparison unit
 // accepts in its number format, found by the fast engine's PairFinder (so the
-// application and the float32 check see the board's exact pairs); its time is
-// AnalyticFrame's closed forms for those pairs (docs/analytic.md says which
+// application and the float32 check see the board's exact pairs; on a grid
+// board by its GridSearch, which places each pair in its slot by the grid's
+// closed forms); its time is AnalyticFrame's closed forms for those pairs (docs/analytic.md says which
 // phases are exact and measures the rest). Nothing is elaborated, so a process
 // may build any number of these: a sweep evaluates analytic points in process.
 #pragma once
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "models/fast_engine/pair_finder.h"
+#include "models/grid_fast_engine/grid_search.h"
 #include "platform/driver/analytic_frame.h"
 #include "platform/driver/analytic_pipeline.h"
 #include "platform/driver/bank_copies.h"
@@ -74,6 +76,9 @@ private:
     // for delta uploads (as the driver keeps them).
     BankCopies banks_;
     std::optional<AnalyticPipeline> pipeline_;  // two box banks
+    // A grid board: its search, and the slots of the frame being timed.
+    std::optional<GridSearch> grid_;
+    std::vector<uint64_t> grid_slots_;
 };
 
 }  // namespace cdvp

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "models/common/user_text.h"
+
 namespace cdvp {
 
 namespace {
@@ -39,11 +41,28 @@ uint32_t largest_tile(const BoardConfig& board, uint64_t capacity, uint64_t bloc
     return static_cast<uint32_t>(lo);
 }
 
+GridMemory plan_grid_memory(const Settings& settings, uint64_t capacity) {
+    GridMemory grid;
+    const DeviceSettings& device = settings.device;
+    const uint64_t cells = settings.board.grid.cells_for(capacity);
+    grid.words = uint64_t{device.ssram_banks} * device.ssram_words;
+    grid.fixed_words = kCoordinates * capacity + 3 * cells + capacity + 2ull * settings.board.collector.buffer_depth;
+    if (settings.run.ignore_capacity) return grid;  // entries unbounded
+    grid.fits = grid.fixed_words <= grid.words;
+    grid.entries = grid.fits ? grid.words - grid.fixed_words : 0;
+    return grid;
+}
+
 MemoryPlan plan_memory(const Settings& settings, uint64_t capacity) {
     const DeviceSettings& device = settings.device;
     MemoryPlan plan;
     plan.tiles = ssram_tiles(device);  // boxes = 0 until SSRAM serves
     plan.ssram_capacity = device.ssram_banks == 0 ? 0 : device.ssram_words / plan.tiles.cycles_per_box;
+    if (settings.board.grid_board()) {
+        // Its boxes always sit in SSRAM, untiled: the cell buffer is its only block RAM.
+        plan.grid = plan_grid_memory(settings, capacity);
+        return plan;
+    }
     const uint32_t fitting = largest_tile(settings.board, capacity, device.block_rams);
     const BoxMemory asked = settings.memory.memory;
     if (asked == BoxMemory::kBlockRam) return plan;
@@ -71,7 +90,7 @@ uint32_t largest_m_in_block_rams(Settings settings, uint64_t capacity) {
         settings.board.m = m;
         const MemoryPlan plan = plan_memory(settings, capacity);
         BoardConfig board = settings.board;
-        board.tiles = plan.tiles;
+        plan.apply(board);
         if (plan.tile_fits && board.block_rams(capacity) <= settings.device.block_rams) return m;
     }
     return 0;
@@ -79,8 +98,45 @@ uint32_t largest_m_in_block_rams(Settings settings, uint64_t capacity) {
 
 BoardConfig planned_board(const Settings& settings, uint64_t capacity) {
     BoardConfig board = settings.board;
-    board.tiles = plan_memory(settings, capacity).tiles;
+    plan_memory(settings, capacity).apply(board);
     return board;
+}
+
+}  // namespace cdvp
+
+namespace cdvp {
+
+void check_grid_fits(const SettingValues& values, uint64_t objects, const std::string& objects_text) {
+    const Settings& settings = values.settings();
+    if (!settings.board.grid_board() || settings.run.ignore_capacity) return;
+    const std::string explore = "; --ignore-capacity runs it anyway";
+    const DeviceSettings& device = settings.device;
+    const BoardConfig board = planned_board(settings, objects);
+    const uint64_t block_rams = board.block_rams(objects);
+    if (device.block_rams != 0 && block_rams > device.block_rams) {
+        const BlockRamLayout layout = board.format.block_ram_layout(board.grid.cell_capacity);
+        throw InputError(values.where(*find_setting("device.block_rams")) + ": " + std::to_string(device.block_rams) +
+                         " block RAMs are too few for the grid board's cell buffer at " +
+                         values.value_and_origin(*find_setting("board.m")) + " and " +
+                         values.value_and_origin(*find_setting("board.grid.cell_capacity")) + ": it needs " +
+                         std::to_string(layout.word_groups()) + " x 2m x ceil(C/" + std::to_string(layout.depth) +
+                         ") = " + std::to_string(block_rams) + explore);
+    }
+    const GridMemory grid = plan_grid_memory(settings, objects);
+    if (device.ssram_banks == 0) {
+        throw InputError(values.where(*find_setting("device.ssram_banks")) +
+                         ": the device has no off-chip SSRAM (0 banks); the grid board keeps its boxes and cell "
+                         "lists there" + explore);
+    }
+    if (!grid.fits) {
+        throw InputError(values.where(*find_setting("device.ssram_words")) + ": " + std::to_string(device.ssram_words) +
+                         " words a bank in " + std::to_string(device.ssram_banks) + " SSRAM banks (" +
+                         std::to_string(grid.words) + " words) are too few for the grid board at " + objects_text +
+                         ": its boxes, count table, large list and pair buffer (" +
+                         values.value_and_origin(*find_setting("board.pair_buffer_depth")) +
+                         ") need 6N + 3G^3 + N + 2P = " + std::to_string(grid.fixed_words) +
+                         " words before any cell entry: use fewer objects or a smaller pair buffer" + explore);
+    }
 }
 
 }  // namespace cdvp

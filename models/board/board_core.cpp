@@ -1,5 +1,6 @@
 #include "models/board/board_core.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -30,7 +31,7 @@ void BoardCore::declare_registers() {
     using A = RegisterAccess;
     auto constant = [](uint32_t v) { return [v] { return v; }; };
     auto counter = [this](uint64_t SweepCounters::*field) { return [this, field] { return counters().*field; }; };
-    registers_.add("ID", R::kId, A::kReadOnly, constant(R::kIdValue));
+    registers_.add("ID", R::kId, A::kReadOnly, constant(config_.grid_board() ? R::kGridIdValue : R::kIdValue));
     registers_.add("CONTROL", R::kControl, A::kWriteOnly, {}, [this](uint32_t v) {
         if (v & R::kAbort) abort();
         else if (v & R::kStart) start();
@@ -62,10 +63,12 @@ void BoardCore::declare_registers() {
     // The memory the bitstream was built with: the driver bounds a sweep's cycles by it.
     const TileConfig& tiles = config_.tiles;
     registers_.add("TILE_BOXES", R::kTileBoxes, A::kReadOnly, constant(tiles.boxes));
+    // A grid board's boxes always sit in SSRAM: its timing, untiled.
     registers_.add("TILE_TIMING", R::kTileTiming, A::kReadOnly,
-                   constant(tiles.tiled() ? (tiles.load_latency_cycles & R::kTileTimingLatencyMask) |
-                                                tiles.cycles_per_box << R::kTileTimingCyclesShift
-                                          : 0));
+                   constant(tiles.tiled() || config_.grid_board()
+                                ? (tiles.load_latency_cycles & R::kTileTimingLatencyMask) |
+                                      tiles.cycles_per_box << R::kTileTimingCyclesShift
+                                : 0));
     registers_.add("PAIR_FORMAT", R::kPairFormat, A::kReadWrite, [this] { return uint32_t{static_cast<uint8_t>(pair_format_)}; },
                    [this](uint32_t v) {
                        if (status().busy || v >= kPairFormats) {
@@ -87,6 +90,29 @@ void BoardCore::declare_registers() {
         pair_bank_ = v;
         return RegisterResult::kDone;
     });
+    if (config_.grid_board()) declare_grid_registers();
+}
+
+void BoardCore::declare_grid_registers() {
+    using R = ControlRegisters;
+    using A = RegisterAccess;
+    auto constant = [](uint32_t v) { return [v] { return v; }; };
+    auto last = [this](auto GridSweepStats::*field) { return [this, field] { return static_cast<uint32_t>(grid_stats_.*field); }; };
+    const GridConfig& grid = config_.grid;
+    uint32_t cell_size = 0;
+    std::memcpy(&cell_size, &grid.cell_size, sizeof cell_size);
+    registers_.add("GRID_DIMS", R::kGridDims, A::kReadOnly, constant(grid.dims));
+    registers_.add("GRID_CELL_CAPACITY", R::kGridCellCapacity, A::kReadOnly, constant(grid.cell_capacity));
+    registers_.add("GRID_MAX_SPAN", R::kGridMaxSpan, A::kReadOnly, constant(grid.max_span));
+    registers_.add("GRID_CELL_SIZE", R::kGridCellSize, A::kReadOnly, constant(cell_size));
+    registers_.add("GRID_ENTRY_CAPACITY", R::kGridEntryCapacity, A::kReadOnly,
+                   constant(static_cast<uint32_t>(std::min<uint64_t>(grid.entry_capacity, UINT32_MAX))));
+    registers_.add("GRID_SWEEP_DIMS", R::kGridSweepDims, A::kReadOnly, last(&GridSweepStats::dims));
+    registers_.add("GRID_LARGE_BOXES", R::kGridLargeBoxes, A::kReadOnly, last(&GridSweepStats::large_boxes));
+    registers_.add("GRID_OVERFLOW_BOXES", R::kGridOverflowBoxes, A::kReadOnly, last(&GridSweepStats::overflow_boxes));
+    registers_.add("GRID_CELL_ENTRIES", R::kGridCellEntries, A::kReadOnly, last(&GridSweepStats::cell_entries));
+    registers_.add("GRID_BUSY_CELLS", R::kGridBusyCells, A::kReadOnly, last(&GridSweepStats::busy_cells));
+    registers_.add("GRID_EXCLUDED_BOXES", R::kGridExcludedBoxes, A::kReadOnly, last(&GridSweepStats::excluded_boxes));
 }
 
 bool BoardCore::read_register(uint32_t offset, uint32_t& value) {
@@ -214,6 +240,8 @@ void BoardCore::advance_to(uint64_t edges) {
     edges_ = engine_->segment_edges();
     held_ = engine_->counters_after(edges_);
     phase_ = engine_->segment_finishes() ? SweepState::kDone : SweepState::kPaused;
+    // The grid registers show a sweep once it is done.
+    if (phase_ == SweepState::kDone) grid_stats_ = engine_->grid_stats();
     irq_pending_ = true;
 }
 
@@ -244,7 +272,7 @@ void BoardCore::start() {
         return;
     }
     const uint64_t worst = worst_encoded_words(pair_format_, config_.collector.buffer_depth, object_count_,
-                                               config_.tiles.row_pieces(object_count_));
+                                               config_.row_pieces(object_count_));
     if (worst > address_map::kPairBufferSize / 4) {
         raise_error(R::kPairWindowFull);
         return;

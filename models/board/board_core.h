@@ -98,6 +98,7 @@ public:
 
 private:
     void declare_registers();
+    void declare_grid_registers();
     void start();
     void resume();
     void abort();
@@ -148,6 +149,8 @@ private:
     uint64_t edges_ = 0;
     // The counters while the clock is stopped (paused, done, aborted).
     SweepCounters held_;
+    // A grid board's last finished sweep, as its grid registers show it.
+    GridSweepStats grid_stats_;
 };
 
 }  // namespace cdvp

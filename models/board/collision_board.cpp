@@ -7,6 +7,7 @@
 
 #include "models/common/address_range.h"
 #include "models/common/transaction.h"
+#include "models/grid_clocked_engine/grid_clocked_engine.h"
 #include "models/rtl_engine/lockstep_engine.h"
 #include "models/rtl_engine/rtl_engine.h"
 #include "models/rtl_engine/rtl_waves.h"
@@ -53,7 +54,8 @@ int bits_for(uint64_t max) {
 
 void CollisionBoard::add_waves(WaveList& waves) {
     traced_engine_ = dynamic_cast<ClockedEngine*>(&core_.engine());
-    if (traced_engine_ == nullptr) throw std::logic_error("waveforms need the clocked engine");
+    traced_grid_ = dynamic_cast<GridClockedEngine*>(&core_.engine());
+    if (traced_engine_ == nullptr && traced_grid_ == nullptr) throw std::logic_error("waveforms need the clocked engine");
     // The waveforms start from the board as it is (idle), not from zeros.
     sample_trace();
     const std::string p = std::string(name()) + ".";
@@ -81,6 +83,19 @@ void CollisionBoard::add_waves(WaveList& waves) {
     waves.add(shown.fifo_level, p + "collector.fifo_level", bits_for(config.collector.fifo_depth), WaveFormat::kDecimal);
     waves.add(shown.pair_count, p + "collector.pair_count", bits_for(config.collector.buffer_depth),
               WaveFormat::kDecimal);
+    if (traced_grid_ != nullptr) {
+        waves.group("board: grid sequencer");
+        waves.add(shown.grid_pass, p + "grid.pass", 4, WaveFormat::kDecimal);
+        for (uint32_t k = 1; k < GridClockedEngine::kPasses; ++k) {
+            waves.add(shown.in_pass[k], p + "grid." + to_string(static_cast<GridClockedEngine::Pass>(k)));
+        }
+        waves.add(shown.grid_box, p + "grid.box", bits_for(core_.capacity()), WaveFormat::kDecimal);
+        waves.add(shown.grid_cell, p + "grid.cell", 24, WaveFormat::kDecimal);
+        waves.add(shown.grid_tile, p + "grid.tile", bits_for(core_.capacity()), WaveFormat::kDecimal);
+        waves.add(shown.loading, p + "grid.loading");
+        waves.add(shown.wait, p + "grid.wait");
+        return;
+    }
     if (!config.tiles.tiled()) return;
     waves.group("board: tile loader");
     const int tile_bits = bits_for(uint64_t{core_.capacity()} / config.tiles.boxes + 1);
@@ -105,7 +120,7 @@ void CollisionBoard::close_rtl_trace() {
 }
 
 void CollisionBoard::set_tracing(bool on) {
-    if ((traced_engine_ == nullptr && traced_rtl_ == nullptr) || on == tracing_on_) return;
+    if ((traced_engine_ == nullptr && traced_grid_ == nullptr && traced_rtl_ == nullptr) || on == tracing_on_) return;
     tracing_on_ = on;
     if (core_.running()) throw std::logic_error("tracing switched during a sweep");
     if (traced_rtl_ != nullptr) {
@@ -276,27 +291,43 @@ void CollisionBoard::on_state_change() {
     if (core_.running() && !first_traced_start_) first_traced_start_ = sc_time_stamp();
 }
 
-void CollisionBoard::sample_trace() {
+template <class Engine>
+void CollisionBoard::sample_datapath(const Engine& engine) {
     Waves& w = waves_.live;
-    w.state = static_cast<uint32_t>(core_.phase());
-    for (std::size_t k = 0; k < w.in_state.size(); ++k) w.in_state[k] = w.state == k;
-    const ClockedEngine& engine = *traced_engine_;
     const PortWindow& issue = engine.last_issue();
     w.address[0] = issue.row;
     for (size_t port = 1; port < w.address.size(); ++port) {
         w.address[port] = issue.first_column + static_cast<uint32_t>(port) - 1;
     }
-    const ClockedEngine::Slot& out = engine.compare_output();
-    const bool sweeping = out.kind == ClockedEngine::Slot::kSweep && out.window.valid_lanes > 0;
+    const auto& out = engine.compare_output();
+    const bool sweeping = out.kind == Engine::Slot::kSweep && out.window.valid_lanes > 0;
     w.lane_valid = sweeping ? (~0ull >> (64 - out.window.valid_lanes)) : 0;
     w.lane_hit = sweeping ? out.hits : 0;
     w.fifo_level = engine.fifo_level();
     w.stall = engine.stalled();
-    w.pair_count = core_.buffered_pairs();
-    w.row_tile = engine.row_tile();
-    w.column_tile = engine.column_tile();
     w.loading = engine.loading();
     w.wait = engine.waiting();
+}
+
+void CollisionBoard::sample_trace() {
+    Waves& w = waves_.live;
+    w.state = static_cast<uint32_t>(core_.phase());
+    for (std::size_t k = 0; k < w.in_state.size(); ++k) w.in_state[k] = w.state == k;
+    w.pair_count = core_.buffered_pairs();
+    if (traced_grid_ != nullptr) {
+        const GridClockedEngine& grid = *traced_grid_;
+        sample_datapath(grid);
+        w.grid_pass = static_cast<uint32_t>(grid.pass());
+        for (std::size_t k = 0; k < w.in_pass.size(); ++k) w.in_pass[k] = w.grid_pass == k;
+        w.grid_box = grid.box();
+        w.grid_cell = grid.cell();
+        w.grid_tile = grid.tile();
+    } else {
+        const ClockedEngine& engine = *traced_engine_;
+        sample_datapath(engine);
+        w.row_tile = engine.row_tile();
+        w.column_tile = engine.column_tile();
+    }
     waves_.show();
 }
 

@@ -23,6 +23,7 @@
 namespace cdvp {
 
 class RtlEngine;
+class GridClockedEngine;
 
 class CollisionBoard : public sc_core::sc_module {
 public:
@@ -80,7 +81,10 @@ private:
     void drive_irq();
     // Reads the controller and datapath into the waveforms.
     void sample_trace();
-    bool clocked_edge_by_edge() const { return traced_engine_ != nullptr && tracing_on_; }
+    bool clocked_edge_by_edge() const { return (traced_engine_ != nullptr || traced_grid_ != nullptr) && tracing_on_; }
+    // The datapath's probes both clocked engines give alike.
+    template <class Engine>
+    void sample_datapath(const Engine& engine);
 
     BoardCore core_;
     sc_core::sc_time period_;
@@ -90,7 +94,8 @@ private:
     sc_core::sc_event irq_changed_;
     sc_core::sc_event state_changed_;
     FaultPlan* faults_ = nullptr;
-    ClockedEngine* traced_engine_ = nullptr;  // set by add_waves()
+    ClockedEngine* traced_engine_ = nullptr;  // set by add_waves() (the seed's board)
+    GridClockedEngine* traced_grid_ = nullptr;  // set by add_waves() (the grid board)
     RtlEngine* traced_rtl_ = nullptr;         // set by trace_rtl()
     sc_core::sc_time access_time_;            // when the host access being served takes effect
     bool tracing_on_ = true;
@@ -112,6 +117,13 @@ private:
         uint32_t column_tile = 0;
         bool loading = false;
         bool wait = false;
+        // The grid board's sequencer: its pass (GridClockedEngine::Pass, and
+        // one bit a pass), the box it is at, the busy cell swept, the large tile.
+        uint32_t grid_pass = 0;
+        std::array<bool, 9> in_pass{};
+        uint32_t grid_box = 0;
+        uint32_t grid_cell = 0;
+        uint32_t grid_tile = 0;
     };
     GatedWaves<Waves> waves_;
 };

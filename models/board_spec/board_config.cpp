@@ -18,11 +18,19 @@ uint64_t BoardConfig::sweep_cycles(uint64_t objects) const {
     return SweepSchedule(m, tiles, static_cast<uint32_t>(objects)).slots();
 }
 
+uint64_t BoardConfig::worst_sweep_slots(uint64_t objects) const {
+    return grid_board() ? worst_grid_slots(objects, grid, grid_slots()) : sweep_cycles(objects);
+}
+
 uint64_t BoardConfig::memory_depth(uint64_t capacity) const {
     return tiles.tiled() ? std::min<uint64_t>(tiles.boxes, capacity) : capacity;
 }
 
 uint64_t BoardConfig::block_rams(uint64_t capacity) const {
+    if (grid_board()) {
+        const uint64_t depth = grid.cell_capacity;
+        return cell_buffer_copies() * format.block_ram_layout(depth).primitives(depth);
+    }
     const uint64_t depth = memory_depth(capacity);
     return block_ram_banks() * memory_copies() * format.block_ram_layout(depth).primitives(depth);
 }
@@ -31,10 +39,11 @@ uint64_t BoardConfig::block_ram_bytes(uint64_t capacity) const {
     // The model keeps each coordinate's words apart (packing changes the count
     // of primitives, not the words): six columns of whole primitives a copy,
     // for the bank being swept (the host's bank is the board's store).
-    const uint64_t depth = memory_depth(capacity);
+    const uint64_t depth = grid_board() ? grid.cell_capacity : memory_depth(capacity);
     const BlockRamLayout layout = format.block_ram_layout(depth);
     const uint64_t cascaded = (depth + layout.depth - 1) / layout.depth;
-    return memory_copies() * kCoordinates * cascaded * layout.depth * sizeof(uint32_t);
+    const uint64_t copies = grid_board() ? cell_buffer_copies() : memory_copies();
+    return copies * kCoordinates * cascaded * layout.depth * sizeof(uint32_t);
 }
 
 uint32_t BoardConfig::pipeline_latency() const {
@@ -70,6 +79,11 @@ void BoardConfig::validate() const {
             "ssram_latency_cycles: expected at most 64 cycles, got " + std::to_string(tiles.load_latency_cycles));
     require(tiles.cycles_per_box >= 1 && tiles.cycles_per_box <= kCoordinates,
             "ssram cycles a box: expected 1 to 6, got " + std::to_string(tiles.cycles_per_box));
+    if (grid_board()) {
+        grid.validate();
+        require(!tiles.tiled(), "tile_boxes: a grid board keeps its boxes in SSRAM untiled, got tiles of " +
+                                    std::to_string(tiles.boxes));
+    }
 }
 
 }  // namespace cdvp

@@ -15,6 +15,7 @@
 #include "models/common/aabb.h"
 #include "models/common/pair_budget.h"
 #include "models/comparison_unit/comparison_unit.h"
+#include "models/grid_schedule/grid_slots.h"
 
 namespace cdvp {
 
@@ -76,6 +77,9 @@ public:
     // It keeps answering as its reference does, so the simulation ends
     // cleanly and the platform reports the difference after the frame.
     virtual std::string divergence() const { return {}; }
+    // A grid board's engine: what the sweep started last showed (its grid
+    // registers), complete once the sweep is done. Zeros on the seed's board.
+    virtual GridSweepStats grid_stats() const { return {}; }
 };
 
 // Which engine computes a board's sweeps (models/board/engine_factory.h makes it).

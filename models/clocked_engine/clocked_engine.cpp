@@ -9,8 +9,7 @@ const ClockedEngine::Slot ClockedEngine::kNoSlot{};
 ClockedEngine::ClockedEngine(const BoardConfig& config, uint32_t capacity)
     : config_(config),
       comparison_unit_(config.lanes(), config.compare, config.format),
-      collector_(config.collector),
-      line_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles) {
+      pipeline_(BlockRam::kReadLatencyCycles + config.compare.latency_cycles, config.collector) {
     if (config.tiles.tiled()) {
         loader_ = std::make_unique<TileLoader>(config, capacity);
     } else {
@@ -40,47 +39,34 @@ void ClockedEngine::start(const CoordinateStore& store, uint32_t objects) {
     }
     block_ = 0;
     waiting_ = false;
-    collector_.reset();
-    for (auto& slot : line_) slot = Slot{};
-    head_ = 0;
-    end_issued_ = end_seen_ = stalled_ = false;
-    pushed_edge_ = 0;
-    edges_ = 0;
-    history_.start();
-    state_ = SweepState::kRunning;
+    end_issued_ = false;
+    pipeline_.start();
 }
 
-void ClockedEngine::resume() {
-    history_.resume(edges_);
-    collector_.clear_buffer();
-    edges_ = 0;
-    pushed_edge_ = 0;
-    state_ = SweepState::kRunning;
-}
+void ClockedEngine::resume() { pipeline_.resume(); }
 
 void ClockedEngine::abort(uint64_t edges) {
     advance_to(edges);
-    collector_.truncate_buffer(counters_after(edges).buffered);
-    state_ = SweepState::kIdle;
+    pipeline_.abort(edges);
 }
 
 uint64_t ClockedEngine::segment_edges() {
-    while (state_ == SweepState::kRunning) step();
-    return edges_;
+    while (state() == SweepState::kRunning) step();
+    return edges();
 }
 
 bool ClockedEngine::segment_finishes() {
     segment_edges();
-    return state_ == SweepState::kDone;
+    return state() == SweepState::kDone;
 }
 
 void ClockedEngine::advance_to(uint64_t edges) {
-    while (state_ == SweepState::kRunning && edges_ < edges) step();
+    while (state() == SweepState::kRunning && this->edges() < edges) step();
 }
 
 SweepCounters ClockedEngine::counters_after(uint64_t edges) {
     advance_to(edges);
-    return history_.counters_after(std::min(edges, edges_));
+    return pipeline_.counters_after(edges);
 }
 
 uint32_t ClockedEngine::tile_of(bool column) const {
@@ -129,50 +115,13 @@ ClockedEngine::Slot ClockedEngine::issue() {
     return Slot{Slot::kSweep, addresses, comparison_unit_.evaluate(rows, columns, addresses.valid_lanes)};
 }
 
-void ClockedEngine::stall() {
-    stalled_ = true;
-    history_.stall(edges_);
-}
-
-// One clock edge; every edge counts as a cycle. An edge that finds the pair
-// buffer full pauses the board (and counts as a stall).
+// One clock edge of the pipeline and collector (SlotPipeline).
 void ClockedEngine::step() {
-    ++edges_;
-    if (collector_.drain_blocked()) {
-        // A pair must move and the buffer is full: this edge does no work
-        // (a stall) and the clock stops until the host drains and resumes.
-        stall();
-        state_ = SweepState::kPaused;
-        return;
-    }
-    const uint32_t before = collector_.buffer_count();
-    collector_.drain();
-    history_.buffered(edges_, collector_.buffer_count() - before);
-    if (end_seen_) {
-        // Only the FIFO's last pairs are left to move: every such cycle is
-        // beyond S + L, so it counts as a stall.
-        stall();
-        if (collector_.fifo_level() == 0) state_ = SweepState::kDone;
-        return;
-    }
-    Slot& leaving = line_[head_];
-    if (leaving.kind == Slot::kSweep) {
-        const auto hits = static_cast<uint32_t>(__builtin_popcountll(leaving.hits));
-        if (collector_.fifo_free() < hits) {
-            stall();  // back-pressure: the whole pipeline holds this cycle
-            return;
-        }
-        collector_.push(leaving.window.row, leaving.window.first_column, leaving.hits);
-        pushed_hits_ = leaving.hits;
-        pushed_edge_ = edges_;
-        history_.pushed(edges_, hits);
-    } else if (leaving.kind == Slot::kEnd) {
-        end_seen_ = true;
-    }
-    stalled_ = false;
-    leaving = issue();
-    head_ = head_ + 1 == line_.size() ? 0 : head_ + 1;
-    if (end_seen_ && collector_.fifo_level() == 0) state_ = SweepState::kDone;
+    pipeline_.step([this] { return issue(); },
+                   [this](PairCollector& collector, const Slot& slot) {
+                       collector.push(slot.window.row, slot.window.first_column, slot.hits);
+                       pushed_hits_ = slot.hits;
+                   });
 }
 
 }  // namespace cdvp

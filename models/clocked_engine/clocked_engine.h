@@ -8,9 +8,8 @@
 #include "models/address_generator/address_generator.h"
 #include "models/address_generator/sweep_schedule.h"
 #include "models/board_spec/board_engine.h"
-#include "models/board_spec/segment_history.h"
+#include "models/clocked_engine/slot_pipeline.h"
 #include "models/coordinate_memory/coordinate_memory.h"
-#include "models/pair_collector/pair_collector.h"
 #include "models/tile_loader/tile_loader.h"
 
 namespace cdvp {
@@ -36,6 +35,7 @@ public:
         enum Kind : uint8_t { kBubble, kSweep, kEnd } kind = kBubble;
         PortWindow window;
         uint64_t hits = 0;
+        uint32_t hit_count() const { return static_cast<uint32_t>(__builtin_popcountll(hits)); }
     };
 
     // capacity: the coordinate memories' depth in boxes.
@@ -48,11 +48,11 @@ public:
     uint64_t segment_edges() override;
     bool ended_by(uint64_t edges) override {
         advance_to(edges);
-        return state_ != SweepState::kRunning && edges_ <= edges;
+        return state() != SweepState::kRunning && this->edges() <= edges;
     }
     bool segment_finishes() override;
     SweepCounters counters_after(uint64_t edges) override;
-    const IndexPair& buffer_entry(uint32_t k) override { return collector_.buffer_entry(k); }
+    const IndexPair& buffer_entry(uint32_t k) override { return pipeline_.collector().buffer_entry(k); }
 
     // Steps the datapath to `edges` edges of the segment, or to its end.
     void advance_to(uint64_t edges);
@@ -65,26 +65,25 @@ public:
     uint32_t column_tile() const { return tile_of(true); }
     bool loading() const { return loader_ != nullptr && loader_->busy(); }
     bool waiting() const { return waiting_; }
-    const Slot& compare_output() const { return line_[head_]; }
-    bool stalled() const { return stalled_; }
+    const Slot& compare_output() const { return pipeline_.compare_output(); }
+    bool stalled() const { return pipeline_.stalled(); }
     // The last edge's slot issued into the pipeline (a bubble when none was:
     // every edge that does not issue stalls) and the lane hits it pushed
     // into the FIFO (0 when none). Derived, so the edge itself pays nothing.
     const Slot& issued() const {
-        if (stalled_ || edges_ == 0) return kNoSlot;
-        return line_[head_ == 0 ? line_.size() - 1 : head_ - 1];
+        const Slot* slot = pipeline_.issued();
+        return slot != nullptr ? *slot : kNoSlot;
     }
-    uint64_t pushed_hits() const { return pushed_edge_ == edges_ && edges_ != 0 ? pushed_hits_ : 0; }
-    SweepState state() const { return state_; }
-    uint64_t edges() const { return edges_; }
-    uint32_t fifo_level() const { return collector_.fifo_level(); }
+    uint64_t pushed_hits() const { return pipeline_.pushed_this_edge() ? pushed_hits_ : 0; }
+    SweepState state() const { return pipeline_.state(); }
+    uint64_t edges() const { return pipeline_.edges(); }
+    uint32_t fifo_level() const { return pipeline_.collector().fifo_level(); }
     // Block RAM primitives of the six coordinate memories (or tile buffers).
     uint32_t block_rams() const;
 
 private:
     void step();
     Slot issue();
-    void stall();
     uint32_t tile_of(bool column) const;
 
     BoardConfig config_;
@@ -99,23 +98,12 @@ private:
     uint64_t block_ = 0;  // the block of the last issued slot
     bool waiting_ = false;
     ComparisonUnit comparison_unit_;
-    PairCollector collector_;
-
-    SweepState state_ = SweepState::kIdle;
-    // Block RAM stage plus compare stages; head_ is the slot leaving this cycle.
-    std::vector<Slot> line_;
-    uint32_t head_ = 0;
+    // Block RAM stage plus compare stages, then the pair collector.
+    SlotPipeline<Slot> pipeline_;
     bool end_issued_ = false;  // the address generator sent its end marker
-    bool end_seen_ = false;    // the end marker reached the collector
-    bool stalled_ = false;
-    uint64_t pushed_hits_ = 0;  // the last push's lane hits,
-    uint64_t pushed_edge_ = 0;  // at this edge of the segment (0: none yet)
+    uint64_t pushed_hits_ = 0;  // the last push's lane hits
     static const Slot kNoSlot;
     PortWindow last_issue_{};
-
-    // The segment so far: edges run, and what each showed the host.
-    uint64_t edges_ = 0;
-    SegmentHistory history_;
 };
 
 }  // namespace cdvp

@@ -60,6 +60,18 @@ struct ControlRegisters {
         kBoxBanks = 0x54,         // ro: banks of box memory (1, or 2: double-buffered boxes and pair buffers)
         kHostBank = 0x58,         // ro: the bank the host's coordinate writes and delta records go to
         kPairBank = 0x5C,         // rw: which pair buffer PAIR_COUNT, PAIR_WORDS and the window show (PairBank)
+        // The grid board's alone (ID kGridIdValue; docs/grid_board.md), all read-only:
+        kGridDims = 0x60,           // board.grid.dims as built: cells a side, 0 for auto
+        kGridCellCapacity = 0x64,   // boxes a cell list holds
+        kGridMaxSpan = 0x68,        // cells a binned box may cover
+        kGridCellSize = 0x6C,       // float32 bits of the fixed cell size; 0: fitted to the frame
+        kGridEntryCapacity = 0x70,  // cell entries the memory holds (0xFFFFFFFF: unbounded)
+        kGridSweepDims = 0x74,      // the last sweep's cells a side
+        kGridLargeBoxes = 0x78,     // the last sweep's boxes swept against every box
+        kGridOverflowBoxes = 0x7C,  // of those, boxes that met a full cell or entry memory
+        kGridCellEntries = 0x80,    // the last sweep's cell entries
+        kGridBusyCells = 0x84,      // the last sweep's cells of two boxes or more
+        kGridExcludedBoxes = 0x88,  // the last sweep's boxes with a NaN bound
     };
     // PAIR_BANK's values. With two banks, START keeps the pairs of the sweep
     // before it in the previous pair buffer, to be read during the new sweep.
@@ -92,6 +104,8 @@ struct ControlRegisters {
         kBadPairBank = 10,      // PAIR_BANK written with a value other than 0 or 1
     };
     static constexpr uint32_t kIdValue = 0xCD7B'0003;  // "cdvp", register map version 3
+    // The grid board: the same map and the grid registers (board variant 1).
+    static constexpr uint32_t kGridIdValue = 0xCD7B'1003;
     // TILE_TIMING's fields.
     static constexpr uint32_t kTileTimingLatencyMask = 0xFFFF;
     static constexpr uint32_t kTileTimingCyclesShift = 16;

@@ -39,6 +39,20 @@ void SweepTimeline::start(uint32_t objects, const std::vector<IndexPair>& pairs)
         sweep_cycles_ = AddressGenerator::sweep_cycles(objects, m_);
     }
     pairs_ = &pairs;
+    listed_slots_ = nullptr;
+    begin();
+}
+
+void SweepTimeline::start_listed(const std::vector<IndexPair>& pairs, const std::vector<uint64_t>& slots,
+                                 uint64_t end_slot) {
+    objects_ = 0;  // not needed: every slot is given
+    sweep_cycles_ = end_slot;
+    pairs_ = &pairs;
+    listed_slots_ = &slots;
+    begin();
+}
+
+void SweepTimeline::begin() {
     buffer_begin_ = 0;
     Cursor cursor;
     cursor.phase = SweepState::kRunning;
@@ -90,7 +104,7 @@ void SweepTimeline::locate_head(Cursor& cursor) const {
         return;
     }
     const IndexPair& first = pairs[cursor.next_pair];
-    if (tiles_.tiled()) {
+    if (tiles_.tiled() || listed_slots_ != nullptr) {
         locate_tiled_head(cursor);
         return;
     }
@@ -110,6 +124,16 @@ void SweepTimeline::locate_head(Cursor& cursor) const {
 // Out of line, so that the untiled path above stays as it was.
 __attribute__((noinline)) void SweepTimeline::locate_tiled_head(Cursor& cursor) const {
     const std::vector<IndexPair>& pairs = *pairs_;
+    if (listed_slots_ != nullptr) {
+        // The slot's hits: the following pairs given the same slot.
+        const std::vector<uint64_t>& slots = *listed_slots_;
+        const uint64_t slot = slots[cursor.next_pair];
+        uint64_t end = cursor.next_pair + 1;
+        while (end < slots.size() && slots[end] == slot) ++end;
+        cursor.head.slot = slot;
+        cursor.head.hits = static_cast<uint32_t>(end - cursor.next_pair);
+        return;
+    }
     const IndexPair& first = pairs[cursor.next_pair];
     // The slot's hits: the following pairs the same slot compares.
     const uint64_t slot = schedule_.pair_slot(first.first, first.second);

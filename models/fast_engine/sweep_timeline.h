@@ -49,6 +49,11 @@ public:
     // The vector must outlive the sweep and stay unchanged. Runs the first
     // segment.
     void start(uint32_t objects, const std::vector<IndexPair>& pairs);
+    // A sweep whose schedule the caller has placed (the grid board's): pair
+    // k leaves the front end in slot slots[k] (non-decreasing; pairs of one
+    // slot are that slot's lane hits) and the end marker in end_slot. Both
+    // vectors must outlive the sweep and stay unchanged.
+    void start_listed(const std::vector<IndexPair>& pairs, const std::vector<uint64_t>& slots, uint64_t end_slot);
     // The host read the full buffer: runs the next segment. Only while paused.
     void resume();
 
@@ -88,6 +93,7 @@ private:
 
     // Sets cursor.head to the slot of cursor.next_pair and its hits.
     void locate_head(Cursor& cursor) const;
+    // The same on a tiled board or from listed slots (out of the untiled path).
     void locate_tiled_head(Cursor& cursor) const;
     // Runs edges until the segment ends or `limit` edges into it; with
     // checkpoints, records a cursor every kCheckpointEvery events.
@@ -96,6 +102,8 @@ private:
     void drain_edges(Cursor& cursor, uint64_t k, uint32_t stall_per_edge) const;
     // Runs from `start` to the segment's end, keeping checkpoints.
     void run_segment(const Cursor& start);
+    // The first segment of a sweep whose pairs and slots are set.
+    void begin();
 
     uint32_t lanes_;
     uint64_t line_delay_;  // D: edges from issue to the collector
@@ -109,6 +117,7 @@ private:
     uint32_t objects_ = 0;
     uint64_t sweep_cycles_ = 0;  // S(N, m): the end marker's slot
     const std::vector<IndexPair>* pairs_ = nullptr;
+    const std::vector<uint64_t>* listed_slots_ = nullptr;  // start_listed's
     uint64_t buffer_begin_ = 0;
     std::vector<Cursor> checkpoints_;  // [0] is the segment's start
     Cursor end_;

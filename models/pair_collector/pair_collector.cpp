@@ -46,4 +46,15 @@ void PairCollector::push(uint32_t row, uint32_t first_column, uint64_t hits) {
     }
 }
 
+void PairCollector::push_pairs(const IndexPair* pairs, uint32_t count) {
+    uint32_t tail = fifo_head_ + fifo_level_;
+    if (tail >= fifo_depth_) tail -= fifo_depth_;
+    for (uint32_t k = 0; k < count; ++k) {
+        fifo_[tail] = pairs[k];
+        tail = tail + 1 == fifo_depth_ ? 0 : tail + 1;
+    }
+    fifo_level_ += count;
+    total_pairs_ += count;
+}
+
 }  // namespace cdvp

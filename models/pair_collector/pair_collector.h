@@ -41,6 +41,9 @@ public:
     // Pushes one pair per set bit of hits: bit k pairs row with first_column + k.
     // The caller guarantees popcount(hits) <= fifo_free().
     void push(uint32_t row, uint32_t first_column, uint64_t hits);
+    // Pushes `count` pairs as they are (a grid board's lanes pair boxes that
+    // are not neighbours in memory). The caller guarantees count <= fifo_free().
+    void push_pairs(const IndexPair* pairs, uint32_t count);
 
     // The pair buffer as the host reads it.
     uint32_t buffer_count() const { return static_cast<uint32_t>(buffer_.size()); }

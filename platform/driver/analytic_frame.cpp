@@ -24,6 +24,7 @@ AnalyticFrame::AnalyticFrame(const DriverConfig& driver, const BusTiming& bus, c
 }
 
 uint64_t AnalyticFrame::sweep_slots(uint32_t objects) const {
+    if (listed_slots_ != nullptr) return listed_end_;
     return board_.tiles.tiled() ? SweepSchedule(board_.m, board_.tiles, objects).slots()
                                 : AddressGenerator::sweep_cycles(objects, board_.m);
 }
@@ -60,14 +61,17 @@ SweepPlan AnalyticFrame::sweep_plan(uint32_t objects, uint64_t pairs) const {
 SweepPlan AnalyticFrame::sweep_plan(uint32_t objects, const PairList& pairs) const {
     SweepPlan plan = sweep_plan(objects, pairs.size());
     if (plan.pauses == 0) return plan;
-    const SweepSchedule schedule(board_.m, board_.tiles, objects);
+    const SweepSchedule schedule(board_.m, board_.tiles, listed_slots_ != nullptr ? 0 : objects);
+    const auto slot_of = [&](uint64_t q) {
+        return listed_slots_ != nullptr ? (*listed_slots_)[q] : schedule.pair_slot(pairs[q].first, pairs[q].second);
+    };
     const uint64_t latency = board_.pipeline_latency;
-    const uint64_t first_entry = schedule.pair_slot(pairs[0].first, pairs[0].second) + latency;
+    const uint64_t first_entry = slot_of(0) + latency;
     plan.pause_edges.resize(plan.pauses);
     uint64_t previous = 0;
     for (uint64_t k = 0; k < plan.pauses; ++k) {
         const uint64_t q = (k + 1) * plan.depth;
-        const uint64_t entry = schedule.pair_slot(pairs[q].first, pairs[q].second) + latency;
+        const uint64_t entry = slot_of(q) + latency;
         const uint64_t drained = first_entry + ceil_div(q, board_.drain_per_cycle);
         // Within the sweep's cycles, one edge at least after the pause before, one left for each after.
         const uint64_t edge = std::max(entry, drained) + 1 + k;

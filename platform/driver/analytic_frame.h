@@ -45,8 +45,17 @@ public:
     SweepPlan sweep_plan(uint32_t objects, uint64_t pairs) const;
     SweepPlan sweep_plan(uint32_t objects, const PairList& pairs) const;
 
-    // The address generator's slots: S(N, m), or the tiled schedule's.
+    // The address generator's slots: S(N, m), or the tiled schedule's, or
+    // the listed schedule's.
     uint64_t sweep_slots(uint32_t objects) const;
+    // A grid board's sweeps depend on its boxes (docs/grid_board.md): the
+    // caller places the next frame's pairs, pair k (board order) in slot
+    // slots[k], and its slots, end_slot; sweep_slots() and sweep_plan() take
+    // them until cleared (null). The vector must outlive those calls.
+    void set_listed_schedule(const std::vector<uint64_t>* slots, uint64_t end_slot) {
+        listed_slots_ = slots;
+        listed_end_ = end_slot;
+    }
     // Back-pressure stall edges, estimated: none while the drain keeps up
     // with the pairs; past that the drain is busy from the first pair to
     // the last, so the sweep's edges become pairs / drain.
@@ -65,6 +74,8 @@ private:
     const BusTiming& bus_;
     AnalyticBoard board_;
     PairCounter counter_;
+    const std::vector<uint64_t>* listed_slots_ = nullptr;
+    uint64_t listed_end_ = 0;
 };
 
 }  // namespace cdvp

@@ -24,21 +24,30 @@ BoardDriver::BoardDriver(HostPort& port, SimTime period_fs, const DriverConfig& 
 
 void BoardDriver::open() {
     PortExecutor& x = executor_;
-    if (x.read(R::kId) != R::kIdValue) throw std::runtime_error("no collision board answers at the BAR");
+    const uint32_t id = x.read(R::kId);
+    if (id != R::kIdValue && id != R::kGridIdValue) throw std::runtime_error("no collision board answers at the BAR");
+    const bool grid_board = id == R::kGridIdValue;
     const uint32_t capacity = x.read(R::kCapacity);
     const uint32_t buffer_depth = x.read(R::kPairBufferDepth);
     const uint32_t parallelism = x.read(R::kParallelism);
     const NumberFormat format = NumberFormat::from_register(x.read(R::kFormat));
     // Where the boxes sit bounds a sweep's cycles (the timeouts): block RAM,
-    // or SSRAM swept in tiles.
+    // or SSRAM swept in tiles; a grid board's SSRAM and grid.
     TileConfig tiles;
     tiles.boxes = x.read(R::kTileBoxes);
-    if (tiles.tiled()) {
+    if (tiles.tiled() || grid_board) {
         const uint32_t timing = x.read(R::kTileTiming);
         tiles.load_latency_cycles = timing & R::kTileTimingLatencyMask;
         tiles.cycles_per_box = timing >> R::kTileTimingCyclesShift;
     }
-    x.open(capacity, buffer_depth, parallelism, format, tiles);
+    std::optional<GridConfig> grid;
+    if (grid_board) {
+        grid.emplace();
+        grid->dims = x.read(R::kGridDims);
+        grid->cell_capacity = x.read(R::kGridCellCapacity);
+        grid->max_span = x.read(R::kGridMaxSpan);
+    }
+    x.open(capacity, buffer_depth, parallelism, format, tiles, grid);
     // Two banks pipeline frames; the host's bank is where the next upload goes.
     const uint32_t box_banks = x.read(R::kBoxBanks);
     const uint32_t host_bank = x.read(R::kHostBank);

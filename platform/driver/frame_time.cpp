@@ -1,5 +1,7 @@
 #include "platform/driver/frame_time.h"
 
+#include "models/grid_schedule/grid_slots.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -93,7 +95,8 @@ double FrameTime::any_upload_worst_ns(uint32_t objects) const {
 }
 
 uint64_t FrameTime::readback_bytes(uint64_t pairs, uint32_t objects) const {
-    return std::min<uint64_t>(4 * worst_encoded_words(config_.pair_format, pairs, objects, tiles_.row_pieces(objects)),
+    const uint64_t row_pieces = grid_ ? 0 : tiles_.row_pieces(objects);
+    return std::min<uint64_t>(4 * worst_encoded_words(config_.pair_format, pairs, objects, row_pieces),
                               address_map::kPairBufferSize);
 }
 
@@ -104,8 +107,10 @@ double FrameTime::dma_worst_ns(uint64_t bytes, Direction direction) const {
 // Every stall edge moves a pair, so a run between two events drains at most
 // one buffer beyond the sweep.
 uint64_t FrameTime::worst_run_cycles(uint32_t objects) const {
-    const uint64_t slots = tiles_.tiled() ? SweepSchedule(m_, tiles_, objects).slots()
-                                                 : AddressGenerator::sweep_cycles(objects, m_);
+    const uint64_t slots =
+        grid_ ? worst_grid_slots(objects, *grid_, {2 * m_ - 1, tiles_.cycles_per_box, tiles_.load_latency_cycles})
+        : tiles_.tiled() ? SweepSchedule(m_, tiles_, objects).slots()
+                         : AddressGenerator::sweep_cycles(objects, m_);
     return slots + buffer_depth_ + kPipelineSlack;
 }
 

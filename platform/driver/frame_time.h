@@ -5,9 +5,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "models/address_generator/tile_config.h"
+#include "models/grid_binning/grid_config.h"
 #include "models/pci/bus_timing.h"
 #include "platform/driver/driver_config.h"
 #include "platform/driver/host_port.h"
@@ -51,6 +53,10 @@ public:
     // delays each wait's end.
     FrameTime(const DriverConfig& config, const BusTiming& bus, SimTime period_fs, uint32_t m, uint32_t buffer_depth,
               const TileConfig& tiles, double quantum_ns = 0.0);
+    // A grid board (docs/grid_board.md): its sweep's worst case comes from
+    // its grid and its SSRAM's timing (tiles' latency and cycles a box), and a
+    // row's pairs may come in any number of runs.
+    void set_grid(const GridConfig& grid) { grid_ = grid; }
 
     // A wait gives up after config.timeout_factor x its worst case plus
     // config.timeout_floor_ns.
@@ -96,6 +102,7 @@ private:
     uint32_t buffer_depth_;
     TileConfig tiles_;
     double quantum_ns_;
+    std::optional<GridConfig> grid_;
 };
 
 }  // namespace cdvp

@@ -52,11 +52,12 @@ PortExecutor::PortExecutor(HostPort& port, SimTime period_fs, const DriverConfig
       bus_(bus ? std::move(bus) : std::make_shared<IdealBusTiming>()) {}
 
 void PortExecutor::open(uint32_t capacity, uint32_t buffer_depth, uint32_t parallelism, NumberFormat format,
-                        const TileConfig& tiles) {
+                        const TileConfig& tiles, const std::optional<GridConfig>& grid) {
     capacity_ = capacity;
     buffer_depth_ = buffer_depth;
     format_ = format;
     time_.emplace(config_, *bus_, period_, parallelism, buffer_depth_, tiles);
+    if (grid) time_->set_grid(*grid);
     if (port_.memory_size() < host_memory_bytes(capacity_, buffer_depth_, config_)) {
         throw std::runtime_error("host memory too small for the board's capacity and pair buffer");
     }

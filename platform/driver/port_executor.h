@@ -42,8 +42,9 @@ public:
     // The board as BoardDriver::open reads it: the host memory it needs (too
     // little fails), the timeouts, the bank the next upload goes to; every
     // bank's words unknown.
+    // A grid board's grid (its ID says so) bounds its sweeps instead of the tiles.
     void open(uint32_t capacity, uint32_t buffer_depth, uint32_t parallelism, NumberFormat format,
-              const TileConfig& tiles);
+              const TileConfig& tiles, const std::optional<GridConfig>& grid = std::nullopt);
     uint32_t capacity() const { return capacity_; }
     NumberFormat format() const { return format_; }
     void set_host_bank(uint32_t bank) { banks_.set_host_bank(bank); }

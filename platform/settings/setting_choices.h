@@ -61,6 +61,12 @@ struct Choices<BoxMemory> {
     static constexpr ChoiceName<BoxMemory> names[] = {
         {BoxMemory::kAuto, "auto"}, {BoxMemory::kBlockRam, "block_ram"}, {BoxMemory::kSsram, "ssram"}};
 };
+// What the board computes a sweep with (board.algorithm).
+template <>
+struct Choices<BoardAlgorithm> {
+    static constexpr ChoiceName<BoardAlgorithm> names[] = {{BoardAlgorithm::kAllPairs, "all_pairs"},
+                                                           {BoardAlgorithm::kGrid, "grid"}};
+};
 template <>
 struct Choices<DeviceFamily> {
     static constexpr ChoiceName<DeviceFamily> names[] = {

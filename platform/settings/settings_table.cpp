@@ -170,6 +170,7 @@ Setting user_pcie(Setting s) {
 
 using S = Settings;
 using B = BoardConfig;
+using G = GridConfig;
 using C = PciConfig;
 using E = PcieConfig;
 using L = LocalBusConfig;
@@ -232,6 +233,28 @@ std::vector<Setting> board_settings() {
                    "boxes a tile when SSRAM serves; 0: the largest whose buffers fit the device's block RAMs",
                    "0: as large as the device allows (fewer tiles, fewer loads)"),
              "tile-boxes", "T"),
+        choice<BoardAlgorithm>("board.algorithm", member(&S::board, &B::algorithm),
+                               "what computes a sweep: all_pairs (the seed's board: every pair through the "
+                               "2m-1 lanes) or grid (boxes binned into a uniform grid's cell lists in SSRAM, the "
+                               "lanes run inside each cell; docs/grid_board.md)",
+                               "all_pairs: the paper's board"),
+        count("board.grid.dims", "cells a side", 0, GridConfig::kMaxDims, member(&S::board, &B::grid, &G::dims),
+              "grid board: cells a side (dims^3 cells); 0: at each START the largest g with 16 g^3 <= N, about "
+              "sixteen boxes a cell",
+              "0: sixteen boxes a cell took the fewest sweep cycles on the spheres scene at 10^4 and 10^5 boxes on "
+              "both presets (docs/grid_board.md, Choosing the grid)"),
+        real("board.grid.cell_size", "coordinate units", 0, 1e30, member(&S::board, &B::grid, &G::cell_size),
+             "grid board: the edge of a cubic cell in the board's coordinates (scene units in float32, codes in "
+             "fixedK), from the frame's least bounds; 0: the grid fitted to each frame's bounds",
+             "0: fitted, so the grid covers the scene whatever its scale"),
+        count("board.grid.cell_capacity", "boxes", GridConfig::kMinCellCapacity, GridConfig::kMaxCellCapacity,
+              member(&S::board, &B::grid, &G::cell_capacity),
+              "grid board: boxes a cell list and the cell buffer hold; a box meeting a full cell is swept against "
+              "every box instead (counted as overflow)",
+              "512: one 512 x 36 block RAM deep, the seed's board's own limit"),
+        count("board.grid.max_span", "cells", 1, GridConfig::kMaxSpan, member(&S::board, &B::grid, &G::max_span),
+              "grid board: cells a binned box may cover; a box covering more is swept against every box",
+              "8: up to 2 x 2 x 2 cells, so the binning passes take at most 8 slots a box"),
     };
 }
 

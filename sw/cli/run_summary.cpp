@@ -122,9 +122,10 @@ void print_summary(std::ostream& out, const RunDescription& run, const RunTotals
     const BoardConfig& c = run.config;
     char line[512];
     // Names may be long and come from files: printed whole and escaped.
-    std::snprintf(line, sizeof line, ": m=%u (%u %s lanes), %.6g MHz, L=%u cycles, %u block RAMs for the boxes, %s %s\n", c.m,
+    std::snprintf(line, sizeof line, ": m=%u (%u %s lanes), %.6g MHz, L=%u cycles, %u block RAMs for the %s, %s %s\n", c.m,
                   c.lanes(), c.format.name().c_str(), c.clock_mhz, c.pipeline_latency(), run.block_rams,
-                  name_of(run.fidelity), run.fidelity == ModelLevel::kAnalytic ? "level" : "engine");
+                  c.grid_board() ? "cell buffer" : "boxes", name_of(run.fidelity),
+                  run.fidelity == ModelLevel::kAnalytic ? "level" : "engine");
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
     if (run.device_fit) print_resources(out, *run.device_fit);
     if (run.ssram) {
@@ -133,7 +134,15 @@ void print_summary(std::ostream& out, const RunDescription& run, const RunTotals
                       run.tiles, c.tiles.boxes, run.capacity, static_cast<unsigned long long>(run.load_wait_slots));
         out << line;
     }
-    out << "  frame  objects     pairs  S(N,m)+L  compute_cycles  stall_cycles  compute_us  total_us\n";
+    if (c.grid_board()) {
+        std::snprintf(line, sizeof line,
+                      "  grid board: %u cells a side at %u objects, cells of %u boxes, spans of %u cells (docs/grid_board.md)\n",
+                      c.grid.dims_for(run.capacity), run.capacity, c.grid.cell_capacity, c.grid.max_span);
+        out << line;
+    }
+    // A grid board's slots depend on its boxes: its frames show the slots it took.
+    out << (c.grid_board() ? "  frame  objects     pairs   slots+L" : "  frame  objects     pairs  S(N,m)+L")
+        << "  compute_cycles  stall_cycles  compute_us  total_us\n";
     for (const FrameStats& f : totals.shown()) {
         std::snprintf(line, sizeof line, "%7llu %8llu %9llu %9llu %15llu %13llu %11.2f %9.2f\n",
                       static_cast<unsigned long long>(f.frame), static_cast<unsigned long long>(f.objects),

@@ -146,8 +146,9 @@ void RunBudgets::check_time(uint64_t max_objects, uint64_t frames) const {
     const BoardConfig& board = shape_.board;
     const IdealBusTiming ideal;
     const BusTiming& bus = platform_.bus ? *platform_.bus : ideal;
-    const FrameTime time(platform_.driver, bus, fs_from_ns(1000.0 / board.clock_mhz), board.m,
-                         board.collector.buffer_depth, board.tiles, platform_.quantum_ns);
+    FrameTime time(platform_.driver, bus, fs_from_ns(1000.0 / board.clock_mhz), board.m,
+                   board.collector.buffer_depth, board.tiles, platform_.quantum_ns);
+    if (board.grid_board()) time.set_grid(board.grid);
     const auto n = static_cast<uint32_t>(max_objects);
     // Refused up front: a run that passes the limit even if no frame had a
     // pair. How many pairs the frames will have is not known before they run;

@@ -289,7 +289,7 @@ void check_pair_window(const FrameOrigin& origin, const SettingValues& values, u
     const PairFormat format = settings.driver.pair_format;
     const auto objects = static_cast<uint32_t>(max_objects);
     const uint64_t depth = settings.board.collector.buffer_depth;
-    const uint64_t words = worst_encoded_words(format, depth, objects, plan.tiles.row_pieces(objects));
+    const uint64_t words = worst_encoded_words(format, depth, objects, settings.board.grid_board() ? 0 : plan.tiles.row_pieces(objects));
     const uint64_t window = address_map::kPairBufferSize / 4;
     if (words <= window) return;
     throw InputError(values.where(*find_setting("driver.pair_format")) + ": a full pair buffer of " +
@@ -321,6 +321,7 @@ std::optional<std::string> check_scene_fits(const FrameOrigin& origin, const Set
     const MemoryPlan plan = plan_memory(values.settings(), max_objects);
     check_pair_window(origin, values, max_objects, plan);
     if (plan.ssram) check_ssram(origin, values, max_objects, plan);
+    check_grid_fits(values, max_objects, objects_origin(origin, values, max_objects));
     budgets.check_scene(max_objects, frame_count);
     std::optional<std::string> clock_warning = check_clock(values, max_objects);
     check_device_fits(origin, values, max_objects);

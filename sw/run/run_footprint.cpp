@@ -7,6 +7,7 @@
 #include "models/common/aabb.h"
 #include "models/fast_engine/pair_finder.h"
 #include "models/fast_engine/sweep_timeline.h"
+#include "models/grid_fast_engine/grid_search.h"
 #include "sw/scene/pairs_csv.h"
 #include "sw/scene/scene.h"
 #include "sw/scene/spheres.h"
@@ -146,7 +147,8 @@ Footprint estimate_footprint(const BudgetShape& shape, uint64_t objects, uint64_
     Footprint f;
     f.program = program_bytes(shape);
     f.boxes = objects * bytes_per_box(shape);
-    f.model = (shape.clocked ? shape.board.block_ram_bytes(objects) : 0) + schedule_bytes(shape.board, objects);
+    f.model = (shape.clocked ? shape.board.block_ram_bytes(objects) : 0) + schedule_bytes(shape.board, objects) +
+              (shape.board.grid_board() ? GridSearch::scratch_bytes(shape.board.grid, objects) : 0);
     f.frames = frames * bytes_per_frame(shape);
     f.per_pair = bytes_per_pair(shape);
     return f;

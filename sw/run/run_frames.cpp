@@ -187,7 +187,9 @@ private:
         }
         const PairList& kept = reference_->kept(check, result->pairs);
         if (r_.files.pairs) write_frame_pairs(r_.files.pairs->stream(), frame.number, to_id_pairs(frame, result->pairs));
-        FrameStats stats{frame.number, boxes.size(), result->pairs.size(), description_.config.sweep_cycles(boxes.size()),
+        FrameStats stats{frame.number, boxes.size(), result->pairs.size(),
+                         description_.config.swept_slots(boxes.size(), result->phases.compute_cycles,
+                                                         result->phases.stall_cycles),
                          0, result->phases, {}, sim_ns, check.extra};
         stats.load_wait_slots = load_wait_slots(description_, boxes.size());
         if (time_baselines_) {

@@ -117,7 +117,7 @@ RunDescription describe_run(BoardSetup& setup, uint32_t capacity, const RunBudge
     RunDescription run;
     run.capacity = capacity;
     const MemoryPlan memory = plan_memory(settings, capacity);
-    setup.platform.board.tiles = memory.tiles;
+    memory.apply(setup.platform.board);
     run.config = setup.platform.board;
     describe_memory(run, memory.ssram);
     run.board = setup.board;

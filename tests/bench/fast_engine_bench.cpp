@@ -18,42 +18,15 @@
 
 #include "models/fast_engine/fast_engine.h"
 #include "sw/baselines/soa_broad_phase.h"
-#include "sw/scene/conversion.h"
-#include "sw/scene/spheres.h"
+#include "tests/bench/spheres_frames.h"
 #include "tests/support/core_driver.h"
 
 namespace {
 
 constexpr std::size_t kFrames = 8;
 
-struct BenchFrame {
-    std::vector<cdvp::FloatBox> boxes;
-    std::array<std::vector<uint32_t>, cdvp::kCoordinates> words;
-    cdvp::CoordinateWords view() const {
-        cdvp::CoordinateWords view{};
-        for (uint32_t c = 0; c < cdvp::kCoordinates; ++c) view[c] = words[c].data();
-        return view;
-    }
-};
-
-const std::vector<BenchFrame>& frames(std::size_t n) {
-    static std::map<std::size_t, std::vector<BenchFrame>> cache;
-    auto it = cache.find(n);
-    if (it != cache.end()) return it->second;
-    cdvp::SpheresConfig config;
-    config.objects = n;
-    cdvp::SpheresScene scene(config);
-    std::vector<BenchFrame> made(kFrames);
-    for (BenchFrame& frame : made) {
-        frame.boxes = cdvp::to_float_boxes(scene.next().boxes);
-        for (const cdvp::FloatBox& box : frame.boxes) {
-            for (uint32_t c = 0; c < cdvp::kCoordinates; ++c) {
-                frame.words[c].push_back(cdvp::ComparisonUnit::as_bits(c < 3 ? box.min[c] : box.max[c - 3]));
-            }
-        }
-    }
-    return cache.emplace(n, std::move(made)).first->second;
-}
+using cdvp::bench::BenchFrame;
+const std::vector<BenchFrame>& frames(std::size_t n) { return cdvp::bench::spheres_frames(n, kFrames); }
 
 // The paper's board: m = 24, other settings at their defaults.
 cdvp::BoardConfig paper_board() {

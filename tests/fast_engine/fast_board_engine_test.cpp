@@ -12,12 +12,6 @@
 namespace cdvp {
 namespace {
 
-CoordinateStore store_of(const testing::WordScene& scene) {
-    CoordinateStore store;
-    for (uint32_t c = 0; c < kCoordinates; ++c) store[c] = scene.words[c];
-    return store;
-}
-
 BoardConfig small_board(uint32_t m, uint32_t buffer) {
     BoardConfig config;
     config.m = m;
@@ -26,38 +20,12 @@ BoardConfig small_board(uint32_t m, uint32_t buffer) {
     return config;
 }
 
-// The buffer's valid entries after `edges` edges of the segment.
-PairList buffer_of(BoardEngine& engine, uint64_t edges) {
-    PairList pairs;
-    const uint32_t count = engine.counters_after(edges).buffered;
-    for (uint32_t k = 0; k < count; ++k) pairs.push_back(engine.buffer_entry(k));
-    return pairs;
-}
-
 // Both engines through the seam, with the clocked one asked first at each
 // edge (it steps there) and the fast one after.
 void expect_same_engines(const BoardConfig& config, const testing::WordScene& scene, std::mt19937& rng) {
-    const CoordinateStore store = store_of(scene);
     ClockedEngine clocked(config, scene.size());
     FastBoardEngine fast(config);
-    clocked.start(store, scene.size());
-    fast.start(store, scene.size());
-    for (int segment = 1;; ++segment) {
-        const uint64_t edges = fast.segment_edges();
-        std::uniform_int_distribution<uint64_t> pick(0, edges);
-        for (int probe = 0; probe < 40; ++probe) {
-            const uint64_t at = pick(rng);
-            ASSERT_EQ(clocked.ended_by(at), fast.ended_by(at)) << "segment " << segment << " edge " << at;
-            ASSERT_EQ(clocked.counters_after(at), fast.counters_after(at)) << "segment " << segment << " edge " << at;
-        }
-        ASSERT_EQ(clocked.segment_edges(), edges) << "segment " << segment;
-        ASSERT_EQ(clocked.segment_finishes(), fast.segment_finishes()) << "segment " << segment;
-        ASSERT_EQ(clocked.counters_after(edges + 5), fast.counters_after(edges + 5)) << "past the end";
-        ASSERT_EQ(buffer_of(clocked, edges), buffer_of(fast, edges)) << "segment " << segment;
-        if (fast.segment_finishes()) return;
-        clocked.resume();
-        fast.resume();
-    }
+    testing::expect_same_engines(clocked, fast, scene, rng);
 }
 
 TEST(FastBoardEngine, AnswersAsTheClockedEngine) {
@@ -91,26 +59,9 @@ TEST(FastBoardEngine, AnswersAsTheClockedEngineInEveryFormat) {
 TEST(FastBoardEngine, AbortKeepsTheBufferOfThatEdge) {
     std::mt19937 rng(22);
     const auto scene = testing::overlapping_scene(150, rng);
-    const CoordinateStore store = store_of(scene);
     const BoardConfig config = small_board(4, 500);
-    for (int trial = 0; trial < 20; ++trial) {
-        ClockedEngine clocked(config, scene.size());
-        FastBoardEngine fast(config);
-        clocked.start(store, scene.size());
-        fast.start(store, scene.size());
-        if (trial % 2 == 1) {  // abort in the second segment
-            clocked.segment_edges();
-            clocked.resume();
-            fast.resume();
-        }
-        const uint64_t at = std::uniform_int_distribution<uint64_t>(0, fast.segment_edges() + 3)(rng);
-        clocked.abort(at);
-        fast.abort(at);
-        EXPECT_EQ(buffer_of(clocked, at), buffer_of(fast, at)) << "abort at edge " << at;
-        EXPECT_EQ(clocked.counters_after(at), fast.counters_after(at)) << "abort at edge " << at;
-        EXPECT_FALSE(fast.segment_finishes());
-        EXPECT_TRUE(fast.ended_by(at));
-    }
+    testing::expect_same_aborts([&] { return std::make_unique<ClockedEngine>(config, scene.size()); },
+                                [&] { return std::make_unique<FastBoardEngine>(config); }, scene, rng);
 }
 
 }  // namespace

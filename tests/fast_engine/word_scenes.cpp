@@ -246,4 +246,62 @@ uint32_t expect_lockstep(const BoardConfig& config, const WordScene& scene, uint
     }
 }
 
+CoordinateStore store_of(const WordScene& scene) {
+    CoordinateStore store;
+    for (uint32_t c = 0; c < kCoordinates; ++c) store[c] = scene.words[c];
+    return store;
+}
+
+PairList buffer_of(BoardEngine& engine, uint64_t edges) {
+    PairList pairs;
+    const uint32_t count = engine.counters_after(edges).buffered;
+    for (uint32_t k = 0; k < count; ++k) pairs.push_back(engine.buffer_entry(k));
+    return pairs;
+}
+
+void expect_same_engines(BoardEngine& reference, BoardEngine& other, const WordScene& scene, std::mt19937& rng,
+                         int probes) {
+    const CoordinateStore store = store_of(scene);
+    reference.start(store, scene.size());
+    other.start(store, scene.size());
+    for (int segment = 1;; ++segment) {
+        const uint64_t edges = other.segment_edges();
+        std::uniform_int_distribution<uint64_t> pick(0, edges);
+        for (int probe = 0; probe < probes; ++probe) {
+            const uint64_t at = pick(rng);
+            ASSERT_EQ(reference.ended_by(at), other.ended_by(at)) << "segment " << segment << " edge " << at;
+            ASSERT_EQ(reference.counters_after(at), other.counters_after(at)) << "segment " << segment << " edge " << at;
+        }
+        ASSERT_EQ(reference.segment_edges(), edges) << "segment " << segment;
+        ASSERT_EQ(reference.segment_finishes(), other.segment_finishes()) << "segment " << segment;
+        ASSERT_EQ(reference.counters_after(edges + 5), other.counters_after(edges + 5)) << "past the end";
+        ASSERT_EQ(buffer_of(reference, edges), buffer_of(other, edges)) << "segment " << segment;
+        if (other.segment_finishes()) return;
+        reference.resume();
+        other.resume();
+    }
+}
+
+void expect_same_aborts(const MakeEngine& make_reference, const MakeEngine& make_other, const WordScene& scene,
+                        std::mt19937& rng, int trials) {
+    const CoordinateStore store = store_of(scene);
+    for (int trial = 0; trial < trials; ++trial) {
+        const std::unique_ptr<BoardEngine> reference = make_reference(), other = make_other();
+        reference->start(store, scene.size());
+        other->start(store, scene.size());
+        if (trial % 2 == 1) {  // abort in the second segment
+            reference->segment_edges();
+            reference->resume();
+            other->resume();
+        }
+        const uint64_t at = std::uniform_int_distribution<uint64_t>(0, other->segment_edges() + 3)(rng);
+        reference->abort(at);
+        other->abort(at);
+        EXPECT_EQ(buffer_of(*reference, at), buffer_of(*other, at)) << "abort at edge " << at;
+        EXPECT_EQ(reference->counters_after(at), other->counters_after(at)) << "abort at edge " << at;
+        EXPECT_FALSE(other->segment_finishes());
+        EXPECT_TRUE(other->ended_by(at));
+    }
+}
+
 }  // namespace cdvp::testing

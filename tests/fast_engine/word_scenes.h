@@ -4,10 +4,13 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <random>
 #include <vector>
 
 #include "models/board_spec/board_config.h"
+#include "models/board_spec/board_engine.h"
 #include "models/fast_engine/pair_finder.h"
 
 namespace cdvp::testing {
@@ -51,5 +54,22 @@ PairList lane_hit_pairs(const WordScene& scene, NumberFormat format = NumberForm
 // Returns the number of segments (pauses + 1); failures are gtest failures.
 uint32_t expect_lockstep(const BoardConfig& config, const WordScene& scene, uint32_t probes_per_segment,
                          std::mt19937& rng);
+
+// The scene as the board's coordinate memories hold it.
+CoordinateStore store_of(const WordScene& scene);
+// The buffer's valid entries after `edges` edges of the segment.
+PairList buffer_of(BoardEngine& engine, uint64_t edges);
+// Two engines of one board through the seam, segment by segment: at
+// `probes` random edges whether the segment has ended and the counters,
+// then its end, how it ends, the counters past it and the whole buffer.
+// The reference is asked first at each edge (a clocked one steps there).
+void expect_same_engines(BoardEngine& reference, BoardEngine& other, const WordScene& scene, std::mt19937& rng,
+                         int probes = 40);
+
+// ABORT at a random edge of the first or the second segment, over `trials`
+// pairs of engines made afresh: the buffer and the counters at that edge agree.
+using MakeEngine = std::function<std::unique_ptr<BoardEngine>()>;
+void expect_same_aborts(const MakeEngine& reference, const MakeEngine& other, const WordScene& scene,
+                        std::mt19937& rng, int trials = 20);
 
 }  // namespace cdvp::testing

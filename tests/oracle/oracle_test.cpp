@@ -1,6 +1,7 @@
-// The board model and the all-pairs baselines against CGAL on the original
-// doubles: every CGAL pair is found, and an extra pair only where the
-// double-to-float conversion widens a box enough to bridge the gap.
+// The board model (the seed's all-pairs board and the grid board) and the
+// all-pairs baselines against CGAL on the original doubles: every CGAL pair is
+// found, and an extra pair only where the double-to-float conversion widens a
+// box enough to bridge the gap.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -102,6 +103,10 @@ Outcome check_scene(const std::vector<Box>& boxes, uint32_t m = 16) {
     BoardCore core(config, static_cast<uint32_t>(boxes.size()));
     const PairList board = sorted(testing::run_core(core, float_boxes).pairs);
     Outcome outcome{oracle.size(), expect_oracle_subset("board", boxes, float_boxes, oracle, board), board};
+    // The grid board (docs/grid_board.md) finds the all-pairs board's pairs exactly.
+    config.algorithm = BoardAlgorithm::kGrid;
+    BoardCore grid(config, static_cast<uint32_t>(boxes.size()), Fidelity::kFast);
+    EXPECT_EQ(board, sorted(testing::run_core(grid, float_boxes).pairs)) << "the grid board and the board differ";
     for (const char* name : {"soa", "brute"}) {
         PairList found;
         make_broad_phase(name)->find_pairs(float_boxes, found);

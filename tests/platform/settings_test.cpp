@@ -127,6 +127,7 @@ void expect_choice_round_trip(const char* name) {
 
 TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     expect_choice_round_trip<BoxMemory>("board.memory");
+    expect_choice_round_trip<BoardAlgorithm>("board.algorithm");
     expect_choice_round_trip<DeviceFamily>("device.family");
     expect_choice_round_trip<BusType>("bus.type");
     expect_choice_round_trip<Transfer>("run.transfer");
@@ -143,7 +144,7 @@ TEST(SettingsTable, ChoicesRoundTripThroughTheirNames) {
     expect_choice_round_trip<InterruptPolicy>("driver.interrupts");
     int choices = 0;
     for (const Setting& s : settings_table()) choices += s.type == SettingType::kChoice ? 1 : 0;
-    EXPECT_EQ(15, choices) << "a new choice setting: add it above";
+    EXPECT_EQ(16, choices) << "a new choice setting: add it above";
     // The engines' own names are the setting's, and each level but the analytic one runs the engine of its name.
     for (const ChoiceName<Fidelity>& c : Choices<Fidelity>::names) EXPECT_STREQ(c.name, to_string(c.value));
     for (const ChoiceName<ModelLevel>& c : Choices<ModelLevel>::names) {

@@ -150,13 +150,15 @@ TEST(RtlLockstepCheck, StopsAtTheFirstDifferenceWithItsCycleAndSignal) {
 // What the RTL cannot run at all is refused in one line saying why, before
 // any model is looked for (a board any variant could serve compiles one).
 TEST(RtlVariants, ABoardTheRtlCannotRunIsRefusedSayingWhy) {
-    BoardConfig two_banks, fast_drain, slow_tiles;
+    BoardConfig two_banks, fast_drain, slow_tiles, grid;
     two_banks.box_banks = 2;
+    grid.algorithm = BoardAlgorithm::kGrid;  // its blocks have no RTL (docs/grid_board.md)
     fast_drain.collector.drain_per_cycle = 4;
     slow_tiles.tiles.boxes = 64;
     slow_tiles.tiles.cycles_per_box = 2;
     const std::pair<BoardConfig, const char*> refused[] = {
-        {two_banks, "one box bank"}, {fast_drain, "one pair a cycle"}, {slow_tiles, "in one cycle"}};
+        {two_banks, "one box bank"}, {fast_drain, "one pair a cycle"}, {slow_tiles, "in one cycle"},
+        {grid, "grid board (board.algorithm grid) has no RTL"}};
     for (const auto& [config, why] : refused) {
         EXPECT_NE(rtl_unsupported(config).find(why), std::string::npos) << why;
         try {

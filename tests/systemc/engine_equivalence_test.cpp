@@ -28,6 +28,7 @@ struct Variant {
     double poll_gap_ns;
     uint32_t tile_boxes = 0;  // 0: boxes in block RAM; else SSRAM tiles of this many boxes
     NumberFormat format = NumberFormat::float32();
+    uint32_t grid_cell_capacity = 0;  // 0: the all-pairs board; else a grid board with cells this deep
 };
 
 PlatformConfig platform_for(const Variant& v, Fidelity fidelity) {
@@ -40,6 +41,10 @@ PlatformConfig platform_for(const Variant& v, Fidelity fidelity) {
     config.driver.wait = (v.irq) ? WaitMode::kIrq : WaitMode::kPoll;
     config.driver.poll_gap_ns = v.poll_gap_ns;
     config.board.tiles.boxes = v.tile_boxes;
+    if (v.grid_cell_capacity != 0) {
+        config.board.algorithm = BoardAlgorithm::kGrid;
+        config.board.grid.cell_capacity = v.grid_cell_capacity;
+    }
     config.fidelity = fidelity;
     return config;
 }
@@ -182,6 +187,30 @@ TEST(EngineEquivalence, TiledBoardsOverModesTilesAndTinyBuffers) {
                                        160, scenes);
     EXPECT_GT(t.pairs, 2000u) << "scenes with pairs to find";
     EXPECT_GT(t.pauses, 500u) << "overflow pauses, some at tile borders";
+    EXPECT_GT(t.stalls, 500u) << "back-pressure and drain";
+}
+
+// The grid board (docs/grid_board.md) through the whole platform: its
+// binning passes, cell sweeps, large boxes (a slab through every scene, and
+// cells of a few boxes overflowing) and pauses, over modes and formats; the
+// driver opens it by its ID and times out by its worst case.
+TEST(EngineEquivalence, GridBoardsOverModesFormatsAndTinyBuffers) {
+    std::mt19937 rng(80);
+    std::vector<std::vector<FloatBox>> scenes;
+    for (uint32_t n : {0u, 1u, 2u, 3u, 60u, 400u, 900u}) {
+        std::vector<FloatBox> boxes = testing::random_boxes(n, 1.5f * std::cbrt(static_cast<float>(n) + 1), 2.0f, rng);
+        if (n > 50) boxes.push_back(FloatBox{{-1e3f, -1e3f, 0.0f}, {1e3f, 1e3f, 0.5f}});
+        scenes.push_back(std::move(boxes));
+    }
+    scenes.push_back(std::vector<FloatBox>(50, FloatBox{{0, 0, 0}, {1, 1, 1}}));
+    const Totals t = expect_equivalent({{"g_dma_irq_m8", 8, 0, 262144, true, true, 0, 0, NumberFormat::float32(), 512},
+                                        {"g_pio_poll_m3", 3, 5, 7, false, false, 29, 0, NumberFormat::float32(), 6},
+                                        {"g_dma_poll_m1", 1, 1, 2, true, false, 11, 0, NumberFormat::float32(), 16},
+                                        {"g_fixed9_m4", 4, 7, 5, true, true, 0, 0, NumberFormat::fixed(9), 8},
+                                        {"g_fixed24_m2", 2, 3, 3, false, true, 0, 0, NumberFormat::fixed(24), 40}},
+                                       901, scenes);
+    EXPECT_GT(t.pairs, 2000u) << "scenes with pairs to find";
+    EXPECT_GT(t.pauses, 500u) << "overflow pauses";
     EXPECT_GT(t.stalls, 500u) << "back-pressure and drain";
 }
 

@@ -64,6 +64,37 @@ TEST(FrameTime, BoundsWhatEveryFrameTakesThroughThePlatform) {
     }
 }
 
+// A grid board's frames, spread and all in one cell (its cells overflow
+// into the large sweep), stay within the bound taken from its registers.
+TEST(FrameTime, BoundsWhatGridFramesTakeThroughThePlatform) {
+    const Variant variants[] = {{"grid_dma_irq", true, true, Fidelity::kCycle, 0},
+                                {"grid_pio_poll_fast", false, false, Fidelity::kFast, 0}};
+    std::vector<std::unique_ptr<VirtualBoard>> platforms;
+    std::vector<PlatformConfig> configs;
+    for (const Variant& v : variants) {
+        PlatformConfig config = platform_config(v);
+        config.board.algorithm = BoardAlgorithm::kGrid;
+        config.board.grid.cell_capacity = 16;
+        configs.push_back(config);
+        platforms.push_back(std::make_unique<VirtualBoard>(v.name, config, 400));
+    }
+    std::mt19937 rng(13);
+    const std::vector<std::vector<FloatBox>> scenes{testing::random_boxes(400, 14.0f, 3.0f, rng),
+                                                    std::vector<FloatBox>(120, FloatBox{{0, 0, 0}, {1, 1, 1}})};
+    for (const std::vector<FloatBox>& boxes : scenes) {
+        for (std::size_t k = 0; k < platforms.size(); ++k) {
+            const FrameResult& result = platforms[k]->run_frame(boxes);
+            FrameTime time(configs[k].driver, platforms[k]->bus_timing(), platforms[k]->board().period().value(),
+                           configs[k].board.m, configs[k].board.collector.buffer_depth, configs[k].board.tiles,
+                           configs[k].quantum_ns);
+            time.set_grid(configs[k].board.grid);
+            const auto n = static_cast<uint32_t>(boxes.size());
+            EXPECT_LE(result.phases.total_ns, time.frame_bound_ns(n, result.pairs.size())) << variants[k].name << " n=" << n;
+            EXPECT_GT(result.phases.overflow_pauses, 2u) << variants[k].name << " n=" << n;
+        }
+    }
+}
+
 TEST(FrameTime, QuotesSecondsToTheMillisecond) {
     EXPECT_EQ(simulated_seconds(ns_from_fs(kSimulatedTimeLimit)), "9223.372 s");
     EXPECT_EQ(simulated_seconds(1.5e6), "0.002 s");

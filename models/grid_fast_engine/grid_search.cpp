@@ -1,0 +1,268 @@
+#include "models/grid_fast_engine/grid_search.h"
+
+#include <algorithm>
+
+#include "models/comparison_unit/comparison_unit.h"
+
+namespace cdvp {
+
+GridSearch::GridSearch(const BoardConfig& config, PairBudget budget)
+    : config_((config.validate(), config)), slots_(config.grid_slots()), budget_(budget) {}
+
+void GridSearch::Tile::resize(uint32_t n) {
+    if (index.size() >= n) return;
+    for (auto& column : key) column.resize(n);
+    index.resize(n);
+}
+
+void GridSearch::Tile::take(uint32_t at, const Box& b) {
+    for (uint32_t c = 0; c < kCoordinates; ++c) key[c][at] = b.key[c];
+    index[at] = b.index;
+}
+
+bool GridSearch::Tile::hit(const Box& row, uint32_t b) const {
+    const uint32_t* r = row.key;
+    return (r[kMinX] <= key[kMaxX][b]) & (key[kMinX][b] <= r[kMaxX]) & (r[kMinY] <= key[kMaxY][b]) &
+           (key[kMinY][b] <= r[kMaxY]) & (r[kMinZ] <= key[kMaxZ][b]) & (key[kMinZ][b] <= r[kMaxZ]);
+}
+
+uint64_t GridSearch::run(uint32_t objects, const CoordinateWords& words, PairList& pairs,
+                         std::vector<uint64_t>& slots) {
+    pairs.clear();
+    slots.clear();
+    stats_ = GridSweepStats{};
+    large_.clear();
+    if (objects < 2) return 0;  // no sweep, as on the seed's board
+    const uint64_t placed = bin(objects, words);
+    const uint64_t cells_end = sweep_cells(placed, pairs, slots);
+    stats_.slots = sweep_large(cells_end, objects, pairs, slots);
+    return stats_.slots;
+}
+
+uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
+    const NumberFormat format = config_.format;
+    const GridConfig& grid = config_.grid;
+    boxes_.resize(objects);
+    // A box's keys, and whether a word of it is excluded (a NaN).
+    const auto keys_of = [&](uint32_t i, uint32_t (&keys)[kCoordinates]) {
+        bool excluded = false;
+        for (uint32_t c = 0; c < kCoordinates; ++c) {
+            const uint32_t word = words[c][i];
+            excluded |= format.excluded(word);
+            keys[c] = format.key(word);
+        }
+        return excluded;
+    };
+    // Pass 1: the bounds.
+    GridBounds bounds(format);
+    for (uint32_t i = 0; i < objects; ++i) {
+        uint32_t keys[kCoordinates];
+        if (!keys_of(i, keys)) bounds.add(keys);
+    }
+    grid_ = bounds.geometry(grid, grid.dims_for(objects));
+    stats_.dims = grid_.dims();
+    // Pass 2's verdicts that need no count (excluded, inverted, spanning),
+    // and each cell's boxes and first boxes were every candidate binned.
+    const uint64_t cells = grid_.cells();
+    first_words_.assign(cells + 1, 0);
+    cell_words_.assign(cells, 0);
+    uint64_t count_slots = 0, entries = 0;
+    uint32_t candidates = 0, fullest = 0;
+    for (uint32_t i = 0; i < objects; ++i) {
+        Box& b = boxes_[i];
+        b.kind = keys_of(i, b.key) ? Kind::kExcluded : Kind::kBinned;
+        b.index = i;
+        uint64_t covered = 0;
+        if (b.kind == Kind::kExcluded) {
+            ++stats_.excluded_boxes;
+        } else if (grid_.classify(b.key, grid.max_span, b.range) == BoxClass::kCandidate) {
+            covered = b.range.cells();
+            ++candidates;
+            entries += covered;
+            ++first_words_[grid_.linear(b.range.lo[0], b.range.lo[1], b.range.lo[2]) + 1];
+            CellTable::for_each_cell(b.range, grid_, [&](uint64_t c) { fullest = std::max(fullest, ++cell_words_[c]); });
+        } else {
+            b.kind = Kind::kLarge;
+            large_.push_back(i);
+        }
+        count_slots += slots_.box(covered);  // a candidate's counts are read whether it fits or not
+    }
+    // No cell fills and the entries fit: every candidate binned, whatever
+    // the order (pass 3 touches the cells pass 2 read); else box by box.
+    const bool in_any_order = fullest <= grid.cell_capacity && entries <= grid.entry_capacity;
+    if (in_any_order) bin_sorted(candidates, entries);
+    const uint64_t place_slots = in_any_order ? count_slots : bin_in_order(objects);
+    stats_.large_boxes = static_cast<uint32_t>(large_.size());
+    return slots_.bounds(objects) + GridSlots::setup() + slots_.pass(count_slots) + grid_.cells() +
+           slots_.pass(place_slots);
+}
+
+void GridSearch::bin_sorted(uint32_t candidates, uint64_t entries) {
+    const uint64_t cells = grid_.cells();
+    // The candidates by first cell, a stable counting sort.
+    for (uint64_t c = 1; c <= cells; ++c) first_words_[c] += first_words_[c - 1];
+    placed_.resize(candidates);
+    place_of_.resize(boxes_.size());
+    for (const Box& b : boxes_) {
+        if (b.kind != Kind::kBinned) continue;
+        const uint32_t at = first_words_[grid_.linear(b.range.lo[0], b.range.lo[1], b.range.lo[2])]++;
+        placed_[at] = b;
+        place_of_[b.index] = at;
+    }
+    // The scan, then the place pass in first-cell order: positions in placed_.
+    busy_.clear();
+    lists_.resize(entries);
+    uint32_t next = 0;
+    for (uint64_t c = 0; c < cells; ++c) {
+        const uint32_t n = cell_words_[c];
+        cell_words_[c] = next;
+        if (n >= 2) busy_.push_back({static_cast<uint32_t>(c), next, n});
+        next += n;
+    }
+    // In index order, as the board places them, so each list is in index order.
+    for (const Box& b : boxes_) {
+        if (b.kind != Kind::kBinned) continue;
+        const uint32_t at = place_of_[b.index];
+        CellTable::for_each_cell(b.range, grid_, [&](uint64_t c) { lists_[cell_words_[c]++] = at; });
+    }
+    sorted_lists_ = true;
+    stats_.cell_entries = entries;
+    stats_.busy_cells = static_cast<uint32_t>(busy_.size());
+}
+
+uint64_t GridSearch::bin_in_order(uint32_t objects) {
+    const GridConfig& grid = config_.grid;
+    table_.reset(grid_.cells(), grid.cell_capacity, grid.entry_capacity);
+    large_.clear();
+    for (uint32_t i = 0; i < objects; ++i) {
+        Box& b = boxes_[i];
+        if (b.kind == Kind::kBinned && !table_.count(b.range, grid_)) {
+            b.kind = Kind::kLarge;
+            ++stats_.overflow_boxes;
+        }
+        if (b.kind == Kind::kLarge) large_.push_back(i);
+    }
+    stats_.cell_entries = table_.entries();
+    table_.scan();
+    uint64_t place_slots = 0;
+    for (uint32_t i = 0; i < objects; ++i) {
+        const Box& b = boxes_[i];
+        const bool binned = b.kind == Kind::kBinned;
+        if (binned) table_.place(i, b.range, grid_);
+        place_slots += slots_.box(binned ? b.range.cells() : 0);
+    }
+    sorted_lists_ = false;
+    stats_.busy_cells = static_cast<uint32_t>(table_.busy_cells().size());
+    return place_slots;
+}
+
+void GridSearch::sweep_cell(const BusyCell& cell, uint64_t row_start, PairList& pairs, std::vector<uint64_t>& slots) {
+    const uint32_t n = cell.count, dims = grid_.dims(), lanes = slots_.lanes;
+    const uint32_t here[3] = {cell.cell % dims, cell.cell / dims % dims, cell.cell / dims / dims};
+    // The keys as BlockTest compares them, four columns at a time; and, up to
+    // 64 boxes, which start here on each axis: the one-cell rule keeps a pair
+    // only if, on every axis, one of its two boxes starts here, so only the
+    // groups of columns holding such a partner are tested.
+    const bool masked = n <= 64;
+    uint64_t starts[3] = {};
+    for (uint32_t k = 0; k < n; ++k) {
+        const Box& b = *cell_boxes_[k];
+        for (uint32_t c = 0; c < kCoordinates; ++c) cell_columns_.bound[c][k] = static_cast<int32_t>(b.key[c] ^ 0x8000'0000u);
+        if (masked) {
+            for (uint32_t a = 0; a < 3; ++a) starts[a] |= uint64_t{b.range.lo[a] == here[a]} << k;
+        }
+    }
+    const uint64_t all = masked ? ~uint64_t{0} >> (64 - n) : ~uint64_t{0};
+    for (uint32_t r = 0; r + 1 < n; ++r) {
+        const Box& a = *cell_boxes_[r];
+        uint64_t partners = all;  // the columns the rule may keep beside row r (masked cells)
+        if (masked) {
+            for (uint32_t x = 0; x < 3; ++x) partners &= (starts[x] >> r & 1) != 0 ? all : starts[x];
+            partners &= ~uint64_t{0} << (r + 1);
+        }
+        if (partners != 0) {
+            int32_t row[kCoordinates];
+            cell_columns_.get(r, row);
+            const BlockTest test(cell_columns_, row);
+            // Groups of four columns from each next partner (masked), or all after r.
+            for (uint32_t q0 = masked ? static_cast<uint32_t>(__builtin_ctzll(partners)) : r + 1; q0 < n;) {
+                const uint32_t wanted = masked ? static_cast<uint32_t>(partners >> q0) & 0xFu : 0xFu;
+                const uint32_t found = test.hits(q0) & wanted & block_mask_before(q0, n);
+                const uint32_t group = q0;
+                if (masked) {
+                    partners &= ~(uint64_t{0xF} << q0);
+                    q0 = partners != 0 ? static_cast<uint32_t>(__builtin_ctzll(partners)) : n;
+                } else {
+                    q0 += BoxColumns::kBlock;
+                }
+                for (uint32_t hits = found; hits != 0; hits &= hits - 1) {
+                    const uint32_t c = group + static_cast<uint32_t>(__builtin_ctz(hits));
+                    const Box& b = *cell_boxes_[c];
+                    // The one-cell rule (masked cells kept only such partners).
+                    bool keep = true;
+                    if (!masked) {
+                        for (uint32_t x = 0; x < 3; ++x) keep &= a.range.lo[x] == here[x] || b.range.lo[x] == here[x];
+                    }
+                    if (keep) add(pairs, slots, {a.index, b.index}, row_start + (c - r - 1) / lanes);
+                }
+            }
+        }
+        row_start += (n - 1 - r + lanes - 1) / lanes;  // row r's slots: ceil((n-1-r) / w)
+    }
+}
+
+uint64_t GridSearch::sweep_cells(uint64_t begin, PairList& pairs, std::vector<uint64_t>& slots) {
+    CellBlocks blocks(slots_, begin);
+    const uint32_t capacity = config_.grid.cell_capacity;
+    cell_columns_.resize(capacity);
+    cell_boxes_.resize(capacity);
+    if (!sorted_lists_) {
+        // Lists of box indices in index order, as the board's.
+        for (const BusyCell& cell : table_.busy_cells()) {
+            const uint32_t* list = table_.list(cell);
+            for (uint32_t k = 0; k < cell.count; ++k) cell_boxes_[k] = &boxes_[list[k]];
+            sweep_cell(cell, blocks.add(cell.count), pairs, slots);
+        }
+        return blocks.end();
+    }
+    for (const BusyCell& cell : busy_) {
+        const uint32_t* list = lists_.data() + cell.first;
+        for (uint32_t k = 0; k < cell.count; ++k) cell_boxes_[k] = &placed_[list[k]];
+        sweep_cell(cell, blocks.add(cell.count), pairs, slots);
+    }
+    return blocks.end();
+}
+
+uint64_t GridSearch::sweep_large(uint64_t begin, uint32_t objects, PairList& pairs, std::vector<uint64_t>& slots) {
+    const auto large = static_cast<uint32_t>(large_.size());
+    const uint32_t capacity = config_.grid.cell_capacity;
+    const uint32_t lanes = slots_.lanes;
+    uint64_t at = begin;
+    for (uint32_t tile_begin = 0; tile_begin < large; tile_begin += capacity) {
+        const uint32_t n = std::min(large - tile_begin, capacity);
+        tile_.resize(n);
+        for (uint32_t p = 0; p < n; ++p) tile_.take(p, boxes_[large_[tile_begin + p]]);
+        at += slots_.tile_lead(n);
+        uint32_t rank = 0;  // large boxes before j
+        for (uint32_t j = 0; j < objects; ++j) {
+            const Box& row = boxes_[j];
+            uint32_t first = n;  // no columns
+            if (row.kind == Kind::kBinned) {
+                first = 0;
+            } else if (row.kind == Kind::kLarge) {
+                // Only the tile's boxes after j: each pair of large boxes once.
+                const uint32_t after = ++rank;
+                first = after <= tile_begin ? 0 : std::min(after - tile_begin, n);
+            }
+            for (uint32_t p = first; p < n; ++p) {
+                if (!tile_.hit(row, p)) continue;
+                const uint32_t l = tile_.index[p];
+                add(pairs, slots, {std::min(j, l), std::max(j, l)}, at + (p - first) / lanes);
+            }
+            at += slots_.stream_box(n - first);
+        }
+    }
+    return at;
+}
+
+}  // namespace cdvp

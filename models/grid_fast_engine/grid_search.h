@@ -1,0 +1,112 @@
+// The grid board's sweep as results (docs/grid_board.md): the binning passes
+// in bulk, then each busy cell's pairs and each large tile's, in the board's
+// order, each with the slot in which the board compares it. The clocked
+// engine finds the same by walking the passes slot by slot; here each pass
+// is one loop and each slot a closed form (GridSlots).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "models/board_spec/board_config.h"
+#include "models/cell_memory/cell_table.h"
+#include "models/common/pair_budget.h"
+#include "models/fast_engine/box_block.h"
+#include "models/fast_engine/pair_finder.h"
+#include "models/grid_binning/grid_geometry.h"
+#include "models/grid_schedule/grid_slots.h"
+
+namespace cdvp {
+
+class GridSearch {
+public:
+    // A sweep whose pairs outgrow `budget` throws PairBudgetExceeded in run().
+    explicit GridSearch(const BoardConfig& config, PairBudget budget = {});
+
+    // A sweep of boxes 0..objects-1: its pairs in the board's order (first <
+    // second), pair k compared in slot slots[k]; returns the end marker's
+    // slot (every slot of the sweep; 0 below two boxes).
+    uint64_t run(uint32_t objects, const CoordinateWords& words, PairList& pairs, std::vector<uint64_t>& slots);
+    const GridSweepStats& stats() const { return stats_; }
+    // The most a sweep of `objects` boxes keeps, in either grid engine, for
+    // the memory estimate before a run: the count table and busy-cell list
+    // a cell; a box's keys, cells and kind, its copy in first-cell order,
+    // its entries (each a list word and a word of the cell table's lists)
+    // and its place in the large list.
+    static uint64_t scratch_bytes(const GridConfig& grid, uint64_t objects) {
+        if (objects < 2) return 0;
+        return grid.cells_for(objects) * (2 * sizeof(uint32_t) + 2 * sizeof(BusyCell)) +
+               objects * (2 * sizeof(Box) + grid.max_span * 2 * sizeof(uint32_t) + 2 * sizeof(uint32_t));
+    }
+
+private:
+    enum class Kind : uint8_t { kBinned, kLarge, kExcluded };
+    // A box as the passes see it: its keys (Coordinate order), its cells,
+    // its kind and its index.
+    struct Box {
+        uint32_t key[kCoordinates];
+        CellRange range;
+        Kind kind;
+        uint32_t index;
+    };
+    // A large tile, gathered: keys by coordinate and indices.
+    struct Tile {
+        std::vector<uint32_t> key[kCoordinates];
+        std::vector<uint32_t> index;
+        void resize(uint32_t n);
+        void take(uint32_t at, const Box& b);
+        bool hit(const Box& row, uint32_t b) const;
+    };
+
+    // Passes 1 to 3 and the scan; the slot after the place pass.
+    uint64_t bin(uint32_t objects, const CoordinateWords& words);
+    // The scan and pass 3 when no cell fills and the entries fit (then the
+    // order of the boxes cannot matter): the candidates sorted by first cell
+    // (first_words_: their counts) and placed cell by cell (cell_words_: each
+    // cell's boxes).
+    void bin_sorted(uint32_t candidates, uint64_t entries);
+    // Passes 2 and 3 box by box in index order, as the board runs them:
+    // boxes meeting a full cell or entry memory become large. The place
+    // pass's box slots.
+    uint64_t bin_in_order(uint32_t objects);
+    // The triangle of a busy cell's boxes (cell_boxes_, in index order) from
+    // slot `row_start` on, four lane tests at a time (up to 64 boxes, only
+    // where the one-cell rule may keep a pair).
+    void sweep_cell(const BusyCell& cell, uint64_t row_start, PairList& pairs, std::vector<uint64_t>& slots);
+    // The busy cells from slot `begin` on; the slot after the last one's last compare.
+    uint64_t sweep_cells(uint64_t begin, PairList& pairs, std::vector<uint64_t>& slots);
+    // The large tiles from slot `begin` on; the slot after the last stream.
+    uint64_t sweep_large(uint64_t begin, uint32_t objects, PairList& pairs, std::vector<uint64_t>& slots);
+    void add(PairList& pairs, std::vector<uint64_t>& slots, IndexPair pair, uint64_t slot) const {
+        budget_.push(pairs, pair);
+        slots.push_back(slot);
+    }
+
+    BoardConfig config_;
+    GridSlots slots_;
+    PairBudget budget_;
+    GridGeometry grid_;
+    std::vector<Box> boxes_;
+    std::vector<uint32_t> large_;  // ascending
+    // The busy cells and their lists (in index order): positions in placed_,
+    // the binned boxes copied in first-cell order so that a cell's boxes lie
+    // near each other in memory (bin_sorted); or box indices in table_
+    // (bin_in_order).
+    bool sorted_lists_ = false;
+    std::vector<Box> placed_;
+    std::vector<uint32_t> place_of_;  // a binned box's position in placed_
+    std::vector<uint32_t> first_words_;  // a word a cell: its first boxes, then where they go in placed_
+    std::vector<uint32_t> cell_words_;   // a word a cell: its boxes, then its next entry
+    std::vector<uint32_t> lists_;
+    std::vector<BusyCell> busy_;
+    CellTable table_;
+    // The busy cell being swept, in index order: its boxes, and for a large
+    // cell their keys as BlockTest takes them.
+    std::vector<const Box*> cell_boxes_;
+    BoxColumns cell_columns_;
+    Tile tile_;
+    GridSweepStats stats_;
+};
+
+}  // namespace cdvp

@@ -1,0 +1,99 @@
+// The grid board from the command line (board.algorithm grid,
+// docs/grid_board.md): the all-pairs board's pairs at every level and in
+// fixed point, the report's cycles, its waveforms, and the refusals past its
+// cell buffer or its SSRAM.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_support.h"
+
+namespace cdvp::test {
+namespace {
+
+using nlohmann::json;
+
+class CliGrid : public Cli {
+protected:
+    std::string spheres(uint32_t objects, uint32_t frames = 2) const {
+        return "run --scene spheres --objects " + std::to_string(objects) + " --frames " + std::to_string(frames) +
+               " --quiet --board adm-xrc-ii ";
+    }
+    json report(const std::string& name = "r.json") const { return json::parse(slurp(dir_ / name)); }
+};
+
+// The same pairs as the all-pairs board (the CSV is sorted by id), at the
+// fast, cycle and analytic levels; each frame's cycles are its slots + L +
+// stalls, far fewer than the all-pairs board's.
+TEST_F(CliGrid, FindsTheAllPairsBoardsPairsAtEveryLevel) {
+    ASSERT_EQ(run(spheres(3000) + "--pairs-out all.csv --report all.json").status, 0);
+    for (const char* level : {"fast", "cycle", "analytic"}) {
+        const std::string name = std::string(level);
+        const Result r = run(spheres(3000) + "-c board.algorithm=grid --fidelity " + name + " --pairs-out " + name +
+                             ".csv --report " + name + ".json");
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(slurp(dir_ / (name + ".csv")), slurp(dir_ / "all.csv")) << level;
+        const json grid = report(name + ".json");
+        EXPECT_EQ(grid["config"]["settings"]["board.algorithm"]["value"], "grid");
+        const uint64_t latency = grid["config"]["pipeline_latency_cycles"];
+        for (std::size_t k = 0; k < 2; ++k) {
+            const json& f = grid["frames"][k];
+            EXPECT_EQ(f["compute_cycles"].get<uint64_t>(),
+                      f["sweep_cycles"].get<uint64_t>() + latency + f["stall_cycles"].get<uint64_t>())
+                << level;
+            EXPECT_LT(10 * f["compute_cycles"].get<uint64_t>(),
+                      report("all.json")["frames"][k]["compute_cycles"].get<uint64_t>())
+                << level << ": 3,000 boxes in a grid take a tenth of all pairs' cycles at most";
+        }
+    }
+    for (std::size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(report("fast.json")["frames"][k]["compute_cycles"], report("cycle.json")["frames"][k]["compute_cycles"]);
+        EXPECT_EQ(report("fast.json")["frames"][k]["compute_cycles"],
+                  report("analytic.json")["frames"][k]["compute_cycles"]);
+    }
+}
+
+TEST_F(CliGrid, FixedPointGridBoardsKeepTheirFormatsPairs) {
+    ASSERT_EQ(run(spheres(2000, 1) + "--format fixed12 --pairs-out all.csv").status, 0);
+    const Result r = run(spheres(2000, 1) + "--format fixed12 -c board.algorithm=grid --pairs-out grid.csv");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(dir_ / "grid.csv"), slurp(dir_ / "all.csv"));
+}
+
+// The clocked grid board's waveforms show its sequencer's passes.
+TEST_F(CliGrid, WaveformsShowTheSequencer) {
+    ASSERT_EQ(run("run --scene spheres --objects 60 --frames 1 --quiet --m 2 -c board.algorithm=grid --vcd w.vcd").status,
+              0);
+    const std::string vcd = slurp(dir_ / "w.vcd");
+    for (const char* signal : {" pass ", " bounds ", " count ", " scan ", " place ", " cells ", " box ", " cell ",
+                               " loading ", " wait "}) {
+        EXPECT_NE(vcd.find(signal), std::string::npos) << signal;
+    }
+}
+
+TEST_F(CliGrid, ScenesPastTheCellBufferOrTheSsramAreRefused) {
+    // Two halves of 2m copies of six coordinates: 12 m block RAMs at a cell of 512 boxes; 144 hold m = 12.
+    expect_refusal(run(spheres(2000, 1) + "--m 13 -c board.algorithm=grid"),
+                   "cdvp run: " + preset("adm-xrc-ii") +
+                       ": device.block_rams: 144 block RAMs are too few for the grid board's cell buffer at --m 13 "
+                       "and 512 boxes (the default of board.grid.cell_capacity): it needs 6 x 2m x ceil(C/512) = 156");
+    ASSERT_EQ(run(spheres(2000, 1) + "--m 12 -c board.algorithm=grid").status, 0);
+    expect_refusal(run(spheres(2000, 1) + "-c board.algorithm=grid -c device.ssram_words=3000"),
+                   "cdvp run: -c device.ssram_words: 3000 words a bank in 6 SSRAM banks (18000 words) are too few "
+                   "for the grid board at 2000 objects (--objects): its boxes, count table, large list and pair "
+                   "buffer");
+    expect_refusal(run(spheres(100, 1) + "-c board.algorithm=grid -c device.ssram_banks=0"),
+                   "cdvp run: -c device.ssram_banks: the device has no off-chip SSRAM (0 banks); the grid board");
+    ASSERT_EQ(run(spheres(2000, 1) + "-c board.algorithm=grid -c device.ssram_words=3000 --ignore-capacity").status, 0)
+        << "--ignore-capacity explores a larger memory";
+    expect_refusal(run(spheres(100, 1) + "-c board.algorithm=grid -c board.grid.dims=300"),
+                   "cdvp run: -c board.grid.dims: expected an integer from 0 to 256, got '300'");
+    expect_refusal(run(spheres(100, 1) + "-c board.algorithm=grid --fidelity rtl"),
+                   "cdvp run: --fidelity rtl at 100 objects (--objects): fidelity rtl: the grid board (board.algorithm "
+                   "grid) has no RTL: its binning, cell memory and schedule blocks are modelled in C++ only; run it at "
+                   "the cycle, fast or analytic level");
+    EXPECT_EQ(files(), std::vector<std::string>{}) << "a refused run leaves no output";
+}
+
+}  // namespace
+}  // namespace cdvp::test

@@ -1,0 +1,144 @@
+// The binning stage's blocks: the cell function, the bounds, the
+// classification, and the cell memory's passes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+
+#include "models/cell_memory/cell_table.h"
+#include "models/grid_binning/grid_geometry.h"
+
+namespace cdvp {
+namespace {
+
+uint32_t bits(float value) {
+    uint32_t word;
+    std::memcpy(&word, &value, sizeof word);
+    return word;
+}
+
+GridGeometry float_grid(uint32_t dims, float lo, float scale) {
+    return GridGeometry(NumberFormat::float32(), dims, {GridAxis{lo, scale}, GridAxis{lo, scale}, GridAxis{lo, scale}});
+}
+
+// a <= b in the format gives cell(a) <= cell(b): every rule of the board rests on it.
+TEST(GridGeometry, TheCellFunctionIsMonotoneInTheFormatsOrder) {
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<uint32_t> any;
+    const float inf = std::numeric_limits<float>::infinity();
+    for (const NumberFormat format : {NumberFormat::float32(), NumberFormat::fixed(12), NumberFormat::fixed(32)}) {
+        for (const GridAxis axis : {GridAxis{-3.5f, 0.7f}, GridAxis{0.0f, 1e-30f}, GridAxis{1e30f, 3e20f},
+                                    GridAxis{-1e38f, 1e-37f}, GridAxis{0.0f, 0.0f}, GridAxis{5.0f, inf}}) {
+            const GridGeometry grid(format, 37, {axis, axis, axis});
+            std::vector<uint32_t> keys;
+            for (int k = 0; k < 20000; ++k) {
+                const uint32_t word = any(rng) & format.word_mask();
+                if (!format.excluded(word)) keys.push_back(format.key(word));
+            }
+            for (float v : {0.0f, -0.0f, 1.0f, -1.0f, inf, -inf, 3.4e38f, -3.4e38f, 1e-45f, -3.5f}) {
+                if (format.is_float()) keys.push_back(format.key(bits(v)));
+            }
+            std::sort(keys.begin(), keys.end());
+            uint32_t previous = 0;
+            for (uint32_t key : keys) {
+                const uint32_t cell = grid.cell(0, key);
+                ASSERT_LT(cell, 37u);
+                ASSERT_LE(previous, cell) << format.name() << " key " << key << " lo " << axis.lo << " scale " << axis.scale;
+                previous = cell;
+            }
+        }
+    }
+}
+
+TEST(GridGeometry, InfinitiesTakeTheEndCellsAndZerosAreOne) {
+    const GridGeometry grid = float_grid(10, -1.0f, 2.0f);
+    const NumberFormat f32;
+    EXPECT_EQ(0u, grid.cell(0, f32.key(bits(-std::numeric_limits<float>::infinity()))));
+    EXPECT_EQ(9u, grid.cell(0, f32.key(bits(std::numeric_limits<float>::infinity()))));
+    EXPECT_EQ(grid.cell(1, f32.key(bits(0.0f))), grid.cell(1, f32.key(bits(-0.0f))));
+    EXPECT_EQ(2u, grid.cell(2, f32.key(bits(0.0f))));     // (0 + 1) x 2
+    EXPECT_EQ(4u, grid.cell(2, f32.key(bits(1.25f))));    // (1.25 + 1) x 2 = 4.5
+    EXPECT_EQ(0u, grid.cell(2, f32.key(bits(-7.0f))));    // below the origin
+    EXPECT_EQ(9u, grid.cell(2, f32.key(bits(1e30f))));    // past the last cell
+}
+
+TEST(GridBounds, FitsTheGridToTheFiniteCentresOrToTheCellSize) {
+    const NumberFormat f32;
+    GridBounds bounds(f32);
+    const float inf = std::numeric_limits<float>::infinity();
+    auto add = [&](float lo, float hi) {
+        uint32_t keys[6];
+        for (uint32_t c = 0; c < 6; ++c) keys[c] = f32.key(bits(c < 3 ? lo : hi));
+        bounds.add(keys);
+    };
+    add(-3.0f, -1.0f);  // centre -2
+    add(4.0f, 8.0f);    // centre 6
+    add(-inf, 6.0f);    // an infinite centre is no bound of the grid
+    add(-1e4f, 1e4f);   // a slab centred at 0 does not stretch it
+    GridConfig config;
+    const GridGeometry fitted = bounds.geometry(config, 8);
+    EXPECT_EQ(-2.0f, fitted.axis(0).lo);
+    EXPECT_EQ(1.0f, fitted.axis(1).scale);  // 8 cells over [-2, 6]
+    config.cell_size = 0.5f;
+    EXPECT_EQ(2.0f, bounds.geometry(config, 8).axis(2).scale);
+    // No finite centre on an axis: one cell, scale 0.
+    GridBounds empty(f32);
+    EXPECT_EQ(0.0f, empty.geometry(GridConfig{}, 8).axis(0).scale);
+}
+
+TEST(GridGeometry, ClassifiesInvertedAndSpanningBoxes) {
+    const GridGeometry grid = float_grid(16, 0.0f, 1.0f);
+    const NumberFormat f32;
+    auto keys = [&](float x0, float x1, float y0, float y1, float z0, float z1, uint32_t (&out)[6]) {
+        const float v[6] = {x0, y0, z0, x1, y1, z1};
+        for (uint32_t c = 0; c < 6; ++c) out[c] = f32.key(bits(v[c]));
+    };
+    uint32_t k[6];
+    CellRange range;
+    keys(1.5f, 2.5f, 3.0f, 3.0f, 0.0f, 0.5f, k);
+    ASSERT_EQ(BoxClass::kCandidate, grid.classify(k, 8, range));
+    EXPECT_EQ(2u, range.cells());
+    EXPECT_EQ(1u, range.lo[0]);
+    EXPECT_EQ(2u, range.hi[0]);
+    keys(1.5f, 4.5f, 0.0f, 1.0f, 0.0f, 0.5f, k);  // 4 x 2 x 1 = 8
+    EXPECT_EQ(BoxClass::kCandidate, grid.classify(k, 8, range));
+    keys(1.5f, 4.5f, 0.0f, 2.0f, 0.0f, 0.5f, k);  // 4 x 3 x 1 = 12
+    EXPECT_EQ(BoxClass::kSpanning, grid.classify(k, 8, range));
+    keys(2.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, k);
+    EXPECT_EQ(BoxClass::kInverted, grid.classify(k, 8, range));
+    keys(0.0f, -0.0f, 0.0f, 0.0f, 0.0f, 0.0f, k);  // -0 == +0: not inverted
+    EXPECT_EQ(BoxClass::kCandidate, grid.classify(k, 8, range));
+}
+
+TEST(CellTable, CountsScansAndPlacesBoxesWholeOrNotAtAll) {
+    const GridGeometry grid = float_grid(4, 0.0f, 1.0f);
+    CellTable table;
+    table.reset(grid.cells(), 2, 7);
+    CellRange one;  // cell (1, 1, 1)
+    one.lo = one.hi = {1, 1, 1};
+    CellRange two = one;  // cells (1, 1, 1) and (2, 1, 1)
+    two.hi[0] = 2;
+    EXPECT_TRUE(table.count(one, grid));
+    EXPECT_TRUE(table.count(two, grid));
+    EXPECT_FALSE(table.count(two, grid)) << "cell (1, 1, 1) is full";
+    EXPECT_EQ(1u, table.word(grid.linear(2, 1, 1))) << "a refused box counts nowhere";
+    EXPECT_TRUE(table.count(CellRange{{0, 0, 0}, {1, 1, 0}}, grid));  // four more entries: 7 in all
+    EXPECT_EQ(7u, table.entries());
+    EXPECT_FALSE(table.count(CellRange{{3, 3, 3}, {3, 3, 3}}, grid)) << "the entry memory is full";
+    table.scan();
+    ASSERT_EQ(1u, table.busy_cells().size());
+    const BusyCell busy = table.busy_cells()[0];
+    EXPECT_EQ(grid.linear(1, 1, 1), busy.cell);
+    EXPECT_EQ(2u, busy.count);
+    table.place(4, one, grid);
+    table.place(9, two, grid);
+    table.place(11, CellRange{{0, 0, 0}, {1, 1, 0}}, grid);
+    EXPECT_EQ(4u, table.list(busy)[0]);
+    EXPECT_EQ(9u, table.list(busy)[1]);
+}
+
+}  // namespace
+}  // namespace cdvp
