@@ -38,10 +38,12 @@ public:
             const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
             const bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
             if (!median && !single) continue;
-            const std::string& args = run.run_name.args;  // "N/T"
-            const std::size_t slash = args.find('/');
-            medians[std::stoul(args.substr(0, slash))][std::stoul(args.substr(slash + 1))] =
-                run.GetAdjustedRealTime();
+            // "N:2000/threads:2": the numbers after the colons.
+            const std::string& args = run.run_name.args;
+            const std::size_t n_at = args.find(':') + 1, slash = args.find('/');
+            const unsigned long n = std::stoul(args.substr(n_at, slash - n_at));
+            const unsigned long threads = std::stoul(args.substr(args.find(':', slash) + 1));
+            medians[n][threads] = run.GetAdjustedRealTime();
         }
         ConsoleReporter::ReportRuns(runs);
     }
