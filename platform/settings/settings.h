@@ -35,6 +35,9 @@ struct HostConfig {
     double reference_dbvt_host_ns = 0;
     double reference_brute_host_ns = 0;
     double reference_soa_host_ns = 0;
+    // The host's cores: a multi-threaded baseline runs on no more of them
+    // than this machine has (run.threads 0); 0: not stated, this machine's.
+    uint32_t cores = 0;
     std::string profile;  // the host profile to read; empty: the default location
 };
 
@@ -53,6 +56,7 @@ struct RunSettings {
     double max_error_percent = 1.0;  // run.fidelity auto's bound
     uint64_t warmup = 2;  // sw/timing's kDefaultWarmupFrames (a test holds them equal)
     uint32_t repeat = 1;
+    uint32_t threads = 0;  // a multi-threaded baseline's; 0: this machine's cores
     uint32_t retime_tries = 3;      // sw/timing's kDefaultRetimeTries (a test holds them equal)
     std::string pin_cpu = "none";   // or a CPU number: see pinned_cpu()
     bool ignore_capacity = false;
@@ -81,6 +85,20 @@ struct DeviceSettings {
     uint32_t ssram_latency_cycles = 2;
 };
 
+// What the board, its bus and its host draw (models/energy; docs/energy.md):
+// the presets give each figure with its source; 0 without a preset.
+struct PowerSettings {
+    double static_w = 0;              // device.static_w
+    double clb_uw_per_mhz = 0;        // device.clb_uw_per_mhz
+    double luts_per_clb = 8;          // device.luts_per_clb
+    double flip_flops_per_clb = 8;    // device.flip_flops_per_clb
+    double block_ram_uw_per_mhz = 0;  // device.block_ram_uw_per_mhz
+    double io_pj_per_toggle = 0;      // device.io_pj_per_toggle
+    double toggle_percent = 12.5;     // device.toggle_percent: the user's, XPE's default
+    double bus_w = 0;                 // bus.active_w
+    double host_w = 0;                // host.package_w
+};
+
 // Where the board keeps its boxes (platform/memory_plan.h resolves it).
 struct MemorySettings {
     BoxMemory memory = BoxMemory::kAuto;
@@ -93,6 +111,7 @@ struct Settings {
     BoardConfig board;
     MemorySettings memory;
     DeviceSettings device;
+    PowerSettings power;
     BusType bus_type = BusType::kIdeal;
     BusModel bus_model = BusModel::kFormula;
     PciConfig pci;

@@ -291,6 +291,40 @@ std::vector<Setting> device_settings() {
     };
 }
 
+// What the device, its bus and its host draw: the energy model's coefficients (docs/energy.md).
+std::vector<Setting> power_settings() {
+    using P = PowerSettings;
+    constexpr const char* kNoPreset = "0 without a preset (no energy counted); the presets state theirs";
+    return {
+        preset(real("device.static_w", "W", 0, 1000, member(&S::power, &P::static_w),
+                    "the device's quiescent power, drawn for the whole frame", kNoPreset)),
+        preset(real("device.clb_uw_per_mhz", "uW/MHz", 0, 1000, member(&S::power, &P::clb_uw_per_mhz),
+                    "dynamic power of one CLB in use, at XPE's default 12.5% toggle rate (logic, routing and "
+                    "clock while the lanes compare)",
+                    "0 without a preset; Virtex-II: 5.9 uW/MHz for typical designs (Shang, Kaviani, Bathala, FPGA "
+                    "2002)")),
+        preset(real("device.luts_per_clb", "LUTs", 1, 64, member(&S::power, &P::luts_per_clb),
+                    "LUTs a CLB holds (the board's CLBs: the larger of its LUTs' and flip-flops' share)",
+                    "8: four slices of two on Virtex-II (DS031), one slice of eight on UltraScale+ (UG574)")),
+        preset(real("device.flip_flops_per_clb", "flip-flops", 1, 64, member(&S::power, &P::flip_flops_per_clb),
+                    "flip-flops a CLB holds", "8 on Virtex-II (DS031), 16 on UltraScale+ (UG574)")),
+        preset(real("device.block_ram_uw_per_mhz", "uW/MHz", 0, 10000, member(&S::power, &P::block_ram_uw_per_mhz),
+                    "dynamic power of one 18-Kbit block RAM accessed every cycle", kNoPreset)),
+        preset(real("device.io_pj_per_toggle", "pJ", 0, 10000, member(&S::power, &P::io_pj_per_toggle),
+                    "energy of one output pin's transition (1/2 C V^2 of its load)", kNoPreset)),
+        real("device.toggle_percent", "%", 0, 100, member(&S::power, &P::toggle_percent),
+             "transitions a clock of the board's logic and pins, in percent (the published CLB power is read at "
+             "12.5%)",
+             "12.5%: Xilinx Power Estimator's default toggle rate"),
+        both_buses(real("bus.active_w", "W", 0, 1000, member(&S::power, &P::bus_w),
+                        "the bus and its bridges while they move boxes, commands or pairs", kNoPreset),
+                   member(&S::power, &P::bus_w)),
+        preset(real("host.package_w", "W", 0, 10000, member(&S::power, &P::host_w),
+                    "the host CPU package's power while it works or waits on a frame (its TDP: an upper bound)",
+                    kNoPreset)),
+    };
+}
+
 std::vector<Setting> bus_settings() {
     return {
         preset(choice<BusType>("bus.type", member(&S::bus_type),
@@ -444,6 +478,10 @@ std::vector<Setting> host_and_run_settings() {
         reference_time("host.reference_dbvt_host_ns", &HostConfig::reference_dbvt_host_ns),
         reference_time("host.reference_brute_host_ns", &HostConfig::reference_brute_host_ns),
         reference_time("host.reference_soa_host_ns", &HostConfig::reference_soa_host_ns),
+        preset(count("host.cores", "cores", 0, 4096, member(&S::host, &HostConfig::cores),
+                     "the modelled host's cores: a multi-threaded baseline (sap_mt) runs on as many threads as "
+                     "this machine and the host both have, unless run.threads says; 0: not stated",
+                     "0 without a preset; the presets: their host's data sheet")),
         preset(real("host.ns_per_box", "ns", 0, 1e6, member(&S::driver, &D::ns_per_box),
                     "driver CPU work packing a box", "0 without a preset; assumption: about 45 P4 cycles")),
         preset(real("host.ns_per_pair", "ns", 0, 1e6, member(&S::driver, &D::ns_per_pair),
@@ -532,6 +570,11 @@ std::vector<Setting> host_and_run_settings() {
                    "of the runs' means (the board's simulated times are deterministic and simulated once)",
                    "one run"),
              "repeat", "R"),
+        flag(count("run.threads", "threads", 0, 1024, member(&S::run, &RunSettings::threads),
+                   "threads of a multi-threaded baseline (sap_mt), timed by the wall clock since they run side by "
+                   "side; 0: this machine's cores, at most the modelled host's (host.cores)",
+                   "0: every core of this machine (docs/timing.md)"),
+             "threads", "N"),
         flag(count("run.retime_tries", "tries", 0, 100, member(&S::run, &RunSettings::retime_tries),
                    "how often a baseline frame disturbed while timed (an involuntary context switch, a move to "
                    "another CPU) is timed again, on fresh instances stepped through the frames before it; a frame "
@@ -590,7 +633,7 @@ std::vector<Setting> host_and_run_settings() {
 const std::vector<Setting>& settings_table() {
     static const std::vector<Setting> table = [] {
         std::vector<Setting> all = board_settings();
-        for (auto* group : {device_settings, bus_settings, bus_model_settings, host_and_run_settings}) {
+        for (auto* group : {device_settings, power_settings, bus_settings, bus_model_settings, host_and_run_settings}) {
             for (Setting& s : group()) all.push_back(std::move(s));
         }
         return all;

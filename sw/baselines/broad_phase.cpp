@@ -4,6 +4,7 @@
 
 #include "sw/baselines/brute_force.h"
 #include "sw/baselines/bullet_broad_phase.h"
+#include "sw/baselines/parallel_sap.h"
 #include "sw/baselines/soa_broad_phase.h"
 #include "models/common/user_text.h"
 
@@ -22,13 +23,16 @@ public:
 
 }  // namespace
 
-std::vector<std::string> broad_phase_names() { return {"sap", "dbvt", "brute", "soa"}; }
+std::vector<std::string> broad_phase_names() { return {"sap", "dbvt", "brute", "soa", "sap_mt"}; }
 
-std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name) {
+std::vector<std::string> single_thread_broad_phase_names() { return {"sap", "dbvt", "brute", "soa"}; }
+
+std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name, const BaselineOptions& options) {
     if (name == "sap") return make_bullet_broad_phase(BulletKind::sap);
     if (name == "dbvt") return make_bullet_broad_phase(BulletKind::dbvt);
     if (name == "brute") return std::make_unique<BruteBroadPhase>();
     if (name == "soa") return std::make_unique<SoaBroadPhase>();
+    if (name == "sap_mt") return std::make_unique<ParallelSapBroadPhase>(options.threads);
     std::string expected;
     for (const std::string& known : broad_phase_names()) {
         expected += (expected.empty() ? "" : ", ") + known;

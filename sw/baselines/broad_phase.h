@@ -14,13 +14,16 @@ namespace cdvp {
 class BroadPhase {
 public:
     virtual ~BroadPhase() = default;
-    virtual std::string name() const = 0;  // "sap", "dbvt", "brute", "soa"
+    virtual std::string name() const = 0;  // "sap", "dbvt", "brute", "soa", "sap_mt"
     // The exact overlapping pairs of this frame (closed intervals, float32, the same test as
     // reference_pairs): each pair once, first < second (indices into boxes), in any order.
     // Consecutive calls with the same box count are the same objects moved, so incremental
     // methods keep their state (frame coherence); a different count rebuilds.
     // Throws PairBudgetExceeded before `out` outgrows the pair budget.
     virtual void find_pairs(const std::vector<FloatBox>& boxes, PairList& out) = 0;
+    // The threads a call runs on: above one, its wall time is what a user
+    // pays (the threads run side by side), so it is timed by the wall clock.
+    virtual unsigned threads() const { return 1; }
 
     // The most pairs find_pairs may collect (run.max_pairs; unlimited by default).
     void set_pair_budget(PairBudget budget) { budget_ = budget; }
@@ -29,13 +32,22 @@ protected:
     PairBudget budget_;
 };
 
+// How a baseline is built: the threads of a multi-threaded one (0: this
+// machine's cores; run.threads).
+struct BaselineOptions {
+    unsigned threads = 0;
+};
+
 // Names: "sap" (Bullet btAxisSweep3), "dbvt" (Bullet btDbvtBroadphase),
-// "brute" (scalar all pairs), "soa" (vectorized all pairs). Throws
-// std::invalid_argument "unknown baseline 'x'; expected one of: sap, dbvt, brute, soa"
-// for others.
-std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name);
+// "brute" (scalar all pairs), "soa" (vectorized all pairs), "sap_mt" (sweep
+// and prune on options.threads threads). Throws std::invalid_argument
+// "unknown baseline 'x'; expected one of: sap, dbvt, brute, soa, sap_mt" for others.
+std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name, const BaselineOptions& options = {});
 
 // The names make_broad_phase accepts, in the order above.
 std::vector<std::string> broad_phase_names();
+// Of those, the ones that run on the calling thread alone: a host profile
+// calibrates them (a multi-threaded one's time depends on the cores it gets).
+std::vector<std::string> single_thread_broad_phase_names();
 
 }  // namespace cdvp

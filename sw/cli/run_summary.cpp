@@ -68,6 +68,30 @@ void print_timing_quality(std::ostream& out, const RunTotals& totals) {
     out << '\n';
 }
 
+// The board's energy a frame by part and a pair, and each baseline's on
+// the host beside it (docs/energy.md); nothing where no power is stated.
+void print_energy(std::ostream& out, const RunDescription& run, const RunTotals& totals) {
+    const ReportSummary s = totals.summary(run.host_timing);
+    const FrameEnergy& e = s.mean_energy;
+    if (e.total_j() <= 0 && s.host_package_w <= 0) return;
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "  energy: %.4g mJ a frame (static %.4g, dynamic %.4g, bus %.4g, host %.4g), %.4g uJ a pair\n",
+                  e.total_j() * 1e3, e.static_j * 1e3, e.dynamic_j * 1e3, e.bus_j * 1e3, e.host_j * 1e3,
+                  s.mean_energy_per_pair_j * 1e6);
+    out << line;
+    for (const auto& [name, b] : s.baselines) {
+        std::snprintf(line, sizeof line, "  energy: %s %.4g mJ a frame on the host at its stated %.4g W, %.3gx the board's\n",
+                      name.c_str(), b.energy_j * 1e3, s.host_package_w, b.energy_ratio);
+        out << line;
+        if (b.native_energy_j >= 0) {
+            std::snprintf(line, sizeof line, "          this machine's package, measured by RAPL: %.4g mJ a frame\n",
+                          b.native_energy_j * 1e3);
+            out << line;
+        }
+    }
+}
+
 // The means the speedups are taken from, with p50, p99 and the maximum.
 void print_timing(std::ostream& out, const RunDescription& run, const RunTotals& totals) {
     if (totals.frames() == 0) return;
@@ -92,6 +116,7 @@ void print_timing(std::ostream& out, const RunDescription& run, const RunTotals&
                       latency.mean / 1e3, latency.p50 / 1e3, latency.max / 1e3);
         out << line;
     }
+    print_energy(out, run, totals);
     const Spread wall = totals.sim_wall_figures().spread;
     std::snprintf(line, sizeof line, "  simulator: %.3f ms native wall time (p50 %.3f, p99 %.3f, max %.3f)\n",
                   wall.mean / 1e6, wall.p50 / 1e6, wall.p99 / 1e6, wall.max / 1e6);

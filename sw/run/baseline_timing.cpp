@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "models/common/user_text.h"
+#include "sw/baselines/worker_pool.h"
 #include "sw/scene/conversion.h"
 
 namespace cdvp {
@@ -33,16 +34,21 @@ std::runtime_error mismatch(const std::string& name, std::size_t found, uint64_t
 
 }  // namespace
 
+unsigned baseline_threads(uint32_t run_threads, uint32_t host_cores) {
+    if (run_threads > 0) return run_threads;
+    return host_cores > 0 ? std::min(machine_threads(), host_cores) : machine_threads();
+}
+
 BaselineTimer::BaselineTimer(const std::vector<std::string>& names, HostTiming host, uint32_t max_tries,
-                             const std::string& label)
-    : host_(std::move(host)), max_tries_(max_tries) {
+                             const std::string& label, BaselineOptions options)
+    : host_(std::move(host)), options_(options), max_tries_(max_tries) {
     for (const std::string& name : names) {
         // Each is timed once a frame; a repeat would be run twice and reported once.
         for (const std::string& earlier : names_) {
             if (earlier == name) throw InputError(label + ": '" + excerpt(name) + "' given twice");
         }
         try {
-            first_run_.push_back(make_broad_phase(name));
+            first_run_.push_back(make_broad_phase(name, options_));
         } catch (const std::invalid_argument& e) {
             throw InputError(label + ": " + e.what());
         }
@@ -58,8 +64,11 @@ void BaselineTimer::set_pair_budget(PairBudget budget) {
     for (auto& baseline : first_run_) baseline->set_pair_budget(budget);
 }
 
+// A baseline on several threads is timed by the wall clock: they run side by
+// side, so that is what a user pays (their CPU time together stays beside it).
 CallTiming time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found) {
-    const CallTiming timing = CallTimer::time([&] { baseline.find_pairs(boxes, found); });
+    CallTiming timing = CallTimer::time([&] { baseline.find_pairs(boxes, found); });
+    if (baseline.threads() > 1) timing.cpu_ns = timing.wall_ns;
     found = sorted(std::move(found));
     return timing;
 }
@@ -67,7 +76,9 @@ CallTiming time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& bo
 CallTiming BaselineTimer::probed(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found,
                                 double& probe_ns) {
     const double before = probe_.time_ns();
+    const double joules_before = rapl_.available() ? rapl_.joules() : 0;
     const CallTiming timing = time_find_pairs(baseline, boxes, found);
+    last_energy_j_ = rapl_.available() ? rapl_.joules_since(joules_before) : -1;
     probe_ns = std::max(before, probe_.time_ns());
     return timing;
 }
@@ -97,7 +108,7 @@ double BaselineTimer::mark_slowed(uint64_t warmup) {
 std::vector<std::unique_ptr<BroadPhase>> BaselineTimer::fresh(const std::vector<std::size_t>& which) const {
     std::vector<std::unique_ptr<BroadPhase>> instances;
     for (const std::size_t b : which) {
-        instances.push_back(make_broad_phase(names_[b]));
+        instances.push_back(make_broad_phase(names_[b], options_));
         instances.back()->set_pair_budget(budget_);
     }
     return instances;
@@ -113,7 +124,8 @@ std::map<std::string, BaselineTime> BaselineTimer::time_frame(const std::vector<
         const CallTiming t = probed(baseline, boxes, found, probe);
         probes_[b].back().push_back(static_cast<float>(probe));
         times[baseline.name()] = {t.cpu_ns, t.wall_ns, t.cpu_ns * host_.factor(baseline.name()),
-                                  t.involuntary_switches, t.migrated, probe};
+                                  t.involuntary_switches, t.migrated, probe, last_energy_j_,
+                                  baseline.threads() > 1 ? t.process_cpu_ns : 0};
         disturbed_[b].back().push_back(t.disturbed());
         if (found != board_pairs) {
             throw mismatch(baseline.name(), found.size(), frame, "the board " + std::to_string(board_pairs.size()));

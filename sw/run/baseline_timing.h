@@ -21,6 +21,7 @@
 #include "sw/run/frame_source.h"
 #include "sw/run/host_factor.h"
 #include "sw/run/run_report.h"
+#include "sw/timing/rapl_meter.h"
 #include "sw/timing/speed_probe.h"
 #include "sw/timing/thread_timer.h"
 #include "sw/timing/timing_quality.h"
@@ -33,6 +34,11 @@ namespace cdvp {
 // taken this way.
 CallTiming time_find_pairs(BroadPhase& baseline, const std::vector<FloatBox>& boxes, PairList& found);
 
+// The threads a multi-threaded baseline runs on: run.threads when given,
+// else as many as this machine and the modelled host (host.cores; 0: not
+// stated) both have.
+unsigned baseline_threads(uint32_t run_threads, uint32_t host_cores);
+
 class BaselineTimer {
 public:
     // names: the baselines (empty: none); host: each baseline's factor to
@@ -40,7 +46,7 @@ public:
     // again. Throws InputError, under `label` (how the face names the list:
     // "--baseline"), for an unknown name or one given twice.
     BaselineTimer(const std::vector<std::string>& names, HostTiming host, uint32_t max_tries = kDefaultRetimeTries,
-                  const std::string& label = "baseline");
+                  const std::string& label = "baseline", BaselineOptions options = {});
     BaselineTimer() = default;  // none
 
     bool empty() const { return names_.empty(); }
@@ -88,12 +94,16 @@ private:
     std::vector<std::string> names_;
     std::vector<std::unique_ptr<BroadPhase>> first_run_;
     HostTiming host_;
+    BaselineOptions options_;
     uint32_t max_tries_ = kDefaultRetimeTries;
     PairBudget budget_;
     std::vector<uint64_t> board_digests_;  // one a frame of the first run
     std::vector<std::vector<Disturbed>> disturbed_;  // [baseline][run][frame]
     std::vector<std::vector<std::vector<float>>> probes_;  // [baseline][run][frame]: the first try's slower probe, ns
     SpeedProbe probe_;
+    // This machine's package energy, where RAPL can be read: the last probed call's (< 0: none).
+    RaplMeter rapl_;
+    double last_energy_j_ = -1;
     double probe_reference_ns_ = 0;  // the fast speed frames were held to
     // By baseline, over measured frames: timed clean by a later try, and the
     // later tries (a frame first disturbed either came clean or never did).

@@ -56,6 +56,16 @@ private:
     std::string where_;
 };
 
+// The board's energy keys, each a flat mean_ figure like the phases'.
+std::array<std::pair<const char*, double>, 6> energy_figures(const ReportSummary& s) {
+    return {{{"mean_energy_j", s.mean_energy.total_j()},
+             {"mean_energy_static_j", s.mean_energy.static_j},
+             {"mean_energy_dynamic_j", s.mean_energy.dynamic_j},
+             {"mean_energy_bus_j", s.mean_energy.bus_j},
+             {"mean_energy_host_j", s.mean_energy.host_j},
+             {"mean_energy_per_pair_j", s.mean_energy_per_pair_j}}};
+}
+
 }  // namespace
 
 nlohmann::json to_json(const TimingQuality& q) {
@@ -101,6 +111,13 @@ nlohmann::json to_json(const ReportSummary& s) {
         json["run_means_native_ns"] = b.run_means_native_ns;
         json["host_factor"] = b.host_factor;
         json["speedup"] = b.speedup;
+        json["energy_j"] = b.energy_j;
+        json["energy_per_pair_j"] = b.energy_per_pair_j;
+        json["energy_ratio"] = b.energy_ratio;
+        // The software's energy rests on the stated package power; this
+        // machine's own, where RAPL can be read, is beside it.
+        json["energy_source"] = b.native_energy_j >= 0 ? "rapl" : "stated";
+        if (b.native_energy_j >= 0) json["native_energy_j"] = b.native_energy_j;
         json["timing_quality"] = to_json(b.quality);
         json["retimed"] = b.retimed;
         if (!b.timing.empty()) json["timing"] = b.timing;
@@ -126,6 +143,8 @@ nlohmann::json to_json(const ReportSummary& s) {
     for (std::size_t k = 0; k < ReportSummary::kPhases; ++k) {
         json[std::string("mean_") + ReportSummary::kPhaseKeys[k]] = s.mean_phase_ns[k];
     }
+    for (const auto& [key, value] : energy_figures(s)) json[key] = value;
+    json["host_package_w"] = s.host_package_w;
     return json;
 }
 
@@ -165,10 +184,25 @@ ReportSummary summary_from_json(const nlohmann::json& json, const std::string& s
             out.quality = timing_quality_from_json(b.json()["timing_quality"], source + ": summary: baselines: " + name);
         }
         if (b.json().contains("timing")) out.timing = b.get<std::string>("timing");
+        // Reports from before energy was modelled have none.
+        if (b.json().contains("energy_j")) {
+            out.energy_j = b.get<double>("energy_j");
+            out.energy_per_pair_j = b.get<double>("energy_per_pair_j");
+            out.energy_ratio = b.get<double>("energy_ratio");
+        }
+        if (b.json().contains("native_energy_j")) out.native_energy_j = b.get<double>("native_energy_j");
         if (b.json().contains("retimed")) out.retimed = b.get<std::vector<std::array<double, 3>>>("retimed");
     }
     if (json.contains("timing_quality")) s.timing_quality = timing_quality_from_json(json["timing_quality"], source + ": summary");
     if (json.contains("retime_tries")) s.retime_tries = r.get<uint32_t>("retime_tries");
+    if (json.contains("mean_energy_j")) {
+        s.mean_energy.static_j = r.get<double>("mean_energy_static_j");
+        s.mean_energy.dynamic_j = r.get<double>("mean_energy_dynamic_j");
+        s.mean_energy.bus_j = r.get<double>("mean_energy_bus_j");
+        s.mean_energy.host_j = r.get<double>("mean_energy_host_j");
+        s.mean_energy_per_pair_j = r.get<double>("mean_energy_per_pair_j");
+        s.host_package_w = r.get<double>("host_package_w");
+    }
     return s;
 }
 

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "models/energy/energy_model.h"
 #include "sw/run/extra_pairs.h"
 #include "sw/timing/spread.h"
 #include "sw/timing/timing_quality.h"
@@ -25,6 +26,13 @@ struct BaselineSummary {
     std::vector<double> run_means_native_ns;
     double host_factor = 1.0;
     double speedup = 0.0;  // host_ns.mean over the board's mean frame time
+    // Energy a frame on the modelled host (host.package_w x host_ns.mean),
+    // a pair, and over the board's (above 1: the board takes less).
+    double energy_j = 0.0;
+    double energy_per_pair_j = 0.0;
+    double energy_ratio = 0.0;
+    // This machine's package energy a frame, measured (RAPL); < 0: none to read.
+    double native_energy_j = -1.0;
     TimingQuality quality;
     // Frames timed again: {run, frame, native_ns} each (run and frame from 0),
     // the figures' values where a report's frames hold the first try's.
@@ -53,6 +61,11 @@ struct ReportSummary {
     Spread latency_ns; // a frame's from its upload to its pairs (one frame at a time: total_ns)
     Spread sim_wall_native_ns;  // the simulator's own wall time per frame
     std::array<double, kPhases> mean_phase_ns{};  // upload .. total, means over frames_in_means
+    // The board's energy a frame by part, and a pair, over frames_in_means;
+    // the host's package power behind the host part and the software's.
+    FrameEnergy mean_energy;
+    double mean_energy_per_pair_j = 0.0;
+    double host_package_w = 0.0;
 };
 
 nlohmann::json to_json(const ReportSummary& summary);

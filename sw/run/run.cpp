@@ -63,7 +63,7 @@ RunSetup make_setup(const RunSpec& spec) {
     }
     setup.trace_window = vcd_window(spec.outputs.waves ? spec.outputs.waves->frames : std::nullopt, names);
     setup.baselines = BaselineTimer(spec.baselines, setup.host, setup.values.settings().run.retime_tries,
-                                    names.input("baseline"));
+                                    names.input("baseline"), BaselineOptions{baseline_threads(setup.values.settings().run.threads, setup.values.settings().host.cores)});
     const Setting& repeat = setting("run.repeat");
     if (!setup.values.is_default(repeat) && setup.baselines.empty()) {
         throw InputError(setup.values.where(repeat) + ": reruns the software baselines over the frames; give " +

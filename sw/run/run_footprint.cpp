@@ -62,6 +62,7 @@ uint64_t baseline_bytes_per_box(const std::string& name) {
     if (name == "sap") return kSapBox;
     if (name == "dbvt") return kDbvtBox;
     if (name == "soa") return kFloatBox;  // its structure of arrays
+    if (name == "sap_mt") return kFloatBox + sizeof(uint32_t);  // its sorted bounds and their indices
     return 0;                             // brute: nothing of its own
 }
 

@@ -88,7 +88,9 @@ private:
     // The description, the platform, and each output's start.
     void prepare() {
         const Settings& settings = r_.setup.values.settings();
-        if (r_.files.report != nullptr || r_.spec.outputs.summary) describe_device_fit(description_, settings);
+        describe_device_fit(description_, settings);
+        energy_.emplace(settings, description_.device_fit ? description_.device_fit->resources.total() : Resources{});
+        totals_.set_host_power(energy_->host_w());
         description_.source = r_.source.describe();
         description_.command_line = r_.spec.command_line;
         description_.has_report = r_.files.report != nullptr;
@@ -190,8 +192,9 @@ private:
         FrameStats stats{frame.number, boxes.size(), result->pairs.size(),
                          description_.config.swept_slots(boxes.size(), result->phases.compute_cycles,
                                                          result->phases.stall_cycles),
-                         0, result->phases, {}, sim_ns, check.extra};
+                         0, result->phases, {}, sim_ns, check.extra, {}};
         stats.load_wait_slots = load_wait_slots(description_, boxes.size());
+        stats.energy = energy_->frame(result->phases);
         if (time_baselines_) {
             const auto start = std::chrono::steady_clock::now();
             stats.baselines = within_budget(r_.budgets, frame.number, [&] {
@@ -261,6 +264,7 @@ private:
     FrameRun& r_;
     const bool time_baselines_;
     RunDescription description_;
+    std::optional<BoardEnergy> energy_;  // each frame's energy, from the settings and the device fit
     RunTotals totals_;
     RunWallTimes wall_;  // the simulator's own, and the software's beside it
     std::optional<LevelPlatform> platform_;

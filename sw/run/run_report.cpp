@@ -1,5 +1,6 @@
 #include "sw/run/run_report.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
@@ -145,6 +146,8 @@ nlohmann::json frame_json(const FrameStats& f) {
                            {"involuntary_switches", t.involuntary_switches},
                            {"migrated", t.migrated},
                            {"probe_native_ns", t.probe_native_ns}};
+        if (t.native_energy_j >= 0) baselines[name]["native_energy_j"] = t.native_energy_j;
+        if (t.threads_cpu_native_ns > 0) baselines[name]["threads_cpu_native_ns"] = t.threads_cpu_native_ns;
     }
     nlohmann::json frame = {{"frame", f.frame},
             {"objects", f.objects},
@@ -168,6 +171,11 @@ nlohmann::json frame_json(const FrameStats& f) {
             {"overlap_ns", p.overlap_ns},
             {"latency_ns", p.latency_ns},
             {"sim_wall_native_ns", f.sim_wall_native_ns},
+            {"energy_j", f.energy.total_j()},
+            {"energy_static_j", f.energy.static_j},
+            {"energy_dynamic_j", f.energy.dynamic_j},
+            {"energy_bus_j", f.energy.bus_j},
+            {"energy_host_j", f.energy.host_j},
             {"baselines", baselines}};
     add_extra(frame, f.extra);
     return frame;
@@ -178,9 +186,16 @@ nlohmann::json frame_json(const FrameStats& f) {
 void RunTotals::add(const FrameStats& frame) {
     Sums& sums = frames_ < warmup_frames_ ? warmup_ : rest_;
     for (int k = 0; k < kPhases; ++k) sums.phases[k] += phase_value(frame.phases, k);
+    sums.energy += frame.energy;
+    sums.pairs += frame.pairs;
     for (const auto& [name, t] : frame.baselines) {
         baseline_samples(name).add(t.native_ns);
         baseline_wall_samples(name).add(t.wall_native_ns);
+        if (t.native_energy_j >= 0) {
+            auto& [joules, count] = sums.native_energy[name];
+            joules += t.native_energy_j;
+            ++count;
+        }
     }
     board_total_.add(frame.phases.total_ns);
     latency_.add(frame.phases.latency_ns);
@@ -253,6 +268,7 @@ ReportSummary RunTotals::summary(const HostTiming& host) const {
         b.run_means_native_ns = figures.run_means;
         b.host_factor = factor;
         b.speedup = speedup(b.host_ns, board.spread);
+        b.energy_j = software_frame_energy_j(host_w_, b.host_ns.mean);
         b.timing = timing_id_;
         if (const auto r = retimed_.find(name); r != retimed_.end()) b.retimed = r->second;
         if (const auto wall = baselines_wall_.find(name); wall != baselines_wall_.end()) {
@@ -281,7 +297,30 @@ ReportSummary RunTotals::summary(const HostTiming& host) const {
     s.latency_ns = latency_figures().spread;
     s.sim_wall_native_ns = sim_wall_figures().spread;
     for (int k = 0; k < kPhases; ++k) s.mean_phase_ns[static_cast<std::size_t>(k)] = mean_phase(k);
+    put_energy(s);
     return s;
+}
+
+// The board's mean energy a frame and a pair, and each baseline's beside it
+// (its energy over the board's: above 1, the board takes less).
+void RunTotals::put_energy(ReportSummary& s) const {
+    const Sums& sums = in_means();
+    const double frames = static_cast<double>(std::max<uint64_t>(frames_in_means(), 1));
+    s.host_package_w = host_w_;
+    s.mean_energy.static_j = sums.energy.static_j / frames;
+    s.mean_energy.dynamic_j = sums.energy.dynamic_j / frames;
+    s.mean_energy.bus_j = sums.energy.bus_j / frames;
+    s.mean_energy.host_j = sums.energy.host_j / frames;
+    const double mean_pairs = static_cast<double>(sums.pairs) / frames;
+    s.mean_energy_per_pair_j = mean_pairs > 0 ? s.mean_energy.total_j() / mean_pairs : 0;
+    for (auto& [name, b] : s.baselines) {
+        b.energy_per_pair_j = mean_pairs > 0 ? b.energy_j / mean_pairs : 0;
+        b.energy_ratio = s.mean_energy.total_j() > 0 ? b.energy_j / s.mean_energy.total_j() : 0;
+        const auto measured = sums.native_energy.find(name);
+        if (measured != sums.native_energy.end() && measured->second.second > 0) {
+            b.native_energy_j = measured->second.first / static_cast<double>(measured->second.second);
+        }
+    }
 }
 
 void ReportWriter::end(const RunTotals& totals, const HostTiming& host, const nlohmann::json* more) {

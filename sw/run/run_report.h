@@ -16,6 +16,7 @@
 
 #include "models/board_spec/board_config.h"
 #include "platform/device_fit.h"
+#include "platform/frame_energy.h"
 #include "platform/settings/setting_choices.h"
 #include "platform/settings/setting_values.h"
 #include "sw/run/format_reference.h"
@@ -39,6 +40,8 @@ struct BaselineTime {
     uint64_t involuntary_switches = 0;  // while it was timed (first try)
     bool migrated = false;              // it moved to another CPU while timed
     double probe_native_ns = 0;         // the slower SpeedProbe beside it (sw/timing/speed_probe.h)
+    double native_energy_j = -1;        // this machine's package energy over the call (RAPL); < 0: not measured
+    double threads_cpu_native_ns = 0;   // a multi-threaded baseline's threads' CPU time together (0: one thread)
 };
 
 struct FrameStats {
@@ -51,6 +54,7 @@ struct FrameStats {
     std::map<std::string, BaselineTime> baselines;
     double sim_wall_native_ns = 0;  // the simulator's own wall time for the frame (no file I/O, no baselines)
     ExtraPairs extra;           // against the float32 reference (none under float32)
+    FrameEnergy energy;         // the board's frame: static, dynamic, bus and host (platform/frame_energy.h)
 };
 
 // What the run is: its scene, board, bus, host and driver settings.
@@ -121,6 +125,9 @@ public:
     // Frames a baseline timed again (BaselineTimer::retime), for the summary.
     void set_retimed(std::map<std::string, std::vector<std::array<double, 3>>> retimed) { retimed_ = std::move(retimed); }
     void set_timing_id(std::string id) { timing_id_ = std::move(id); }
+    // The modelled host's package power (host.package_w): the software's
+    // energy is it times the baseline's host time.
+    void set_host_power(double host_w) { host_w_ = host_w; }
     const std::string& timing_id() const { return timing_id_; }
     uint32_t retime_tries() const { return max_tries_; }
 
@@ -148,11 +155,17 @@ public:
     ReportSummary summary(const HostTiming& host) const;
 
 private:
+    void put_energy(ReportSummary& s) const;
     // Sums over the warm-up frames and over the frames after them, kept
     // apart so the means add the same frames in the same order whatever the count.
     struct Sums {
         double phases[kPhases] = {};
+        FrameEnergy energy;
+        uint64_t pairs = 0;
+        // Each baseline's package energy on this machine (RAPL) and the frames it was measured on.
+        std::map<std::string, std::pair<double, uint64_t>> native_energy;
     };
+    const Sums& in_means() const { return frames_ > warmup_frames_ ? rest_ : warmup_; }
     uint64_t warmup_frames_;
     uint64_t frames_ = 0, pairs_ = 0, cycles_ = 0, stalls_ = 0, last_objects_ = 0;
     ExtraPairs extra_;
@@ -161,6 +174,7 @@ private:
     std::map<std::string, FrameSamples> baselines_, baselines_wall_;
     std::map<std::string, TimingQuality> quality_;
     uint32_t max_tries_ = 0;
+    double host_w_ = 0;
     std::string timing_id_;
     std::map<std::string, std::vector<std::array<double, 3>>> retimed_;
     std::vector<FrameStats> shown_;

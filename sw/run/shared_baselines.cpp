@@ -1,9 +1,11 @@
 #include "sw/run/shared_baselines.h"
 
+#include <algorithm>
 #include <set>
 
 #include "models/common/user_text.h"
 #include "platform/settings/setting_values.h"
+#include "sw/run/baseline_timing.h"
 #include "sw/run/machine_info.h"
 #include "sw/output/digest.h"
 #include "sw/run/version.h"
@@ -45,6 +47,10 @@ nlohmann::json software_workload(const std::string& scene, FrameSource& source, 
                                {"cdvp_version", kCdvpVersion},
                                {"cpu_model", read_machine_info().cpu_model},
                                {"host_profile_sha256", host.profile_sha256}};
+    // A multi-threaded baseline's time depends on the threads it is given.
+    if (std::find(baselines.begin(), baselines.end(), "sap_mt") != baselines.end()) {
+        workload["threads"] = baseline_threads(settings.run.threads, settings.host.cores);
+    }
     if (scene.empty()) {
         workload["trace_frames_sha256"] = frames_digest(source);
         return workload;

@@ -43,6 +43,7 @@ constexpr std::array<FidelityLevel, kFidelityLevels> kLevels{{{ModelLevel::kCycl
                                                              {ModelLevel::kAnalytic, kFormula, 0}}};
 
 const std::array<const char*, ReportSummary::kPhases>& kPhases = ReportSummary::kPhaseKeys;
+constexpr std::size_t kEnergyColumns = 6;  // the board's energy a frame, its four parts, a pair's
 
 FidelityResult read_level(const std::string& report_path, const std::string& pairs_path) {
     const nlohmann::json report = nlohmann::json::parse(slurp(report_path));
@@ -50,6 +51,8 @@ FidelityResult read_level(const std::string& report_path, const std::string& pai
     FidelityResult result;
     result.p50_sim_wall_native_ns = summary.sim_wall_native_ns.p50;
     result.mean_phase_ns = summary.mean_phase_ns;
+    result.mean_energy = summary.mean_energy;
+    result.mean_energy_per_pair_j = summary.mean_energy_per_pair_j;
     result.frames_in_means = summary.frames_in_means;
     result.pairs = slurp(pairs_path);
     result.config = report.value("config", nlohmann::json::object());
@@ -162,19 +165,22 @@ std::string fidelity_csv(const std::vector<FidelityResult>& results) {
     csv << "level,fidelity,bus_model,quantum_ns,frames_in_means,p50_sim_wall_native_ns";
     for (const char* phase : kPhases) csv << ",mean_" << phase;
     for (const char* phase : kPhases) csv << ",error_" << std::string(phase, std::strlen(phase) - 3) << "_percent";
-    csv << ",pairs_identical\n";
+    csv << ",mean_energy_j,mean_energy_static_j,mean_energy_dynamic_j,mean_energy_bus_j,mean_energy_host_j,"
+           "mean_energy_per_pair_j,pairs_identical\n";
     csv << std::setprecision(10);
     for (std::size_t k = 0; k < results.size(); ++k) {
         const FidelityResult& r = results[k];
         csv << k << ',' << kLevels[k].fidelity() << ',' << kLevels[k].bus_model << ',' << kLevels[k].quantum_ns << ',';
         if (!r.not_run.empty()) {  // empty figures, and why in the last column
-            csv << std::string(2 + 2 * kPhases.size(), ',') << "not run\n";
+            csv << std::string(2 + 2 * kPhases.size() + kEnergyColumns, ',') << "not run\n";
             continue;
         }
         csv << r.frames_in_means << ','
             << r.p50_sim_wall_native_ns;
         for (double ns : r.mean_phase_ns) csv << ',' << ns;
         for (std::size_t p = 0; p < kPhases.size(); ++p) csv << ',' << fidelity_error_percent(r, results[0], p);
+        const FrameEnergy& e = r.mean_energy;
+        for (double j : {e.total_j(), e.static_j, e.dynamic_j, e.bus_j, e.host_j, r.mean_energy_per_pair_j}) csv << ',' << j;
         csv << ',' << (r.pairs == results[0].pairs ? "yes" : "no") << '\n';
     }
     return csv.str();
@@ -182,8 +188,8 @@ std::string fidelity_csv(const std::vector<FidelityResult>& results) {
 
 std::string fidelity_table(const std::vector<FidelityResult>& results) {
     std::ostringstream t;
-    t << "level                         wall/frame   total (sim)     error   pairs\n"
-      << "                              (p50)        (mean)\n";
+    t << "level                         wall/frame   total (sim)     error   energy/frame   pairs\n"
+      << "                              (p50)        (mean)                    (mean)\n";
     for (std::size_t k = 0; k < results.size(); ++k) {
         const FidelityResult& r = results[k];
         std::ostringstream name;
@@ -195,7 +201,8 @@ std::string fidelity_table(const std::vector<FidelityResult>& results) {
         t << std::left << std::setw(30) << name.str() << std::right << std::fixed << std::setprecision(3)
           << std::setw(9) << r.p50_sim_wall_native_ns / 1e6 << " ms" << std::setw(11) << r.mean_phase_ns.back() / 1e3
           << " us" << std::setw(9) << std::setprecision(4)
-          << fidelity_error_percent(r, results[0], kPhases.size() - 1) << " %   "
+          << fidelity_error_percent(r, results[0], kPhases.size() - 1) << " %" << std::setw(10)
+          << std::setprecision(4) << r.mean_energy.total_j() * 1e3 << " mJ   "
           << (r.pairs == results[0].pairs ? "identical" : "DIFFER") << '\n';
     }
     return t.str();

@@ -48,6 +48,8 @@ const std::array<FidelityLevel, kFidelityLevels>& fidelity_levels();
 struct FidelityResult {
     double p50_sim_wall_native_ns = 0;
     std::array<double, ReportSummary::kPhases> mean_phase_ns{};
+    FrameEnergy mean_energy;            // the board's energy a frame by part (docs/energy.md)
+    double mean_energy_per_pair_j = 0;
     std::string pairs;  // the pairs CSV, to compare with the reference's
     uint64_t frames_in_means = 0;
     nlohmann::json config;  // the report's, for the figure's title

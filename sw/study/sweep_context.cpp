@@ -145,7 +145,8 @@ std::string baseline_words(const std::string& baseline) {
     static const std::map<std::string, std::string> kWhat{{"sap", "Bullet's sweep and prune"},
                                                           {"dbvt", "Bullet's dynamic AABB tree"},
                                                           {"brute", "brute force"},
-                                                          {"soa", "all pairs over structure of arrays"}};
+                                                          {"soa", "all pairs over structure of arrays"},
+                                                          {"sap_mt", "sweep and prune on several threads"}};
     const auto at = kWhat.find(baseline);
     return at == kWhat.end() ? baseline : baseline + " (" + at->second + ")";
 }

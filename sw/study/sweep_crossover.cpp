@@ -123,7 +123,7 @@ void add_crossovers(const Samples& samples, const std::vector<std::string>& vari
                     const std::vector<std::string>& baselines, FigurePlan& plan) {
     std::string csv = "board,m,";
     for (const std::string& axis : variant_axes) csv += axis + ",";
-    csv += "baseline,crossover_n,how,timing\n";
+    csv += "baseline,crossover_n,how,timing,energy_crossover_n,energy_how\n";
     for (const std::string& baseline : baselines) {
         std::vector<PlotSeries> drawn;
         std::vector<const Sample*> behind;  // the points the figure rests on
@@ -132,8 +132,13 @@ void add_crossovers(const Samples& samples, const std::vector<std::string>& vari
             const std::string& board = samples.boards[b];
             // One line per variant: crossover N against m.
             std::map<std::string, PlotSeries> by_variant;
+            // Where the board starts to take less energy a frame than the
+            // software (docs/energy.md), found the same way.
+            const Series energy = series(samples, board, baseline + "_energy_ratio", 1);
             for (const auto& [key, line] : series(samples, board, baseline + "_speedup", 1)) {
                 const Crossover c = crossover(line.points);
+                const auto energy_line = energy.find(key);
+                const Crossover e = energy_line != energy.end() ? crossover(energy_line->second.points) : Crossover{};
                 std::string values;
                 for (const Sample& s : samples.all) {
                     if (s.board == board && s.variant == line.variant) {
@@ -143,8 +148,8 @@ void add_crossovers(const Samples& samples, const std::vector<std::string>& vari
                 }
                 const bool disturbed = rests_on_disturbed(samples, board, line, c, baseline);
                 csv += board + "," + num(line.m) + "," + values + baseline + "," + (c.n > 0 ? num(c.n) : "") + "," +
-                       c.how + (disturbed ? " (disturbed timing)" : "") + "," + (disturbed ? "disturbed" : "clean") +
-                       "\n";
+                       c.how + (disturbed ? " (disturbed timing)" : "") + "," + (disturbed ? "disturbed" : "clean") + "," +
+                       (e.n > 0 ? num(e.n) : "") + "," + e.how + "\n";
                 PlotSeries& variant_line = by_variant[key.first];
                 variant_line.title = line.variant.empty() ? board : board + " " + line.variant;
                 // A colour per board, a dash per variant (or the other way about).

@@ -175,7 +175,8 @@ void put_baselines(const ReportSummary& summary, RowBuilder& out, ColumnFilter k
     for (const auto& [name, b] : summary.baselines) {
         const std::pair<const char*, double> figures[] = {
             {"_mean_host_ns", b.host_ns.mean}, {"_p50_host_ns", b.host_ns.p50}, {"_p99_host_ns", b.host_ns.p99},
-            {"_max_host_ns", b.host_ns.max},   {"_host_factor", b.host_factor}, {"_speedup", b.speedup}};
+            {"_max_host_ns", b.host_ns.max},   {"_host_factor", b.host_factor}, {"_speedup", b.speedup},
+            {"_energy_j", b.energy_j},         {"_energy_ratio", b.energy_ratio}};
         for (const auto& [suffix, value] : figures) {
             if (keep(name + suffix)) out.put(name + suffix, number_text(value));
         }
@@ -223,8 +224,11 @@ bool is_compact_result(const std::string& column) {
         "median_stall_cycles", "median_overflow_pauses", "median_boxes_sent", "median_upload_bytes",
         "median_readback_bytes", "median_upload_ns", "median_start_ns", "median_compute_ns", "median_irq_ns",
         "median_readback_ns", "median_driver_ns", "median_total_ns", "median_latency_ns", "mean_total_ns",
+        "mean_energy_j", "mean_energy_static_j", "mean_energy_dynamic_j", "mean_energy_bus_j", "mean_energy_host_j",
+        "mean_energy_per_pair_j",
         "p99_total_ns", "max_total_ns"};
     return kept.count(column) != 0 || ends_with(column, "_mean_host_ns") || ends_with(column, "_speedup") ||
+           ends_with(column, "_energy_j") || ends_with(column, "_energy_ratio") ||
            ends_with(column, "_timing_quality") || ends_with(column, "_timing_id");
 }
 
@@ -257,13 +261,20 @@ PointRow failed_row(const Grid& grid, const Point& point, PointStatus status, co
     return {{}, row};
 }
 
+// A baseline's energy (its host time x the host's power) and its ratio to
+// the board's; the board's own energy (mean_energy_*, median_energy_*) is simulated.
+bool is_baseline_energy_column(const std::string& column) {
+    return (ends_with(column, "_energy_j") || ends_with(column, "_energy_ratio")) && column.rfind("mean_", 0) != 0 &&
+           column.rfind("median_", 0) != 0;
+}
+
 // Measured: native times, modelled-host times (native x the host factor),
-// speedups, and where and under what load they were taken.
+// speedups, the software's energy, and where and under what load they were taken.
 bool is_measured_column(const std::string& column) {
     return column == "point_wall_s" || column == kChecksumColumn || column == "load_average_end" ||
            column.rfind("config.provenance.", 0) == 0 || column.rfind("config.budgets.", 0) == 0 ||
-           ends_with(column, "_native_ns") ||
-           ends_with(column, "_host_ns") || ends_with(column, "_speedup") || column.find("_timing_") != std::string::npos;
+           ends_with(column, "_native_ns") || ends_with(column, "_host_ns") || ends_with(column, "_speedup") ||
+           is_baseline_energy_column(column) || column.find("_timing_") != std::string::npos;
 }
 
 std::string RowView::get(const std::string& column) const {

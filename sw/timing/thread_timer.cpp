@@ -35,17 +35,20 @@ CallTimer::Mark CallTimer::mark() {
     m.cpu = sched_getcpu();
     m.wall_ns = read_clock(CLOCK_MONOTONIC);
     m.cpu_ns = read_clock(CLOCK_THREAD_CPUTIME_ID);
+    m.process_cpu_ns = read_clock(CLOCK_PROCESS_CPUTIME_ID);
     return m;
 }
 
 CallTiming CallTimer::since(const Mark& start) {
     const int64_t cpu_ns = read_clock(CLOCK_THREAD_CPUTIME_ID);
+    const int64_t process_cpu_ns = read_clock(CLOCK_PROCESS_CPUTIME_ID);
     const int64_t wall_ns = read_clock(CLOCK_MONOTONIC);
     const int cpu = sched_getcpu();
     const long involuntary = involuntary_switches();
     CallTiming t;
     t.cpu_ns = static_cast<double>(cpu_ns - start.cpu_ns);
     t.wall_ns = static_cast<double>(wall_ns - start.wall_ns);
+    t.process_cpu_ns = static_cast<double>(process_cpu_ns - start.process_cpu_ns);
     t.involuntary_switches = involuntary > start.involuntary ? static_cast<uint64_t>(involuntary - start.involuntary) : 0;
     t.migrated = cpu != start.cpu;
     return t;

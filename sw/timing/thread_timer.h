@@ -17,6 +17,7 @@ namespace cdvp {
 struct CallTiming {
     double cpu_ns = 0;   // the estimator
     double wall_ns = 0;  // beside it: what an idle machine's clock on the wall would say
+    double process_cpu_ns = 0;  // every thread of the process: a multi-threaded call's threads together
     uint64_t involuntary_switches = 0;
     bool migrated = false;  // ran on another CPU at the end than at the start
 
@@ -38,6 +39,7 @@ private:
         int cpu = -1;
         int64_t wall_ns = 0;
         int64_t cpu_ns = 0;
+        int64_t process_cpu_ns = 0;
     };
     static Mark mark();
     static CallTiming since(const Mark& start);

@@ -189,8 +189,37 @@ TEST(SapBroadPhase, MoreBoxesThanA16BitSweepHolds) {
     }
 }
 
-TEST(MakeBroadPhase, NamesAreTheFourBaselines) {
-    EXPECT_EQ(broad_phase_names(), (std::vector<std::string>{"sap", "dbvt", "brute", "soa"}));
+TEST(MakeBroadPhase, NamesAreTheFiveBaselinesAndTheCalibratedFourRunOnOneThread) {
+    EXPECT_EQ(broad_phase_names(), (std::vector<std::string>{"sap", "dbvt", "brute", "soa", "sap_mt"}));
+    EXPECT_EQ(single_thread_broad_phase_names(), (std::vector<std::string>{"sap", "dbvt", "brute", "soa"}));
+    for (const std::string& name : single_thread_broad_phase_names()) EXPECT_EQ(make_broad_phase(name)->threads(), 1u);
+}
+
+// The parallel sweep finds the same pairs whatever its threads (more threads
+// than this machine has cores, too: they take turns), frame after frame.
+TEST(ParallelSap, EveryThreadCountFindsTheExactPairs) {
+    for (const unsigned threads : {1u, 2u, 3u, 8u}) {
+        auto phase = make_broad_phase("sap_mt", BaselineOptions{threads});
+        EXPECT_EQ(phase->threads(), threads);
+        for (const Boxes& boxes : test::moving_frames(1500, 4, 5 + threads)) {
+            expect_exact(*phase, boxes, std::to_string(threads) + " threads");
+        }
+    }
+    EXPECT_GE(make_broad_phase("sap_mt")->threads(), 1u);  // 0: this machine's cores
+}
+
+TEST(ParallelSap, APairBudgetStopsItOnAnyThread) {
+    auto phase = make_broad_phase("sap_mt", BaselineOptions{3});
+    const Boxes boxes = test::random_boxes(700, 3);
+    PairList all;
+    phase->find_pairs(boxes, all);
+    ASSERT_GT(all.size(), 10u);
+    phase->set_pair_budget(PairBudget(all.size() - 1));
+    PairList out;
+    EXPECT_THROW(phase->find_pairs(boxes, out), PairBudgetExceeded);
+    phase->set_pair_budget(PairBudget(all.size()));
+    phase->find_pairs(boxes, out);
+    EXPECT_EQ(out.size(), all.size());
 }
 
 TEST(MakeBroadPhase, UnknownNameThrows) {
@@ -198,7 +227,7 @@ TEST(MakeBroadPhase, UnknownNameThrows) {
         make_broad_phase("nope");
         FAIL() << "no exception";
     } catch (const std::invalid_argument& error) {
-        EXPECT_STREQ(error.what(), "unknown baseline 'nope'; expected one of: sap, dbvt, brute, soa");
+        EXPECT_STREQ(error.what(), "unknown baseline 'nope'; expected one of: sap, dbvt, brute, soa, sap_mt");
     }
 }
 

@@ -89,7 +89,7 @@ TEST_F(Bullet, EverySettingsFlagIsAcceptedWithItsOriginAndABadValueRefused) {
     // max-memory, max-pairs),
     // the driver's communication (upload, pair-format, interrupts) and the
     // spheres scene's moving share (its default only: Bullet's scenes refuse another).
-    EXPECT_EQ(tried, 33u) << "the flags bullet shares with run";
+    EXPECT_EQ(tried, 34u) << "the flags bullet shares with run";
 }
 
 TEST_F(Bullet, LayersPresetThenConfigThenOverridesThenFlagsAsRunDoes) {

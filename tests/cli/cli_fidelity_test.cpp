@@ -58,6 +58,14 @@ TEST_F(Cli, FidelityRunsEveryLevelAndWritesTheTableAndThePlot) {
         EXPECT_GT(std::stod(rows[k][column("p50_sim_wall_native_ns")]), 0.0);
         EXPECT_GT(std::stod(rows[k][column("mean_total_ns")]), 0.0);
         EXPECT_EQ(rows[k][column("pairs_identical")], "yes") << "level " << k;
+        // Every level gives the board's energy a frame, and its parts add up (docs/energy.md).
+        const double energy = std::stod(rows[k][column("mean_energy_j")]);
+        EXPECT_GT(energy, 0.0) << "level " << k;
+        double parts = 0;
+        for (const char* part : {"static", "dynamic", "bus", "host"}) {
+            parts += std::stod(rows[k][column(std::string("mean_energy_") + part + "_j")]);
+        }
+        EXPECT_NEAR(parts, energy, energy * 1e-6) << "level " << k;
         const bool formula = rows[k][column("bus_model")] == "formula";
         const bool engine = rows[k][column("fidelity")] != "analytic";
         if (engine && !formula) {
@@ -98,7 +106,7 @@ TEST_F(Cli, FidelityTakesEachLevelsFiguresFromItsRunsSummaryAfterTheWarmup) {
         EXPECT_EQ(rows[k][1], "rtl");
         EXPECT_EQ(rows[k].back(), "not run") << "row " << k;
     }
-    EXPECT_NE(slurp(dir_ / "fid" / "fidelity.csv").find(",0" + std::string(17, ',') + "not run\n"), std::string::npos);
+    EXPECT_NE(slurp(dir_ / "fid" / "fidelity.csv").find(",0" + std::string(23, ',') + "not run\n"), std::string::npos);
     for (const char* name : {"frames_in_means", "mean_total_ns", "mean_compute_ns", "mean_upload_ns"}) {
         const auto at = static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
         ASSERT_LT(at, header.size()) << name;

@@ -42,7 +42,7 @@ INSTANTIATE_TEST_SUITE_P(
                   ": bus.wait_states.value: key given twice"},
         BadPreset{"MissingKey", "\"call_ns\"", "\"call_nanoseconds\"", "",
                   ": host.call_nanoseconds: unknown key; did you mean 'call_ns'?"},
-        BadPreset{"BadJson", "\"host\": {", "\"host\" {", "", ":41:10: invalid JSON: syntax error"},
+        BadPreset{"BadJson", "\"host\": {", "\"host\" {", "", ":48:10: invalid JSON: syntax error"},
         BadPreset{"FifoTooSmallForM", "\"fifo_depth\": {\"value\": 512", "\"fifo_depth\": {\"value\": 4", "--m 8",
                   ": board.fifo_depth: expected 2m-1 = 15 (one cycle's hits) to 1048576 pairs, got 4 (with --m 8)"},
         BadPreset{"ControlCharacterInName", "\"name\": \"adm-xrc-ii\"", "\"name\": \"adm\\u001b[2J\"", "",

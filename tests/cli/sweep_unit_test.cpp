@@ -342,6 +342,7 @@ TEST(SweepFigures, CrossoverIsInterpolatedInLogNOrMeasuredAtTheSmallestN) {
     const Grid grid(std::vector<Axis>{{"m", {"1", "8"}}, {"objects", {"100", "400"}}});
     SweepTable table(grid);
     // m=1 never wins; m=8 goes from 0.5x at 100 to 2x at 400: crossover at 100 * 4^(1/3).
+    // In energy m=8 goes from 0.4x to 1.6x: crossover at 100 * 4^(1/2).
     const double speedups[4] = {0.1, 0.2, 0.5, 2.0};
     for (std::size_t k = 0; k < 4; ++k) {
         PointRow row = failed_row(grid, grid.point(k), PointStatus::kOk, "", 0.5);
@@ -350,6 +351,7 @@ TEST(SweepFigures, CrossoverIsInterpolatedInLogNOrMeasuredAtTheSmallestN) {
         row.values["mean_total_ns"] = "1000";
         row.values["sap_mean_host_ns"] = std::to_string(1000 * speedups[k]);
         row.values["sap_speedup"] = std::to_string(speedups[k]);
+        row.values["sap_energy_ratio"] = std::to_string(0.8 * speedups[k]);
         table.add(k, row);
     }
     const FigurePlan plan = plan_figures(grid, table);
@@ -357,11 +359,14 @@ TEST(SweepFigures, CrossoverIsInterpolatedInLogNOrMeasuredAtTheSmallestN) {
     for (const Figure& f : plan.figures) {
         if (f.file == "crossover.csv") crossover = f.data;
     }
-    EXPECT_NE(crossover.find("b,1,sap,,none,clean\n"), std::string::npos) << crossover;
+    EXPECT_NE(crossover.find("b,1,sap,,none,clean,,none\n"), std::string::npos) << crossover;
     const std::size_t at = crossover.find("b,8,sap,");
     ASSERT_NE(at, std::string::npos) << crossover;
     EXPECT_NEAR(std::stod(crossover.substr(at + 8)), 100 * std::cbrt(4.0), 1e-6);
     EXPECT_NE(crossover.find("interpolated"), std::string::npos);
+    const std::size_t energy = crossover.find(",interpolated,clean,", at);
+    ASSERT_NE(energy, std::string::npos) << crossover;
+    EXPECT_NEAR(std::stod(crossover.substr(energy + 20)), 200, 1e-6) << crossover;
 }
 
 TEST(SweepFigures, PlotsAgainstNAreSkippedWithANoteWithoutAnObjectsAxis) {

@@ -57,6 +57,21 @@ protected:
         return "accepted";
     }
     static json preset(const std::string& name) { return json::parse(read(boards_directory() + "/" + name + ".json")); }
+    // visit(preset name, its JSON, section, key) for every {"value": ...} field of every shipped preset; how many.
+    static int for_each_field(const std::function<void(const std::string&, const json&, const char*, const std::string&)>& visit) {
+        int fields = 0;
+        for (const std::string& name : board_preset_names()) {
+            const json original = preset(name);
+            for (const char* section : {"board", "device", "bus", "host"}) {
+                for (const auto& [key, field] : original[section].items()) {
+                    if (!field.is_object()) continue;
+                    ++fields;
+                    visit(name, original, section, key);
+                }
+            }
+        }
+        return fields;
+    }
 
     std::string dir_, path_;
 };
@@ -64,25 +79,47 @@ protected:
 // Every {"value": ...} field of every shipped preset, set far outside any
 // plausible range either way, is refused by a range naming its key and unit.
 TEST_F(PresetFile, EveryNumberOfEveryPresetIsRangeChecked) {
-    int fields = 0;
+    const int fields = for_each_field([&](const std::string& name, const json& original, const char* section,
+                                          const std::string& key) {
+        for (const double bad : {1e300, -1e300, -1.0}) {
+            json changed = original;
+            changed[section][key]["value"] = bad;
+            const std::string error = error_for(changed.dump());
+            const std::string expected = path_ + ": " + section + "." + key + ": expected ";
+            EXPECT_EQ(0u, error.rfind(expected, 0)) << name << ": " << error;
+            EXPECT_NE(std::string::npos, error.find(" to ")) << "a range: " << error;
+        }
+    });
+    EXPECT_EQ(45 + 45 + 39, fields)
+        << "board 5, device 12 (6 of them power), host 10 (package power, cores), PCI bus 18, PCIe bus 12 fields";
+}
+
+// Every number of every shipped preset, the power figures among them, names
+// its source: one without, or with an empty one, is refused naming its key.
+TEST_F(PresetFile, EveryNumberOfEveryPresetNamesItsSource) {
+    const int fields = for_each_field([&](const std::string& name, const json& original, const char* section,
+                                          const std::string& key) {
+        EXPECT_FALSE(original[section][key].at("source").get<std::string>().empty()) << name << ": " << key;
+        json unsourced = original;
+        unsourced[section][key].erase("source");
+        json empty = original;
+        empty[section][key]["source"] = "";
+        for (const json& bad : {unsourced, empty}) {
+            const std::string error = error_for(bad.dump());
+            EXPECT_EQ(0u, error.rfind(path_ + ": " + section + "." + key + ": expected {\"value\"", 0))
+                << name << ": " << error;
+        }
+    });
+    EXPECT_GT(fields, 100);
+    // The energy model's figures are every preset's to give.
     for (const std::string& name : board_preset_names()) {
         const json original = preset(name);
-        for (const char* section : {"board", "device", "bus", "host"}) {
-            for (const auto& [key, field] : original[section].items()) {
-                if (!field.is_object()) continue;
-                ++fields;
-                for (const double bad : {1e300, -1e300, -1.0}) {
-                    json changed = original;
-                    changed[section][key]["value"] = bad;
-                    const std::string error = error_for(changed.dump());
-                    const std::string expected = path_ + ": " + section + "." + key + ": expected ";
-                    EXPECT_EQ(0u, error.rfind(expected, 0)) << name << ": " << error;
-                    EXPECT_NE(std::string::npos, error.find(" to ")) << "a range: " << error;
-                }
-            }
+        for (const char* power : {"static_w", "clb_uw_per_mhz", "block_ram_uw_per_mhz", "io_pj_per_toggle"}) {
+            EXPECT_GT(original["device"][power]["value"].get<double>(), 0) << name << ": device." << power;
         }
+        EXPECT_GT(original["bus"]["active_w"]["value"].get<double>(), 0) << name;
+        EXPECT_GT(original["host"]["package_w"]["value"].get<double>(), 0) << name;
     }
-    EXPECT_EQ(36 + 36 + 30, fields) << "board 5, device 6, host 8, PCI bus 17, PCIe bus 11 fields";
 }
 
 TEST_F(PresetFile, CountsMustBeWholeNumbers) {

@@ -55,7 +55,8 @@ TEST(SettingsTable, EveryPresetKeyMapsToExactlyOneSettingOfItsBus) {
             }
         }
     }
-    EXPECT_EQ(3 * (5 + 8 + 9) + 18 + 18 + 12, keys) << "board, device, host and bus keys of the three presets";
+    EXPECT_EQ(3 * (5 + 14 + 11) + 19 + 19 + 13, keys)
+        << "board, device (power figures among them), host and bus keys of the three presets";
 }
 
 TEST(SettingsTable, EveryDedicatedFlagBindsExactlyOneSetting) {

@@ -40,6 +40,7 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
+[ -n "${CDVP_SLURM_KEEP:-}" ] && trap - EXIT
 fail() {
   echo "FAIL: $*"
   for log in "$work"/log/*.log "$work"/run/results/*.log; do
@@ -94,7 +95,7 @@ sinfo -h -o %T | grep -q idle || fail "the test's Slurm node did not come up"
 # A grid of 8 points whose points take a moment, in 2 shards of 4.
 cd "$work/run"
 export CDVP=$cdvp RESULTS=results SHARDS=2
-export GRID="--board adm-xrc-ii --set m=1,4 --set objects=500,1000,2000,3000 --frames 40 --baseline sap"
+export GRID="--board adm-xrc-ii --set m=1,4 --set objects=500,1000,2000,4000 --frames 600 --baseline sap"
 submitted=$("$source_dir/docs/sweep-slurm.sh" --cpus-per-task=1)
 echo "$submitted"
 array=$(sed -n 's/^sweep: job array \([0-9]*\) .*/\1/p' <<< "$submitted")
@@ -113,7 +114,7 @@ for _ in $(seq 600); do
     break
   fi
   [ "$done_rows" -ge 4 ] && break
-  sleep 0.2
+  sleep 0.1
 done
 [ "$killed" = yes ] || fail "task 1 ran all its points before it could be killed"
 # Its merge can no longer start: drop it, and wait for task 2.
@@ -134,9 +135,10 @@ read -r -a grid <<< "$GRID"
 "$cdvp" sweep "${grid[@]}" --no-plots -q --out local
 python3 - results/all/sweep.csv local/sweep.csv <<'PY' || fail "the merged rows differ from a local sweep's"
 import csv, sys
-def measured(c):
+def measured(c):  # sw/study/sweep_table.cpp's is_measured_column
+    baseline_energy = c.endswith(("_energy_j", "_energy_ratio")) and not c.startswith(("mean_", "median_"))
     return (c in ("point_wall_s", "checksum", "load_average_end") or c.startswith(("config.provenance.", "config.budgets."))
-            or c.endswith(("_native_ns", "_host_ns", "_speedup")) or "_timing_" in c)
+            or c.endswith(("_native_ns", "_host_ns", "_speedup")) or baseline_energy or "_timing_" in c)
 def rows(path):
     with open(path, newline="") as f:
         return [{k: v for k, v in row.items() if not measured(k)} for row in csv.DictReader(f)]

@@ -70,7 +70,8 @@ class Report:
 
 # A frame's numbers as the report gives them (sw/run/run_report.cpp, its keys in order), and each
 # baseline's times of a frame: the columns of a run of no frames too.
-FRAME_COLUMNS = ("boxes_sent", "compute_cycles", "compute_ns", "driver_ns", "extra_driver_ns", "extra_pairs",
+FRAME_COLUMNS = ("boxes_sent", "compute_cycles", "compute_ns", "driver_ns", "energy_bus_j", "energy_dynamic_j",
+                 "energy_host_j", "energy_j", "energy_static_j", "extra_driver_ns", "extra_pairs",
                  "extra_readback_ns", "extra_share", "frame", "irq_ns", "latency_ns", "load_wait_slots", "objects",
                  "overflow_pauses", "overlap_ns", "pairs", "readback_bytes", "readback_ns", "reference_pairs",
                  "sim_wall_native_ns", "stall_cycles", "start_ns", "sweep_cycles", "timeouts_recovered",
@@ -81,7 +82,7 @@ BASELINE_TIMES = ("host_ns", "involuntary_switches", "migrated", "native_ns", "p
 def _dtype(column):
     if column.endswith("_migrated"):
         return "bool"
-    return "float64" if column.endswith("_ns") or column == "extra_share" else "int64"
+    return "float64" if column.endswith(("_ns", "_j")) or column == "extra_share" else "int64"
 
 
 def frames_table(frames, baselines=()):

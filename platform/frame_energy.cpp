@@ -1,0 +1,43 @@
+#include "platform/frame_energy.h"
+
+#include <algorithm>
+
+namespace cdvp {
+
+PowerCoefficients power_coefficients(const Settings& s) {
+    PowerCoefficients p;
+    p.static_w = s.power.static_w;
+    p.clb_uw_per_mhz = s.power.clb_uw_per_mhz;
+    p.luts_per_clb = s.power.luts_per_clb;
+    p.flip_flops_per_clb = s.power.flip_flops_per_clb;
+    p.block_ram_uw_per_mhz = s.power.block_ram_uw_per_mhz;
+    p.io_pj_per_toggle = s.power.io_pj_per_toggle;
+    p.toggle_rate = s.power.toggle_percent / 100.0;
+    p.bus_w = s.power.bus_w;
+    p.host_w = s.power.host_w;
+    return p;
+}
+
+FrameActivity frame_activity(const FramePhases& p, uint32_t local_bus_width_bits) {
+    FrameActivity a;
+    a.frame_ns = p.total_ns;
+    a.transfer_ns = p.upload_ns + p.start_ns + p.readback_ns;
+    a.active_cycles = p.compute_cycles - std::min(p.stall_cycles, p.compute_cycles);
+    const uint64_t upload_bits = p.upload_bytes * 8;
+    const uint64_t width = std::max<uint32_t>(local_bus_width_bits, 1);
+    a.memory_write_cycles = (upload_bits + width - 1) / width;
+    a.io_bits = upload_bits + 2 * p.readback_bytes * 8;
+    return a;
+}
+
+BoardEnergy::BoardEnergy(const Settings& settings, const Resources& used)
+    : power_(power_coefficients(settings)), used_(used) {
+    if (settings.bus_type == BusType::kPci) local_bus_width_bits_ = settings.pci.local_bus.width_bits;
+    if (settings.bus_type == BusType::kPcie) local_bus_width_bits_ = settings.pcie.local_bus.width_bits;
+}
+
+FrameEnergy BoardEnergy::frame(const FramePhases& phases) const {
+    return board_frame_energy(power_, used_, frame_activity(phases, local_bus_width_bits_));
+}
+
+}  // namespace cdvp

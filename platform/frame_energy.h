@@ -1,0 +1,36 @@
+// A run's energy per frame: the energy model (models/energy) fed from the
+// settings (the presets' power figures), the board's resources (the device
+// fit) and each frame's phases and counters (docs/energy.md).
+#pragma once
+
+#include "models/energy/energy_model.h"
+#include "platform/driver/frame_phases.h"
+#include "platform/settings/settings.h"
+
+namespace cdvp {
+
+// The energy model's coefficients from the settings (device.*, bus.active_w, host.package_w).
+PowerCoefficients power_coefficients(const Settings& settings);
+
+// What a frame did, from its phases: the lanes active for the sweep's
+// cycles less its stalls; the coordinate memories written a local-bus word
+// a cycle through the upload; the boxes crossing the device's pins once on
+// their way in, the pairs twice (into the off-chip pair buffer, then out
+// to the bridge).
+FrameActivity frame_activity(const FramePhases& phases, uint32_t local_bus_width_bits);
+
+// The energy of a run's frames on one board.
+class BoardEnergy {
+public:
+    // used: the board's resources on its device (none without a device family: no dynamic energy).
+    BoardEnergy(const Settings& settings, const Resources& used);
+    FrameEnergy frame(const FramePhases& phases) const;
+    double host_w() const { return power_.host_w; }
+
+private:
+    PowerCoefficients power_;
+    Resources used_;
+    uint32_t local_bus_width_bits_ = 32;
+};
+
+}  // namespace cdvp

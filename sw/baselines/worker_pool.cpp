@@ -1,0 +1,72 @@
+#include "sw/baselines/worker_pool.h"
+
+#include <algorithm>
+
+namespace cdvp {
+
+WorkerPool::WorkerPool(unsigned threads) {
+    const unsigned workers = std::max(threads, 1u) - 1;
+    for (unsigned t = 0; t < workers; ++t) workers_.emplace_back([this, t] { work(t); });
+}
+
+WorkerPool::~WorkerPool() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stopping_ = true;
+    }
+    start_.notify_all();
+    for (std::thread& worker : workers_) worker.join();
+}
+
+void WorkerPool::run(const std::function<void(unsigned)>& job) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        job_ = &job;
+        pending_ = size();
+        error_ = nullptr;
+        ++generation_;
+    }
+    start_.notify_all();
+    std::exception_ptr mine;
+    try {
+        job(size() - 1);
+    } catch (...) {
+        mine = std::current_exception();
+    }
+    finish_one(mine);
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [this] { return pending_ == 0; });
+    job_ = nullptr;
+    if (error_) std::rethrow_exception(error_);
+}
+
+void WorkerPool::finish_one(std::exception_ptr error) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (error && !error_) error_ = error;
+    if (--pending_ == 0) done_.notify_all();
+}
+
+void WorkerPool::work(unsigned index) {
+    uint64_t seen = 0;
+    while (true) {
+        const std::function<void(unsigned)>* job = nullptr;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            start_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+            if (stopping_) return;
+            seen = generation_;
+            job = job_;
+        }
+        std::exception_ptr error;
+        try {
+            (*job)(index);
+        } catch (...) {
+            error = std::current_exception();
+        }
+        finish_one(error);
+    }
+}
+
+unsigned machine_threads() { return std::max(std::thread::hardware_concurrency(), 1u); }
+
+}  // namespace cdvp
