@@ -5,19 +5,18 @@
 // eight consecutive frames are played in turn. A summary of CPU times per
 // frame and the ratios closes the output.
 //   fast_engine_bench [google benchmark flags]
-#include <unistd.h>
 
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <cstdio>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "models/fast_engine/fast_engine.h"
 #include "sw/baselines/soa_broad_phase.h"
+#include "tests/bench/cpu_time_reporter.h"
 #include "tests/bench/spheres_frames.h"
 #include "tests/support/core_driver.h"
 
@@ -124,33 +123,12 @@ BENCHMARK(BM_SoaBaseline)->Arg(500)->Arg(2000)->Arg(10000)->Arg(65536)->Unit(ben
 BENCHMARK(BM_FastEngineTiled)->Arg(2000)->Arg(10000)->Arg(65536)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ClockedBoardCore)->Arg(500)->Arg(2000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
-// The console table, keeping each run's CPU time per frame for the summary
-// (CPU time: the machine may be shared).
-class SummaryReporter : public benchmark::ConsoleReporter {
-public:
-    SummaryReporter() : ConsoleReporter(isatty(1) ? OO_ColorTabular : OO_Tabular) {}
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        for (const Run& run : runs) {
-            if (run.run_type == Run::RT_Iteration && run.iterations > 0) {
-                cpu_us_[run.benchmark_name()] = 1e6 * run.cpu_accumulated_time / static_cast<double>(run.iterations);
-            }
-        }
-    }
-    double cpu_us(const std::string& name) const {
-        auto it = cpu_us_.find(name);
-        return it == cpu_us_.end() ? 0.0 : it->second;
-    }
-
-private:
-    std::map<std::string, double> cpu_us_;
-};
 
 }  // namespace
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
-    SummaryReporter reporter;
+    cdvp::bench::CpuTimeReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
     std::printf("CPU time per frame, fast engine (pairs + timeline) against:\n");
     for (const char* n : {"500", "2000", "10000", "65536"}) {

@@ -8,7 +8,6 @@
 // (exit 1 on any difference). A summary of CPU times per frame closes the
 // output.
 //   grid_engine_bench [google benchmark flags]
-#include <unistd.h>
 
 #include <benchmark/benchmark.h>
 
@@ -16,12 +15,12 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
-#include <map>
 #include <string>
 #include <vector>
 
 #include "models/fast_engine/fast_engine.h"
 #include "models/grid_fast_engine/grid_fast_engine.h"
+#include "tests/bench/cpu_time_reporter.h"
 #include "tests/bench/spheres_frames.h"
 #include "tests/oracle/cgal_oracle.h"
 
@@ -118,34 +117,13 @@ bool oracle_check(std::size_t n) {
     return same;
 }
 
-// The console table, keeping each run's CPU time per frame for the summary
-// (CPU time: the machine may be shared).
-class SummaryReporter : public benchmark::ConsoleReporter {
-public:
-    SummaryReporter() : ConsoleReporter(isatty(1) ? OO_ColorTabular : OO_Tabular) {}
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        for (const Run& run : runs) {
-            if (run.run_type == Run::RT_Iteration && run.iterations > 0) {
-                cpu_ms_[run.benchmark_name()] = 1e3 * run.cpu_accumulated_time / static_cast<double>(run.iterations);
-            }
-        }
-    }
-    double cpu_ms(const std::string& name) const {
-        auto it = cpu_ms_.find(name);
-        return it == cpu_ms_.end() ? 0.0 : it->second;
-    }
-
-private:
-    std::map<std::string, double> cpu_ms_;
-};
 
 }  // namespace
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     if (!oracle_check(1000000)) return 1;
-    SummaryReporter reporter;
+    cdvp::bench::CpuTimeReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
     std::printf("CPU time per frame (the grid board's fast engine: binning, pairs, slots, timeline):\n");
     for (const char* n : {"10000", "100000", "1000000"}) {
