@@ -87,7 +87,7 @@ std::string with_unit(double value, int decimals, const char* unit) {
 std::string megahertz(double mhz) { return with_unit(mhz, 1, "MHz"); }
 std::string nanoseconds(double ns) { return with_unit(ns, 2, "ns"); }
 
-BoardTiming timing_of(const Settings& settings, uint64_t capacity, uint32_t grade, const std::string& fifo_memory) {
+BoardTiming timing_of(const Settings& settings, uint64_t capacity, uint32_t grade, FifoMemory fifo_memory) {
     const BoardConfig board = planned_board(settings, capacity);
     TimedBoard timed;
     timed.family = name_of(settings.device.family);
@@ -149,7 +149,7 @@ std::optional<std::string> check_clock(const SettingValues& values, uint64_t cap
     }
     // The pieces the clock is held to need no resource costs: where the FIFO
     // lives only picks its own row, which is reported, not held to.
-    const BoardTiming timing = timing_of(settings, capacity, grade.grade, "block_ram");
+    const BoardTiming timing = timing_of(settings, capacity, grade.grade, FifoMemory::kBlockRam);
     const double clock = settings.board.clock_mhz, fmax = timing.fmax_mhz();
     if (clock <= fmax) return std::nullopt;
     const PieceTiming& limit = timing.limiting();

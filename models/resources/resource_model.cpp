@@ -125,6 +125,10 @@ std::vector<std::string> SynthesisTable::formats(const std::string& family) cons
     return names;
 }
 
+const char* fifo_memory_name(FifoMemory memory) {
+    return memory == FifoMemory::kBlockRam ? "block_ram" : "distributed";
+}
+
 BoardResources board_resources(const SynthesisTable& table, const DeviceCapacity& device, const std::string& format,
                                uint32_t m, double memory_block_rams) {
     const std::string& family = device.family;
@@ -132,11 +136,11 @@ BoardResources board_resources(const SynthesisTable& table, const DeviceCapacity
     r.lanes = double(2 * m - 1) * table.lane(family, format);
     r.coordinate_memories.block_rams = memory_block_rams;
     r.address_generator = table.address_generator(family, m);
-    r.pair_collector = table.pair_collector(family, m, "block_ram");
-    r.pair_fifo_memory = "block_ram";
+    r.pair_collector = table.pair_collector(family, m, fifo_memory_name(FifoMemory::kBlockRam));
+    r.pair_fifo_memory = FifoMemory::kBlockRam;
     if (memory_block_rams + r.pair_collector.block_rams > device.block_rams) {
-        r.pair_collector = table.pair_collector(family, m, "distributed");
-        r.pair_fifo_memory = "distributed";
+        r.pair_collector = table.pair_collector(family, m, fifo_memory_name(FifoMemory::kDistributed));
+        r.pair_fifo_memory = FifoMemory::kDistributed;
     }
     r.control = table.control(family);
     return r;

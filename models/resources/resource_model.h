@@ -80,13 +80,19 @@ struct DeviceCapacity {
     std::string source;
 };
 
+// Where the pair FIFO lives: a block RAM when one is left beside the boxes,
+// else LUTs as distributed RAM.
+enum class FifoMemory { kBlockRam, kDistributed };
+// The synthesis tables' and the report's word for it: "block_ram", "distributed".
+const char* fifo_memory_name(FifoMemory memory);
+
 // A board's resources by piece.
 struct BoardResources {
     Resources lanes;  // all 2m-1 of them
     Resources coordinate_memories;
     Resources address_generator;
     Resources pair_collector;
-    std::string pair_fifo_memory;  // "block_ram" or "distributed"
+    FifoMemory pair_fifo_memory = FifoMemory::kBlockRam;
     Resources control;
     Resources total() const { return lanes + coordinate_memories + address_generator + pair_collector + control; }
 };

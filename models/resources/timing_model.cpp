@@ -155,7 +155,7 @@ BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
     const uint32_t grade = board.speed_grade;
     const std::string lane = board.format + " comparison lane at compare latency " +
                              std::to_string(board.compare_latency);
-    const std::string fifo = board.fifo_memory == "block_ram" ? "pair FIFO in block RAM" : "pair FIFO in LUTs";
+    const std::string fifo = board.fifo_memory == FifoMemory::kBlockRam ? "pair FIFO in block RAM" : "pair FIFO in LUTs";
     BoardTiming timing;
     timing.speed_grade = grade;
     timing.pieces.push_back({"lane", lane, table.lane(family, grade, board.format, board.compare_latency)});
@@ -165,7 +165,7 @@ BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
         const PathDelay generator = table.address_generator(family, grade, board.m);
         timing.pieces.push_back({"address_generator", "address generator", generator});
     }
-    const PathDelay collector = table.pair_collector(family, grade, board.m, board.fifo_memory);
+    const PathDelay collector = table.pair_collector(family, grade, board.m, fifo_memory_name(board.fifo_memory));
     timing.pieces.push_back({"pair_fifo", fifo, collector, false});
     timing.pieces.push_back({"controller", "controller", table.control(family, grade)});
     return timing;

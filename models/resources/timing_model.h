@@ -14,6 +14,7 @@
 #include <tuple>
 #include <vector>
 
+#include "models/resources/resource_model.h"
 #include "models/resources/table_fields.h"
 
 namespace cdvp {
@@ -100,7 +101,7 @@ struct TimedBoard {
     std::string format;        // float32 or fixedK
     uint32_t m = 1;
     uint32_t compare_latency = 0;
-    std::string fifo_memory;   // "block_ram" or "distributed" (BoardResources::pair_fifo_memory)
+    FifoMemory fifo_memory = FifoMemory::kBlockRam;  // BoardResources::pair_fifo_memory
     bool tiled = false;        // boxes in SSRAM tiles: the tile walker, not the address generator
 };
 BoardTiming board_timing(const TimingTable& table, const TimedBoard& board);

@@ -32,7 +32,7 @@ void print_resources(std::ostream& out, const DeviceFit& fit) {
     char split[96];
     std::snprintf(split, sizeof split, "%.0f for the boxes, %.0f besides", boxes, total.block_rams - boxes);
     usage("block RAMs", total.block_rams, fit.device.block_rams, split);
-    text += " pair FIFO in " + std::string(fit.resources.pair_fifo_memory == "block_ram" ? "block RAM" : "LUTs");
+    text += " pair FIFO in " + std::string(fit.resources.pair_fifo_memory == FifoMemory::kBlockRam ? "block RAM" : "LUTs");
     text += fit.use.fits() ? "; largest m that fits: " + std::to_string(fit.largest_m)
                            : "; does not fit (" + fit.use.overflow + ")";
     text += "; " + timing_summary(fit) + "\n";

@@ -64,7 +64,7 @@ nlohmann::json resources_json(const DeviceFit& fit, NumberFormat format) {
     return {{"device", fit.device.name},
             {"family", fit.device.family},
             {"format", format.name()},
-            {"pair_fifo_memory", r.pair_fifo_memory},
+            {"pair_fifo_memory", fifo_memory_name(r.pair_fifo_memory)},
             {"luts", usage_json(total.luts, fit.device.luts)},
             {"flip_flops", usage_json(total.flip_flops, fit.device.flip_flops)},
             {"block_rams", usage_json(total.block_rams, fit.device.block_rams)},

@@ -249,7 +249,7 @@ protected:
         Manifest m;
         m.axes = {{"m", {"1", "2"}, "board.m", "m"}};
         m.run_options = {"--frames=2"};
-        m.inputs = {{"--config", "c.json", "/x/c.json", std::string(64, 'a'), 10}};
+        m.inputs = {{"--config", "c.json", "/x/c.json", std::string(64, 'a'), 10, nullptr}};
         m.cdvp_version = "0.1.0";
         return m;
     }

@@ -69,7 +69,8 @@ TEST(BoardResources, AreLanesTimesALanePlusEveryPiece) {
     const BoardResources r = board_resources(table, kDevice, "float32", 2, 12);
     EXPECT_DOUBLE_EQ(r.lanes.luts, 3 * 400);
     EXPECT_DOUBLE_EQ(r.coordinate_memories.block_rams, 12);
-    EXPECT_EQ(r.pair_fifo_memory, "block_ram");
+    EXPECT_EQ(r.pair_fifo_memory, FifoMemory::kBlockRam);
+    EXPECT_STREQ(fifo_memory_name(r.pair_fifo_memory), "block_ram");
     const Resources total = r.total();
     EXPECT_DOUBLE_EQ(total.luts, 1200 + 200 + 650 + 10);
     EXPECT_DOUBLE_EQ(total.flip_flops, 24 + 50 + 65 + 20);
@@ -81,7 +82,8 @@ TEST(BoardResources, AreLanesTimesALanePlusEveryPiece) {
 TEST(BoardResources, PutThePairFifoInLutsWhenTheMemoriesTakeEveryBlockRam) {
     const SynthesisTable table = small_table();
     const BoardResources r = board_resources(table, kDevice, "float32", 2, 14);
-    EXPECT_EQ(r.pair_fifo_memory, "distributed");
+    EXPECT_EQ(r.pair_fifo_memory, FifoMemory::kDistributed);
+    EXPECT_STREQ(fifo_memory_name(r.pair_fifo_memory), "distributed");
     EXPECT_DOUBLE_EQ(r.total().block_rams, 14);
     EXPECT_DOUBLE_EQ(r.pair_collector.luts, (2200 + 3600) / 2);
 }

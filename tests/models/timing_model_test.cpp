@@ -100,7 +100,7 @@ TEST(TimingTable, NamesWhatIsMissing) {
 
 TEST(BoardTiming, TheSlowestPieceTheClockIsHeldToSetsTheFmax) {
     const TimingTable table = small_table();
-    TimedBoard board{"xc2v", 4, "float32", 3, 2, "block_ram", false};
+    TimedBoard board{"xc2v", 4, "float32", 3, 2, FifoMemory::kBlockRam, false};
     BoardTiming timing = board_timing(table, board);
     ASSERT_EQ(timing.pieces.size(), 4u);
     // The lane (9 ns) limits; the pair FIFO (11 ns) is reported as the RTL is written.
@@ -108,7 +108,7 @@ TEST(BoardTiming, TheSlowestPieceTheClockIsHeldToSetsTheFmax) {
     EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 9.0);
     EXPECT_EQ(timing.slowest().piece, "pair FIFO in block RAM");
     EXPECT_FALSE(timing.slowest().holds_clock);
-    board.fifo_memory = "distributed";
+    board.fifo_memory = FifoMemory::kDistributed;
     EXPECT_EQ(board_timing(table, board).slowest().piece, "pair FIFO in LUTs");
     EXPECT_DOUBLE_EQ(board_timing(table, board).slowest().path.ns, 14.0);
     // At compare latency 0 the lane takes 12 ns; with fixed16 lanes the
