@@ -60,6 +60,15 @@ struct RecordingAabb : btBroadphaseAabbCallback {
 class ThreeBroadphases {
 public:
     ThreeBroadphases() : link_(kProxies), board_(link_), simple_(2 * kProxies) {}
+    ThreeBroadphases(const ThreeBroadphases&) = delete;
+    ThreeBroadphases& operator=(const ThreeBroadphases&) = delete;
+    // A broad phase frees only the proxies destroyed through it (btDbvtBroadphase
+    // allocates each one), as a world removes its objects before it goes.
+    ~ThreeBroadphases() {
+        for (auto& [broadphase, proxies] : proxies_) {
+            for (btBroadphaseProxy* proxy : proxies) broadphase->destroyProxy(proxy, nullptr);
+        }
+    }
 
     void create(const btVector3& lo, const btVector3& hi) {
         void* client = reinterpret_cast<void*>(static_cast<intptr_t>(boxes_.size()) + 1);  // btSimpleBroadphase skips null
