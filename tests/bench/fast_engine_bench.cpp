@@ -46,17 +46,7 @@ cdvp::BoardConfig tiled_board() {
 void run_engine(benchmark::State& state, const cdvp::BoardConfig& board) {
     const auto& scene = frames(static_cast<std::size_t>(state.range(0)));
     cdvp::FastEngine engine(board);
-    std::size_t f = 0, pairs = 0;
-    uint64_t cycles = 0;
-    for (auto _ : state) {
-        const BenchFrame& frame = scene[f++ % kFrames];
-        engine.start(static_cast<uint32_t>(frame.boxes.size()), frame.view());
-        while (engine.phase() == cdvp::SweepState::kPaused) engine.resume();
-        pairs += engine.pairs().size();
-        cycles += engine.observe(engine.segment_cycles()).cycles;
-    }
-    state.counters["pairs"] = benchmark::Counter(static_cast<double>(pairs), benchmark::Counter::kAvgIterations);
-    state.counters["board_cycles"] = benchmark::Counter(static_cast<double>(cycles), benchmark::Counter::kAvgIterations);
+    cdvp::bench::play_engine_frames(state, engine, scene);
 }
 
 void BM_FastEngine(benchmark::State& state) { run_engine(state, paper_board()); }

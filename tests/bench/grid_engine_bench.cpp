@@ -48,17 +48,7 @@ template <class Engine>
 void run_engine(benchmark::State& state, cdvp::BoardAlgorithm algorithm) {
     const auto& scene = frames(static_cast<std::size_t>(state.range(0)));
     Engine engine(pcie_board(algorithm));
-    std::size_t f = 0, pairs = 0;
-    uint64_t cycles = 0;
-    for (auto _ : state) {
-        const BenchFrame& frame = scene[f++ % kFrames];
-        engine.start(static_cast<uint32_t>(frame.boxes.size()), frame.view());
-        while (engine.phase() == cdvp::SweepState::kPaused) engine.resume();
-        pairs += engine.pairs().size();
-        cycles += engine.observe(engine.segment_cycles()).cycles;
-    }
-    state.counters["pairs"] = benchmark::Counter(static_cast<double>(pairs), benchmark::Counter::kAvgIterations);
-    state.counters["board_cycles"] = benchmark::Counter(static_cast<double>(cycles), benchmark::Counter::kAvgIterations);
+    cdvp::bench::play_engine_frames(state, engine, scene);
 }
 
 void BM_GridFastEngine(benchmark::State& state) {

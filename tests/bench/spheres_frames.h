@@ -3,12 +3,15 @@
 // float32 boxes and their coordinate words, made once per size and count.
 #pragma once
 
+#include <benchmark/benchmark.h>
+
 #include <array>
 #include <cstdint>
 #include <map>
 #include <utility>
 #include <vector>
 
+#include "models/board_spec/board_engine.h"
 #include "models/fast_engine/pair_finder.h"
 #include "sw/scene/conversion.h"
 #include "sw/scene/spheres.h"
@@ -44,6 +47,23 @@ inline const std::vector<BenchFrame>& spheres_frames(std::size_t n, std::size_t 
         }
     }
     return cache.emplace(std::make_pair(n, count), std::move(made)).first->second;
+}
+
+// Plays `scene`'s frames in turn through a board engine, one frame an
+// iteration, and counts its pairs and board cycles a frame.
+template <class Engine>
+void play_engine_frames(benchmark::State& state, Engine& engine, const std::vector<BenchFrame>& scene) {
+    std::size_t f = 0, pairs = 0;
+    uint64_t cycles = 0;
+    for (auto _ : state) {
+        const BenchFrame& frame = scene[f++ % scene.size()];
+        engine.start(static_cast<uint32_t>(frame.boxes.size()), frame.view());
+        while (engine.phase() == SweepState::kPaused) engine.resume();
+        pairs += engine.pairs().size();
+        cycles += engine.observe(engine.segment_cycles()).cycles;
+    }
+    state.counters["pairs"] = benchmark::Counter(static_cast<double>(pairs), benchmark::Counter::kAvgIterations);
+    state.counters["board_cycles"] = benchmark::Counter(static_cast<double>(cycles), benchmark::Counter::kAvgIterations);
 }
 
 }  // namespace cdvp::bench
