@@ -22,12 +22,16 @@ InputPresence input_presence(const std::string& path) {
     return {InputPresence::Kind::kUnreadable, errno_reason(errno)};
 }
 
+void refuse_input(const std::string& shown, int error, const std::string& expected) {
+    throw InputError(shown + ": cannot open: " + errno_reason(error) + (expected.empty() ? "" : "; " + expected));
+}
+
 void require_regular_file(const std::string& path, const std::string& shown) {
     const std::string named = shown.empty() ? path : shown;
     struct stat status {};
-    if (stat(path.c_str(), &status) != 0) throw InputError(named + ": cannot open: " + errno_reason(errno));
-    if (S_ISDIR(status.st_mode)) throw InputError(named + ": cannot open: " + errno_reason(EISDIR));
-    if (!S_ISREG(status.st_mode)) throw InputError(named + ": cannot open: " + errno_reason(0));
+    if (stat(path.c_str(), &status) != 0) refuse_input(named, errno);
+    if (S_ISDIR(status.st_mode)) refuse_input(named, EISDIR);
+    if (!S_ISREG(status.st_mode)) refuse_input(named, 0);
 }
 
 }  // namespace cdvp

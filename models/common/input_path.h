@@ -26,6 +26,10 @@ struct InputPresence {
 };
 InputPresence input_presence(const std::string& path);
 
+// Throws InputError "SHOWN: cannot open: REASON" (errno_reason(error)),
+// then "; EXPECTED" when given: how every input that cannot be read is refused.
+[[noreturn]] void refuse_input(const std::string& shown, int error, const std::string& expected = {});
+
 // Throws InputError "PATH: cannot open: REASON" unless a regular file is
 // there (a directory: "Is a directory (EISDIR)"); 'path' as the message
 // shows it is given by 'shown' when not empty.

@@ -185,14 +185,14 @@ std::string read_small_file(const std::string& path, const std::string& what) {
     constexpr std::size_t kMaxBytes = 1 << 20;  // a hand-written file; anything bigger is not one
     // One descriptor for the check and the read (a sweep reads its preset at every point).
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0) throw InputError(path + ": cannot open: " + errno_reason(errno));
+    if (fd < 0) refuse_input(path, errno);
     struct Closer {
         int fd;
         ~Closer() { close(fd); }
     } closer{fd};
     struct stat status {};
-    if (fstat(fd, &status) != 0) throw InputError(path + ": cannot open: " + errno_reason(errno));
-    if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot open: " + errno_reason(S_ISDIR(status.st_mode) ? EISDIR : 0));
+    if (fstat(fd, &status) != 0) refuse_input(path, errno);
+    if (!S_ISREG(status.st_mode)) refuse_input(path, S_ISDIR(status.st_mode) ? EISDIR : 0);
     if (static_cast<std::size_t>(status.st_size) > kMaxBytes) {
         throw InputError(path + ": larger than " + std::to_string(kMaxBytes) + " bytes; not " + what);
     }

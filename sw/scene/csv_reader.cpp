@@ -51,12 +51,12 @@ std::ifstream open_input(const std::string& path) {
     // reported as an empty file; name the real problem.
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
-        throw InputError(path + ": cannot open: " + errno_reason(EISDIR) + "; expected a file");
+        refuse_input(path, EISDIR, "expected a file");
     }
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        throw InputError(path + ": cannot open: " + errno_reason(errno != 0 ? errno : ENOENT));
+        refuse_input(path, errno != 0 ? errno : ENOENT);
     }
     return in;
 }

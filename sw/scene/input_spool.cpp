@@ -25,13 +25,13 @@ constexpr std::size_t kChunkBytes = 1 << 16;
 int open_for_reading(const std::string& path) {
     struct stat status {};
     if (stat(path.c_str(), &status) == 0 && S_ISDIR(status.st_mode)) {
-        throw InputError(path + ": cannot open: " + errno_reason(EISDIR) + "; expected a file");
+        refuse_input(path, EISDIR, "expected a file");
     }
     int fd;
     do {
         fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
     } while (fd < 0 && errno == EINTR);  // a FIFO waits for its writer here
-    if (fd < 0) throw InputError(path + ": cannot open: " + errno_reason(errno));
+    if (fd < 0) refuse_input(path, errno);
     return fd;
 }
 
