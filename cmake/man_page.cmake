@@ -82,13 +82,16 @@ The board presets: adm\-xrc\-ii, adm\-xrc\-ii\-64, pcie\-gen3\-x8.
 The board's Verilog and what \fB\-\-fidelity rtl\fR compiles a variant from.
 .TP
 .I PREFIX/share/doc/cdvp
-The README (file formats, timing assumptions, the worked example) and docs/.
+The README (the worked example, a map of the docs) and docs/: the tutorial (docs/tutorial.md),
+every command's help and the rules behind it (docs/cli.md), file formats (docs/formats.md), timing
+assumptions (docs/assumptions.md).
 [SEE ALSO]
 .BR gtkwave (1),
 .BR gnuplot (1),
 .BR parallel (1),
 .BR yosys (1);
-the README and docs/ in \fIPREFIX/share/doc/cdvp\fR (docs/sweep.md, docs/settings.md, docs/timing.md).
+the README and docs/ in \fIPREFIX/share/doc/cdvp\fR (docs/tutorial.md, docs/cli.md, docs/formats.md,
+docs/sweep.md, docs/settings.md, docs/timing.md).
 ]=])
 
 get_filename_component(include_file "${OUT}.include" ABSOLUTE)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Writes every deterministic output of the README's commands into OUT, so that
+# Writes every deterministic output of the commands the README and docs/ show into OUT, so that
 # two builds can be compared byte for byte (a restructuring must change none):
 #
 #   scripts/deterministic-outputs.sh CDVP OUT      then   diff -r OUT_A OUT_B

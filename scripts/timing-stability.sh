@@ -9,7 +9,7 @@
 #   paper      four identical runs of the paper's point (adm-xrc-ii, 500 spheres, m = 24, 30 frames, sap)
 #   pinned     the same with 40 frames and --repeat 3, pinned to CPU 0 beside a busy loop and alone (three pairs)
 #   worked     the README's worked example after a fresh cdvp calibrate, six times, beside a CPU-bound job
-#   sweep      the paper sweep (README) three times, each after a fresh calibration: crossover and 500's speedup
+#   sweep      the paper sweep (docs/results.md) three times, each after a fresh calibration: crossover and 500's speedup
 #   grid       the README's 72-point sweep with shared timings and with each point timing its own:
 #              timings used, falls in speedup from one m to the next, wall time (three of each, alternated)
 #   bullet     cdvp bullet --scene boxes beside a busy loop and alone: the board's gains and verdict

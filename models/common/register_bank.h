@@ -26,7 +26,7 @@ public:
     using WriteCallback = std::function<RegisterResult(uint32_t)>;
 
     struct Register {
-        std::string name;  // as in the register map of the README
+        std::string name;  // as in the register map of docs/model.md
         uint32_t offset;
         RegisterAccess access;
         ReadCallback on_read;    // none: the stored value

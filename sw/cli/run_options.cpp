@@ -68,7 +68,7 @@ po::options_description run_options_description(RunOptions& o) {
     const std::string scenes = "generated scene: spheres (the paper's application), or one of Bullet's scenes as "
                                "cdvp record records them: " + bullet_scene_list() + " (docs/bullet.md)";
     input.add_options()
-        ("trace", po::value(&o.trace)->value_name("FILE"), "scene trace CSV (see README: file formats)")
+        ("trace", po::value(&o.trace)->value_name("FILE"), "scene trace CSV (docs/formats.md)")
         ("scene", po::value(&o.scene)->value_name("NAME"), scenes.c_str());
     add_setting_flags(input, {"scene"}, o.layers.flags);
     po::options_description board("Board");

@@ -1,5 +1,5 @@
 // What a cdvp run's exit status means: returned by every command, and read
-// back by the study when it runs `cdvp run` as a child (README: exit status).
+// back by the study when it runs `cdvp run` as a child (docs/cli.md: exit status).
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 // The "summary" section of a run's report, typed: the one definition of its
 // keys, written by the run (ReportWriter::end) and read back by the commands
-// that run `cdvp run` as a child (sweep, fidelity). README: file formats.
+// that run `cdvp run` as a child (sweep, fidelity). docs/formats.md: the report.
 #pragma once
 
 #include <array>

@@ -5,7 +5,7 @@
 // each level's figures read back from its report's summary, and the error of
 // each against the most detailed: the clocked engine on the transaction-level
 // bus at quantum 0. `cdvp fidelity` parses its arguments and
-// writes what this returns (docs/README: cdvp fidelity).
+// writes what this returns (docs/cli.md: cdvp fidelity).
 #pragma once
 
 #include <array>

@@ -39,7 +39,7 @@ struct RunRequest {
 };
 
 struct RunResult {
-    nlohmann::json report;     // the whole report as the run wrote it (README: file formats)
+    nlohmann::json report;     // the whole report as the run wrote it (docs/formats.md)
     ReportSummary summary;     // its summary, typed
     std::string pairs_csv;     // with RunRequest::pairs: the pairs CSV of every frame
 };

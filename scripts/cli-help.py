@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""Puts each command's current --help into README.md, replacing the fenced
-block that starts with the same Usage line (cli_tests checks them verbatim).
+"""Puts each command's current --help into docs/cli.md, the command-line
+reference, replacing the fenced block that starts with the same Usage line
+(cli_tests checks them verbatim).
 
-    scripts/readme-help.py [path/to/cdvp]    (default: build/sw/cli/cdvp)
+    scripts/cli-help.py [path/to/cdvp]    (default: build/sw/cli/cdvp)
 """
 import pathlib
 import subprocess
@@ -10,8 +11,8 @@ import sys
 
 root = pathlib.Path(__file__).resolve().parent.parent
 binary = sys.argv[1] if len(sys.argv) > 1 else str(root / "build/sw/cli/cdvp")
-readme = root / "README.md"
-text = readme.read_text()
+page = root / "docs" / "cli.md"
+text = page.read_text()
 for command in ["", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record", "calibrate", "rtl-variants"]:
     args = [binary] + ([command] if command else []) + ["--help"]
     help_text = subprocess.run(args, check=True, capture_output=True, text=True).stdout
@@ -20,7 +21,7 @@ for command in ["", "run", "fidelity", "settings", "sweep", "merge", "bullet", "
     usage = " ".join(help_text.split("\n", 1)[0].split()[:3]) + " "
     start = text.find("```\n" + usage)
     if start < 0:
-        sys.exit(f"README.md has no block starting with {usage!r}")
+        sys.exit(f"docs/cli.md has no block starting with {usage!r}")
     end = text.find("```\n", start + 4)
     text = text[: start + 4] + help_text + text[end:]
-readme.write_text(text)
+page.write_text(text)
