@@ -18,6 +18,7 @@ packages=(
   clang-14 libclang-rt-14-dev    # fuzz build: libFuzzer and the clang sanitizer runtimes live in libclang-rt-14-dev
   libcgal-dev                    # independent oracle for the pair tests (box_self_intersection_d)
   gnuplot-nox                    # plots of measured results
+  graphviz                       # the layer graph, docs/layers.png (scripts/figures.py)
   parallel                       # GNU parallel for sweeps and the synthesis table
   help2man                       # the man page, generated from --help at build time
   yosys                          # synthesis behind the resource model (scripts/synthesize.sh)
