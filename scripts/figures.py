@@ -32,7 +32,7 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CDVP = os.environ.get("CDVP", os.path.join(ROOT, "build", "sw", "cli", "cdvp"))
+CDVP = os.path.abspath(os.environ.get("CDVP", os.path.join(ROOT, "build", "sw", "cli", "cdvp")))
 JOBS = os.environ.get("JOBS", "2")
 
 # The deterministic columns of a sweep row a board-time figure rests on.
