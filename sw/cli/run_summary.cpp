@@ -182,7 +182,8 @@ void print_summary(std::ostream& out, const RunDescription& run, const RunTotals
         out << line;
     }
     if (totals.frames() > totals.shown().size()) {
-        out << "    ... (" << frames_text(totals.frames() - totals.shown().size()) << " more"
+        const uint64_t more = totals.frames() - totals.shown().size();
+        out << "    ... (" << more << (more == 1 ? " more frame" : " more frames")
             << (run.has_report ? " in the report)\n" : "; --report FILE lists every frame)\n");
     }
     std::snprintf(line, sizeof line, "total: %s, %llu pairs, %llu board cycles (%llu stalled)\n",
