@@ -1,5 +1,6 @@
 # `cmake --install build --prefix P`: P/bin/cdvp, the presets in
-# P/share/cdvp/boards, the RTL kit in P/share/cdvp/rtl, the README, LICENSE
+# P/share/cdvp/boards, the RTL kit in P/share/cdvp/rtl, the JSON Schemas of
+# the run report and a sweep row in P/share/cdvp/schema, the README, LICENSE
 # and docs in P/share/doc/cdvp, and a man page in P/share/man/man1/cdvp.1
 # generated from the --help texts.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/platform/boards/ DESTINATION ${CDVP_INSTALL_BOARDS_DIR}
@@ -11,6 +12,8 @@ foreach(file IN LISTS cdvp_rtl_kit)
   get_filename_component(directory ${file} DIRECTORY)
   install(FILES ${CMAKE_SOURCE_DIR}/${file} DESTINATION ${CDVP_INSTALL_RTL_DIR}/${directory})
 endforeach()
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/schema/ DESTINATION ${CMAKE_INSTALL_DATADIR}/cdvp/schema
+        FILES_MATCHING PATTERN "*.schema.json")
 install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 # docs/ keeps its name, so the README's links into it hold.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR})

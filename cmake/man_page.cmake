@@ -11,17 +11,22 @@ function(run_help out)
   set(${out} "${text}" PARENT_SCOPE)
 endfunction()
 
-# roff: a backslash is \e, and a line may not start with a control character.
+# A command's --help as it prints, line for line: unfilled, at the left margin
+# (an 80-column help indented by the page's 7 would wrap in an 80-column
+# terminal). roff: a backslash is \e, a minus is \- (a bare - may print as a
+# hyphen, which a copied option would not be), and a line may not start with
+# a control character. tests/install/man_section_test.sh compares the two.
 function(as_roff_block out text)
   string(REPLACE "\\" "\\e" text "${text}")
+  string(REPLACE "-" "\\-" text "${text}")
   string(REGEX REPLACE "(^|\n)([.'])" "\\1\\\\&\\2" text "${text}")
-  set(${out} ".nf\n${text}\n.fi\n" PARENT_SCOPE)
+  set(${out} ".in 0\n.nf\n${text}\n.fi\n" PARENT_SCOPE)
 endfunction()
 
 run_help(usage)
 # The commands: the indented lines between "Commands:" and the next blank line.
 string(REGEX MATCH "Commands:\n(([ ]+[^\n]+\n)+)" block "${usage}")
-string(REGEX MATCHALL "\n  ([a-z]+) " rows "\n${CMAKE_MATCH_1}")
+string(REGEX MATCHALL "\n  ([a-z][a-z-]*) " rows "\n${CMAKE_MATCH_1}")
 if(NOT rows)
   message(FATAL_ERROR "no commands found in `${CDVP} --help`")
 endif()

@@ -18,6 +18,7 @@ packages=(
   clang-14 libclang-rt-14-dev    # fuzz build: libFuzzer and the clang sanitizer runtimes live in libclang-rt-14-dev
   libcgal-dev                    # independent oracle for the pair tests (box_self_intersection_d)
   gnuplot-nox                    # plots of measured results
+  graphviz                       # the layer graph, docs/layers.png (scripts/figures.py)
   parallel                       # GNU parallel for sweeps and the synthesis table
   help2man                       # the man page, generated from --help at build time
   yosys                          # synthesis behind the resource model (scripts/synthesize.sh)
@@ -27,6 +28,7 @@ packages=(
   python3-pandas python3-pytest  # its tables and its tests
   python3-matplotlib             # the example that draws the paper's speedup figure from cdvp.sweep
   mkdocs                         # the docs site, built with --strict by the test docs.site
+  python3-jsonschema             # validates real reports and sweep rows against docs/schema (tests/schema)
   slurmctld slurmd slurm-client munge  # a one-node Slurm on the loopback for the sweep's job-array test (tests/slurm)
 )
 

@@ -525,7 +525,9 @@ std::vector<Setting> host_and_run_settings() {
                    "the paper's largest scene"),
              "objects", "N"),
         flag(count("scene.frames", "frames", 0, 1'000'000'000, member(&S::scene, &SceneSettings::frames),
-                   "frames of a generated scene", "one frame"),
+                   "frames of a generated scene",
+                   "12: the 2 warm-up frames (run.warmup) and the 10 after them that a mean should rest on at least "
+                   "(fewer are flagged: one disturbed frame moves a mean of 10 by a tenth of its excess; docs/timing.md)"),
              "frames", "F"),
         flag(count("scene.seed", "", 0, UINT64_MAX, member(&S::scene, &SceneSettings::seed),
                    "a generated scene's random seed (same seed, same scene)", "any fixed seed"),

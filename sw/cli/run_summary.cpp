@@ -39,9 +39,12 @@ void print_resources(std::ostream& out, const DeviceFit& fit) {
     out << text;
 }
 
+// "1 frame", "12 frames".
+std::string frames_text(uint64_t frames) { return std::to_string(frames) + (frames == 1 ? " frame" : " frames"); }
+
 // Which frames the figures rest on, and a note when they are too few.
 std::string frames_described(const RunTotals& totals, const TimingFigures& figures) {
-    std::string text = std::to_string(figures.frames_per_run) + " frames";
+    std::string text = frames_text(figures.frames_per_run);
     if (figures.includes_warmup) return text + ", all warm-up frames (no frame came after the --warmup " +
                                         std::to_string(totals.warmup_frames()) + ")";
     if (totals.warmup_frames() > 0) text += " after " + std::to_string(totals.warmup_frames()) + " warm-up";
@@ -135,7 +138,7 @@ void print_timing(std::ostream& out, const RunDescription& run, const RunTotals&
         print_timing_quality(out, totals);
     }
     if (board.too_few_frames()) {
-        out << "note: these figures rest on " << board.frames_per_run << " frames, fewer than " << kMinMeasuredFrames
+        out << "note: these figures rest on " << frames_text(board.frames_per_run) << ", fewer than " << kMinMeasuredFrames
             << ": one disturbed frame moves a mean by a tenth of its excess, and p99 is the maximum; give --frames "
             << totals.warmup_frames() + kMinMeasuredFrames << " or more\n";
     }
@@ -179,11 +182,12 @@ void print_summary(std::ostream& out, const RunDescription& run, const RunTotals
         out << line;
     }
     if (totals.frames() > totals.shown().size()) {
-        out << "    ... (" << totals.frames() - totals.shown().size() << " more frames"
+        const uint64_t more = totals.frames() - totals.shown().size();
+        out << "    ... (" << more << (more == 1 ? " more frame" : " more frames")
             << (run.has_report ? " in the report)\n" : "; --report FILE lists every frame)\n");
     }
-    std::snprintf(line, sizeof line, "total: %llu frames, %llu pairs, %llu board cycles (%llu stalled)\n",
-                  static_cast<unsigned long long>(totals.frames()), static_cast<unsigned long long>(totals.pairs()),
+    std::snprintf(line, sizeof line, "total: %s, %llu pairs, %llu board cycles (%llu stalled)\n",
+                  frames_text(totals.frames()).c_str(), static_cast<unsigned long long>(totals.pairs()),
                   static_cast<unsigned long long>(totals.cycles()), static_cast<unsigned long long>(totals.stalls()));
     out << line;
     if (!c.format.is_float()) {

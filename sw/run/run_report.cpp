@@ -241,7 +241,8 @@ std::map<std::string, TimingFigures> RunTotals::baseline_figures() const {
 }
 
 void ReportWriter::begin(const RunDescription& run) {
-    out_ << "{\n  \"config\": " << nested(config_json(run), 1) << ",\n  \"frames\": [";
+    out_ << "{\n  \"config\": " << nested(config_json(run), 1) << ",\n  \"format_version\": " << kReportFormatVersion
+         << ",\n  \"frames\": [";
 }
 
 void ReportWriter::frame(const FrameStats& frame) {
@@ -249,7 +250,9 @@ void ReportWriter::frame(const FrameStats& frame) {
     any_frame_ = true;
 }
 
-MemoryReport::MemoryReport(nlohmann::json& out) : out_(out) { out_ = {{"frames", nlohmann::json::array()}}; }
+MemoryReport::MemoryReport(nlohmann::json& out) : out_(out) {
+    out_ = {{"format_version", kReportFormatVersion}, {"frames", nlohmann::json::array()}};
+}
 
 void MemoryReport::frame(const FrameStats& frame) { out_["frames"].push_back(frame_json(frame)); }
 

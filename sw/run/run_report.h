@@ -181,6 +181,11 @@ private:
 };
 
 
+// The version of the run report's layout (its top-level "format_version"),
+// which share/cdvp/schema/run-report.schema.json describes: raised when a
+// field is renamed, removed or changes meaning, not when one is added.
+constexpr int kReportFormatVersion = 1;
+
 // Writes the report as the run goes: begin() the configuration (with the
 // provenance at the start), frame() each frame, end() the summary (with the
 // load average at the end) and then, in their order, the keys of `more`: the

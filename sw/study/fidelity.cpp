@@ -49,7 +49,7 @@ FidelityResult read_level(const std::string& report_path, const std::string& pai
     const nlohmann::json report = nlohmann::json::parse(slurp(report_path));
     const ReportSummary summary = summary_from_json(report.at("summary"), "the level's report");
     FidelityResult result;
-    result.p50_sim_wall_native_ns = summary.sim_wall_native_ns.p50;
+    result.mean_sim_wall_native_ns = summary.sim_wall_native_ns.mean;
     result.mean_phase_ns = summary.mean_phase_ns;
     result.mean_energy = summary.mean_energy;
     result.mean_energy_per_pair_j = summary.mean_energy_per_pair_j;
@@ -162,7 +162,7 @@ double fidelity_error_percent(const FidelityResult& level, const FidelityResult&
 
 std::string fidelity_csv(const std::vector<FidelityResult>& results) {
     std::ostringstream csv;
-    csv << "level,fidelity,bus_model,quantum_ns,frames_in_means,p50_sim_wall_native_ns";
+    csv << "level,fidelity,bus_model,quantum_ns,frames_in_means,mean_sim_wall_native_ns";
     for (const char* phase : kPhases) csv << ",mean_" << phase;
     for (const char* phase : kPhases) csv << ",error_" << std::string(phase, std::strlen(phase) - 3) << "_percent";
     csv << ",mean_energy_j,mean_energy_static_j,mean_energy_dynamic_j,mean_energy_bus_j,mean_energy_host_j,"
@@ -176,7 +176,7 @@ std::string fidelity_csv(const std::vector<FidelityResult>& results) {
             continue;
         }
         csv << r.frames_in_means << ','
-            << r.p50_sim_wall_native_ns;
+            << r.mean_sim_wall_native_ns;
         for (double ns : r.mean_phase_ns) csv << ',' << ns;
         for (std::size_t p = 0; p < kPhases.size(); ++p) csv << ',' << fidelity_error_percent(r, results[0], p);
         const FrameEnergy& e = r.mean_energy;
@@ -189,7 +189,7 @@ std::string fidelity_csv(const std::vector<FidelityResult>& results) {
 std::string fidelity_table(const std::vector<FidelityResult>& results) {
     std::ostringstream t;
     t << "level                         wall/frame   total (sim)     error   energy/frame   pairs\n"
-      << "                              (p50)        (mean)                    (mean)\n";
+      << "                              (mean)       (mean)                    (mean)\n";
     for (std::size_t k = 0; k < results.size(); ++k) {
         const FidelityResult& r = results[k];
         std::ostringstream name;
@@ -199,7 +199,7 @@ std::string fidelity_table(const std::vector<FidelityResult>& results) {
             continue;
         }
         t << std::left << std::setw(30) << name.str() << std::right << std::fixed << std::setprecision(3)
-          << std::setw(9) << r.p50_sim_wall_native_ns / 1e6 << " ms" << std::setw(11) << r.mean_phase_ns.back() / 1e3
+          << std::setw(9) << r.mean_sim_wall_native_ns / 1e6 << " ms" << std::setw(11) << r.mean_phase_ns.back() / 1e3
           << " us" << std::setw(9) << std::setprecision(4)
           << fidelity_error_percent(r, results[0], kPhases.size() - 1) << " %" << std::setw(10)
           << std::setprecision(4) << r.mean_energy.total_j() * 1e3 << " mJ   "
@@ -212,7 +212,7 @@ std::string fidelity_plot_script(const std::vector<FidelityResult>& results, con
     std::vector<FidelityPoint> points;
     for (std::size_t k = 0; k < results.size(); ++k) {
         if (!results[k].not_run.empty()) continue;
-        points.push_back({level_words(kLevels[k]), results[k].p50_sim_wall_native_ns / 1e6,
+        points.push_back({level_words(kLevels[k]), results[k].mean_sim_wall_native_ns / 1e6,
                           fidelity_error_percent(results[k], results[0], kPhases.size() - 1)});
     }
     return figure_script(fidelity_figure(points, figure_context(results)), png_path);

@@ -42,11 +42,11 @@ constexpr std::size_t kFidelityLevels = 16;
 const std::array<FidelityLevel, kFidelityLevels>& fidelity_levels();
 
 // One level's figures, as its run's report summarises them: the simulator's
-// wall time per frame is the median over the frames after warm-up (wall
-// clock is noisy; a median is what a repeat reproduces), the simulated
-// phases their means (what a user pays per frame), the same frames in both.
+// wall time per frame and the simulated phases are means over the frames
+// after warm-up (what a user pays per frame, the slow frames included), the
+// same frames in both.
 struct FidelityResult {
-    double p50_sim_wall_native_ns = 0;
+    double mean_sim_wall_native_ns = 0;
     std::array<double, ReportSummary::kPhases> mean_phase_ns{};
     FrameEnergy mean_energy;            // the board's energy a frame by part (docs/energy.md)
     double mean_energy_per_pair_j = 0;

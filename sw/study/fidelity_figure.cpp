@@ -33,7 +33,7 @@ Figure fidelity_figure(const std::vector<FidelityPoint>& levels, const std::stri
         if (tick.first > floor * 3 && tick.first <= std::max(worst, floor * 10) * 10) figure.x.ticks.push_back(tick);
     }
     figure.x.ticks.insert(figure.x.ticks.begin(), {floor, "0"});
-    figure.y.label = "simulator wall time per frame (ms, native; median over frames)";
+    figure.y.label = "simulator wall time per frame (ms, native; mean over frames)";
     figure.y.log = true;
     std::tie(figure.y.min, figure.y.max) = padded_log_range(fastest, slowest, 2.5);
     // Labels a little right of their points, pushed apart upwards (in log

@@ -11,6 +11,7 @@
 #include "models/common/user_text.h"
 #include "models/common/nesting_limit.h"
 #include "sw/study/child_runs.h"
+#include "sw/study/sweep_table.h"
 #include "sw/output/digest.h"
 
 namespace cdvp {
@@ -121,6 +122,7 @@ json Manifest::to_json() const {
     json inputs_json = json::array();
     for (const SweepInput& input : inputs) inputs_json.push_back(input_json(input));
     return {{"format", kManifestFormat},
+            {"format_version", kSweepFormatVersion},
             {"cdvp", cdvp_version},
             {"axes", axes_json},
             {"run_options", run_options},
@@ -150,6 +152,10 @@ std::optional<Manifest> read_manifest(const std::string& path) {
     if (format != kManifestFormat) {
         fields.refuse("format", "'" + excerpt(format) + "' is not '" + kManifestFormat +
                                     "' (a sweep of another cdvp version: give a new --out)");
+    }
+    if (const uint64_t version = fields.count(document, "format_version"); version != kSweepFormatVersion) {
+        fields.refuse("format_version", std::to_string(version) + " is not " + std::to_string(kSweepFormatVersion) +
+                                            " (a sweep of another cdvp version: give a new --out)");
     }
     Manifest manifest;
     manifest.cdvp_version = fields.text(document, "cdvp");

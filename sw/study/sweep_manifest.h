@@ -56,7 +56,9 @@ struct Manifest {
     nlohmann::json to_json() const;
 };
 
-constexpr const char* kManifestFormat = "cdvp sweep 2";
+// The manifest's "format" (what the file is) beside its "format_version"
+// (kSweepFormatVersion).
+constexpr const char* kManifestFormat = "cdvp sweep";
 
 // DIR/sweep.json, or nothing when DIR has none. Throws InputError naming
 // the file (and line and column, or the field) when it is not a manifest.

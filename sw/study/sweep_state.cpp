@@ -65,6 +65,10 @@ public:
                        "), got " + quoted(value(row, name));
             }
         }
+        if (value(row, "format_version") != std::to_string(kSweepFormatVersion)) {
+            return "field 'format_version': expected " + std::to_string(kSweepFormatVersion) +
+                   " (a row of this cdvp version), got " + quoted(value(row, "format_version"));
+        }
         const std::optional<PointStatus> status = parse_point_status(value(row, "status"));
         if (!status) return "field 'status': expected ok, refused or fault, got " + quoted(value(row, "status"));
         if (*status != PointStatus::kOk && value(row, "reason").empty()) {

@@ -13,7 +13,7 @@ namespace cdvp {
 
 namespace {
 
-const std::vector<std::string> kFixedColumns{"point", "index", "status", "reason", kChecksumColumn};
+const std::vector<std::string> kFixedColumns{"point", "index", "status", "reason", kChecksumColumn, "format_version"};
 
 bool ends_with(const std::string& text, const std::string& end) {
     return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
@@ -52,7 +52,11 @@ void flatten(const nlohmann::json& value, const std::string& prefix, Row& row) {
 }
 
 Row axis_row(const Grid& grid, const Point& point, PointStatus status, const std::string& reason) {
-    Row row{{"point", point.id}, {"index", std::to_string(point.index)}, {"status", to_string(status)}, {"reason", reason}};
+    Row row{{"point", point.id},
+            {"index", std::to_string(point.index)},
+            {"status", to_string(status)},
+            {"reason", reason},
+            {"format_version", std::to_string(kSweepFormatVersion)}};
     for (std::size_t a = 0; a < grid.axes().size(); ++a) row[grid.axes()[a].name] = point.values[a];
     return row;
 }

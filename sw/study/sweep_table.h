@@ -17,6 +17,13 @@
 
 namespace cdvp {
 
+// The version of a sweep's files: its manifest's "format_version" and every
+// row's format_version column (share/cdvp/schema/sweep-row.schema.json);
+// raised when a column or field is renamed, removed or changes meaning. A
+// resume or merge refuses a sweep of another version. 3: the first with the
+// field (the manifest said "cdvp sweep 2" before).
+constexpr uint64_t kSweepFormatVersion = 3;
+
 using Row = std::map<std::string, std::string>;  // column -> value, for one row being built or checked
 
 // Outcome of a point, as its child ended: ok (0), refused (2), fault (3).

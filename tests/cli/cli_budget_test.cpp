@@ -111,7 +111,7 @@ TEST_F(CliBudget, AMillionsOfObjectsSceneIsRefusedBeforeItIsGenerated) {
     // The frame's sweep and the driver's timeout for it, against one limit in one unit.
     const Measured m = measure(with_outputs({"run", "--scene", "spheres", "--objects", "4194304"}));
     expect_cheap_refusal(m,
-                         "cdvp run: a run of 1 frame (the default of --frames) of up to 4194304 objects (--objects) "
+                         "cdvp run: a run of 12 frames (the default of --frames) of up to 4194304 objects (--objects) "
                          "at m=8 (the default of --m) and 66 MHz (the default of --clock-mhz) would reach ",
                          {});
     EXPECT_NE(m.result.err.find("of simulated time (up to 8884.970 s a frame before any pair"), std::string::npos)
@@ -127,7 +127,7 @@ TEST_F(CliBudget, ASceneBeyondTheMemoryBudgetIsRefusedBeforeItIsGenerated) {
         measure(with_outputs({"run", "--scene", "spheres", "--objects", "200000", "--max-memory", "40"}));
     expect_cheap_refusal(m,
                          "cdvp run: --max-memory: the memory budget of 40 MiB (--max-memory 40) is too little for "
-                         "200000 objects (--objects) in 1 frame (the default of --frames): they need an estimated ",
+                         "200000 objects (--objects) in 12 frames (the default of --frames): they need an estimated ",
                          {});
     // The clocked board's block RAM words count too, named with m's origin.
     const Measured words = measure(with_outputs({"run", "--scene", "spheres", "--objects", "100000", "--m", "32",

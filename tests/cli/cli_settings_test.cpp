@@ -189,6 +189,11 @@ TEST_F(CliSettings, SettingsJsonListsEverySettingAndEveryPresetKey) {
 }
 
 TEST(Settings, TheWarmupDefaultIsTheTimingLibrarys) { EXPECT_EQ(Settings{}.run.warmup, kDefaultWarmupFrames); }
+// A run left at its defaults measures enough frames that its figures carry no
+// "rest on too few frames" note.
+TEST(Settings, TheFramesDefaultIsTheWarmupAndTheFewestMeasuredFrames) {
+    EXPECT_EQ(Settings{}.scene.frames, kDefaultWarmupFrames + kMinMeasuredFrames);
+}
 TEST(Settings, TheRetimeTriesDefaultIsTheTimingLibrarys) { EXPECT_EQ(Settings{}.run.retime_tries, kDefaultRetimeTries); }
 
 TEST_F(CliSettings, TheDocListsTheTableAsCdvpSettingsPrintsIt) {

@@ -93,7 +93,7 @@ TEST_F(CliSweepState, AResumeRefusesRowsItDidNotWriteOrRerunsThemWhenAsked) {
     expect_refusal(run(kGrid + "--out res -q"),
                    "cdvp sweep: res/sweep.csv:3: field 'point': expected 'board-adm-xrc-ii_m-1_objects-20' (point 0)");
     table = rows("res");
-    table[3][6] = "4";  // an axis value edited
+    table[3][7] = "4";  // an axis value edited (m)
     table[3][1] = "2";
     write_rows("res", table);
     const Result rerun = run(kGrid + "--out res --rerun-invalid");
@@ -170,7 +170,7 @@ TEST_F(CliSweepState, TracesOfOneNameGetIdsOfTheirOwnAndEachRowItsOwnReport) {
     for (std::size_t k = 1; k < table.size(); ++k) {
         ids.insert(table[k][0]);
         const auto report = nlohmann::json::parse(slurp(dir_ / "res/points" / (table[k][0] + ".json")));
-        EXPECT_EQ(report["config"]["source"], "trace " + table[k][5]) << table[k][0];
+        EXPECT_EQ(report["config"]["source"], "trace " + table[k][6]) << table[k][0];  // the axis after format_version
     }
     EXPECT_EQ(ids.size(), 6u);
 }

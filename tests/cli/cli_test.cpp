@@ -265,11 +265,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"ZeroHostFactor", nullptr, "--host-factor 0", "--host-factor: expected a number from 0.001 to 1000"},
         BadInput{"NegativeHostFactor", nullptr, "--host-factor -1", "got '-1'"},
         BadInput{"RunTooLongForSystemC", nullptr, "--scene spheres --objects 4000000 --m 1",
-                 "a run of 1 frame (the default of --frames) of up to 4000000 objects (--objects) at --m 1 and "
+                 "a run of 12 frames (the default of --frames) of up to 4000000 objects (--objects) at --m 1 and "
                  "66 MHz (the default of --clock-mhz) would reach "},
         BadInput{"ModelTooLargeForTheMemoryBudget", nullptr, "--scene spheres --objects 4194304 --m 32 --max-memory 2048",
                  "--max-memory: the memory budget of 2048 MiB (--max-memory 2048) is too little for 4194304 objects "
-                 "(--objects) in 1 frame (the default of --frames): they need an estimated "},
+                 "(--objects) in 12 frames (the default of --frames): they need an estimated "},
         // Words: no stray arguments, no abbreviations, no empty paths or names.
         BadInput{"StrayArgument", nullptr, "extra", "unexpected argument 'extra'"},
         BadInput{"AbbreviatedOption", nullptr, "--rep r.json", "unrecognised option '--rep'"},

@@ -87,6 +87,19 @@ TEST_F(CliTiming, ARunNoLongerThanItsWarmUpSaysSoAndUsesItsFrames) {
                      mean(per_frame(report, "brute", 0)));
 }
 
+// One measured frame is counted in the singular; a run at the default frames
+// measures enough that it carries no note at all.
+TEST_F(CliTiming, TheNoteCountsOneFrameAsOneAndTheDefaultFramesNeedNone) {
+    const Result one = run("run --scene spheres --objects 30 --frames 3 --baseline sap");
+    ASSERT_EQ(one.status, 0) << one.err;
+    EXPECT_NE(one.out.find("note: these figures rest on 1 frame, fewer than 10"), std::string::npos) << one.out;
+    EXPECT_NE(one.out.find("total: 3 frames, "), std::string::npos) << one.out;
+    const Result defaults = run("run --scene spheres --objects 30 --baseline sap");
+    ASSERT_EQ(defaults.status, 0) << defaults.err;
+    EXPECT_EQ(defaults.out.find("note:"), std::string::npos) << defaults.out;
+    EXPECT_NE(defaults.out.find("total: 12 frames, "), std::string::npos) << defaults.out;
+}
+
 TEST_F(CliTiming, RepeatTakesTheMedianOfEachRunsMeanAndTheSpeedupAsARatioOfMeans) {
     const Result r = run("run --scene spheres --objects 60 --m 2 --board adm-xrc-ii --frames 14 --repeat 3 "
                          "--baseline sap,brute --report r.json");

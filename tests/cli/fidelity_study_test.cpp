@@ -13,7 +13,7 @@ namespace {
 
 FidelityResult level(double wall_ns, double total_ns, const std::string& pairs) {
     FidelityResult r;
-    r.p50_sim_wall_native_ns = wall_ns;
+    r.mean_sim_wall_native_ns = wall_ns;
     r.mean_phase_ns.back() = total_ns;
     r.mean_phase_ns[2] = total_ns / 4;  // compute
     r.frames_in_means = 28;
@@ -55,7 +55,7 @@ TEST(FidelityStudy, ErrorsAreInPercentOfTheReferencesMeanFrameAndPairsAreCompare
     EXPECT_DOUBLE_EQ(fidelity_error_percent(results[2], results[0], ReportSummary::kPhases - 1), 10.0);
     EXPECT_DOUBLE_EQ(fidelity_error_percent(results[2], results[0], 2), 2.5);
     const std::string csv = fidelity_csv(results);
-    EXPECT_EQ(csv.rfind("level,fidelity,bus_model,quantum_ns,frames_in_means,p50_sim_wall_native_ns,mean_upload_ns", 0), 0u);
+    EXPECT_EQ(csv.rfind("level,fidelity,bus_model,quantum_ns,frames_in_means,mean_sim_wall_native_ns,mean_upload_ns", 0), 0u);
     EXPECT_NE(csv.find("\n2,rtl,transaction,0,28,50000,"), std::string::npos) << csv;
     EXPECT_NE(csv.find("\n4,fast,transaction,0" + std::string(23, ',') + "not run\n"), std::string::npos) << "level 4: empty figures\n" << csv;
     EXPECT_NE(csv.find(",10,0,0,0,0,0,0,yes\n"), std::string::npos) << "level 2: 10 % off in total, same pairs\n" << csv;

@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -107,6 +108,19 @@ TEST_F(SweepDir, EveryKindOfRowThatIsNotTheGridsIsRefused) {
     }
 }
 
+// A row of another layout (another cdvp version's) is refused before its
+// checksum is looked at.
+TEST_F(SweepDir, ARowOfAnotherFormatVersionIsRefused) {
+    const std::string text = csv();
+    const std::size_t line = text.find("m-2,1,refused,m does not fit,");
+    ASSERT_NE(line, std::string::npos) << text;
+    const std::size_t version = text.find(',', line + std::strlen("m-2,1,refused,m does not fit,")) + 1;
+    ASSERT_EQ(text.compare(version, 2, std::to_string(kSweepFormatVersion) + ","), 0) << text.substr(line, 80);
+    write_file(table_path(dir()), text.substr(0, version) + "2" + text.substr(version + 1));
+    EXPECT_EQ(refusal(), table_path(dir()) + ":3: field 'format_version': expected " +
+                             std::to_string(kSweepFormatVersion) + " (a row of this cdvp version), got '2'");
+}
+
 TEST_F(SweepDir, AnEditedAxisValueOrMedianOrReportFailsTheChecksum) {
     const std::string before = csv();
     // The row's axis value: m-1's row claiming m = 3.
@@ -176,7 +190,7 @@ TEST_F(SweepDir, AReportOrTableThatIsNoRegularFileIsRefusedUnread) {
 }
 
 TEST_F(SweepDir, AHeaderOfAnotherGridIsRefused) {
-    edit("point,index,status,reason,checksum,m", "point,index,status,reason,checksum,objects");
+    edit("checksum,format_version,m", "checksum,format_version,objects");
     EXPECT_EQ(refusal(), table_path(dir()) + ":1: expected the column 'm' of this sweep's grid, got 'objects'");
 }
 
@@ -305,6 +319,16 @@ TEST_F(ManifestFile, ADamagedManifestIsRefusedNamingTheFileAndWhere) {
     text = manifest().to_json();
     text["format"] = "cdvp sweep 1";
     EXPECT_NE(refusal(text.dump()).find("a sweep of another cdvp version"), std::string::npos);
+    text = manifest().to_json();
+    EXPECT_EQ(text["format_version"], kSweepFormatVersion);
+    text["format_version"] = 2;
+    EXPECT_EQ(refusal(text.dump()), path() + ": field 'format_version': 2 is not " +
+                                        std::to_string(kSweepFormatVersion) +
+                                        " (a sweep of another cdvp version: give a new --out); expected the manifest "
+                                        "cdvp sweep writes");
+    text.erase("format_version");
+    EXPECT_EQ(refusal(text.dump()),
+              path() + ": field 'format_version': is missing; expected the manifest cdvp sweep writes");
 }
 
 TEST(DirectoryLockTest, ASecondWriterIsRefusedNamingTheHolderAndTheFileGoesWithTheFirst) {

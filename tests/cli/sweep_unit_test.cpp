@@ -291,7 +291,10 @@ TEST(SweepTable, RowsHoldSettingsMediansAfterTheFirstFrameAndSpeedups) {
     EXPECT_NEAR(std::stod(row.get("sap_speedup")), 302.0 / 102.0, 1e-9);
     EXPECT_EQ(row.get(kChecksumColumn).size(), 16u);
     EXPECT_EQ(table.columns()[4], kChecksumColumn);
-    EXPECT_EQ(table.columns()[5], "objects");
+    EXPECT_EQ(table.columns()[5], "format_version");
+    EXPECT_EQ(row.get("format_version"), std::to_string(kSweepFormatVersion));
+    EXPECT_EQ(table.row(0).get("format_version"), std::to_string(kSweepFormatVersion)) << "a refused point's row too";
+    EXPECT_EQ(table.columns()[6], "objects");
     EXPECT_TRUE(is_measured_column(table.columns().back()));
     EXPECT_EQ(table.row(0).get("reason"), "m=8 needs \"48\" block RAMs, the device has 6");
     const std::vector<std::vector<std::string>> lines = parse_csv(table.csv(), "sweep.csv");
