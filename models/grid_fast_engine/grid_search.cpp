@@ -243,9 +243,15 @@ uint64_t GridSearch::sweep_cells(uint64_t begin, PairList& pairs, std::vector<ui
         }
         return blocks.end();
     }
-    for (const BusyCell& cell : busy_) {
+    for (std::size_t b = 0; b < busy_.size(); ++b) {
+        const BusyCell& cell = busy_[b];
         const uint32_t* list = lists_.data() + cell.first;
         for (uint32_t k = 0; k < cell.count; ++k) cell_boxes_[k] = &placed_[list[k]];
+        // The next cell's boxes on their way into the cache while this one is swept.
+        if (b + 1 < busy_.size()) {
+            const BusyCell& next = busy_[b + 1];
+            for (uint32_t k = 0; k < next.count; ++k) __builtin_prefetch(&placed_[lists_[next.first + k]]);
+        }
         sweep_cell(cell, blocks.add(cell.count), pairs, slots);
     }
     return blocks.end();
