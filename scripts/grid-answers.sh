@@ -5,7 +5,8 @@
 #   scripts/grid-answers.sh [OUT]      (default OUT: grid-answers/; CDVP=path/to/cdvp)
 #
 # A loaded machine may shorten it: SOFTWARE_OBJECTS (the N timed against Bullet), BOARD_OBJECTS (the
-# N run on the boards alone) and FRAMES/WARMUP replace the lists below.
+# N run on the boards alone; empty: that sweep is skipped), M (the m swept) and FRAMES/WARMUP replace
+# the lists below.
 #
 #   OUT/software/  board.algorithm x m x N = 100 .. 10^5 against Bullet's sweep and prune (sap) and
 #                  dynamic tree (dbvt): time-BOARD.png, speedup-BOARD-BASELINE.png, crossover.csv
@@ -21,9 +22,12 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cdvp=${CDVP:-$root/build/sw/cli/cdvp}
 out=${1:-grid-answers}
-common=(--board adm-xrc-ii,pcie-gen3-x8 --set board.algorithm=all_pairs,grid --set m=4,8,11,32
+common=(--board adm-xrc-ii,pcie-gen3-x8 --set board.algorithm=all_pairs,grid --set m="${M:-4,8,11,32}"
         --fidelity analytic --frames "${FRAMES:-4}" --warmup "${WARMUP:-2}")
 
 "$cdvp" sweep "${common[@]}" --set objects="${SOFTWARE_OBJECTS:-100,300,1000,3000,10000,30000,100000}" \
     --baseline sap,dbvt --out "$out/software"
-"$cdvp" sweep "${common[@]}" --set objects="${BOARD_OBJECTS:-1000000}" --out "$out/million"
+board_objects=${BOARD_OBJECTS-1000000}
+if [[ -n $board_objects ]]; then
+    "$cdvp" sweep "${common[@]}" --set objects="$board_objects" --out "$out/million"
+fi

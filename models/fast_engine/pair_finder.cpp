@@ -12,6 +12,8 @@ constexpr std::size_t kBlock = BoxColumns::kBlock;
 // that the binning costs more than the sweep it saves.
 constexpr uint32_t kMaxCellsPerAxis = 1024;
 constexpr uint32_t kMinBoxesPerCell = 16;
+// Rows of at most this many pairs are ordered by insertion.
+constexpr uint64_t kInsertionSortRow = 32;
 
 // The unsigned key of a signed one: the order the radix sort sorts by.
 uint32_t unsigned_key(int32_t key) { return static_cast<uint32_t>(key) ^ 0x8000'0000u; }
@@ -287,9 +289,13 @@ void PairFinder::bin() {
     entries_.resize(entry_count_);
     entry_index_.resize(entry_count_ + kBlock);
     entry_first_.resize(entry_count_ + kBlock);
+    // The boxes a little ahead on their way into the cache: entries of one
+    // cell come from boxes of several first cells, far apart.
+    constexpr std::size_t kAhead = 16;
     for (uint32_t cell = 0; cell < cells; ++cell) {
         const uint32_t y = cell / cells_z_, z = cell % cells_z_;
         for (uint32_t e = cell_begin_[cell]; e < cell_begin_[cell + 1]; ++e) {
+            if (e + kAhead < entry_count_) __builtin_prefetch(&valid_[entry_box_[e + kAhead]]);
             const PackedBox& box = valid_[entry_box_[e]];
             entries_.set(e, box.bound);
             entry_index_[e] = box.index;
@@ -392,14 +398,29 @@ std::size_t PairFinder::emit_pairs() {
     return found;
 }
 
-// BoardCore's order: a stable counting sort on the second index, then one on
-// the first (LSD radix with one digit per index): no comparisons, no branch
-// on the data.
+// BoardCore's order: a counting sort on the first index (no comparisons),
+// then each row, a few pairs, put in order of the second by insertion.
 void PairFinder::order(uint32_t objects, std::size_t found, PairList& out) {
-    by_second_.resize(found);
     out.resize(found);
-    counting_sort(objects, unordered_.data(), found, by_second_.data(), [](const IndexPair& pair) { return pair.second; });
-    counting_sort(objects, by_second_.data(), found, out.data(), [](const IndexPair& pair) { return pair.first; });
+    counting_sort(objects, unordered_.data(), found, out.data(), [](const IndexPair& pair) { return pair.first; });
+    // row_next_[r] is now the end of row r.
+    IndexPair* pairs = out.data();
+    uint64_t begin = 0;
+    for (uint32_t r = 0; r < objects; ++r) {
+        const uint64_t end = row_next_[r];
+        if (end - begin > kInsertionSortRow) {  // a box meeting many: no quadratic insertion
+            std::sort(pairs + begin, pairs + end, [](const IndexPair& a, const IndexPair& b) { return a.second < b.second; });
+            begin = end;
+            continue;
+        }
+        for (uint64_t k = begin + 1; k < end; ++k) {
+            const IndexPair pair = pairs[k];
+            uint64_t at = k;
+            for (; at > begin && pairs[at - 1].second > pair.second; --at) pairs[at] = pairs[at - 1];
+            pairs[at] = pair;
+        }
+        begin = end;
+    }
 }
 
 template <typename Key>

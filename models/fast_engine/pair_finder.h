@@ -146,7 +146,7 @@ private:
     uint32_t first_cell_hits(const HitBlock& block) const;
     std::vector<HitBlock> hit_blocks_;  // the first hit_block_count_ are this sweep's
     std::size_t hit_block_count_ = 0;
-    PairList unordered_, by_second_;  // unordered_ keeps its largest size: only a prefix is used
+    PairList unordered_;  // keeps its largest size: only a prefix is used
     std::vector<uint64_t> row_next_;
     BoxColumns all_;
 };
@@ -160,7 +160,8 @@ constexpr uint64_t PairFinder::scratch_bytes_per_box() {
            kMaxEntriesPerBox * entry + sizeof(uint64_t);
 }
 // A block with hits holds at least one pair: its record (the list doubles as
-// it grows), its kBlock unordered pairs; then the pair sorted twice.
+// it grows), its kBlock unordered pairs; then the pair sorted (counted
+// twice, as an earlier order step kept a second copy: an upper bound).
 constexpr uint64_t PairFinder::scratch_bytes_per_pair() {
     return 2 * sizeof(HitBlock) + BoxColumns::kBlock * sizeof(IndexPair) + 2 * sizeof(IndexPair);
 }

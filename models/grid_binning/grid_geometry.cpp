@@ -46,21 +46,6 @@ GridGeometry::GridGeometry(NumberFormat format, uint32_t dims, const std::array<
     }
 }
 
-BoxClass GridGeometry::classify(const uint32_t (&keys)[6], uint32_t max_span, CellRange& range) const {
-    for (uint32_t a = 0; a < 3; ++a) {
-        if (keys[a] > keys[a + 3]) return BoxClass::kInverted;
-    }
-    uint64_t cells = 1;
-    for (uint32_t a = 0; a < 3; ++a) {
-        const uint32_t lo = cell(a, keys[a]);
-        const uint32_t hi = cell(a, keys[a + 3]);
-        range.lo[a] = static_cast<uint8_t>(lo);
-        range.hi[a] = static_cast<uint8_t>(hi);
-        cells *= hi - lo + 1;
-    }
-    return cells > max_span ? BoxClass::kSpanning : BoxClass::kCandidate;
-}
-
 GridGeometry GridBounds::geometry(const GridConfig& config, uint32_t dims) const {
     std::array<GridAxis, 3> axes{};
     for (uint32_t a = 0; a < 3; ++a) {

@@ -57,7 +57,21 @@ public:
 
     // Box keys in Coordinate order (min x, y, z, max x, y, z) into its
     // class and, for candidates, its cells (max_span bounds the cells).
-    BoxClass classify(const uint32_t (&keys)[6], uint32_t max_span, CellRange& range) const;
+    // Inline: the fast engine classifies every box of a frame.
+    BoxClass classify(const uint32_t (&keys)[6], uint32_t max_span, CellRange& range) const {
+        for (uint32_t a = 0; a < 3; ++a) {
+            if (keys[a] > keys[a + 3]) return BoxClass::kInverted;
+        }
+        uint64_t cells = 1;
+        for (uint32_t a = 0; a < 3; ++a) {
+            const uint32_t lo = cell(a, keys[a]);
+            const uint32_t hi = cell(a, keys[a + 3]);
+            range.lo[a] = static_cast<uint8_t>(lo);
+            range.hi[a] = static_cast<uint8_t>(hi);
+            cells *= hi - lo + 1;
+        }
+        return cells > max_span ? BoxClass::kSpanning : BoxClass::kCandidate;
+    }
 
     // The float32 arithmetic of the hardware's cell-function unit.
     static uint32_t cell_of_value(float v, const GridAxis& axis, uint32_t dims) {

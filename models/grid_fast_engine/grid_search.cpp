@@ -173,41 +173,59 @@ void GridSearch::sweep_cell(const BusyCell& cell, uint64_t row_start, PairList& 
         }
     }
     const uint64_t all = masked ? ~uint64_t{0} >> (64 - n) : ~uint64_t{0};
+    // Each row is tested first, its hits gathered as bits (row_hits_), and
+    // only then turned into pairs: no call inside the test loop, so the
+    // row's keys stay in registers.
+    row_hits_.resize((n + 63) / 64);
+    uint64_t* hit_words = row_hits_.data();
     for (uint32_t r = 0; r + 1 < n; ++r) {
-        const Box& a = *cell_boxes_[r];
+        const uint64_t row_slots = (n - 1 - r + lanes - 1) / lanes;  // ceil((n-1-r) / w)
         uint64_t partners = all;  // the columns the rule may keep beside row r (masked cells)
         if (masked) {
             for (uint32_t x = 0; x < 3; ++x) partners &= (starts[x] >> r & 1) != 0 ? all : starts[x];
             partners &= ~uint64_t{0} << (r + 1);
-        }
-        if (partners != 0) {
-            int32_t row[kCoordinates];
-            cell_columns_.get(r, row);
-            const BlockTest test(cell_columns_, row);
-            // Groups of four columns from each next partner (masked), or all after r.
-            for (uint32_t q0 = masked ? static_cast<uint32_t>(__builtin_ctzll(partners)) : r + 1; q0 < n;) {
-                const uint32_t wanted = masked ? static_cast<uint32_t>(partners >> q0) & 0xFu : 0xFu;
-                const uint32_t found = test.hits(q0) & wanted & block_mask_before(q0, n);
-                const uint32_t group = q0;
-                if (masked) {
-                    partners &= ~(uint64_t{0xF} << q0);
-                    q0 = partners != 0 ? static_cast<uint32_t>(__builtin_ctzll(partners)) : n;
-                } else {
-                    q0 += BoxColumns::kBlock;
-                }
-                for (uint32_t hits = found; hits != 0; hits &= hits - 1) {
-                    const uint32_t c = group + static_cast<uint32_t>(__builtin_ctz(hits));
-                    const Box& b = *cell_boxes_[c];
-                    // The one-cell rule (masked cells kept only such partners).
-                    bool keep = true;
-                    if (!masked) {
-                        for (uint32_t x = 0; x < 3; ++x) keep &= a.range.lo[x] == here[x] || b.range.lo[x] == here[x];
-                    }
-                    if (keep) add(pairs, slots, {a.index, b.index}, row_start + (c - r - 1) / lanes);
-                }
+            if (partners == 0) {
+                row_start += row_slots;
+                continue;
             }
         }
-        row_start += (n - 1 - r + lanes - 1) / lanes;  // row r's slots: ceil((n-1-r) / w)
+        int32_t row[kCoordinates];
+        cell_columns_.get(r, row);
+        const BlockTest test(cell_columns_, row);
+        const uint32_t first_word = (r + 1) / 64, end_word = (n + 63) / 64;
+        if (masked) {
+            // Groups of four columns from each next partner.
+            uint64_t hits = 0;
+            while (partners != 0) {
+                const auto q0 = static_cast<uint32_t>(__builtin_ctzll(partners));
+                const uint32_t wanted = static_cast<uint32_t>(partners >> q0) & 0xFu;
+                hits |= uint64_t{test.hits(q0) & wanted} << q0;
+                partners &= ~(uint64_t{0xF} << q0);
+            }
+            hit_words[0] = hits;
+        } else {
+            // Groups of four columns aligned to four, so none straddles a word.
+            for (uint32_t w = first_word; w < end_word; ++w) hit_words[w] = 0;
+            const uint32_t aligned = (r + 1) & ~3u;
+            for (uint32_t q0 = aligned; q0 < n; q0 += 4) {
+                hit_words[q0 / 64] |= uint64_t{test.hits(q0) & block_mask_before(q0, n)} << (q0 % 64);
+            }
+            hit_words[first_word] &= ~uint64_t{0} << ((r + 1) % 64);
+        }
+        const Box& a = *cell_boxes_[r];
+        for (uint32_t w = first_word; w < end_word; ++w) {
+            for (uint64_t hits = hit_words[w]; hits != 0; hits &= hits - 1) {
+                const uint32_t c = w * 64 + static_cast<uint32_t>(__builtin_ctzll(hits));
+                const Box& b = *cell_boxes_[c];
+                // The one-cell rule (masked cells kept only such partners).
+                bool keep = true;
+                if (!masked) {
+                    for (uint32_t x = 0; x < 3; ++x) keep &= a.range.lo[x] == here[x] || b.range.lo[x] == here[x];
+                }
+                if (keep) add(pairs, slots, {a.index, b.index}, row_start + (c - r - 1) / lanes);
+            }
+        }
+        row_start += row_slots;
     }
 }
 
@@ -225,9 +243,15 @@ uint64_t GridSearch::sweep_cells(uint64_t begin, PairList& pairs, std::vector<ui
         }
         return blocks.end();
     }
-    for (const BusyCell& cell : busy_) {
+    for (std::size_t b = 0; b < busy_.size(); ++b) {
+        const BusyCell& cell = busy_[b];
         const uint32_t* list = lists_.data() + cell.first;
         for (uint32_t k = 0; k < cell.count; ++k) cell_boxes_[k] = &placed_[list[k]];
+        // The next cell's boxes on their way into the cache while this one is swept.
+        if (b + 1 < busy_.size()) {
+            const BusyCell& next = busy_[b + 1];
+            for (uint32_t k = 0; k < next.count; ++k) __builtin_prefetch(&placed_[lists_[next.first + k]]);
+        }
         sweep_cell(cell, blocks.add(cell.count), pairs, slots);
     }
     return blocks.end();

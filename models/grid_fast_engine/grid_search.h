@@ -105,6 +105,7 @@ private:
     // cell their keys as BlockTest takes them.
     std::vector<const Box*> cell_boxes_;
     BoxColumns cell_columns_;
+    std::vector<uint64_t> row_hits_;  // a row's hits, a bit a column
     Tile tile_;
     GridSweepStats stats_;
 };
