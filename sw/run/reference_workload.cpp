@@ -10,7 +10,7 @@ const std::vector<uint64_t>& objects() {
 }
 
 const std::vector<std::string>& baselines() {
-    static const std::vector<std::string> names = single_thread_broad_phase_names();
+    static const std::vector<std::string> names = broad_phase_names();
     return names;
 }
 
