@@ -14,4 +14,9 @@ const std::vector<std::string>& baselines() {
     return names;
 }
 
+const std::vector<std::string>& first_version_baselines() {
+    static const std::vector<std::string> names = single_thread_broad_phase_names();
+    return names;
+}
+
 }  // namespace cdvp::reference_workload
