@@ -147,7 +147,7 @@ TEST(BoardPreset, RejectsUnsourcedNumbersAndUnknownNames) {
         load_board_preset("nope");
         ADD_FAILURE() << "an unknown board was accepted";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("expected one of: adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8"),
+        EXPECT_NE(std::string(e.what()).find("expected one of: adm-xrc-ii, adm-xrc-ii-64, alveo-u250, pcie-gen3-x8"),
                   std::string::npos);
     }
 }
