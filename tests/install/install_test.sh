@@ -61,7 +61,7 @@ run_from "$work/moved"
 for doc in README.md LICENSE docs/numerics.md docs/fidelity.png; do
   [ -f "$work/moved/share/doc/cdvp/$doc" ] || fail "share/doc/cdvp/$doc not installed"
 done
-for preset in adm-xrc-ii adm-xrc-ii-64 pcie-gen3-x8; do
+for preset in adm-xrc-ii adm-xrc-ii-64 alveo-u250 pcie-gen3-x8; do
   [ -f "$work/moved/share/cdvp/boards/$preset.json" ] || fail "preset $preset not installed"
 done
 echo "installed binary ran from $work/moved with its own presets"
