@@ -15,13 +15,19 @@ PowerCoefficients power_coefficients(const Settings& s) {
     p.toggle_rate = s.power.toggle_percent / 100.0;
     p.bus_w = s.power.bus_w;
     p.host_w = s.power.host_w;
+    p.host_idle_w = s.power.host_idle_w;
     return p;
 }
 
-FrameActivity frame_activity(const FramePhases& p, uint32_t local_bus_width_bits) {
+FrameActivity frame_activity(const FramePhases& p, uint32_t local_bus_width_bits, WaitMode wait) {
     FrameActivity a;
     a.frame_ns = p.total_ns;
     a.transfer_ns = p.upload_ns + p.start_ns + p.readback_ns;
+    if (wait == WaitMode::kIrq) {
+        // What of the sweep and the interrupt the host's frame shows (two box
+        // banks hide some of the sweep behind its work on the frames beside it).
+        a.host_wait_ns = std::clamp(p.compute_ns + p.irq_ns - p.overlap_ns, 0.0, p.total_ns);
+    }
     a.active_cycles = p.compute_cycles - std::min(p.stall_cycles, p.compute_cycles);
     const uint64_t upload_bits = p.upload_bytes * 8;
     const uint64_t width = std::max<uint32_t>(local_bus_width_bits, 1);
@@ -31,13 +37,13 @@ FrameActivity frame_activity(const FramePhases& p, uint32_t local_bus_width_bits
 }
 
 BoardEnergy::BoardEnergy(const Settings& settings, const Resources& used)
-    : power_(power_coefficients(settings)), used_(used) {
+    : power_(power_coefficients(settings)), used_(used), wait_(settings.driver.wait) {
     if (settings.bus_type == BusType::kPci) local_bus_width_bits_ = settings.pci.local_bus.width_bits;
     if (settings.bus_type == BusType::kPcie) local_bus_width_bits_ = settings.pcie.local_bus.width_bits;
 }
 
 FrameEnergy BoardEnergy::frame(const FramePhases& phases) const {
-    return board_frame_energy(power_, used_, frame_activity(phases, local_bus_width_bits_));
+    return board_frame_energy(power_, used_, frame_activity(phases, local_bus_width_bits_, wait_));
 }
 
 }  // namespace cdvp

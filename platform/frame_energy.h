@@ -16,8 +16,9 @@ PowerCoefficients power_coefficients(const Settings& settings);
 // cycles less its stalls; the coordinate memories written a local-bus word
 // a cycle through the upload; the boxes crossing the device's pins once on
 // their way in, the pairs twice (into the off-chip pair buffer, then out
-// to the bridge).
-FrameActivity frame_activity(const FramePhases& phases, uint32_t local_bus_width_bits);
+// to the bridge). With run.wait irq the host sleeps through what the frame
+// shows of the sweep and the interrupt (host_wait_ns); polling, it works.
+FrameActivity frame_activity(const FramePhases& phases, uint32_t local_bus_width_bits, WaitMode wait);
 
 // The energy of a run's frames on one board.
 class BoardEnergy {
@@ -31,6 +32,7 @@ private:
     PowerCoefficients power_;
     Resources used_;
     uint32_t local_bus_width_bits_ = 32;
+    WaitMode wait_ = WaitMode::kIrq;
 };
 
 }  // namespace cdvp

@@ -28,6 +28,7 @@ void check(const PowerCoefficients& p) {
     check(p.toggle_rate, "toggle rate");
     check(p.bus_w, "bus power");
     check(p.host_w, "host power");
+    check(p.host_idle_w, "host idle power");
     if (!(p.luts_per_clb > 0) || !(p.flip_flops_per_clb > 0)) {
         throw std::invalid_argument("energy model: a CLB must hold LUTs and flip-flops (expected more than 0 of each)");
     }
@@ -51,6 +52,11 @@ FrameEnergy board_frame_energy(const PowerCoefficients& power, const Resources& 
     check(power);
     check(a.frame_ns, "frame time");
     check(a.transfer_ns, "transfer time");
+    check(a.host_wait_ns, "host wait");
+    if (a.host_wait_ns > a.frame_ns) {
+        throw std::invalid_argument("energy model: the host waits " + std::to_string(a.host_wait_ns) +
+                                    " ns of a frame of " + std::to_string(a.frame_ns) + " ns (expected at most the frame)");
+    }
     check(used.luts, "LUTs");
     check(used.flip_flops, "flip-flops");
     check(used.block_rams, "block RAMs");
@@ -65,7 +71,10 @@ FrameEnergy board_frame_energy(const PowerCoefficients& power, const Resources& 
     e.static_j = power.static_w * a.frame_ns * kSecondsPerNs;
     e.dynamic_j = (logic_pj + memory_pj + io_pj) * kJoulesPerPicojoule;
     e.bus_j = power.bus_w * a.transfer_ns * kSecondsPerNs;
-    e.host_j = power.host_w * a.frame_ns * kSecondsPerNs;
+    // A host that states its idle power sleeps through the wait on the interrupt.
+    e.host_j = power.host_idle_w > 0 ? (power.host_w * (a.frame_ns - a.host_wait_ns) + power.host_idle_w * a.host_wait_ns) *
+                                           kSecondsPerNs
+                                     : power.host_w * a.frame_ns * kSecondsPerNs;
     return e;
 }
 

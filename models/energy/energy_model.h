@@ -26,12 +26,16 @@ struct PowerCoefficients {
     double toggle_rate = kPublishedToggleRate;  // logic and I/O activity: transitions a clock
     double bus_w = 0;                // the bus and its bridges while they move data
     double host_w = 0;               // the host's package, for as long as the frame takes it
+    // The package while its cores sleep on the board's interrupt; 0: not
+    // stated, the package draws host_w through the wait too.
+    double host_idle_w = 0;
 };
 
 // What a frame did, from its phases and counters.
 struct FrameActivity {
     double frame_ns = 0;             // the host's time on the frame (the board powered throughout)
     double transfer_ns = 0;          // the bus moving data or commands: upload, start, read-back
+    double host_wait_ns = 0;         // of frame_ns, the host asleep on the board's interrupt (at most frame_ns)
     uint64_t active_cycles = 0;      // board cycles the lanes compare (the sweep less its stalls)
     uint64_t memory_write_cycles = 0;  // board cycles the coordinate memories are written (upload)
     uint64_t io_bits = 0;            // bits through the device's pins: boxes in, pairs out
@@ -42,7 +46,7 @@ struct FrameEnergy {
     double static_j = 0;   // quiescent power x frame time
     double dynamic_j = 0;  // logic, block RAM and I/O switching at the run's activity
     double bus_j = 0;      // bus power x its transfer time
-    double host_j = 0;     // host package power x frame time
+    double host_j = 0;     // host package power x frame time (its idle power while it sleeps, where stated)
     double total_j() const { return static_j + dynamic_j + bus_j + host_j; }
     FrameEnergy& operator+=(const FrameEnergy& other);
 };

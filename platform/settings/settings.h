@@ -35,6 +35,7 @@ struct HostConfig {
     double reference_dbvt_host_ns = 0;
     double reference_brute_host_ns = 0;
     double reference_soa_host_ns = 0;
+    double reference_sap_mt_host_ns = 0;  // sap_mt on one thread
     // The host's cores: a multi-threaded baseline runs on no more of them
     // than this machine has (run.threads 0); 0: not stated, this machine's.
     uint32_t cores = 0;
@@ -99,6 +100,7 @@ struct PowerSettings {
     double toggle_percent = 12.5;     // device.toggle_percent: the user's, XPE's default
     double bus_w = 0;                 // bus.active_w
     double host_w = 0;                // host.package_w
+    double host_idle_w = 0;           // host.idle_w
 };
 
 // Where the board keeps its boxes (platform/memory_plan.h resolves it).

@@ -322,6 +322,10 @@ std::vector<Setting> power_settings() {
         preset(real("host.package_w", "W", 0, 10000, member(&S::power, &P::host_w),
                     "the host CPU package's power while it works or waits on a frame (its TDP: an upper bound)",
                     kNoPreset)),
+        preset(real("host.idle_w", "W", 0, 10000, member(&S::power, &P::host_idle_w),
+                    "the host CPU package's power while its cores sleep on the board's interrupt (run.wait irq: the "
+                    "sweep and the interrupt's delivery); 0: not stated, host.package_w through the wait too",
+                    "0 without a preset; the present-day presets state theirs (docs/energy.md)")),
     };
 }
 
@@ -478,6 +482,7 @@ std::vector<Setting> host_and_run_settings() {
         reference_time("host.reference_dbvt_host_ns", &HostConfig::reference_dbvt_host_ns),
         reference_time("host.reference_brute_host_ns", &HostConfig::reference_brute_host_ns),
         reference_time("host.reference_soa_host_ns", &HostConfig::reference_soa_host_ns),
+        reference_time("host.reference_sap_mt_host_ns", &HostConfig::reference_sap_mt_host_ns),
         preset(count("host.cores", "cores", 0, 4096, member(&S::host, &HostConfig::cores),
                      "the modelled host's cores: a multi-threaded baseline (sap_mt) runs on as many threads as "
                      "this machine and the host both have, unless run.threads says; 0: not stated",

@@ -68,7 +68,7 @@ std::map<std::string, double> time_run(uint64_t objects, uint64_t& disturbed_fra
     std::vector<std::unique_ptr<BroadPhase>> fresh;
     for (const std::string& name : w::baselines()) {
         samples.emplace(name, FrameSamples(w::kWarmup));
-        fresh.push_back(make_broad_phase(name));
+        fresh.push_back(make_broad_phase(name, BaselineOptions{w::kCalibrationThreads}));
     }
     BouncingSpheresConfig scene;
     scene.objects = static_cast<std::size_t>(objects);

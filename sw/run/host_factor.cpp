@@ -87,6 +87,7 @@ double host_reference_ns(const HostConfig& host, const std::string& baseline) {
     if (baseline == "dbvt") return host.reference_dbvt_host_ns;
     if (baseline == "brute") return host.reference_brute_host_ns;
     if (baseline == "soa") return host.reference_soa_host_ns;
+    if (baseline == "sap_mt") return host.reference_sap_mt_host_ns;
     return 0;
 }
 

@@ -10,6 +10,11 @@ const std::vector<uint64_t>& objects() {
 }
 
 const std::vector<std::string>& baselines() {
+    static const std::vector<std::string> names = broad_phase_names();
+    return names;
+}
+
+const std::vector<std::string>& first_version_baselines() {
     static const std::vector<std::string> names = single_thread_broad_phase_names();
     return names;
 }

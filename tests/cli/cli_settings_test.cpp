@@ -171,7 +171,7 @@ TEST_F(CliSettings, SettingsJsonListsEverySettingAndEveryPresetKey) {
         EXPECT_TRUE(names.insert(s["name"].get<std::string>()).second) << "listed once: " << s["name"];
         if (!s["flag"].is_null()) flags.insert(s["flag"].get<std::string>());
     }
-    for (const char* name : {"adm-xrc-ii", "adm-xrc-ii-64", "pcie-gen3-x8"}) {
+    for (const char* name : {"adm-xrc-ii", "adm-xrc-ii-64", "pcie-gen3-x8", "alveo-u250"}) {
         const json root = json::parse(slurp(preset(name)));
         for (const char* section : {"board", "bus", "host"}) {
             for (const auto& [key, value] : root[section].items()) {

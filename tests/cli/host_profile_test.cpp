@@ -99,7 +99,8 @@ TEST_F(HostProfileFile, WhatIsWrittenReadsBack) {
     EXPECT_EQ(read.created, "2025-01-01T00:00:00Z");
     EXPECT_EQ(read.repeat, 3u);
     EXPECT_EQ(read.build.flags, "-O3");
-    ASSERT_EQ(read.reference.size(), 4u);
+    ASSERT_EQ(read.reference.size(), reference_workload::baselines().size());
+    EXPECT_EQ(read.reference.count("sap_mt"), 1u) << "calibrated like the others";
     EXPECT_DOUBLE_EQ(read.reference.at("dbvt").reference_native_ns, 1234.5);
     EXPECT_EQ(read.sha256.size(), 64u);
     const json j = written(profile_of(1000));
@@ -174,6 +175,47 @@ TEST_F(HostProfileFile, AForeignProfileIsRefused) {
               0u);
     EXPECT_EQ(refusal([](json& j) { j["workload"]["seed"] = 2; }).rfind(path_ + ": workload.seed: ", 0), 0u);
     EXPECT_EQ(refusal([](json& j) { j = json::array(); }), path_ + ": expected a JSON object");
+}
+
+// A profile of the first workload, before sap_mt joined it, still
+// calibrates the baselines it timed; sap_mt takes its overall factor. A
+// version this cdvp does not know is another workload's.
+TEST_F(HostProfileFile, AProfileOfTheFirstWorkloadCalibratesAllButSapMt) {
+    json j = written(profile_of(1000, [](HostProfile& p) { p.reference["sap"].reference_native_ns = 500; }));
+    j["workload"]["version"] = reference_workload::kFirstVersion;
+    j["workload"]["baselines"] = reference_workload::first_version_baselines();
+    j["reference"].erase("sap_mt");
+    write(j.dump(2));
+    const HostProfile first = read_host_profile(path_);
+    EXPECT_EQ(first.reference.count("sap_mt"), 0u);
+    HostConfig host = paper_host(4000);
+    host.reference_sap_mt_host_ns = 4000;
+    const std::map<std::string, double> factors = derive_factors(host, first);
+    EXPECT_DOUBLE_EQ(factors.at("sap"), 8);
+    EXPECT_EQ(factors.count("sap_mt"), 0u) << "not timed: the overall factor stands in";
+    HostTiming timing;
+    timing.factors = factors;
+    timing.overall = factors.at("overall");
+    EXPECT_DOUBLE_EQ(timing.factor("sap_mt"), factors.at("overall"));
+    EXPECT_EQ(refusal([](json& w) { w["workload"]["version"] = reference_workload::kVersion + 1; })
+                  .rfind(path_ + ": workload.version: a profile of another reference workload", 0),
+              0u);
+    EXPECT_EQ(refusal([](json& w) { w["workload"]["version"] = reference_workload::kFirstVersion; })
+                  .rfind(path_ + ": workload.baselines: a profile of another reference workload", 0),
+              0u)
+        << "the first workload did not time sap_mt";
+}
+
+// With sap_mt on one thread in the workload and in the preset, its factor
+// is its own, like the other baselines'.
+TEST(HostFactor, SapMtIsCalibratedLikeTheOthers) {
+    const HostProfile profile = profile_of(1000, [](HostProfile& p) { p.reference["sap_mt"].reference_native_ns = 2000; });
+    HostConfig host = paper_host(4000);
+    host.reference_sap_mt_host_ns = 4000;
+    const std::map<std::string, double> factors = derive_factors(host, profile);
+    EXPECT_DOUBLE_EQ(factors.at("sap_mt"), 2);
+    EXPECT_DOUBLE_EQ(factors.at("sap"), 4);
+    EXPECT_NEAR(factors.at("overall"), std::pow(4.0 * 4 * 4 * 4 * 2, 0.2), 1e-12);
 }
 
 TEST(HostFactor, IsTheHostsReferenceTimeOverThisMachinesPerBaseline) {

@@ -65,7 +65,7 @@ for schema in run-report sweep-row; do
   python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$work/moved/share/cdvp/schema/$schema.schema.json" ||
     fail "share/cdvp/schema/$schema.schema.json not installed, or not JSON"
 done
-for preset in adm-xrc-ii adm-xrc-ii-64 pcie-gen3-x8; do
+for preset in adm-xrc-ii adm-xrc-ii-64 alveo-u250 pcie-gen3-x8; do
   [ -f "$work/moved/share/cdvp/boards/$preset.json" ] || fail "preset $preset not installed"
 done
 echo "installed binary ran from $work/moved with its own presets"

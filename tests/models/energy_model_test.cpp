@@ -38,6 +38,27 @@ FrameActivity frame(double frame_ns, uint64_t active_cycles) {
     return a;
 }
 
+// A host that states its idle power draws it while it sleeps on the
+// interrupt and its package power the rest of the frame; one that does not
+// draws its package power throughout. Only the host's part changes.
+TEST(EnergyModel, AStatedIdlePowerIsDrawnWhileTheHostWaitsAndOnlyThen) {
+    FrameActivity a = frame(400000, 10000);
+    a.host_wait_ns = 300000;
+    const FrameEnergy unstated = board_frame_energy(virtex2(), board(8000, 4000, 72), a);
+    EXPECT_DOUBLE_EQ(unstated.host_j, 66 * 400e-6);
+    PowerCoefficients sleeping = virtex2();
+    sleeping.host_idle_w = 6;
+    const FrameEnergy e = board_frame_energy(sleeping, board(8000, 4000, 72), a);
+    EXPECT_DOUBLE_EQ(e.host_j, 66 * 100e-6 + 6 * 300e-6);
+    EXPECT_DOUBLE_EQ(e.static_j, unstated.static_j);
+    EXPECT_DOUBLE_EQ(e.dynamic_j, unstated.dynamic_j);
+    EXPECT_DOUBLE_EQ(e.bus_j, unstated.bus_j);
+    a.host_wait_ns = 0;  // polling: no wait, the package power throughout
+    EXPECT_DOUBLE_EQ(board_frame_energy(sleeping, board(8000, 4000, 72), a).host_j, 66 * 400e-6);
+    a.host_wait_ns = 400001;
+    EXPECT_THROW(board_frame_energy(sleeping, board(8000, 4000, 72), a), std::invalid_argument);
+}
+
 TEST(EnergyModel, PartsAddUpToTheTotalAndEachIsWorkedOutFromItsCoefficient) {
     const FrameEnergy e = board_frame_energy(virtex2(), board(8000, 4000, 72), frame(400000, 10000));
     EXPECT_DOUBLE_EQ(e.static_j, 0.115 * 400e-6);

@@ -90,8 +90,9 @@ TEST_F(PresetFile, EveryNumberOfEveryPresetIsRangeChecked) {
             EXPECT_NE(std::string::npos, error.find(" to ")) << "a range: " << error;
         }
     });
-    EXPECT_EQ(45 + 45 + 39, fields)
-        << "board 5, device 12 (6 of them power), host 10 (package power, cores), PCI bus 18, PCIe bus 12 fields";
+    EXPECT_EQ(47 + 47 + 41 + 41, fields)
+        << "board 5, device 12 (6 of them power), host 12 (package power at load and idle, cores, five reference "
+           "times), PCI bus 18, PCIe bus 12 fields";
 }
 
 // Every number of every shipped preset, the power figures among them, names

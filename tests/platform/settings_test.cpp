@@ -55,8 +55,8 @@ TEST(SettingsTable, EveryPresetKeyMapsToExactlyOneSettingOfItsBus) {
             }
         }
     }
-    EXPECT_EQ(3 * (5 + 14 + 11) + 19 + 19 + 13, keys)
-        << "board, device (power figures among them), host and bus keys of the three presets";
+    EXPECT_EQ(4 * (5 + 14 + 13) + 19 + 19 + 13 + 13, keys)
+        << "board, device (power figures among them), host and bus keys of the four presets";
 }
 
 TEST(SettingsTable, EveryDedicatedFlagBindsExactlyOneSetting) {

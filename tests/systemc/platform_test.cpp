@@ -111,7 +111,7 @@ TEST(Platform, PcieWhatIfUploadsFasterThanPci) {
 
 TEST(BoardPreset, EveryPresetLoadsWithSourcedNumbers) {
     const std::vector<std::string> names = board_preset_names();
-    EXPECT_EQ(names, (std::vector<std::string>{"adm-xrc-ii", "adm-xrc-ii-64", "pcie-gen3-x8"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"adm-xrc-ii", "adm-xrc-ii-64", "alveo-u250", "pcie-gen3-x8"}));
     for (const std::string& name : names) {
         const BoardPreset p = load_board_preset(name);
         EXPECT_EQ(p.name, name);
@@ -147,7 +147,7 @@ TEST(BoardPreset, RejectsUnsourcedNumbersAndUnknownNames) {
         load_board_preset("nope");
         ADD_FAILURE() << "an unknown board was accepted";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("expected one of: adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8"),
+        EXPECT_NE(std::string(e.what()).find("expected one of: adm-xrc-ii, adm-xrc-ii-64, alveo-u250, pcie-gen3-x8"),
                   std::string::npos);
     }
 }
