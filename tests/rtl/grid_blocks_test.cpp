@@ -221,7 +221,8 @@ TEST(HomeCellFilterRtl, KeepsExactlyTheHitsTheOneCellRuleKeeps) {
     for (int trial = 0; trial < 20000; ++trial) {
         // Each trial's cells from three random bytes (so that equal and
         // unequal cells both occur, differing in any bit).
-        const uint32_t bytes[3] = {rng() & 0xFF, rng() & 0xFF, rng() & 0xFF};
+        const uint32_t bytes[3] = {static_cast<uint32_t>(rng() & 0xFF), static_cast<uint32_t>(rng() & 0xFF),
+                                   static_cast<uint32_t>(rng() & 0xFF)};
         auto cell = [&] { return bytes[rng() % 3]; };
         uint32_t here[3];
         uint8_t row[3];
