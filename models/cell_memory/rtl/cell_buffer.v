@@ -1,7 +1,7 @@
 // The grid board's cell buffer (the C++ CellBuffer,
 // models/cell_memory/cell_buffer.h; docs/grid_board.md, "The cell sweep").
 //
-// cell_buffer: two halves, each M copies of a two-port block RAM of C
+// Two halves, each M copies of a two-port block RAM of C
 // entries, an entry a box: {first cells z, y, x (a byte each), its index,
 // its six coordinates}. The lanes read one half (port 0 the row, ports
 // 1..2M-1 the columns: port 2p + s is copy p's side s), the loader writes the
