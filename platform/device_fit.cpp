@@ -57,8 +57,9 @@ const std::vector<BoardResources>& costs_by_m(const Settings& settings, uint64_t
         at_m.board.m = m;
         const BoardConfig board = planned_board(at_m, capacity);  // block RAM or SSRAM tiles at this m
         // Lanes in the board's format; memories at the format's block RAM depth.
-        costs.push_back(board_resources(table, device, board.format.name(), m,
-                                        static_cast<double>(board.block_rams(capacity))));
+        const auto memories = static_cast<double>(board.block_rams(capacity));
+        costs.push_back(board.grid_board() ? grid_board_resources(table, device, board.format.name(), m, memories)
+                                           : board_resources(table, device, board.format.name(), m, memories));
     }
     if (kept.size() == kKept) {
         kept.erase(order.front());

@@ -2,7 +2,9 @@
 # Lints the whole-board RTL (models/board/rtl/collision_board_top.v and the
 # pieces it uses) with Verilator 5 (-Wall, waivers in
 # models/board/rtl/verilator.vlt) in several configurations: block RAM and
-# tiled, float32 and fixed point, combinational and piped compare lanes.
+# tiled, float32 and fixed point, combinational and piped compare lanes; then
+# the grid board's blocks (cell function, one-cell filter, cell loader and
+# buffer) in float32 and fixed point, SSRAM latencies 0 and 8, one lane and many.
 # Exit status 0 when every configuration is clean.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -32,5 +34,34 @@ for g in "${configurations[@]}"; do
     status=1
   fi
 done
-[[ $status -eq 0 ]] && echo "lint-rtl.sh: ${#configurations[@]} configurations clean"
+grid_sources=(
+  "$root/models/board/rtl/verilator.vlt"
+  "$root/models/grid_binning/rtl/grid_float_add.v"
+  "$root/models/grid_binning/rtl/grid_cell_function.v"
+  "$root/models/grid_schedule/rtl/home_cell_filter.v"
+  "$root/models/cell_memory/rtl/cell_loader.v"
+  "$root/models/cell_memory/rtl/cell_buffer.v"
+)
+grid_configurations=(
+  "grid_cell_function"
+  "grid_cell_function -GFLOAT=0 -GWIDTH=16"
+  "grid_cell_function -GFLOAT=0 -GWIDTH=32"
+  "home_cell_filter -GLANES=1"
+  "home_cell_filter -GLANES=63"
+  "cell_loader"
+  "cell_loader -GLAT=0 -GFLOAT=0 -GWIDTH=12 -GCAW=4"
+  "cell_loader -GLAT=8 -GAW=20 -GEAW=24 -GCAW=16"
+  "cell_buffer -GM=1"
+  "cell_buffer -GM=8 -GEW=120 -GCAW=10"
+)
+for g in "${grid_configurations[@]}"; do
+  top=${g%% *}
+  parameters=${g#"$top"}
+  # shellcheck disable=SC2086
+  if ! verilator --lint-only -Wall --top-module "$top" $parameters "${grid_sources[@]}"; then
+    echo "lint-rtl.sh: not clean: $g" >&2
+    status=1
+  fi
+done
+[[ $status -eq 0 ]] && echo "lint-rtl.sh: $((${#configurations[@]} + ${#grid_configurations[@]})) configurations clean"
 exit $status

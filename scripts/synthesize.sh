@@ -6,7 +6,11 @@
 #   scripts/synthesize.sh                  every row, in parallel (GNU parallel), CSV on stdout
 #   scripts/synthesize.sh --row FAMILY PIECE FORMAT M
 #                                          one row (e.g. xc2v compare_lane float32 -,
-#                                          xc2v pair_collector distributed 8)
+#                                          xc2v pair_collector distributed 8); the grid
+#                                          board's blocks: grid_cell_function FORMAT -,
+#                                          home_cell_filter - M (in the table), and
+#                                          cell_loader FORMAT -, cell_buffer FORMAT M (not
+#                                          in it: docs/grid_board.md compares them with the model)
 #   scripts/synthesize.sh --check FAMILY PIECE FORMAT M
 #                                          re-synthesises one row and compares it with the stored one
 #   scripts/synthesize.sh --board FAMILY M [FORMAT]
@@ -95,6 +99,22 @@ piece_design() {
         board_control)
             sources="$root/models/control_registers/rtl/board_control.v"
             params="" ;;
+        grid_cell_function)
+            sources="$root/models/grid_binning/rtl/grid_float_add.v $root/models/grid_binning/rtl/grid_cell_function.v"
+            params=$(format_params "$format") ;;
+        home_cell_filter)
+            sources="$root/models/grid_schedule/rtl/home_cell_filter.v"
+            params="-set LANES $((2 * m - 1))" ;;
+        cell_loader)
+            sources="$root/models/grid_binning/rtl/grid_float_add.v $root/models/grid_binning/rtl/grid_cell_function.v"
+            sources="$sources $root/models/cell_memory/rtl/cell_loader.v"
+            params="$(format_params "$format") -set AW $address_bits -set EAW 24 -set CAW 9 -set LAT 2" ;;
+        cell_buffer)
+            # Entries of 512 boxes: first cells (24 bits), index, six coordinates.
+            local width=32
+            [[ $format == float32 ]] || width=${format#fixed}
+            sources="$root/models/cell_memory/rtl/cell_buffer.v"
+            params="-set M $m -set EW $((24 + address_bits + 6 * width)) -set CAW 9" ;;
         tile_walker)
             sources="$root/models/board/rtl/tile_walker.v"
             params="-set M $m -set AW $address_bits -set T $tile_boxes -set TAW $tile_bits -set LAT 2" ;;
@@ -116,7 +136,7 @@ row() {
     local depth=-
     [[ $piece == pair_collector ]] && depth=$fifo_depth
     local bits=-
-    [[ $piece == address_generator || $piece == pair_collector ]] && bits=$address_bits
+    [[ $piece == address_generator || $piece == pair_collector || $piece == cell_loader || $piece == cell_buffer ]] && bits=$address_bits
     echo "$family,$piece,$format,$m,$bits,$depth,$(count_cells "$family" <"$log")"
 }
 
@@ -163,7 +183,10 @@ all_rows() {
             echo "$family address_generator - $m"
             echo "$family pair_collector block_ram $m"
             echo "$family pair_collector distributed $m"
+            echo "$family home_cell_filter - $m"
         done
+        echo "$family grid_cell_function float32 -"
+        for k in 8 16 24 32; do echo "$family grid_cell_function fixed$k -"; done  # fixedK between: interpolated
     done
 }
 

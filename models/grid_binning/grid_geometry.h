@@ -92,6 +92,16 @@ private:
     uint32_t plus_infinity_ = UINT32_MAX;
 };
 
+// The one-cell rule (docs/grid_board.md, "Reporting each pair once"): a hit
+// of two binned boxes in the cell `here` stands when, on every axis, one of
+// them starts there (its first cell). The filter beside the lanes applies it.
+inline bool home_cell_keeps(const uint8_t (&row_first)[3], const uint8_t (&column_first)[3],
+                            const uint32_t (&here)[3]) {
+    bool keep = true;
+    for (uint32_t a = 0; a < 3; ++a) keep &= row_first[a] == here[a] || column_first[a] == here[a];
+    return keep;
+}
+
 // Pass 1: the least and greatest finite box centre on each axis over the
 // boxes not excluded; then the sweep's grid. Centres, not bounds, so that one
 // huge box (a ground slab) does not stretch the grid over the whole scene:

@@ -321,10 +321,9 @@ GridClockedEngine::Slot GridClockedEngine::compare_cell(uint32_t half, const Por
         const auto lane = static_cast<uint32_t>(__builtin_ctzll(hits));
         hits &= hits - 1;
         const uint32_t row = window.row, column = window.first_column + lane;
-        // The one-cell rule: on every axis the row's box or the column's starts here.
-        bool here_first = true;
-        for (uint32_t a = 0; a < 3; ++a) here_first &= h.first[a][row] == here[a] || h.first[a][column] == here[a];
-        if (!here_first) continue;
+        const uint8_t row_first[3] = {h.first[0][row], h.first[1][row], h.first[2][row]};
+        const uint8_t column_first[3] = {h.first[0][column], h.first[1][column], h.first[2][column]};
+        if (!home_cell_keeps(row_first, column_first, here)) continue;
         slot.hits |= 1ull << lane;
         slot.pairs[slot.count++] = {h.index[row], h.index[column]};
     }

@@ -1,6 +1,7 @@
 #include "models/resources/resource_model.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "models/resources/table_fields.h"
@@ -81,6 +82,33 @@ Resources SynthesisTable::control(const std::string& family) const {
     return row->resources;
 }
 
+Resources SynthesisTable::cell_function(const std::string& family, const std::string& format) const {
+    if (const Row* row = find(family, "grid_cell_function", format)) return row->resources;
+    // fixedK between two synthesised widths: interpolated in K (the unit is
+    // the float adder and multiplier either way; K sizes only its converter).
+    const auto width = [](std::string_view name) {
+        return name.rfind("fixed", 0) == 0 ? std::atoi(std::string(name.substr(5)).c_str()) : 0;
+    };
+    const int k = width(format);
+    const Row* below = nullptr;
+    const Row* above = nullptr;
+    for (const Row& row : rows_) {
+        const int w = row.family == family && row.piece == "grid_cell_function" ? width(row.format) : 0;
+        if (w == 0 || k == 0) continue;
+        if (w <= k && (below == nullptr || w > width(below->format))) below = &row;
+        if (w >= k && (above == nullptr || w < width(above->format))) above = &row;
+    }
+    if (below == nullptr || above == nullptr) {
+        throw std::invalid_argument("no synthesis of a " + format + " cell-function unit for the " + family + " family");
+    }
+    const int lo = width(below->format), hi = width(above->format);
+    return lo == hi ? below->resources : lerp(below->resources, above->resources, double(k - lo) / double(hi - lo));
+}
+
+Resources SynthesisTable::home_cell_filter(const std::string& family, uint32_t m) const {
+    return by_m(family, "home_cell_filter", "-", m);
+}
+
 Resources SynthesisTable::by_m(std::string_view family, std::string_view piece, std::string_view format,
                                uint32_t m) const {
     const Row* below = nullptr;
@@ -143,6 +171,15 @@ BoardResources board_resources(const SynthesisTable& table, const DeviceCapacity
         r.pair_fifo_memory = FifoMemory::kDistributed;
     }
     r.control = table.control(family);
+    return r;
+}
+
+BoardResources grid_board_resources(const SynthesisTable& table, const DeviceCapacity& device,
+                                    const std::string& format, uint32_t m, double cell_buffer_block_rams) {
+    BoardResources r = board_resources(table, device, format, m, cell_buffer_block_rams);
+    r.grid_blocks = double(kCellFunctionUnits) * table.cell_function(device.family, format) +
+                    table.home_cell_filter(device.family, m);
+    r.memories_hold = "the cell buffer";
     return r;
 }
 

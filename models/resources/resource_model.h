@@ -5,7 +5,9 @@
 // board adds them up the way it is built:
 //   lanes x lane + coordinate memories + address generator + pair FIFO + control.
 // The coordinate memories are block RAMs only (6 x m x ceil(N / 512)); the
-// pair buffer lives in off-chip SSRAM and costs no FPGA resource.
+// pair buffer lives in off-chip SSRAM and costs no FPGA resource. The grid
+// board adds its binning stage's cell-function units and the one-cell filter
+// (grid_board_resources); its block RAMs are the cell buffer's.
 #pragma once
 
 #include <cstdint>
@@ -52,6 +54,11 @@ public:
     // memory: where the FIFO's entries live, "block_ram" or "distributed".
     Resources pair_collector(const std::string& family, uint32_t m, const std::string& memory) const;
     Resources control(const std::string& family) const;
+    // The grid board's pieces: one cell-function unit in a number format
+    // (fixedK between two synthesised widths interpolated in K), the
+    // one-cell filter of an m board's 2m-1 lanes.
+    Resources cell_function(const std::string& family, const std::string& format) const;
+    Resources home_cell_filter(const std::string& family, uint32_t m) const;
     std::vector<std::string> families() const;
     std::vector<std::string> formats(const std::string& family) const;
 
@@ -94,7 +101,14 @@ struct BoardResources {
     Resources pair_collector;
     FifoMemory pair_fifo_memory = FifoMemory::kBlockRam;
     Resources control;
-    Resources total() const { return lanes + coordinate_memories + address_generator + pair_collector + control; }
+    // The grid board's cell-function units and one-cell filter (none on the all-pairs board).
+    Resources grid_blocks;
+    // What the block RAMs of coordinate_memories hold: "the boxes", or the
+    // grid board's "the cell buffer" (a cell's boxes at a time).
+    const char* memories_hold = "the boxes";
+    Resources total() const {
+        return lanes + coordinate_memories + address_generator + pair_collector + control + grid_blocks;
+    }
 };
 
 // 'memory_block_rams': the coordinate memories' block RAMs
@@ -103,6 +117,17 @@ struct BoardResources {
 // distributed RAM (LUTs), as a designer would place it.
 BoardResources board_resources(const SynthesisTable& table, const DeviceCapacity& device, const std::string& format,
                                uint32_t m, double memory_block_rams);
+
+// The grid board (docs/grid_board.md): the all-pairs board's lanes,
+// address generator, pair FIFO and controller around its cell buffer
+// ('cell_buffer_block_rams', BoardConfig::block_rams), plus the binning
+// stage's cell-function units (kCellFunctionUnits: one a bound of a box,
+// shared by the binning passes and the cell loader, which never run at once)
+// and the one-cell filter. The binning sequencer, the scan and the SSRAM
+// sequencing have no synthesis rows: not counted.
+BoardResources grid_board_resources(const SynthesisTable& table, const DeviceCapacity& device,
+                                    const std::string& format, uint32_t m, double cell_buffer_block_rams);
+constexpr uint32_t kCellFunctionUnits = 6;
 
 // How a board's resources sit on a device: utilisation of each resource
 // (used / available) and the first one that overflows, if any.

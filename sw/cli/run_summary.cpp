@@ -27,10 +27,12 @@ void print_resources(std::ostream& out, const DeviceFit& fit) {
     };
     usage("LUTs", total.luts, fit.device.luts);
     usage("flip-flops", total.flip_flops, fit.device.flip_flops);
-    // The block RAMs the boxes take (the first line's count) and the rest.
+    // The block RAMs the boxes take (the first line's count; the grid
+    // board's cell buffer) and the rest.
     const double boxes = fit.resources.coordinate_memories.block_rams;
-    char split[96];
-    std::snprintf(split, sizeof split, "%.0f for the boxes, %.0f besides", boxes, total.block_rams - boxes);
+    char split[128];
+    std::snprintf(split, sizeof split, "%.0f for %s, %.0f besides", boxes, fit.resources.memories_hold,
+                  total.block_rams - boxes);
     usage("block RAMs", total.block_rams, fit.device.block_rams, split);
     text += " pair FIFO in " + std::string(fit.resources.pair_fifo_memory == FifoMemory::kBlockRam ? "block RAM" : "LUTs");
     text += fit.use.fits() ? "; largest m that fits: " + std::to_string(fit.largest_m)

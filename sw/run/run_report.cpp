@@ -61,6 +61,12 @@ nlohmann::json piece_json(const Resources& r) {
 nlohmann::json resources_json(const DeviceFit& fit, NumberFormat format) {
     const Resources total = fit.resources.total();
     const BoardResources& r = fit.resources;
+    nlohmann::json pieces = {{"lanes", piece_json(r.lanes)},
+                             {"coordinate_memories", piece_json(r.coordinate_memories)},
+                             {"address_generator", piece_json(r.address_generator)},
+                             {"pair_collector", piece_json(r.pair_collector)},
+                             {"control", piece_json(r.control)}};
+    if (r.grid_blocks.luts > 0) pieces["grid_blocks"] = piece_json(r.grid_blocks);
     return {{"device", fit.device.name},
             {"family", fit.device.family},
             {"format", format.name()},
@@ -72,12 +78,7 @@ nlohmann::json resources_json(const DeviceFit& fit, NumberFormat format) {
             {"fits", fit.use.fits()},
             {"largest_m", fit.largest_m},
             {"timing", timing_json(fit)},
-            {"pieces",
-             {{"lanes", piece_json(r.lanes)},
-              {"coordinate_memories", piece_json(r.coordinate_memories)},
-              {"address_generator", piece_json(r.address_generator)},
-              {"pair_collector", piece_json(r.pair_collector)},
-              {"control", piece_json(r.control)}}}};
+            {"pieces", pieces}};
 }
 
 nlohmann::json config_json(const RunDescription& run) {

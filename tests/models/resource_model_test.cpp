@@ -25,7 +25,12 @@ SynthesisTable small_table() {
                                      "xc2v,pair_collector,block_ram,1,16,512,60,40,30,40,1,0\n"
                                      "xc2v,pair_collector,block_ram,3,16,512,1000,200,100,200,1,0\n"
                                      "xc2v,pair_collector,distributed,1,16,512,200,2000,30,40,0,0\n"
-                                     "xc2v,pair_collector,distributed,3,16,512,1400,2200,100,200,0,0\n",
+                                     "xc2v,pair_collector,distributed,3,16,512,1400,2200,100,200,0,0\n"
+                                     "xc2v,grid_cell_function,float32,-,-,-,900,0,140,250,0,4\n"
+                                     "xc2v,grid_cell_function,fixed8,-,-,-,700,0,130,300,0,4\n"
+                                     "xc2v,grid_cell_function,fixed16,-,-,-,800,0,130,300,0,4\n"
+                                     "xc2v,home_cell_filter,-,1,-,-,7,0,0,0,0,0\n"
+                                     "xc2v,home_cell_filter,-,3,-,-,27,0,0,0,0,0\n",
                                  "small.csv");
 }
 
@@ -88,6 +93,24 @@ TEST(BoardResources, PutThePairFifoInLutsWhenTheMemoriesTakeEveryBlockRam) {
     EXPECT_DOUBLE_EQ(r.pair_collector.luts, (2200 + 3600) / 2);
 }
 
+TEST(BoardResources, TheGridBoardAddsSixCellFunctionsAndItsFilterAroundItsCellBuffer) {
+    const SynthesisTable table = small_table();
+    const BoardResources all_pairs = board_resources(table, kDevice, "float32", 2, 12);
+    const BoardResources grid = grid_board_resources(table, kDevice, "float32", 2, 12);
+    EXPECT_STREQ(all_pairs.memories_hold, "the boxes");
+    EXPECT_STREQ(grid.memories_hold, "the cell buffer");
+    EXPECT_DOUBLE_EQ(all_pairs.grid_blocks.luts, 0);
+    EXPECT_DOUBLE_EQ(grid.grid_blocks.luts, 6 * 900 + (7 + 27) / 2.0);  // the filter at m = 2: between m = 1 and 3
+    EXPECT_DOUBLE_EQ(grid.grid_blocks.multipliers, 6 * 4);
+    EXPECT_DOUBLE_EQ(grid.total().luts, all_pairs.total().luts + grid.grid_blocks.luts);
+    EXPECT_DOUBLE_EQ(grid.total().block_rams, all_pairs.total().block_rams);
+    // fixedK between two synthesised widths: interpolated in K; beyond them, no guess.
+    EXPECT_DOUBLE_EQ(table.cell_function("xc2v", "fixed12").luts, 750);
+    EXPECT_DOUBLE_EQ(table.cell_function("xc2v", "fixed16").luts, 800);
+    EXPECT_THROW(grid_board_resources(table, kDevice, "fixed20", 2, 12), std::invalid_argument);
+    EXPECT_THROW(table.cell_function("xcup", "float32"), std::invalid_argument);
+}
+
 TEST(Utilisation, NamesTheFirstResourceThatOverflows) {
     const DeviceCapacity device{"D", "xc2v", 1000, 1000, 10, "test"};
     EXPECT_TRUE(utilisation({900, 900, 0, 10, 0}, device).fits());
@@ -120,6 +143,16 @@ TEST(StoredSynthesisTable, CoversEveryFormatAndMOnBothFamilies) {
         }
         EXPECT_GT(table.address_generator(family, 24).luts, table.address_generator(family, 1).luts);
         EXPECT_GT(table.control(family).flip_flops, 0);
+        // The grid board's pieces in every format and at every m.
+        const Resources float_unit = table.cell_function(family, "float32");
+        EXPECT_GT(float_unit.luts, 0) << family;
+        for (int k = 8; k <= 32; ++k) {
+            EXPECT_GT(table.cell_function(family, "fixed" + std::to_string(k)).luts, 0) << family << " fixed" << k;
+        }
+        for (uint32_t m = 1; m <= BoardConfig::kMaxM; ++m) {
+            EXPECT_GT(table.home_cell_filter(family, m).luts, 0) << family << " m = " << m;
+        }
+        EXPECT_GT(table.home_cell_filter(family, 24).luts, table.home_cell_filter(family, 1).luts) << family;
     }
 }
 

@@ -152,13 +152,13 @@ TEST(RtlLockstepCheck, StopsAtTheFirstDifferenceWithItsCycleAndSignal) {
 TEST(RtlVariants, ABoardTheRtlCannotRunIsRefusedSayingWhy) {
     BoardConfig two_banks, fast_drain, slow_tiles, grid;
     two_banks.box_banks = 2;
-    grid.algorithm = BoardAlgorithm::kGrid;  // its blocks have no RTL (docs/grid_board.md)
+    grid.algorithm = BoardAlgorithm::kGrid;  // its blocks have RTL, the board no top (docs/grid_board.md)
     fast_drain.collector.drain_per_cycle = 4;
     slow_tiles.tiles.boxes = 64;
     slow_tiles.tiles.cycles_per_box = 2;
     const std::pair<BoardConfig, const char*> refused[] = {
         {two_banks, "one box bank"}, {fast_drain, "one pair a cycle"}, {slow_tiles, "in one cycle"},
-        {grid, "grid board (board.algorithm grid) has no RTL"}};
+        {grid, "grid board (board.algorithm grid) has no RTL top"}};
     for (const auto& [config, why] : refused) {
         EXPECT_NE(rtl_unsupported(config).find(why), std::string::npos) << why;
         try {
