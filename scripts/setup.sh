@@ -26,6 +26,7 @@ packages=(
   pybind11-dev python3-dev       # the Python module (sw/python), for Debian's /usr/bin/python3
   python3-pandas python3-pytest  # its tables and its tests
   python3-matplotlib             # the example that draws the paper's speedup figure from cdvp.sweep
+  python3-distributed            # cdvp.sweep(executor=) on a Dask LocalCluster in the module's tests
   slurmctld slurmd slurm-client munge  # a one-node Slurm on the loopback for the sweep's job-array test (tests/slurm)
 )
 

@@ -119,10 +119,11 @@ def spread_sweep(axes, own, keywords, settings, executor, block, progress):
     shard_points = {task: range(task - 1, points, tasks) for task in range(1, tasks + 1)}
     todo = [task for task, indices in shard_points.items() if not all(i in held for i in indices)]
     done, run_now = len(held), 0
+    if todo:
+        os.makedirs(tasks_dir, exist_ok=True)
     if progress is not None:
         progress(done, points)
     if todo:
-        os.makedirs(tasks_dir, exist_ok=True)
         futures = {executor.submit(run_task, axes, own, keywords, settings, out, task, tasks,
                                    sorted(held.intersection(shard_points[task]))): task for task in todo}
         failure = None
