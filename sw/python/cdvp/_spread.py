@@ -101,6 +101,28 @@ def _check_tasks_dir(tasks_dir, tasks):
                              "them, or remove that directory", 2)
 
 
+class _Progress:
+    """progress(done, total), as a sweep calls it: the first exception it
+    raises is kept for when the sweep ends (its tasks are not left
+    half-merged) and silences it."""
+
+    def __init__(self, callback):
+        self._callback = callback
+        self._failure = None
+
+    def __call__(self, done, total):
+        if self._callback is None or self._failure is not None:
+            return
+        try:
+            self._callback(done, total)
+        except Exception as failure:
+            self._failure = failure
+
+    def rethrow_any(self):
+        if self._failure is not None:
+            raise self._failure
+
+
 def spread_sweep(axes, own, keywords, settings, executor, block, progress):
     """Runs the sweep's points on executor in tasks of block points and
     merges them into own["out"]; returns the outcome as cdvp.sweep's."""
@@ -121,8 +143,8 @@ def spread_sweep(axes, own, keywords, settings, executor, block, progress):
     done, run_now = len(held), 0
     if todo:
         os.makedirs(tasks_dir, exist_ok=True)
-    if progress is not None:
-        progress(done, points)
+    told = _Progress(progress)
+    told(done, points)
     if todo:
         futures = {executor.submit(run_task, axes, own, keywords, settings, out, task, tasks,
                                    sorted(held.intersection(shard_points[task]))): task for task in todo}
@@ -140,8 +162,7 @@ def spread_sweep(axes, own, keywords, settings, executor, block, progress):
                         "the points it recorded stay: call again to run the rest", 1)
                     continue
                 done, run_now = done + rows, run_now + ran
-                if progress is not None:
-                    progress(done, points)
+                told(done, points)
         except BaseException:
             for future in futures:
                 future.cancel()
@@ -154,4 +175,5 @@ def spread_sweep(axes, own, keywords, settings, executor, block, progress):
         if status != 0:
             raise InternalError(f"cdvp.sweep: drawing the figures failed (status {status}); the tasks' rows stay "
                                 f"in {tasks_dir}: call again to merge them", status)
+    told.rethrow_any()
     return {"status": 0, "points": points, "run_now": run_now, "tasks": len(todo), "began_now": prepared["began_now"]}

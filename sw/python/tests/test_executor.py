@@ -121,3 +121,14 @@ def test_what_an_executor_sweep_refuses(tmp_path):
         assert not (tmp_path / "a").exists()
     with pytest.raises(cdvp.InputError, match="block=: cuts the sweep into tasks for an executor="):
         cdvp.sweep(GRID, tmp_path / "c", block=2, **POINTS)
+
+
+def test_an_exception_in_progress_is_raised_after_the_tasks_are_merged(tmp_path):
+    def fail(done, total):
+        raise RuntimeError("stop here")
+
+    with concurrent.futures.ThreadPoolExecutor(2) as threads:
+        with pytest.raises(RuntimeError, match="stop here"):
+            cdvp.sweep(GRID, tmp_path, executor=threads, block=3, progress=fail, **POINTS)
+        again = cdvp.sweep(GRID, tmp_path, executor=threads, block=3, **POINTS)
+    assert len(again) == 6 and again.attrs["outcome"]["run_now"] == 0
