@@ -29,6 +29,7 @@ packages=(
   python3-matplotlib             # the example that draws the paper's speedup figure from cdvp.sweep
   mkdocs                         # the docs site, built with --strict by the test docs.site
   python3-jsonschema             # validates real reports and sweep rows against docs/schema (tests/schema)
+  python3-distributed            # cdvp.sweep(executor=) on a Dask LocalCluster in the module's tests
   slurmctld slurmd slurm-client munge  # a one-node Slurm on the loopback for the sweep's job-array test (tests/slurm)
 )
 

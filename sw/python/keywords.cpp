@@ -1,8 +1,13 @@
 #include "sw/python/keywords.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <pybind11/stl.h>
 
 #include "models/common/user_text.h"
 #include "platform/settings/board_preset.h"
@@ -258,6 +263,12 @@ void read_own(const py::dict& own, SweepSpec& spec) {
     spec.plots = flag_of(own, "plots", true);
     spec.quiet = flag_of(own, "quiet", true);
     spec.rerun_invalid = flag_of(own, "rerun_invalid", false);
+    // Set by the package for one task of a sweep spread over an executor (cdvp/_spread.py), never by a user.
+    if (own.contains("gathered_into") && !own["gathered_into"].is_none()) {
+        const auto [dir, held] = own["gathered_into"].cast<std::pair<std::string, std::vector<std::size_t>>>();
+        spec.gathered_into = SweepSpec::GatheredInto{dir, held};
+        std::sort(spec.gathered_into->held.begin(), spec.gathered_into->held.end());
+    }
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -34,6 +35,7 @@
 #include "sw/study/child_runs.h"
 #include "sw/study/study_run.h"
 #include "sw/study/sweep.h"
+#include "sw/study/sweep_merge.h"
 
 namespace py = pybind11;
 
@@ -209,6 +211,37 @@ py::dict sweep_keywords(const py::dict& axes, const py::dict& own, const py::dic
     return result;
 }
 
+// A sweep's OUT made ready for its points to be spread over an executor's
+// tasks (cdvp/_spread.py), checked as a resume checks it: {"points": the
+// grid's, "held": the indices OUT holds, "began_now": OUT held no sweep}.
+py::dict prepare_keywords(const py::dict& axes, const py::dict& own, const py::dict& keywords, const py::object& settings) {
+    const PreparedSweep prepared = as_call("cdvp.sweep", [&] {
+        const SweepSpec spec = sweep_spec_of(axes, own, keywords, settings);
+        py::gil_scoped_release unlocked;
+        return prepare_sweep(spec);
+    });
+    py::dict result;
+    result["points"] = prepared.grid_points;
+    result["held"] = prepared.held;
+    result["began_now"] = prepared.began_now;
+    return result;
+}
+
+// The tasks' directories gathered into OUT, as `cdvp merge` gathers shards
+// (one transaction): 0, or 1 when gnuplot failed and OUT was left as it was.
+int merge_tasks(const std::string& out, const std::vector<std::string>& tasks, bool plots, bool quiet) {
+    return as_call("cdvp.sweep", [&] {
+        MergeSpec spec;
+        spec.out = out;
+        spec.shards = tasks;
+        spec.plots = plots;
+        spec.quiet = quiet;
+        spec.program = "cdvp.sweep";
+        py::gil_scoped_release unlocked;
+        return merge_sweeps(spec).status;
+    });
+}
+
 }  // namespace
 
 }  // namespace cdvp
@@ -230,4 +263,8 @@ PYBIND11_MODULE(_cdvp, module) {
     module.def("sweep", &cdvp::sweep_keywords, py::arg("axes"), py::arg("own"), py::arg("keywords"), py::arg("settings"),
                py::arg("cdvp_binary"), py::arg("progress"),
                "One sweep in this process, its points children but the analytic ones: the outcome as a dict.");
+    module.def("sweep_prepare", &cdvp::prepare_keywords, py::arg("axes"), py::arg("own"), py::arg("keywords"),
+               py::arg("settings"), "A sweep's out made ready for tasks, checked as a resume: points, held, began_now.");
+    module.def("merge", &cdvp::merge_tasks, py::arg("out"), py::arg("tasks"), py::arg("plots"), py::arg("quiet"),
+               "The tasks' directories merged into out in one transaction: 0, or 1 when gnuplot failed.");
 }

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -143,17 +144,70 @@ bool every_point_refused(const SweepTable& table, std::string& first) {
     return all;
 }
 
-// The points of this shard, and those of them the table does not hold yet.
-std::vector<std::size_t> points_to_run(const Grid& grid, const Shard& shard, const SweepTable& table, std::size_t& in_shard) {
+// The points of this shard, and those of them neither the table nor the
+// gathered sweep (of a task: SweepSpec::gathered_into) holds yet.
+std::vector<std::size_t> points_to_run(const Grid& grid, const SweepSpec& o, const SweepTable& table, std::size_t& in_shard) {
+    static const std::vector<std::size_t> none;
+    const std::vector<std::size_t>& held = o.gathered_into ? o.gathered_into->held : none;
     std::vector<std::size_t> todo;
     in_shard = 0;
     for (std::size_t index = 0; index < grid.size(); ++index) {
-        if (!shard.runs(index)) continue;
+        if (!o.shard.runs(index)) continue;
         ++in_shard;
-        if (!table.has(index)) todo.push_back(index);
+        if (!table.has(index) && !std::binary_search(held.begin(), held.end(), index)) todo.push_back(index);
     }
     return todo;
 }
+
+// A task's points share the gathered sweep's software timings, unless a
+// directory (or none) was named for them.
+SweepSpec sharing_gathered_timings(SweepSpec spec) {
+    if (spec.gathered_into && !spec.software_timings_given && !spec.software_timings.empty()) {
+        spec.software_timings = software_timings_dir(spec.gathered_into->dir);
+    }
+    return spec;
+}
+
+// A sweep's OUT open as run_sweep and prepare_sweep need it: locked, its
+// manifest and every row kept checked (or, with rerun_invalid, the rows that
+// do not match left out), the manifest written when new, the directories
+// made and the table open for appending.
+struct OpenSweep {
+    explicit OpenSweep(const SweepSpec& o)
+        : grid(o.axes), inputs(o.inputs, o.trace_limits, o.input_facts), out(o.out_dir), table(grid) {
+        // Shards of one sweep each keep OUT/software unless one directory is named for all.
+        const std::string timings_named = o.software_timings_given || o.software_timings.empty() ? o.software_timings
+                                                                                                  : "OUT/software";
+        const Manifest wanted{grid.axes(), to_arguments(o.run), inputs.digests(), o.shard, kCdvpVersion, o.record, timings_named};
+        existing = read_manifest(manifest_path(o.out_dir));
+        check_out_dir(o.out_dir, existing, wanted);
+        remove_stale_temporaries(o.out_dir);
+        const TableRead read = read_table(o.out_dir, grid, o.shard, table, o.rerun_invalid, o.record);
+        if (!o.quiet) {
+            for (const std::string& invalid : read.invalid) std::cerr << o.program << ": runs again: " << invalid << '\n';
+            if (read.torn) std::cerr << o.program << ": " << table_path(o.out_dir) << ": its last row was cut short; the point runs again\n";
+        }
+        // The rows kept divided by the timings there: the points to run must too.
+        if (!o.software_timings.empty()) {
+            if (const std::optional<std::string> changed = check_software_timings(o.software_timings, table)) {
+                throw InputError(*changed);
+            }
+        }
+        out.made().create(points_dir(o.out_dir));
+        if (!o.software_timings.empty()) out.made().create(o.software_timings);
+        if (!existing) commit_text_file(manifest_path(o.out_dir), wanted.to_json().dump(2) + "\n", "--out");
+        file.emplace(table_path(o.out_dir), table, read.rewrite);
+    }
+
+    // In this order: the grid and the inputs are checked before OUT is made
+    // and locked, and the table file is closed before the lock goes.
+    const Grid grid;
+    const SweepInputs inputs;
+    LockedOutDirectory out;
+    SweepTable table;
+    std::optional<Manifest> existing;
+    std::optional<TableFile> file;
+};
 
 SweepOutcome outcome_of(const SweepTable& table, std::size_t run_now) {
     SweepOutcome outcome;
@@ -168,44 +222,24 @@ SweepOutcome outcome_of(const SweepTable& table, std::size_t run_now) {
 
 }  // namespace
 
-SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
+SweepOutcome run_sweep(const SweepSpec& given, SweepObserver* observer) {
     SweepObserver silent;
     SweepObserver& told = observer != nullptr ? *observer : silent;
-    const Grid grid(o.axes);
-    const SweepInputs inputs(o.inputs, o.trace_limits, o.input_facts);
-    // Shards of one sweep each keep OUT/software unless one directory is named for all.
-    const std::string timings_named = o.software_timings_given || o.software_timings.empty() ? o.software_timings
-                                                                                              : "OUT/software";
-    const Manifest wanted{grid.axes(), to_arguments(o.run), inputs.digests(), o.shard, kCdvpVersion, o.record, timings_named};
-    LockedOutDirectory out(o.out_dir);
-    CreatedDirectories& made = out.made();
-    const std::optional<Manifest> existing = read_manifest(manifest_path(o.out_dir));
-    check_out_dir(o.out_dir, existing, wanted);
-    remove_stale_temporaries(o.out_dir);
-
-    SweepTable table(grid);
-    const TableRead read = read_table(o.out_dir, grid, o.shard, table, o.rerun_invalid, o.record);
-    if (!o.quiet) {
-        for (const std::string& invalid : read.invalid) std::cerr << o.program << ": runs again: " << invalid << '\n';
-        if (read.torn) std::cerr << o.program << ": " << table_path(o.out_dir) << ": its last row was cut short; the point runs again\n";
-    }
-    // The rows kept divided by the timings there: the points to run must too.
-    if (!o.software_timings.empty()) {
-        if (const std::optional<std::string> changed = check_software_timings(o.software_timings, table)) {
-            throw InputError(*changed);
-        }
-    }
+    const SweepSpec o = sharing_gathered_timings(given);
+    OpenSweep open(o);
+    const Grid& grid = open.grid;
+    SweepTable& table = open.table;
+    TableFile& file = *open.file;
+    CreatedDirectories& made = open.out.made();
+    const std::optional<Manifest>& existing = open.existing;
     std::size_t in_shard = 0;
-    const std::vector<std::size_t> todo = points_to_run(grid, o.shard, table, in_shard);
-    made.create(points_dir(o.out_dir));
-    if (!o.software_timings.empty()) made.create(o.software_timings);
-    if (!existing) commit_text_file(manifest_path(o.out_dir), wanted.to_json().dump(2) + "\n", "--out");
-    TableFile file(table_path(o.out_dir), table, read.rewrite);
+    const std::vector<std::size_t> todo = points_to_run(grid, o, table, in_shard);
     told.started(in_shard, in_shard - todo.size());
     // J points at once share the memory: each one's default budget is its share.
     setenv(kMemoryShareVariable, std::to_string(o.jobs).c_str(), 1);
     SweepOutcome outcome;
     {
+        const SweepInputs& inputs = open.inputs;
         SweepRunner runner(o, grid, table, file, inputs.trace_paths(), [&inputs] { inputs.check_unchanged(); });
         outcome.status = runner.run(todo, told);
     }
@@ -216,7 +250,7 @@ SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
         return outcome;
     }
     std::string first_reason;
-    if (every_point_refused(table, first_reason)) {
+    if (!o.gathered_into && every_point_refused(table, first_reason)) {
         if (!existing) {  // a sweep that never ran a point leaves nothing behind (the directories it made go too)
             std::error_code ignored;
             fs::remove(table_path(o.out_dir), ignored);
@@ -231,6 +265,17 @@ SweepOutcome run_sweep(const SweepSpec& o, SweepObserver* observer) {
     outcome = outcome_of(table, todo.size());
     outcome.status = status;
     return outcome;
+}
+
+PreparedSweep prepare_sweep(const SweepSpec& o) {
+    OpenSweep open(o);
+    open.file->finish(open.table);
+    open.out.made().keep();
+    PreparedSweep prepared;
+    prepared.grid_points = open.grid.size();
+    prepared.began_now = !open.existing;
+    open.table.for_each([&](std::size_t index, const RowView&) { prepared.held.push_back(index); });
+    return prepared;
 }
 
 }  // namespace cdvp

@@ -62,6 +62,18 @@ struct SweepSpec {
     // its text: a host profile's reference times and spreads. Set by the
     // command line, which reads host profiles; empty: nothing.
     std::function<nlohmann::json(const NamedInput& input, const std::string& text)> input_facts;
+    // One task of a sweep spread over an executor (cdvp.sweep(executor=)):
+    // a shard in a directory of its own whose rows a merge gathers into `dir`,
+    // which prepare_sweep made ready. The points `dir` holds already are not
+    // run here; the software timings are shared through `dir`'s (this
+    // manifest names them OUT/software, as the gathered sweep's does) unless
+    // software_timings was given; and rows that are all refused are kept:
+    // the gathered sweep refuses as a whole.
+    struct GatheredInto {
+        std::string dir;
+        std::vector<std::size_t> held;  // point indices, ascending
+    };
+    std::optional<GatheredInto> gathered_into;
 };
 
 // Told how a sweep goes: a progress bar on a terminal, a callback in a notebook.
@@ -89,6 +101,21 @@ struct SweepOutcome {
 // so far kept. A stop signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT) is forwarded
 // to the running points and ends the sweep: sweep_stop_signal() says which.
 SweepOutcome run_sweep(const SweepSpec& spec, SweepObserver* observer = nullptr);
+
+// What a sweep's OUT held before its points were spread over tasks.
+struct PreparedSweep {
+    std::size_t grid_points = 0;     // the points of the whole grid
+    std::vector<std::size_t> held;   // the indices OUT's table holds, ascending
+    bool began_now = false;          // OUT held no sweep before: its manifest was written now
+};
+
+// Makes OUT ready as run_sweep does before its first point, running none:
+// checks OUT's manifest and every row kept (refusing another sweep, a
+// changed input, a row that does not match, as a resume does), writes the
+// manifest and the table's header when OUT is new, and makes points/ and
+// the software timings' directory. The tasks of a spread sweep then run
+// the points OUT lacks (SweepSpec::gathered_into) and a merge gathers them.
+PreparedSweep prepare_sweep(const SweepSpec& spec);
 
 // The signal that stopped the last sweep (forwarded to its points), or 0.
 int sweep_stop_signal();

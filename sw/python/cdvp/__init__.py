@@ -11,15 +11,16 @@ configurations and a refused or faulting run cannot take Python down.
 import functools
 import json
 import os
-import signal
+import shutil
 import subprocess
 
 import pandas as pd
 
 from . import _cdvp
-from ._errors import DeviceFault, Error, InputError, InternalError, SystemFailure, error_class
+from ._errors import DeviceFault, Error, InputError, InternalError, SystemFailure, error_class, raise_for_outcome
 from ._locate import find_binary, use_installed_boards
 from ._report import PHASES, Baseline, Report, Summary, frames_table
+from ._spread import spread_sweep
 
 __all__ = ["settings", "presets", "run", "sweep", "find_binary", "Report", "Summary", "Baseline", "PHASES",
            "Error", "InputError", "DeviceFault", "SystemFailure", "InternalError"]
@@ -77,7 +78,7 @@ def run(board=None, scene=None, trace=None, settings=None, pairs=False, **option
 _SWEEP_OWN = ("shard", "record", "software_timings", "rerun_invalid")
 
 
-def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=True, **options):
+def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=True, executor=None, block=1, **options):
     """A sweep into the directory out; returns out/sweep.csv as a DataFrame (one row a point).
 
     axes: {"m": [1, 2, 4], "objects": "50:800:x2", "bus.interrupt_ns": [...]}: a setting by its
@@ -86,7 +87,10 @@ def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=Tru
     a list).
     options: the sweep's own (shard="1/4", record="compact", software_timings, rerun_invalid) and
     every keyword of run() for each point; settings as run()'s.
-    progress: called as progress(done, total) before the first point and after each.
+    progress: called as progress(done, total) before the first point and after each (with an
+    executor, after each task).
+    executor: a concurrent.futures.Executor or a dask.distributed.Client: the points run there in
+    tasks of block points (each task jobs points at once), merged into out when all have ended.
     Resumable: the same call into the same out runs only the points not done yet (outcome in
     DataFrame.attrs["outcome"], its "run_now" the points this call ran). Raises as run() does;
     KeyboardInterrupt when Ctrl-C stops it."""
@@ -96,15 +100,29 @@ def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=Tru
         raise TypeError(f"cdvp.sweep: progress must be callable as progress(done, total), not {type(progress).__name__}")
     own = {"out": out, "jobs": jobs, "plots": plots, "quiet": quiet,
            **{key: options.pop(key) for key in _SWEEP_OWN if key in options}}
-    outcome = _cdvp.sweep(axes, own, options, settings, find_binary(), progress)
-    if outcome["stop_signal"] == signal.SIGINT:
-        raise KeyboardInterrupt
-    if outcome["stop_signal"]:
-        raise InternalError(f"cdvp.sweep: stopped by signal {outcome['stop_signal']}", 1)
-    if outcome["status"] != 0:
-        status = outcome["status"]
-        raise error_class(status)(f"cdvp.sweep: ended with status {status} after {outcome['points']} points "
-                                 "(the reason is on standard error)", status)
+    if executor is None:
+        if block != 1:
+            raise InputError("cdvp.sweep: block=: cuts the sweep into tasks for an executor=; give one", 2)
+        outcome = _cdvp.sweep(axes, own, options, settings, find_binary(), progress)
+        raise_for_outcome(outcome)
+    else:
+        outcome = spread_sweep(axes, own, options, settings, executor, block, progress)
     table = pd.read_csv(os.path.join(os.fsdecode(os.fspath(out)), "sweep.csv"))
+    if executor is not None:
+        outcome = _gathered_outcome(outcome, table, out)
     table.attrs["outcome"] = outcome
     return table
+
+
+def _gathered_outcome(spread, table, out):
+    """A spread sweep's outcome counted from its merged table, refused as a
+    whole when every point was refused (as one sweep is: nothing is left of
+    an out it began)."""
+    statuses = table["status"].value_counts()
+    if len(table) > 0 and statuses.get("refused", 0) == len(table):
+        if spread["began_now"]:
+            shutil.rmtree(os.fspath(out))
+        raise InputError(f"cdvp.sweep: every point was refused; the first, {table['point'][0]}: {table['reason'][0]}", 2)
+    return {"status": 0, "points": len(table), "ok": int(statuses.get("ok", 0)),
+            "refused": int(statuses.get("refused", 0)), "faulted": int(statuses.get("fault", 0)),
+            "run_now": spread["run_now"], "stop_signal": 0, "tasks": spread["tasks"]}

@@ -5,6 +5,8 @@ status, so a script may tell bad input from a simulated fault as a shell
 script tells them by the exit status (docs/python.md: Errors).
 """
 
+import signal
+
 
 class Error(Exception):
     """A call that ended as the command would have ended with a non-zero status."""
@@ -48,3 +50,17 @@ _BY_STATUS = {cls.status: cls for cls in (InternalError, InputError, DeviceFault
 def error_class(status):
     """The class of an exit status; any status cdvp does not define is an InternalError."""
     return _BY_STATUS.get(status, InternalError)
+
+
+def raise_for_outcome(outcome, where="(the reason is on standard error)"):
+    """Raises what a sweep's outcome says went wrong: KeyboardInterrupt for a
+    Ctrl-C, InternalError for another stop signal, the class of its exit
+    status for a failed point, whose reason cdvp printed where `where` says."""
+    if outcome["stop_signal"] == signal.SIGINT:
+        raise KeyboardInterrupt
+    if outcome["stop_signal"]:
+        raise InternalError(f"cdvp.sweep: stopped by signal {outcome['stop_signal']}", 1)
+    if outcome["status"] != 0:
+        status = outcome["status"]
+        raise error_class(status)(f"cdvp.sweep: ended with status {status} after {outcome['points']} points {where}",
+                                  status)
