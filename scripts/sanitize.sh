@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Builds cdvp with AddressSanitizer and UndefinedBehaviorSanitizer into
-# build-asan/ and runs the whole test suite under them. Any sanitizer report
-# fails its test (UBSan is built non-recovering). See docs/testing.md for the
-# SystemC coroutine settings below.
+# build-asan/ and runs the test suite under them: every test but those
+# labelled `tool`, which check the sources or run outside tools only (the
+# layer check, Yosys, the Verilator lint, the Slurm job array) and which the
+# Release stage runs. Any sanitizer report fails its test (UBSan is built
+# non-recovering). See docs/testing.md for the SystemC coroutine settings below.
 #
-#   scripts/sanitize.sh [ctest arguments...]     e.g. -R TraceCsv
+#   scripts/sanitize.sh [ctest arguments...]     e.g. -R TraceCsv; -L tool runs those too
 # Environment: SANITIZERS (default address,undefined), BUILD_DIR (build-asan),
 # SANITIZE_OPT (-O1 -g1: optimisation and debug info), JOBS (nproc),
 # RTL_VARIANTS (the board RTL's Verilator builds: by default the few the
@@ -43,7 +45,9 @@ run cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMA
 run cmake --build "$build_dir" -j "$jobs"
 built=$SECONDS
 status=0
-run ctest --test-dir "$build_dir" --output-on-failure -j "$jobs" "$@" || status=$?
+labels=(-LE tool)
+for arg in "$@"; do [ "$arg" = "-L" ] && labels=(); done
+run ctest --test-dir "$build_dir" --output-on-failure -j "$jobs" "${labels[@]}" "$@" || status=$?
 if [ "$status" -eq 0 ]; then
   echo "sanitize: PASS: the test suite under -fsanitize=$sanitizers (build $((built - start)) s, tests $((SECONDS - built)) s)"
 else

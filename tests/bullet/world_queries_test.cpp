@@ -159,7 +159,7 @@ btQuaternion random_rotation(std::mt19937& rng) {
     return btQuaternion(normal(rng), normal(rng), normal(rng), normal(rng) + 0.01f).normalized();
 }
 
-btVector3 random_unit(std::mt19937& rng) {
+btVector3 random_direction(std::mt19937& rng) {
     std::normal_distribution<float> normal;
     return btVector3(normal(rng), normal(rng), normal(rng) + 0.01f).normalized();
 }
@@ -182,8 +182,8 @@ std::pair<btVector3, btVector3> aimed_segment(BulletWorld& world, std::mt19937& 
     btVector3 lo, hi;
     world.bodies()[body(rng)]->getAabb(lo, hi);
     const btVector3 centre = (lo + hi) / 2;
-    const btVector3 from = centre + random_unit(rng) * ((hi - lo).length() / 2 + length / 3);
-    const btVector3 to = from + ((centre - from).normalized() + random_unit(rng) * 0.2f).normalized() * length;
+    const btVector3 from = centre + random_direction(rng) * ((hi - lo).length() / 2 + length / 3);
+    const btVector3 to = from + ((centre - from).normalized() + random_direction(rng) * 0.2f).normalized() * length;
     return {from, to};
 }
 
@@ -212,7 +212,7 @@ protected:
         if (query < kQueries / 2) return aimed_segment(*board_, rng_, std::uniform_real_distribution<float>(0.05f, 1)(rng_));
         std::uniform_real_distribution<float> horizontal(-8, 8), height(-0.5f, 6), length(1, 20);
         const btVector3 from(horizontal(rng_), height(rng_), horizontal(rng_));
-        return {from, from + random_unit(rng_) * length(rng_)};
+        return {from, from + random_direction(rng_) * length(rng_)};
     }
 
     LazyVirtualBoard link_;

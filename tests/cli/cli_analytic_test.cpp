@@ -10,8 +10,6 @@
 namespace cdvp::test {
 namespace {
 
-nlohmann::json report_of(const fs::path& path) { return nlohmann::json::parse(slurp(path)); }
-
 TEST_F(Cli, AnalyticFindsTheBoardsPairsAndTimesTheBusExactly) {
     // Fixed point too: the pairs are the format's, not float32's.
     for (const std::string format : {"float32", "fixed16"}) {

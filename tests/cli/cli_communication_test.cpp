@@ -12,8 +12,6 @@
 namespace cdvp::test {
 namespace {
 
-nlohmann::json report_of(const fs::path& path) { return nlohmann::json::parse(slurp(path)); }
-
 // The pairs file's lines after its header, sorted: the same set in any order.
 std::vector<std::string> pair_lines(const fs::path& path) {
     std::istringstream in(slurp(path));

@@ -7,8 +7,6 @@
 namespace cdvp::test {
 namespace {
 
-nlohmann::json report_of(const fs::path& path) { return nlohmann::json::parse(slurp(path)); }
-
 TEST_F(Cli, FidelityDefaultsToFastAndGivesTheClockedEnginesResults) {
     const std::string scene = "--trace " + trace("hard_cases.csv") + " --board adm-xrc-ii --m 3 --pair-buffer 5 -q";
     ASSERT_EQ(run("run " + scene + " --pairs-out fast.csv --report fast.json").status, 0);

@@ -11,8 +11,6 @@
 namespace cdvp::test {
 namespace {
 
-nlohmann::json report_of(const fs::path& path) { return nlohmann::json::parse(slurp(path)); }
-
 TEST_F(Cli, TwoBoxBanksPipelineATraceToTheSamePairsInLessHostTime) {
     ASSERT_EQ(run("record --scene bullet-spheres --objects 300 --frames 5 --out trace.csv -q").status, 0);
     const std::string trace = "run --trace trace.csv --board adm-xrc-ii --m 4 -q ";

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace cdvp::test {
 
 namespace fs = std::filesystem;
@@ -31,6 +33,9 @@ inline std::string slurp(const fs::path& path) {
     s << in.rdbuf();
     return s.str();
 }
+
+// A run report (--report FILE) as JSON.
+inline nlohmann::json report_of(const fs::path& path) { return nlohmann::json::parse(slurp(path)); }
 
 class Cli : public ::testing::Test {
 protected:

@@ -24,7 +24,7 @@
 namespace cdvp::test {
 namespace {
 
-const std::string kGrid = "sweep --board adm-xrc-ii --set m=1,2 --set objects=20,40 --frames 2 ";
+const std::string kStateSweep = "sweep --board adm-xrc-ii --set m=1,2 --set objects=20,40 --frames 2 ";
 
 using Rows = std::vector<std::vector<std::string>>;
 
@@ -85,18 +85,18 @@ protected:
 };
 
 TEST_F(CliSweepState, AResumeRefusesRowsItDidNotWriteOrRerunsThemWhenAsked) {
-    ASSERT_EQ(run(kGrid + "--out res -q").status, 0);
+    ASSERT_EQ(run(kStateSweep + "--out res -q").status, 0);
     const auto fresh = untimed("res");
     Rows table = rows("res");
     table[2][1] = "0";  // the second row claims the first point's index
     write_rows("res", table);
-    expect_refusal(run(kGrid + "--out res -q"),
+    expect_refusal(run(kStateSweep + "--out res -q"),
                    "cdvp sweep: res/sweep.csv:3: field 'point': expected 'board-adm-xrc-ii_m-1_objects-20' (point 0)");
     table = rows("res");
     table[3][7] = "4";  // an axis value edited (m)
     table[3][1] = "2";
     write_rows("res", table);
-    const Result rerun = run(kGrid + "--out res --rerun-invalid");
+    const Result rerun = run(kStateSweep + "--out res --rerun-invalid");
     ASSERT_EQ(rerun.status, 0) << rerun.err;
     EXPECT_NE(rerun.err.find("cdvp sweep: runs again: res/sweep.csv:3: field 'point'"), std::string::npos) << rerun.err;
     EXPECT_NE(rerun.out.find("(2 run now; "), std::string::npos) << rerun.out;
@@ -104,10 +104,10 @@ TEST_F(CliSweepState, AResumeRefusesRowsItDidNotWriteOrRerunsThemWhenAsked) {
 }
 
 TEST_F(CliSweepState, ADamagedRowAManifestGoneOrDamagedAndAChangedInputAreRefusedNamingTheFile) {
-    ASSERT_EQ(run(kGrid + "--out res -q").status, 0);
+    ASSERT_EQ(run(kStateSweep + "--out res -q").status, 0);
     const std::string manifest = slurp(dir_ / "res" / "sweep.json");
     write("res/sweep.json", "{\"format\": ");
-    expect_refusal(run(kGrid + "--out res -q"), "cdvp sweep: res/sweep.json:1:12: not JSON");
+    expect_refusal(run(kStateSweep + "--out res -q"), "cdvp sweep: res/sweep.json:1:12: not JSON");
     fs::remove(dir_ / "res" / "sweep.json");
     // Another grid would adopt the old rows: refused.
     expect_refusal(run("sweep --board adm-xrc-ii --set m=4,8 --set objects=20,40 --out res -q"),
@@ -116,22 +116,22 @@ TEST_F(CliSweepState, ADamagedRowAManifestGoneOrDamagedAndAChangedInputAreRefuse
     Rows table = rows("res");
     table[1].pop_back();
     write_rows("res", table);
-    expect_refusal(run(kGrid + "--out res -q"), "cdvp sweep: res/sweep.csv:2: expected ");
+    expect_refusal(run(kStateSweep + "--out res -q"), "cdvp sweep: res/sweep.csv:2: expected ");
 
     write("c.json", "{\"board\": {\"compare_latency_cycles\": 2}}");
-    ASSERT_EQ(run(kGrid + "--config c.json --out cfg -q").status, 0);
+    ASSERT_EQ(run(kStateSweep + "--config c.json --out cfg -q").status, 0);
     write("c.json", "{\"board\": {\"compare_latency_cycles\": 3}}");
-    expect_refusal(run(kGrid + "--config c.json --out cfg -q"),
+    expect_refusal(run(kStateSweep + "--config c.json --out cfg -q"),
                    "cdvp sweep: --out: cfg: --config c.json changed since the sweep began");
     write("c.json", "{\"board\": {\"compare_latency_cycles\": 2}}");
-    const Result restored = run(kGrid + "--config c.json --out cfg");
+    const Result restored = run(kStateSweep + "--config c.json --out cfg");
     EXPECT_EQ(restored.status, 0) << restored.err;
     EXPECT_NE(restored.out.find("(0 run now; "), std::string::npos);
 }
 
 TEST_F(CliSweepState, AFailedMergeLeavesOutAsItWas) {
-    ASSERT_EQ(run(kGrid + "--shard 1/2 --out s1 -q").status, 0);
-    ASSERT_EQ(run(kGrid + "--shard 2/2 --out s2 -q").status, 0);
+    ASSERT_EQ(run(kStateSweep + "--shard 1/2 --out s1 -q").status, 0);
+    ASSERT_EQ(run(kStateSweep + "--shard 2/2 --out s2 -q").status, 0);
     fs::rename(dir_ / "s2/points/board-adm-xrc-ii_m-2_objects-40.json", dir_ / "kept.json");
     expect_refusal(run("merge --out merged s1 s2"), "cdvp merge: s2/sweep.csv:3: the point's report");
     EXPECT_FALSE(fs::exists(dir_ / "merged")) << "a new OUT is not left behind";
@@ -195,12 +195,12 @@ TEST_F(CliSweepState, ASecondSweepIntoOneDirectoryIsRefusedNamingTheFirst) {
 
 TEST_F(CliSweepState, APointWhoseReportTheSystemCouldNotWriteIsNoRowAndRunsAgain) {
     // A file size limit fails the writes past it (EFBIG) as a full disk would.
-    const Result limited = shell("trap '' XFSZ; ulimit -f 16; '" CDVP_BINARY "' " + kGrid + "--out res -q");
+    const Result limited = shell("trap '' XFSZ; ulimit -f 16; '" CDVP_BINARY "' " + kStateSweep + "--out res -q");
     EXPECT_EQ(limited.status, 4) << limited.err;
     EXPECT_NE(limited.err.find("File too large"), std::string::npos) << limited.err;
     EXPECT_EQ(limited.err.find("refused"), std::string::npos) << limited.err;
     for (const auto& fields : rows("res")) EXPECT_NE(fields[2], "refused") << fields[0];
-    const Result resumed = run(kGrid + "--out res");
+    const Result resumed = run(kStateSweep + "--out res");
     ASSERT_EQ(resumed.status, 0) << resumed.err;
     EXPECT_EQ(rows("res").size(), 5u);
     for (std::size_t k = 1; k < 5; ++k) EXPECT_EQ(rows("res")[k][2], "ok");
@@ -243,7 +243,7 @@ TEST_F(CliSweepState, NoFramesGivesWhatFitsAndFidelityRefusesIt) {
 }
 
 TEST_F(CliSweepState, ASweepNeedsNoTemporaryDirectoryAndOneThatDoesNamesIt) {
-    const Result sweep = run(kGrid + "--out res -q", "TMPDIR=/nonexistent");
+    const Result sweep = run(kStateSweep + "--out res -q", "TMPDIR=/nonexistent");
     EXPECT_EQ(sweep.status, 0) << sweep.err;
     const Result fidelity = run("fidelity --scene spheres --objects 20 --frames 2 --out fid -q", "TMPDIR=/nonexistent");
     expect_refusal(fidelity, "cdvp fidelity: TMPDIR: /nonexistent: cannot create a temporary file (set TMPDIR to a "
@@ -257,7 +257,7 @@ TEST_F(CliSweepState, ASweepNeedsNoTemporaryDirectoryAndOneThatDoesNamesIt) {
 }
 
 TEST_F(CliSweepState, WithoutPlotsTheDataFilesAreWrittenAll) {
-    ASSERT_EQ(run(kGrid + "--baseline soa --no-plots --out res -q").status, 0);
+    ASSERT_EQ(run(kStateSweep + "--baseline soa --no-plots --out res -q").status, 0);
     EXPECT_TRUE(fs::exists(dir_ / "res" / "fit.csv"));
     EXPECT_TRUE(fs::exists(dir_ / "res" / "crossover.csv"));
     for (const auto& entry : fs::directory_iterator(dir_ / "res")) EXPECT_NE(entry.path().extension(), ".png");
@@ -286,20 +286,20 @@ TEST_F(CliSweepState, ARecalibratedHostProfileMakesAnotherSweep) {
     const std::string env = "XDG_CONFIG_HOME='" + (dir_ / "config").string() + "'";
     ASSERT_EQ(run("calibrate --repeat 1 -q", env).status, 0);
     ASSERT_TRUE(fs::exists(dir_ / "config" / "cdvp" / "host-profile.json"));
-    ASSERT_EQ(run(kGrid + "--out res -q", env).status, 0);
+    ASSERT_EQ(run(kStateSweep + "--out res -q", env).status, 0);
     EXPECT_NE(slurp(dir_ / "res" / "sweep.json").find("\"--host-profile\""), std::string::npos);
     ASSERT_EQ(run("calibrate --repeat 1 -q", env).status, 0);
-    expect_refusal(run(kGrid + "--out res -q", env),
+    expect_refusal(run(kStateSweep + "--out res -q", env),
                    "cdvp sweep: --out: res: --host-profile (its default place) changed since the sweep began");
     // A profile named on the command line is an input too.
     fs::copy_file(dir_ / "config" / "cdvp" / "host-profile.json", dir_ / "named.json");
-    ASSERT_EQ(run(kGrid + "--host-profile named.json --out named -q").status, 0);
+    ASSERT_EQ(run(kStateSweep + "--host-profile named.json --out named -q").status, 0);
     write("named.json", slurp(dir_ / "named.json") + " ");
-    EXPECT_EQ(run(kGrid + "--host-profile named.json --out named -q").status, 0) << "the same reference times";
+    EXPECT_EQ(run(kStateSweep + "--host-profile named.json --out named -q").status, 0) << "the same reference times";
     nlohmann::json moved = nlohmann::json::parse(slurp(dir_ / "named.json"));
     moved["reference"]["sap"]["reference_native_ns"] = 1.5 * moved["reference"]["sap"]["reference_native_ns"].get<double>();
     write("named.json", moved.dump(2));
-    expect_refusal(run(kGrid + "--host-profile named.json --out named -q"),
+    expect_refusal(run(kStateSweep + "--host-profile named.json --out named -q"),
                    "cdvp sweep: --out: named: --host-profile named.json changed since the sweep began: sap's reference "
                    "time (ns) moved +50.0% (");
 }

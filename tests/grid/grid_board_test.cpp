@@ -14,7 +14,7 @@ namespace {
 
 using R = ControlRegisters;
 
-BoardConfig grid_board(uint32_t buffer = 262144) {
+BoardConfig grid_board_config(uint32_t buffer = 262144) {
     BoardConfig config;
     config.m = 4;
     config.algorithm = BoardAlgorithm::kGrid;
@@ -31,7 +31,7 @@ TEST(GridBoard, ItsPairsPassThePairBuffersPausesWhole) {
     std::mt19937 rng(11);
     const std::vector<FloatBox> boxes = testing::random_boxes(2500, 30.0f, 3.0f, rng);
     for (uint32_t buffer : {1u, 13u, 262144u}) {
-        BoardCore core(grid_board(buffer), 3000, Fidelity::kFast);
+        BoardCore core(grid_board_config(buffer), 3000, Fidelity::kFast);
         const testing::CoreRun run = testing::run_core(core, boxes);
         EXPECT_EQ(testing::lane_hit_pairs(testing::WordScene::from_boxes(boxes)), sorted(run.pairs)) << buffer;
         EXPECT_EQ(run.pairs.size(), core.counters().total_pairs);
@@ -45,7 +45,7 @@ TEST(GridBoard, ItsPairsPassThePairBuffersPausesWhole) {
 
 TEST(GridBoard, AnswersItsIdAndGridRegisters) {
     std::mt19937 rng(12);
-    BoardConfig config = grid_board();
+    BoardConfig config = grid_board_config();
     config.grid.cell_size = 2.5f;
     config.grid.dims = 9;
     BoardCore core(config, 1000, Fidelity::kFast);

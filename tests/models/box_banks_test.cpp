@@ -16,7 +16,7 @@ namespace cdvp {
 namespace {
 
 using R = ControlRegisters;
-constexpr auto reg = testing::read_register;
+constexpr auto bank_register = testing::read_register;
 
 BoardConfig two_banks(uint32_t buffer_depth = 1000) {
     BoardConfig config;
@@ -54,9 +54,9 @@ PairList shown(BoardCore& core) {
 
 TEST(BoxBanks, TheRegistersSayHowManyBanksAndWhichTheHostWrites) {
     BoardCore one(BoardConfig{}, 64), two(two_banks(), 64);
-    EXPECT_EQ(1u, reg(one, R::kBoxBanks));
-    EXPECT_EQ(2u, reg(two, R::kBoxBanks));
-    EXPECT_EQ(0u, reg(two, R::kHostBank));
+    EXPECT_EQ(1u, bank_register(one, R::kBoxBanks));
+    EXPECT_EQ(2u, bank_register(two, R::kBoxBanks));
+    EXPECT_EQ(0u, bank_register(two, R::kHostBank));
     BoardConfig single = two_banks();
     single.box_banks = 1;
     EXPECT_EQ(2 * single.block_rams(500), two_banks().block_rams(500)) << "a second bank doubles the box memory";
@@ -73,7 +73,7 @@ TEST(BoxBanks, TheHostWritesTheOtherBankWhileASweepRuns) {
     load(core, first);
     start(core, 40);
     ASSERT_TRUE(core.running());
-    EXPECT_EQ(1u, reg(core, R::kHostBank)) << "START hands bank 0 to the sweep";
+    EXPECT_EQ(1u, bank_register(core, R::kHostBank)) << "START hands bank 0 to the sweep";
     load(core, second);  // into bank 1 while bank 0 sweeps
     EXPECT_FALSE(core.status().error);
     run_to_done(core);
@@ -88,10 +88,10 @@ TEST(BoxBanks, TheHostWritesTheOtherBankWhileASweepRuns) {
     const testing::CoreRun expected_second = testing::run_core(reference2, second);
 
     start(core, 40);  // sweeps bank 1: the second boxes
-    EXPECT_EQ(0u, reg(core, R::kHostBank));
+    EXPECT_EQ(0u, bank_register(core, R::kHostBank));
     core.write_register(R::kPairBank, R::kPreviousPairs);
     EXPECT_EQ(expected_first.pairs, shown(core)) << "the first sweep's pairs, readable during the second";
-    EXPECT_EQ(expected_first.pairs.size(), reg(core, R::kPairCount));
+    EXPECT_EQ(expected_first.pairs.size(), bank_register(core, R::kPairCount));
     run_to_done(core);
     EXPECT_EQ(expected_first.pairs, shown(core)) << "until the next START";
     core.write_register(R::kPairBank, R::kCurrentPairs);
@@ -106,16 +106,16 @@ TEST(BoxBanks, OneBankRefusesWritesDuringASweepAsThePapersBoardDoes) {
     BoardCore core(config, 64);
     load(core, testing::random_boxes(40, 4.0f, 1.5f, rng));
     start(core, 40);
-    EXPECT_EQ(0u, reg(core, R::kHostBank));
+    EXPECT_EQ(0u, bank_register(core, R::kHostBank));
     EXPECT_EQ(RegisterResult::kRefused, core.write_coordinate(kMinX, 3, 0));
-    EXPECT_EQ(uint32_t{R::kWriteWhileBusy}, reg(core, R::kErrorCause));
+    EXPECT_EQ(uint32_t{R::kWriteWhileBusy}, bank_register(core, R::kErrorCause));
 }
 
 TEST(BoxBanks, ABadPairBankIsRefusedWithItsCause) {
     BoardCore core(two_banks(), 16);
     EXPECT_EQ(RegisterResult::kRefused, core.write_register(R::kPairBank, 2));
-    EXPECT_EQ(uint32_t{R::kBadPairBank}, reg(core, R::kErrorCause));
-    EXPECT_EQ(uint32_t{R::kCurrentPairs}, reg(core, R::kPairBank));
+    EXPECT_EQ(uint32_t{R::kBadPairBank}, bank_register(core, R::kErrorCause));
+    EXPECT_EQ(uint32_t{R::kCurrentPairs}, bank_register(core, R::kPairBank));
 }
 
 // The previous buffer reads in PAIR_FORMAT too, encoded over its own sweep's boxes.
@@ -136,7 +136,7 @@ TEST(BoxBanks, ThePreviousPairsReadInEveryFormat) {
         core.write_register(R::kPairBank, R::kPreviousPairs);
         std::vector<uint32_t> words(core.window_words());
         core.copy_window_words(0, words.size(), reinterpret_cast<unsigned char*>(words.data()));
-        EXPECT_EQ(words.size(), reg(core, R::kPairWords));
+        EXPECT_EQ(words.size(), bank_register(core, R::kPairWords));
         PairList decoded;
         if (format == PairFormat::kList) {
             for (std::size_t k = 0; k + 1 < words.size(); k += 2) decoded.push_back({words[k], words[k + 1]});

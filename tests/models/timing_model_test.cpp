@@ -16,11 +16,11 @@
 namespace cdvp {
 namespace {
 
-const std::string kHeader = "family,piece,format,m,latency,speed_grade,path_ns,luts,carry_cells,wide_muxes,from,to\n";
+const std::string kTimingHeader = "family,piece,format,m,latency,speed_grade,path_ns,luts,carry_cells,wide_muxes,from,to\n";
 
 // A small table: one grade, two latencies, two m a piece.
-TimingTable small_table() {
-    return TimingTable::parse(kHeader +
+TimingTable small_timing_table() {
+    return TimingTable::parse(kTimingHeader +
                                   "xc2v,board_control,-,-,-,4,5.0,1,30,0,flip_flop,flip_flop\n"
                                   "xc2v,compare_lane,float32,-,0,4,12.0,5,16,2,block_ram,flip_flop\n"
                                   "xc2v,compare_lane,float32,-,2,4,9.0,4,16,0,block_ram,flip_flop\n"
@@ -36,7 +36,7 @@ TimingTable small_table() {
                               "small.csv");
 }
 
-std::string parse_error(const std::string& csv) {
+std::string timing_parse_error(const std::string& csv) {
     try {
         TimingTable::parse(csv, "t.csv");
     } catch (const std::invalid_argument& e) {
@@ -46,23 +46,23 @@ std::string parse_error(const std::string& csv) {
 }
 
 TEST(TimingTable, RefusesAMalformedTableNamingTheLineAndColumn) {
-    EXPECT_EQ(parse_error(""), "t.csv: empty; expected the header " + kHeader.substr(0, kHeader.size() - 1));
-    EXPECT_EQ(parse_error("family,piece\n").rfind("t.csv:1: expected the header", 0), 0u);
-    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-\n"), "t.csv:2: expected 12 fields, got 3");
-    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,4,0,1,1,0,flip_flop,flip_flop\n"),
+    EXPECT_EQ(timing_parse_error(""), "t.csv: empty; expected the header " + kTimingHeader.substr(0, kTimingHeader.size() - 1));
+    EXPECT_EQ(timing_parse_error("family,piece\n").rfind("t.csv:1: expected the header", 0), 0u);
+    EXPECT_EQ(timing_parse_error(kTimingHeader + "xc2v,board_control,-\n"), "t.csv:2: expected 12 fields, got 3");
+    EXPECT_EQ(timing_parse_error(kTimingHeader + "xc2v,board_control,-,-,-,4,0,1,1,0,flip_flop,flip_flop\n"),
               "t.csv:2: path_ns: expected a positive number of ns, got '0'");
-    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,4,nan,1,1,0,flip_flop,flip_flop\n"),
+    EXPECT_EQ(timing_parse_error(kTimingHeader + "xc2v,board_control,-,-,-,4,nan,1,1,0,flip_flop,flip_flop\n"),
               "t.csv:2: path_ns: expected a positive number of ns, got 'nan'");
-    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,-,5.0,1,1,0,flip_flop,flip_flop\n"),
+    EXPECT_EQ(timing_parse_error(kTimingHeader + "xc2v,board_control,-,-,-,-,5.0,1,1,0,flip_flop,flip_flop\n"),
               "t.csv:2: speed_grade: expected a grade, got '-'");
-    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,4,5.0,1,1,0,latch,flip_flop\n"),
+    EXPECT_EQ(timing_parse_error(kTimingHeader + "xc2v,board_control,-,-,-,4,5.0,1,1,0,latch,flip_flop\n"),
               "t.csv:2: from: expected flip_flop, block_ram or lut_ram, got 'latch'");
-    EXPECT_EQ(parse_error(kHeader + "xc2v,board_control,-,-,-,4,5.0,x,1,0,flip_flop,flip_flop\n"),
+    EXPECT_EQ(timing_parse_error(kTimingHeader + "xc2v,board_control,-,-,-,4,5.0,x,1,0,flip_flop,flip_flop\n"),
               "t.csv:2: luts: expected a whole number or '-', got 'x'");
 }
 
 TEST(TimingTable, LooksUpLanesByLatencyAndPiecesByTheSlowerNeighbouringM) {
-    const TimingTable table = small_table();
+    const TimingTable table = small_timing_table();
     EXPECT_EQ(table.lane("xc2v", 4, "float32", 0).ns, 12.0);
     EXPECT_EQ(table.lane("xc2v", 4, "float32", 2).ns, 9.0);
     // Latency 1 was not synthesised: the shallower row, never a faster guess.
@@ -77,7 +77,7 @@ TEST(TimingTable, LooksUpLanesByLatencyAndPiecesByTheSlowerNeighbouringM) {
 }
 
 TEST(TimingTable, NamesWhatIsMissing) {
-    const TimingTable table = small_table();
+    const TimingTable table = small_timing_table();
     const auto message = [](auto&& lookup) {
         try {
             lookup();
@@ -99,7 +99,7 @@ TEST(TimingTable, NamesWhatIsMissing) {
 }
 
 TEST(BoardTiming, TheSlowestPieceTheClockIsHeldToSetsTheFmax) {
-    const TimingTable table = small_table();
+    const TimingTable table = small_timing_table();
     TimedBoard board{"xc2v", 4, "float32", 3, 2, FifoMemory::kBlockRam, false};
     BoardTiming timing = board_timing(table, board);
     ASSERT_EQ(timing.pieces.size(), 4u);

@@ -13,7 +13,7 @@
 namespace cdvp {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 const std::string kHeader = "frame,id,min_x,min_y,min_z,max_x,max_y,max_z\n";
 
 std::vector<Frame> parse(const std::string& text) {
@@ -38,7 +38,7 @@ void expect_same_frames(const std::vector<Frame>& expected, const std::vector<Fr
 TEST(TraceCsv, RoundTripsExactly) {
     std::vector<Frame> frames(3);
     frames[0] = {0, {7, 3}, {{{0.1, -0.0, 1e-310}, {1.0 / 3, 0.0, 2.0}},
-                             {{-kInf, -1.0, -kInf}, {kInf, 0.0, kInf}}}};
+                             {{-kInfinity, -1.0, -kInfinity}, {kInfinity, 0.0, kInfinity}}}};
     frames[1] = {5, {18446744073709551615ULL}, {{{1e300, 2, 3}, {1e301, 4, 5}}}};
     frames[2] = {6, {1, 0, 2}, {{{0, 0, 0}, {0, 0, 0}},
                                 {{-5e-324, 1, 1}, {5e-324, 1.5, 1.25}},
@@ -69,12 +69,12 @@ TEST(TraceCsv, AcceptsCrlfSpacesInfinitiesAndGaps) {
     EXPECT_EQ(7u, frames[1].number);
     EXPECT_EQ((std::vector<uint64_t>{9, 4}), frames[0].ids);
     for (int axis = 0; axis < 3; ++axis) {
-        EXPECT_EQ(-kInf, frames[0].boxes[0].min[axis]);
-        EXPECT_EQ(kInf, frames[0].boxes[0].max[axis]);
+        EXPECT_EQ(-kInfinity, frames[0].boxes[0].min[axis]);
+        EXPECT_EQ(kInfinity, frames[0].boxes[0].max[axis]);
     }
     EXPECT_EQ(1e308, frames[0].boxes[1].min[0]);
     EXPECT_EQ(std::numeric_limits<double>::max(), frames[0].boxes[1].max[0]);
-    EXPECT_EQ(-kInf, frames[1].boxes[0].min[0]);
+    EXPECT_EQ(-kInfinity, frames[1].boxes[0].min[0]);
     EXPECT_TRUE(std::signbit(frames[1].boxes[0].min[1]));
     EXPECT_EQ(0.125, frames[1].boxes[0].max[2]);
 }

@@ -17,9 +17,9 @@
 namespace cdvp {
 namespace {
 
-const std::string kHeader = "frame,id,min_x,min_y,min_z,max_x,max_y,max_z\n";
+const std::string kTraceHeader = "frame,id,min_x,min_y,min_z,max_x,max_y,max_z\n";
 
-std::vector<Frame> parse(const std::string& text, const TraceLimits& limits = {}) {
+std::vector<Frame> parse_trace(const std::string& text, const TraceLimits& limits = {}) {
     std::istringstream in(text);
     return parse_trace_csv(in, "a.csv", limits);
 }
@@ -27,7 +27,7 @@ std::vector<Frame> parse(const std::string& text, const TraceLimits& limits = {}
 // The InputError message of parsing 'text', or "" if it parses.
 std::string error_of(const std::string& text, const TraceLimits& limits = {}) {
     try {
-        parse(text, limits);
+        parse_trace(text, limits);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -60,7 +60,7 @@ private:
 
 TEST(TraceReader, EndlessLineFailsAfterTheLimitWithoutReadingOn) {
     for (char fill : {'\0', '7', ' '}) {
-        EndlessInput source(fill == ' ' ? kHeader + "0,1," : "", fill);
+        EndlessInput source(fill == ' ' ? kTraceHeader + "0,1," : "", fill);
         std::istream in(&source);
         try {
             parse_trace_csv(in, "endless");
@@ -71,7 +71,7 @@ TEST(TraceReader, EndlessLineFailsAfterTheLimitWithoutReadingOn) {
                       "bytes a line, counting its line end",
                       std::string(e.what()));
         }
-        EXPECT_LE(source.bytes_supplied(), kHeader.size() + 4 + kMaxLineBytes + 64);
+        EXPECT_LE(source.bytes_supplied(), kTraceHeader.size() + 4 + kMaxLineBytes + 64);
     }
 }
 
@@ -105,14 +105,14 @@ std::string row_of_length(std::size_t bytes, const std::string& line_end) {
 
 TEST(TraceReader, LineLimitCountsTheLineEnd) {
     for (std::string line_end : {"\n", "\r\n"}) {
-        EXPECT_EQ(1u, parse(kHeader + row_of_length(kMaxLineBytes, line_end)).size());
-        EXPECT_EQ(0u, error_of(kHeader + row_of_length(kMaxLineBytes + 1, line_end))
+        EXPECT_EQ(1u, parse_trace(kTraceHeader + row_of_length(kMaxLineBytes, line_end)).size());
+        EXPECT_EQ(0u, error_of(kTraceHeader + row_of_length(kMaxLineBytes + 1, line_end))
                           .rfind("a.csv:2: line longer than 4096 bytes", 0));
     }
     // The last line may lack its line end; it then holds at most 4096 bytes.
     const std::string last = row_of_length(kMaxLineBytes + 1, "\n").substr(0, kMaxLineBytes);
-    EXPECT_EQ(1u, parse(kHeader + last).size());
-    EXPECT_NE("", error_of(kHeader + last + " "));
+    EXPECT_EQ(1u, parse_trace(kTraceHeader + last).size());
+    EXPECT_NE("", error_of(kTraceHeader + last + " "));
 }
 
 TEST(TraceReader, NumbersOfAnyLengthWithinALine) {
@@ -120,7 +120,7 @@ TEST(TraceReader, NumbersOfAnyLengthWithinALine) {
     std::string tiny = "0." + std::string(197, '0') + "1";
     std::string huge = "1" + std::string(300, '0') + ".25";
     ASSERT_EQ(200u, tiny.size());
-    std::vector<Frame> frames = parse(kHeader + "0,1," + tiny + ",0,0," + huge + ",1,1\n");
+    std::vector<Frame> frames = parse_trace(kTraceHeader + "0,1," + tiny + ",0,0," + huge + ",1,1\n");
     ASSERT_EQ(1u, frames.size());
     EXPECT_EQ(std::strtod(tiny.c_str(), nullptr), frames[0].boxes[0].min[0]);
     EXPECT_EQ(1e300, frames[0].boxes[0].max[0]);
@@ -128,7 +128,7 @@ TEST(TraceReader, NumbersOfAnyLengthWithinALine) {
 }
 
 TEST(TraceReader, EdgesOfDouble) {
-    std::vector<Frame> frames = parse(kHeader +
+    std::vector<Frame> frames = parse_trace(kTraceHeader +
                                       "0,1,4.9406564584124654e-324,-0,1e-400,1e39,+0,1e-300\n"
                                       "0,2,-1e-400,-2.2250738585072014e-308,0,0,0x1p-1022,0\n"
                                       "0,3,-inf,-INFINITY,-Inf,inf,Infinity,0x1.fffffffffffffp+1023\n");
@@ -150,21 +150,21 @@ TEST(TraceReader, EdgesOfDouble) {
 }
 
 TEST(TraceReader, IntegersTakeLeadingZerosAndTheFullRange) {
-    std::vector<Frame> frames = parse(kHeader + "007,0018446744073709551615,0,0,0,1,1,1\n");
+    std::vector<Frame> frames = parse_trace(kTraceHeader + "007,0018446744073709551615,0,0,0,1,1,1\n");
     ASSERT_EQ(1u, frames.size());
     EXPECT_EQ(7u, frames[0].number);
     EXPECT_EQ(std::numeric_limits<uint64_t>::max(), frames[0].ids[0]);
 }
 
 TEST(TraceReader, ByteOrderMarkBeforeTheHeader) {
-    EXPECT_EQ(1u, parse("\xEF\xBB\xBF" + kHeader + "0,1,0,0,0,1,1,1\n").size());
+    EXPECT_EQ(1u, parse_trace("\xEF\xBB\xBF" + kTraceHeader + "0,1,0,0,0,1,1,1\n").size());
     test::TempDir dir;
     test::spit(dir.file("p.csv"), "\xEF\xBB\xBF" "frame,a,b\r\n0,1,2\r\n");
     EXPECT_EQ(1u, read_pairs_csv(dir.file("p.csv")).size());
 }
 
 TEST(TraceReader, NulByteIsNotText) {
-    std::string text = kHeader + "0,1,0,0,0,1,1,1\n0,2";
+    std::string text = kTraceHeader + "0,1,0,0,0,1,1,1\n0,2";
     text += '\0';
     text += ",0,0,0,1,1,1\n";
     EXPECT_EQ("a.csv:3: NUL byte at column 4; expected a text file", error_of(text));
@@ -173,24 +173,24 @@ TEST(TraceReader, NulByteIsNotText) {
 TEST(TraceReader, FrameBeyondTheLimitFailsOnItsLineBeforeTheRest) {
     const TraceLimits limits{3, "the board's address map"};
     std::string rows = "0,1,0,0,0,1,1,1\n0,2,0,0,0,1,1,1\n0,3,0,0,0,1,1,1\n";
-    EXPECT_EQ(1u, parse(kHeader + rows, limits).size());
+    EXPECT_EQ(1u, parse_trace(kTraceHeader + rows, limits).size());
     // The rest of the file is never read: its bad row would be line 6.
     EXPECT_EQ("a.csv:5: frame 0 has more than 3 boxes; expected at most 3 boxes a frame "
               "(the board's address map)",
-              error_of(kHeader + rows + "0,4,0,0,0,1,1,1\nnot a row\n", limits));
+              error_of(kTraceHeader + rows + "0,4,0,0,0,1,1,1\nnot a row\n", limits));
     // Later frames count from zero again.
-    EXPECT_EQ(2u, parse(kHeader + rows + "9,1,0,0,0,1,1,1\n", limits).size());
-    EXPECT_EQ(0u, error_of(kHeader + "5,1,0,0,0,1,1,1\n", {0, "none"}).rfind("a.csv:2: frame 5", 0));
+    EXPECT_EQ(2u, parse_trace(kTraceHeader + rows + "9,1,0,0,0,1,1,1\n", limits).size());
+    EXPECT_EQ(0u, error_of(kTraceHeader + "5,1,0,0,0,1,1,1\n", {0, "none"}).rfind("a.csv:2: frame 5", 0));
 }
 
 TEST(TraceReader, ReportsTheFirstRepeatedIdInFileOrder) {
-    std::string text = kHeader + "0,5,0,0,0,1,1,1\n0,7,0,0,0,1,1,1\n0,7,0,0,0,1,1,1\n"
+    std::string text = kTraceHeader + "0,5,0,0,0,1,1,1\n0,7,0,0,0,1,1,1\n0,7,0,0,0,1,1,1\n"
                                  "0,5,0,0,0,1,1,1\n0,7,0,0,0,1,1,1\n";
     EXPECT_EQ("a.csv:4: id 7 appears twice in frame 0 (first on line 3); expected unique ids "
               "within a frame",
               error_of(text));
     // Equal ids in different frames are fine.
-    EXPECT_EQ(2u, parse(kHeader + "0,5,0,0,0,1,1,1\n1,5,0,0,0,1,1,1\n").size());
+    EXPECT_EQ(2u, parse_trace(kTraceHeader + "0,5,0,0,0,1,1,1\n1,5,0,0,0,1,1,1\n").size());
 }
 
 // Rows made on demand: 'frames' frames of 'per_frame' boxes each.
@@ -202,7 +202,7 @@ public:
 protected:
     int_type underflow() override {
         if (row_ == frames_ * per_frame_) return traits_type::eof();
-        line_ = row_ == 0 && !header_done_ ? kHeader : "";
+        line_ = row_ == 0 && !header_done_ ? kTraceHeader : "";
         header_done_ = true;
         const std::size_t id = row_ % per_frame_;
         line_ += std::to_string(row_ / per_frame_) + "," + std::to_string(id) + "," + std::to_string(id) +
@@ -239,7 +239,7 @@ TEST(TraceReader, ReadsOneFrameAtATime) {
 }
 
 TEST(TraceReader, BadRowIsFoundWhenItsFrameIsRead) {
-    std::istringstream in(kHeader + "0,1,0,0,0,1,1,1\n1,1,0,0,0,1,1,1\n1,2,x,0,0,1,1,1\n");
+    std::istringstream in(kTraceHeader + "0,1,0,0,0,1,1,1\n1,1,0,0,0,1,1,1\n1,2,x,0,0,1,1,1\n");
     TraceReader reader(in, "a.csv");
     EXPECT_TRUE(reader.next_frame());
     try {

@@ -26,19 +26,19 @@ constexpr uint64_t kHostBytes = 1 << 16;
 constexpr uint64_t kNearTop = 0xFFFF'FFFF'FFFF'FFF0ull;
 
 // The host's view: PIO into the bridge's BAR; and a host memory of its own to probe.
-struct Bench : sc_module {
-    SC_HAS_PROCESS(Bench);
-    tlm_utils::simple_initiator_socket<Bench> pio;
-    tlm_utils::simple_initiator_socket<Bench> memory_port;
+struct BridgeBench : sc_module {
+    SC_HAS_PROCESS(BridgeBench);
+    tlm_utils::simple_initiator_socket<BridgeBench> pio;
+    tlm_utils::simple_initiator_socket<BridgeBench> memory_port;
     sc_signal<bool> fpga_irq{"fpga_irq"};
     sc_signal<bool> inta{"inta"};
     CollisionBoard board;
     PciBridge bridge;
     HostMemory memory;
     HostMemory probed;  // host memory alone, for the test's own accesses
-    std::function<void(Bench&)> body;
+    std::function<void(BridgeBench&)> body;
 
-    Bench(const sc_module_name& name, uint32_t capacity, std::shared_ptr<const BusTiming> timing)
+    BridgeBench(const sc_module_name& name, uint32_t capacity, std::shared_ptr<const BusTiming> timing)
         : sc_module(name),
           pio("pio"),
           memory_port("memory_port"),
@@ -62,7 +62,7 @@ struct Bench : sc_module {
     }
     void run() { body(*this); }
 
-    tlm::tlm_response_status access(tlm_utils::simple_initiator_socket<Bench>& socket, tlm::tlm_command command,
+    tlm::tlm_response_status access(tlm_utils::simple_initiator_socket<BridgeBench>& socket, tlm::tlm_command command,
                                     uint64_t address, void* data, unsigned length,
                                     unsigned char* byte_enable = nullptr) {
         tlm::tlm_generic_payload p;
@@ -116,9 +116,9 @@ struct Bench : sc_module {
     }
 };
 
-void run_bench(uint32_t capacity, std::function<void(Bench&)> body,
+void run_bench(uint32_t capacity, std::function<void(BridgeBench&)> body,
                std::shared_ptr<const BusTiming> timing = std::make_shared<IdealBusTiming>()) {
-    Bench bench("bench", capacity, std::move(timing));
+    BridgeBench bench("bench", capacity, std::move(timing));
     bench.body = std::move(body);
     sc_start();
 }
@@ -126,7 +126,7 @@ void run_bench(uint32_t capacity, std::function<void(Bench&)> body,
 uint32_t coordinate(uint32_t c) { return static_cast<uint32_t>(am::kCoordinateBase + c * am::kWindowSize); }
 
 TEST(HostMemory, RejectsAccessesThatWrapAroundOrRunPastTheEnd) {
-    run_bench(4, [](Bench& b) {
+    run_bench(4, [](BridgeBench& b) {
         unsigned char data[16] = {};
         EXPECT_EQ(b.access(b.memory_port, tlm::TLM_READ_COMMAND, kNearTop, data, 16), tlm::TLM_ADDRESS_ERROR_RESPONSE)
             << "address + length wraps to 0";
@@ -141,7 +141,7 @@ TEST(HostMemory, RejectsAccessesThatWrapAroundOrRunPastTheEnd) {
 }
 
 TEST(BridgeFaults, HostAddressNearTheTopOfTheAddressSpaceIsAMasterAbort) {
-    run_bench(4, [](Bench& b) {
+    run_bench(4, [](BridgeBench& b) {
         for (uint32_t control : {0u, uint32_t{D::kToHost}}) {
             b.set_dma(kNearTop, coordinate(0), 16);
             EXPECT_EQ(b.expect_fault(control, DmaFault::kMasterAbort, "host address near 2^64"), kNearTop);
@@ -152,7 +152,7 @@ TEST(BridgeFaults, HostAddressNearTheTopOfTheAddressSpaceIsAMasterAbort) {
 }
 
 TEST(BridgeFaults, BadLengthsAreRefusedBeforeAnythingIsAllocatedOrMoved) {
-    run_bench(4, [](Bench& b) {
+    run_bench(4, [](BridgeBench& b) {
         const auto started = std::chrono::steady_clock::now();
         b.set_dma(0, coordinate(0), 0xFFFF'FFFC);
         b.expect_fault(0, DmaFault::kBadLength, "4 GiB");
@@ -171,7 +171,7 @@ TEST(BridgeFaults, BadLengthsAreRefusedBeforeAnythingIsAllocatedOrMoved) {
 }
 
 TEST(BridgeFaults, TheBoardsRefusalsAreTargetAbortsWithTheLocalAddress) {
-    run_bench(4, [](Bench& b) {
+    run_bench(4, [](BridgeBench& b) {
         b.set_dma(0, coordinate(0), 32);
         EXPECT_EQ(b.expect_fault(0, DmaFault::kTargetAbort, "8 boxes into a board of 4"), coordinate(0));
         b.set_dma(0, static_cast<uint32_t>(am::kPairBuffer), 8);
@@ -190,7 +190,7 @@ TEST(BridgeFaults, TheBoardsRefusalsAreTargetAbortsWithTheLocalAddress) {
 }
 
 TEST(BridgeFaults, DescriptorChainsThatLoopMisalignOrLeaveHostMemoryFault) {
-    run_bench(4, [](Bench& b) {
+    run_bench(4, [](BridgeBench& b) {
         auto put = [&](uint64_t at, DmaDescriptor d) { std::memcpy(b.memory.data(at), &d, sizeof d); };
         auto run_chain = [&](uint64_t first, DmaFault expected, const char* what) {
             b.write(D::kBase + D::kChainLo, static_cast<uint32_t>(first));
@@ -220,7 +220,7 @@ TEST(BridgeFaults, DescriptorChainsThatLoopMisalignOrLeaveHostMemoryFault) {
 }
 
 TEST(BridgeFaults, StartWhileBusyIsRefusedWithAnErrorAndTheTransferGoesOn) {
-    run_bench(1024, [](Bench& b) {
+    run_bench(1024, [](BridgeBench& b) {
         for (uint32_t k = 0; k < 1024; ++k) std::memcpy(b.memory.data(4 * k), &k, 4);
         b.set_dma(0, coordinate(0), 4096);
         b.write(D::kBase + D::kControl, D::kStart);
@@ -240,7 +240,7 @@ TEST(BridgeFaults, StartWhileBusyIsRefusedWithAnErrorAndTheTransferGoesOn) {
 }
 
 TEST(BridgeFaults, RegisterWritesHonourByteEnablesAndWidth) {
-    run_bench(4, [](Bench& b) {
+    run_bench(4, [](BridgeBench& b) {
         b.write(D::kBase + D::kBytes, 0x1234);
         uint32_t value = 0xFFFF'FFFF;
         unsigned char low_half[4] = {0xff, 0xff, 0, 0};
@@ -261,7 +261,7 @@ TEST(BridgeFaults, RegisterWritesHonourByteEnablesAndWidth) {
 }
 
 TEST(BoardFaults, ObjectCountIsLockedWhileASweepRuns) {
-    run_bench(64, [](Bench& b) {
+    run_bench(64, [](BridgeBench& b) {
         b.write(R::kObjectCount, 64);
         b.write(R::kControl, R::kStart);
         uint32_t count = 3;

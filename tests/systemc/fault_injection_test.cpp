@@ -17,7 +17,7 @@
 namespace cdvp {
 namespace {
 
-PlatformConfig paper_platform(const std::string& faults, bool interrupts = true, bool dma = true) {
+PlatformConfig faulty_paper_platform(const std::string& faults, bool interrupts = true, bool dma = true) {
     PlatformConfig config = testing::preset_platform("adm-xrc-ii");
     config.faults = parse_fault_specs(faults);
     config.board.collector.buffer_depth = 64;  // a few overflow pauses per frame
@@ -92,8 +92,8 @@ TEST(FaultSpecs, RejectBadSpecsNamingWhatWasExpected) {
 
 TEST(FaultInjection, RetryAndDisconnectCompleteWithEveryPairAndCostBusTime) {
     // Elaborate every platform before the first one runs.
-    VirtualBoard retry("retry", paper_platform("retry@frame=1,n=3"), 300);
-    VirtualBoard disconnect("disconnect", paper_platform("disconnect@frame=1,n=3"), 300);
+    VirtualBoard retry("retry", faulty_paper_platform("retry@frame=1,n=3"), 300);
+    VirtualBoard disconnect("disconnect", faulty_paper_platform("disconnect@frame=1,n=3"), 300);
     for (VirtualBoard* each : {&retry, &disconnect}) {
         const std::string kind = each->basename();
         SCOPED_TRACE(kind);
@@ -110,7 +110,7 @@ TEST(FaultInjection, RetryAndDisconnectCompleteWithEveryPairAndCostBusTime) {
 }
 
 TEST(FaultInjection, ALostInterruptIsRecoveredByTheTimeoutsStatusPoll) {
-    VirtualBoard platform("platform", paper_platform("lost-irq@frame=1,n=2"), 300);
+    VirtualBoard platform("platform", faulty_paper_platform("lost-irq@frame=1,n=2"), 300);
     const auto boxes = scene();
     FramePhases clean;
     const FrameResult injected = run_three_frames(platform, boxes, clean);
@@ -134,7 +134,7 @@ TEST(FaultInjection, AbortsHangsAndBoardErrorsFailTheFrameAndTheNextFrameRunsCle
     std::vector<std::unique_ptr<VirtualBoard>> platforms;
     for (const Case& c : cases) {
         const std::string name = "platform" + std::to_string(platforms.size());
-        platforms.push_back(std::make_unique<VirtualBoard>(name.c_str(), paper_platform(c.spec), 300));
+        platforms.push_back(std::make_unique<VirtualBoard>(name.c_str(), faulty_paper_platform(c.spec), 300));
     }
     for (std::size_t k = 0; k < platforms.size(); ++k) {
         const Case& c = cases[k];
@@ -150,7 +150,7 @@ TEST(FaultInjection, AbortsHangsAndBoardErrorsFailTheFrameAndTheNextFrameRunsCle
 
 TEST(FaultInjection, AMasterAbortOnTheUploadChainFailsAtItsFirstDescriptor) {
     // The upload chain's first bus-master access is its first descriptor.
-    VirtualBoard platform("platform", paper_platform("master-abort@frame=0"), 300);
+    VirtualBoard platform("platform", faulty_paper_platform("master-abort@frame=0"), 300);
     const auto boxes = scene();
     const std::string message = message_of_failed_frame(platform, boxes);
     EXPECT_EQ(message.rfind("DMA fault: descriptor fetch failed (master abort)", 0), 0u) << message;
@@ -158,7 +158,7 @@ TEST(FaultInjection, AMasterAbortOnTheUploadChainFailsAtItsFirstDescriptor) {
 }
 
 TEST(FaultInjection, PollingDriverIsImmuneToLostInterruptsAndStillTimesOutAHang) {
-    VirtualBoard platform("platform", paper_platform("lost-irq@frame=0; dma-hang@frame=1", false), 300);
+    VirtualBoard platform("platform", faulty_paper_platform("lost-irq@frame=0; dma-hang@frame=1", false), 300);
     const auto boxes = scene();
     EXPECT_EQ(sorted(platform.run_frame(boxes).pairs), reference_pairs(boxes));
     EXPECT_EQ(message_of_failed_frame(platform, boxes).rfind("DMA timed out", 0), 0u);
@@ -166,7 +166,7 @@ TEST(FaultInjection, PollingDriverIsImmuneToLostInterruptsAndStillTimesOutAHang)
 }
 
 TEST(FaultInjection, ATimeoutPastTheSimulatorsClockIsRefused) {
-    PlatformConfig config = paper_platform("retry@frame=99");
+    PlatformConfig config = faulty_paper_platform("retry@frame=99");
     config.driver.timeout_factor = 1e12;
     VirtualBoard platform("platform", config, 300);
     try {

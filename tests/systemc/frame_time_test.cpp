@@ -19,14 +19,14 @@
 namespace cdvp {
 namespace {
 
-struct Variant {
+struct FrameVariant {
     const char* name;
     bool dma, interrupts;
     Fidelity fidelity;
     double quantum_ns;
 };
 
-PlatformConfig platform_config(const Variant& v) {
+PlatformConfig platform_config(const FrameVariant& v) {
     PlatformConfig config = testing::preset_platform("adm-xrc-ii");
     config.board.collector.buffer_depth = 64;  // pauses every 64 pairs
     config.driver.transfer = (v.dma) ? Transfer::kDma : Transfer::kPio;
@@ -37,12 +37,12 @@ PlatformConfig platform_config(const Variant& v) {
 }
 
 TEST(FrameTime, BoundsWhatEveryFrameTakesThroughThePlatform) {
-    const Variant variants[] = {{"dma_irq", true, true, Fidelity::kCycle, 0},
+    const FrameVariant variants[] = {{"dma_irq", true, true, Fidelity::kCycle, 0},
                                 {"pio_poll", false, false, Fidelity::kCycle, 0},
                                 {"dma_poll_fast", true, false, Fidelity::kFast, 0},
                                 {"pio_irq_quantum", false, true, Fidelity::kFast, 10000}};
     std::vector<std::unique_ptr<VirtualBoard>> platforms;
-    for (const Variant& v : variants) {
+    for (const FrameVariant& v : variants) {
         platforms.push_back(std::make_unique<VirtualBoard>(v.name, platform_config(v), 400));
     }
     std::mt19937 rng(12);
@@ -67,11 +67,11 @@ TEST(FrameTime, BoundsWhatEveryFrameTakesThroughThePlatform) {
 // A grid board's frames, spread and all in one cell (its cells overflow
 // into the large sweep), stay within the bound taken from its registers.
 TEST(FrameTime, BoundsWhatGridFramesTakeThroughThePlatform) {
-    const Variant variants[] = {{"grid_dma_irq", true, true, Fidelity::kCycle, 0},
+    const FrameVariant variants[] = {{"grid_dma_irq", true, true, Fidelity::kCycle, 0},
                                 {"grid_pio_poll_fast", false, false, Fidelity::kFast, 0}};
     std::vector<std::unique_ptr<VirtualBoard>> platforms;
     std::vector<PlatformConfig> configs;
-    for (const Variant& v : variants) {
+    for (const FrameVariant& v : variants) {
         PlatformConfig config = platform_config(v);
         config.board.algorithm = BoardAlgorithm::kGrid;
         config.board.grid.cell_capacity = 16;

@@ -23,12 +23,12 @@ namespace cdvp {
 namespace {
 
 // A different fifth of the boxes moves each frame, over six frames.
-std::vector<std::vector<FloatBox>> moving_frames(uint32_t n, std::mt19937& rng) {
+std::vector<std::vector<FloatBox>> jittered_frames(uint32_t n, std::mt19937& rng) {
     return testing::moving_frames(n, rng, 9.0f, 6, true);
 }
-constexpr auto changed = testing::changed_boxes;
+constexpr auto changed_boxes_of = testing::changed_boxes;
 
-struct Strategy {
+struct PipelinedStrategy {
     const char* name;
     UploadMode upload = UploadMode::kFull;
     PairFormat format = PairFormat::kList;
@@ -38,7 +38,7 @@ struct Strategy {
     uint32_t buffer_depth = 50;  // pauses in every frame
 };
 
-PlatformConfig platform_for(const Strategy& s, Fidelity fidelity, uint32_t banks) {
+PlatformConfig platform_for(const PipelinedStrategy& s, Fidelity fidelity, uint32_t banks) {
     PlatformConfig config = testing::preset_platform("adm-xrc-ii");
     config.board.m = 2;
     config.board.box_banks = banks;
@@ -77,7 +77,7 @@ double phase_sum(const FramePhases& p) {
 }
 
 TEST(PipelinedFrames, FindThePairsOfOneFrameAtATimeAndBothEnginesAgree) {
-    const std::vector<Strategy> strategies = {
+    const std::vector<PipelinedStrategy> strategies = {
         {"paper"},
         {"delta_counted", UploadMode::kDelta, PairFormat::kCounted},
         {"bitmap_board", UploadMode::kFull, PairFormat::kBitmap, InterruptPolicy::kBoard},
@@ -86,9 +86,9 @@ TEST(PipelinedFrames, FindThePairsOfOneFrameAtATimeAndBothEnginesAgree) {
          Transfer::kPio, 100000},
     };
     std::mt19937 rng(41);
-    const auto frames = moving_frames(240, rng);
+    const auto frames = jittered_frames(240, rng);
     std::vector<std::unique_ptr<VirtualBoard>> cycle, fast, single;
-    for (const Strategy& s : strategies) {
+    for (const PipelinedStrategy& s : strategies) {
         const std::string name = s.name;
         cycle.push_back(std::make_unique<VirtualBoard>((name + "_cycle").c_str(), platform_for(s, Fidelity::kCycle, 2), 241));
         fast.push_back(std::make_unique<VirtualBoard>((name + "_fast").c_str(), platform_for(s, Fidelity::kFast, 2), 241));
@@ -120,7 +120,7 @@ TEST(PipelinedFrames, FindThePairsOfOneFrameAtATimeAndBothEnginesAgree) {
                 << ": the sweep is waited for or hidden";
             if (strategies[k].upload == UploadMode::kDelta) {
                 // Each bank keeps its own last frame: two frames back.
-                const uint32_t moved = f < 2 ? frames[f].size() : changed(frames[f - 2], frames[f]);
+                const uint32_t moved = f < 2 ? frames[f].size() : changed_boxes_of(frames[f - 2], frames[f]);
                 EXPECT_EQ(moved, a[f].phases.boxes_sent) << where;
             } else {
                 EXPECT_EQ(frames[f].size(), a[f].phases.boxes_sent) << where;
@@ -142,8 +142,8 @@ TEST(PipelinedFrames, FindThePairsOfOneFrameAtATimeAndBothEnginesAgree) {
 // the host's time on it.
 TEST(PipelinedFrames, ASweepHidesBehindTheNextUploadAndLatencyGrows) {
     std::mt19937 rng(42);
-    const auto frames = moving_frames(400, rng);
-    const Strategy paper{"paper", UploadMode::kFull, PairFormat::kList, InterruptPolicy::kEvery, WaitMode::kIrq,
+    const auto frames = jittered_frames(400, rng);
+    const PipelinedStrategy paper{"paper", UploadMode::kFull, PairFormat::kList, InterruptPolicy::kEvery, WaitMode::kIrq,
                          Transfer::kDma, 100000};
     VirtualBoard two("two", platform_for(paper, Fidelity::kFast, 2), 401);
     VirtualBoard one("one", platform_for(paper, Fidelity::kFast, 1), 401);
@@ -163,7 +163,7 @@ TEST(PipelinedFrames, ASweepHidesBehindTheNextUploadAndLatencyGrows) {
 // already seen must not end the wait for the next one (each is taken once).
 TEST(PipelinedFrames, AnIdealBusPipelinesToo) {
     std::mt19937 rng(44);
-    const auto frames = moving_frames(60, rng);
+    const auto frames = jittered_frames(60, rng);
     BoardConfig two;
     two.box_banks = 2;
     BoardConfig one = two;
@@ -183,7 +183,7 @@ TEST(PipelinedFrames, AnIdealBusPipelinesToo) {
 // (nothing comes back) and uploads every box, as after any fault.
 TEST(PipelinedFrames, AFaultEndsTheFramesInFlightAndTheNextStartsAfresh) {
     std::mt19937 rng(43);
-    const auto frames = moving_frames(200, rng);
+    const auto frames = jittered_frames(200, rng);
     PlatformConfig config = platform_for({"delta", UploadMode::kDelta}, Fidelity::kFast, 2);
     config.faults = {FaultSpec{FaultKind::kBoardError, 2}};
     VirtualBoard board("board", config, 201);

@@ -1,0 +1,63 @@
+# How the GoogleTest programs under tests/ are compiled, so that building the
+# suite costs less than the code it tests (docs/testing.md, CI). The tests'
+# own files are most of a build (their bodies are many small functions, and
+# each file parses the same headers); the libraries they test are built as
+# every user builds them. Only the build changes: the same tests run.
+#
+# - One precompiled <gtest/gtest.h>, which every test file includes, parsed
+#   once for all of them (one header shared with REUSE_FROM) instead of once
+#   in each of some hundred files. Larger headers (nlohmann/json,
+#   Boost.Program_options, the standard library) cost more to load than most
+#   files saved, and are left out.
+# - Unity batches: a program's files compiled CDVP_TEST_UNITY_BATCH at a time
+#   as one translation unit, so the headers they share are parsed once a
+#   batch. A test file's helpers therefore need names its batch-mates do not
+#   use (the build says which when two collide).
+# - -O1 for the test bodies in a Release build: -O3 spends most of a test
+#   file's compile on code that runs once, while the models they call keep
+#   the build's -O3. Benchmarks are not GoogleTest programs and keep -O3.
+#
+# Every file still includes what it uses: -DCDVP_PRECOMPILED_HEADERS=OFF
+# -DCDVP_TEST_UNITY_BATCH=1 builds each file on its own, to check that.
+option(CDVP_PRECOMPILED_HEADERS "Precompile <gtest/gtest.h> for the test programs" ON)
+set(CDVP_TEST_UNITY_BATCH 8 CACHE STRING "Test files compiled together as one unit (1: each on its own)")
+set(CDVP_TEST_RELEASE_OPT "-O1" CACHE STRING "Optimisation of the test programs' own files in a Release build")
+
+# The build-system targets of DIR and of the directories below it.
+function(cdvp_targets_below dir out)
+  get_property(targets DIRECTORY "${dir}" PROPERTY BUILDSYSTEM_TARGETS)
+  get_property(subdirectories DIRECTORY "${dir}" PROPERTY SUBDIRECTORIES)
+  foreach(subdirectory IN LISTS subdirectories)
+    cdvp_targets_below("${subdirectory}" below)
+    list(APPEND targets ${below})
+  endforeach()
+  set(${out} ${targets} PARENT_SCOPE)
+endfunction()
+
+# The header belongs to cdvp_test_headers, an empty GoogleTest program that
+# needs nothing else built first (a target waits for the one whose header it
+# reuses). Every GoogleTest program under tests/ reuses it: all are
+# executables with the same flags, which a precompiled header needs; their
+# own definitions do not appear in it.
+set(cdvp_test_headers_main "${CMAKE_BINARY_DIR}/generated/test_headers_main.cpp")
+file(CONFIGURE OUTPUT "${cdvp_test_headers_main}" CONTENT "int main() { return 0; }\n")
+add_executable(cdvp_test_headers EXCLUDE_FROM_ALL "${cdvp_test_headers_main}")
+set_target_properties(cdvp_test_headers PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/generated")
+target_link_libraries(cdvp_test_headers PRIVATE GTest::gtest)
+if(CDVP_PRECOMPILED_HEADERS)
+  target_precompile_headers(cdvp_test_headers PRIVATE <gtest/gtest.h> <string> <vector>)
+endif()
+
+cdvp_targets_below("${CMAKE_SOURCE_DIR}/tests" cdvp_test_targets)
+foreach(target IN LISTS cdvp_test_targets cdvp_test_headers)
+  get_target_property(type ${target} TYPE)
+  get_target_property(libraries ${target} LINK_LIBRARIES)
+  if(NOT (type STREQUAL "EXECUTABLE" AND libraries MATCHES "GTest::"))
+    continue()
+  endif()
+  target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:${CDVP_TEST_RELEASE_OPT}>)
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${CDVP_TEST_UNITY_BATCH})
+  if(CDVP_PRECOMPILED_HEADERS AND NOT target STREQUAL "cdvp_test_headers")
+    target_precompile_headers(${target} REUSE_FROM cdvp_test_headers)
+  endif()
+endforeach()
