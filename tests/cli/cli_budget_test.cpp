@@ -242,7 +242,7 @@ TEST_F(CliBudget, TheReportRecordsTheBudgetsAndTheEstimateCoversThePeak) {
     const Measured m = measure({"run", "--trace", "same.csv", "--baseline", "sap,soa", "--pairs-out", "p.csv",
                                 "--report", "r.json", "-q"});
     ASSERT_EQ(m.result.status, 0) << m.result.err;
-    const nlohmann::json budgets = nlohmann::json::parse(slurp(dir_ / "r.json"))["config"]["budgets"];
+    const nlohmann::json budgets = report_of(dir_ / "r.json")["config"]["budgets"];
     const uint64_t pairs = 1500 * 1499 / 2;
     const uint64_t estimate = budgets["estimate_before_pairs_bytes"].get<uint64_t>() +
                               pairs * budgets["estimate_bytes_per_pair"].get<uint64_t>();
@@ -259,7 +259,7 @@ TEST_F(CliBudget, ABulletRunsEstimateCoversItsWorlds) {
     const Measured m = measure({"bullet", "--scene", "mixed", "--objects", "1500", "--frames", "80", "--report",
                                 "r.json", "-q"});
     ASSERT_EQ(m.result.status, 0) << m.result.err;
-    const nlohmann::json report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+    const nlohmann::json report = report_of(dir_ / "r.json");
     uint64_t pairs = 0;
     for (const auto& frame : report["frames"]) pairs = std::max(pairs, frame["pairs"].get<uint64_t>());
     EXPECT_GT(pairs, 5000u) << "the pile has landed";

@@ -11,7 +11,7 @@ namespace {
 
 using Bullet = Cli;
 
-nlohmann::json report(const fs::path& path) { return nlohmann::json::parse(slurp(path)); }
+nlohmann::json report(const fs::path& path) { return report_of(path); }
 
 // Bullet's settings as the report gives them: value and origin.
 const nlohmann::json& setting(const nlohmann::json& report, const std::string& name) {

@@ -16,7 +16,7 @@ protected:
     json first_frame(const std::string& args) {
         const Result r = run("run --scene spheres --objects 500 --frames 1 --board adm-xrc-ii -q --report r.json " + args);
         EXPECT_EQ(r.status, 0) << r.err;
-        return json::parse(slurp(dir_ / "r.json"))["frames"][0];
+        return report_of(dir_ / "r.json")["frames"][0];
     }
 };
 

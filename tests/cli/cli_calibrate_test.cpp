@@ -60,7 +60,7 @@ void check_time_keys(const json& value, const std::string& where, std::size_t& c
 class CliCalibrate : public Cli {
 protected:
     Result calibrate(const std::string& args = "--out p.json") { return run("calibrate --repeat 1 -q " + args); }
-    json report(const std::string& name) { return json::parse(slurp(dir_ / name)); }
+    json report(const std::string& name) { return report_of(dir_ / name); }
     const std::string kRun = "run --board adm-xrc-ii --scene spheres --objects 60 --frames 4 --m 4 --baseline sap,soa ";
 };
 

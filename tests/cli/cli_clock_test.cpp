@@ -23,7 +23,7 @@ protected:
     static std::string spheres(const std::string& board) {
         return "run --scene spheres --objects 200 --frames 1 --board " + board + " ";
     }
-    json timing() const { return json::parse(slurp(dir_ / "r.json"))["config"]["resources"]["timing"]; }
+    json timing() const { return report_of(dir_ / "r.json")["config"]["resources"]["timing"]; }
     static std::string mhz(double value) {
         char text[32];
         std::snprintf(text, sizeof text, "%.1f MHz", value);
@@ -76,7 +76,7 @@ TEST_F(CliClock, IgnoreTimingRunsItWithAWarningAndTheReportSaysSo) {
     EXPECT_EQ(t["clock_mhz"], 500.0);
     EXPECT_LT(t["fmax_mhz"].get<double>(), 500.0);
     // The run itself is the faster board's: its frames take fewer nanoseconds.
-    const json report = json::parse(slurp(dir_ / "r.json"));
+    const json report = report_of(dir_ / "r.json");
     EXPECT_EQ(report["config"]["clock_mhz"], 500.0);
 }
 
@@ -87,7 +87,7 @@ TEST_F(CliClock, EveryPresetRunsAtItsOwnClock) {
         ASSERT_EQ(r.status, 0) << name << ": " << r.err;
         EXPECT_EQ(r.err, "") << name;
         const json t = timing();
-        const json config = json::parse(slurp(dir_ / "r.json"))["config"];
+        const json config = report_of(dir_ / "r.json")["config"];
         EXPECT_TRUE(t["meets_clock"].get<bool>()) << name;
         EXPECT_GE(t["fmax_mhz"].get<double>(), config["clock_mhz"].get<double>()) << name;
         // The fit line names the estimate and the piece that sets it.

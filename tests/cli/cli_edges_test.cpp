@@ -186,7 +186,7 @@ TEST_F(Edges, BulletUnderAutoNamesTheLevelChosenAndWhy) {
         ASSERT_EQ(r.status, 0) << r.err;
         EXPECT_NE(r.out.find("auto engine"), std::string::npos) << r.out;
         EXPECT_NE(r.out.find("\nauto: analytic level on 3 of 3 frames (3 exact by bound)\n"), std::string::npos) << r.out;
-        const auto report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+        const auto report = report_of(dir_ / "r.json");
         EXPECT_EQ(report.at("fidelity_choice").at("analytic_frames"), 3) << command;
         EXPECT_EQ(report.at("config").at("fidelity"), "auto") << command;
     }

@@ -23,7 +23,7 @@ protected:
     json report(const std::string& args) {
         const Result r = run("run --scene spheres --frames 4 --warmup 1 --quiet --report r.json " + args);
         EXPECT_EQ(r.status, 0) << r.err;
-        return json::parse(slurp(dir_ / "r.json"));
+        return report_of(dir_ / "r.json");
     }
 };
 

@@ -26,7 +26,7 @@ TEST_F(CliFaults, RecoveredFaultsGiveEveryPairOfACleanRun) {
         const Result r = run(kScene + " --inject " + spec + " --pairs-out faulted.csv --report r.json");
         ASSERT_EQ(r.status, 0) << r.err;
         EXPECT_EQ(slurp(dir_ / "faulted.csv"), clean);
-        const auto report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+        const auto report = report_of(dir_ / "r.json");
         EXPECT_EQ(report["config"]["inject"], nlohmann::json::array({spec}));
     }
 }
@@ -34,8 +34,8 @@ TEST_F(CliFaults, RecoveredFaultsGiveEveryPairOfACleanRun) {
 TEST_F(CliFaults, ALostInterruptCostsATimeoutInItsFrameOnly) {
     ASSERT_EQ(run(kScene + " --report clean.json").status, 0);
     ASSERT_EQ(run(kScene + " --inject lost-irq@frame=2 --report lost.json").status, 0);
-    const auto clean = nlohmann::json::parse(slurp(dir_ / "clean.json"))["frames"];
-    const auto lost = nlohmann::json::parse(slurp(dir_ / "lost.json"))["frames"];
+    const auto clean = report_of(dir_ / "clean.json")["frames"];
+    const auto lost = report_of(dir_ / "lost.json")["frames"];
     for (std::size_t k = 0; k < 4; ++k) {
         SCOPED_TRACE(k);
         EXPECT_EQ(lost[k]["timeouts_recovered"], k == 2 ? 1 : 0);
@@ -120,7 +120,7 @@ TEST_F(CliFaults, SeveralSpecsInOneFlagOrRepeated) {
     ASSERT_EQ(run(kScene + " --inject 'retry@frame=0; lost-irq@frame=1' --inject disconnect@frame=2 --pairs-out p.csv "
                            "--report r.json").status, 0);
     EXPECT_EQ(slurp(dir_ / "p.csv"), clean);
-    EXPECT_EQ(nlohmann::json::parse(slurp(dir_ / "r.json"))["config"]["inject"],
+    EXPECT_EQ(report_of(dir_ / "r.json")["config"]["inject"],
               nlohmann::json::array({"retry@frame=0", "lost-irq@frame=1", "disconnect@frame=2"}));
 }
 

@@ -97,7 +97,7 @@ TEST_F(Cli, FidelityTakesEachLevelsFiguresFromItsRunsSummaryAfterTheWarmup) {
     ASSERT_EQ(f.status, 0) << f.err;
     const Result r = run("run " + scene + " --fidelity cycle --report r.json -q");
     ASSERT_EQ(r.status, 0) << r.err;
-    const nlohmann::json summary = nlohmann::json::parse(slurp(dir_ / "r.json"))["summary"];
+    const nlohmann::json summary = report_of(dir_ / "r.json")["summary"];
     const auto rows = csv_rows(slurp(dir_ / "fid" / "fidelity.csv"));
     ASSERT_EQ(rows.size(), 17u);
     const std::vector<std::string>& header = rows[0];

@@ -17,7 +17,7 @@ using nlohmann::json;
 
 class CliFormat : public Cli {
 protected:
-    json report() const { return json::parse(slurp(dir_ / "r.json")); }
+    json report() const { return report_of(dir_ / "r.json"); }
 };
 
 TEST_F(CliFormat, AFixedFormatRunsAndReportsExtraPairsAgainstTheFloat32Reference) {

@@ -19,7 +19,7 @@ protected:
         return "run --scene spheres --objects " + std::to_string(objects) + " --frames " + std::to_string(frames) +
                " --quiet --board adm-xrc-ii ";
     }
-    json report(const std::string& name = "r.json") const { return json::parse(slurp(dir_ / name)); }
+    json report(const std::string& name = "r.json") const { return report_of(dir_ / name); }
 };
 
 // The same pairs as the all-pairs board (the CSV is sorted by id), at the

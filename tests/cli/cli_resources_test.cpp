@@ -18,7 +18,7 @@ protected:
     std::string spheres(uint32_t objects) const {
         return "run --scene spheres --objects " + std::to_string(objects) + " --frames 1 --quiet --board adm-xrc-ii ";
     }
-    json resources() const { return json::parse(slurp(dir_ / "r.json"))["config"]["resources"]; }
+    json resources() const { return report_of(dir_ / "r.json")["config"]["resources"]; }
 };
 
 TEST_F(CliResources, ThePapersBoardAt500ObjectsFillsItsBlockRamsAtM24) {
@@ -72,13 +72,13 @@ TEST_F(CliResources, BlockRamsTooFewAreRefusedAndIgnoreCapacityRunsAnyway) {
     const json res = resources();
     EXPECT_FALSE(res["fits"].get<bool>());
     EXPECT_EQ(res["block_rams"]["used"], 180.0);
-    EXPECT_EQ(json::parse(slurp(dir_ / "r.json"))["config"]["settings"]["run.ignore_capacity"]["value"], "yes");
+    EXPECT_EQ(report_of(dir_ / "r.json")["config"]["settings"]["run.ignore_capacity"]["value"], "yes");
 }
 
 TEST_F(CliResources, WithoutADeviceNothingIsCostedOrBounded) {
     const Result r = run("run --scene spheres --objects 600 --frames 1 --quiet --m 32 --report r.json");
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_FALSE(json::parse(slurp(dir_ / "r.json"))["config"].contains("resources"));
+    EXPECT_FALSE(report_of(dir_ / "r.json")["config"].contains("resources"));
 }
 
 TEST_F(CliResources, SweepRowsCarryTheUtilisationOfEachResource) {

@@ -31,8 +31,8 @@ TEST_F(Cli, RtlRunsThePlatformAsTheClockedEngineDoes) {
         const Result r = run("run " + kScene + " --fidelity " + level + " --pairs-out r.csv --report r.json");
         ASSERT_EQ(r.status, 0) << level << ": " << r.err;
         EXPECT_EQ(slurp(dir_ / "r.csv"), slurp(dir_ / "c.csv")) << level;
-        const nlohmann::json clocked = nlohmann::json::parse(slurp(dir_ / "c.json"));
-        const nlohmann::json rtl = nlohmann::json::parse(slurp(dir_ / "r.json"));
+        const nlohmann::json clocked = report_of(dir_ / "c.json");
+        const nlohmann::json rtl = report_of(dir_ / "r.json");
         EXPECT_EQ(frames_without_wall_time(rtl), frames_without_wall_time(clocked)) << level;
         uint64_t pauses = 0, stalls = 0;
         for (const auto& frame : rtl.at("frames")) {

@@ -22,7 +22,7 @@ class CliSettings : public Cli {
 protected:
     std::string small() const { return "run --trace " + trace("small.csv") + " --quiet "; }
 public:
-    json report() const { return json::parse(slurp(dir_ / "r.json"))["config"]; }
+    json report() const { return report_of(dir_ / "r.json")["config"]; }
     // A small run with one more setting, reported to r.json.
     Result run_choice(const std::string& setting) { return run(small() + setting + " --report r.json"); }
 };
@@ -101,8 +101,8 @@ TEST_F(CliSettings, TheBriefsExampleRunsAndChangesTheInterrupt) {
     ASSERT_EQ(run(scene + "--report base.json").status, 0);
     const Result r = run(scene + "-c bus.interrupt_ns=5000 --report r.json");
     ASSERT_EQ(r.status, 0) << r.err;
-    const double base = json::parse(slurp(dir_ / "base.json"))["frames"][0]["irq_ns"];
-    const double faster = json::parse(slurp(dir_ / "r.json"))["frames"][0]["irq_ns"];
+    const double base = report_of(dir_ / "base.json")["frames"][0]["irq_ns"];
+    const double faster = report_of(dir_ / "r.json")["frames"][0]["irq_ns"];
     EXPECT_NEAR(base - faster, 5000.0, 1.0) << "one interrupt a frame, 5 us sooner";
 }
 
@@ -111,7 +111,7 @@ TEST_F(CliSettings, TomlAndJsonConfigFilesGiveTheSameRun) {
     write("c.json", R"({"board": {"m": 4}, "bus": {"interrupt_ns": 7000}, "run": {"wait": "poll"}})");
     ASSERT_EQ(run(small() + "--board adm-xrc-ii --config c.toml --report t.json").status, 0);
     ASSERT_EQ(run(small() + "--board adm-xrc-ii --config c.json --report j.json").status, 0);
-    const json toml = json::parse(slurp(dir_ / "t.json")), from_json = json::parse(slurp(dir_ / "j.json"));
+    const json toml = report_of(dir_ / "t.json"), from_json = report_of(dir_ / "j.json");
     EXPECT_EQ(toml["config"]["settings"]["bus.interrupt_ns"]["origin"], "config c.toml:5");
     EXPECT_EQ(from_json["config"]["settings"]["bus.interrupt_ns"]["origin"], "config c.json");
     for (const auto& [name, setting] : toml["config"]["settings"].items()) {

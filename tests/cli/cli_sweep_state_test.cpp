@@ -296,7 +296,7 @@ TEST_F(CliSweepState, ARecalibratedHostProfileMakesAnotherSweep) {
     ASSERT_EQ(run(kStateSweep + "--host-profile named.json --out named -q").status, 0);
     write("named.json", slurp(dir_ / "named.json") + " ");
     EXPECT_EQ(run(kStateSweep + "--host-profile named.json --out named -q").status, 0) << "the same reference times";
-    nlohmann::json moved = nlohmann::json::parse(slurp(dir_ / "named.json"));
+    nlohmann::json moved = report_of(dir_ / "named.json");
     moved["reference"]["sap"]["reference_native_ns"] = 1.5 * moved["reference"]["sap"]["reference_native_ns"].get<double>();
     write("named.json", moved.dump(2));
     expect_refusal(run(kStateSweep + "--host-profile named.json --out named -q"),

@@ -13,6 +13,7 @@
 
 using cdvp::test::Result;
 using cdvp::test::slurp;
+using cdvp::test::report_of;
 using Cli = cdvp::test::Cli;
 namespace fs = std::filesystem;
 
@@ -34,7 +35,7 @@ TEST_F(Cli, SmallTracePairsAndReport) {
     const Result r = run("run --trace " + trace("small.csv") + " --m 2 --pairs-out p.csv --report r.json");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(slurp(dir_ / "p.csv"), slurp(trace("small.expected.csv")));
-    const nlohmann::json report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+    const nlohmann::json report = report_of(dir_ / "r.json");
     EXPECT_EQ(report["config"]["m"], 2);
     EXPECT_EQ(report["config"]["pipeline_latency_cycles"], 4);
     ASSERT_EQ(report["frames"].size(), 3u);
@@ -155,7 +156,7 @@ TEST_F(Cli, BoardRunTimesBaselinesAndReportsConsistentPhases) {
     const Result r = run("run --board adm-xrc-ii --scene spheres --objects 150 --frames 4 --m 8 "
                          "--baseline sap,dbvt,brute,soa --host-factor 2.5 --report r.json");
     ASSERT_EQ(r.status, 0) << r.err;
-    const nlohmann::json report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+    const nlohmann::json report = report_of(dir_ / "r.json");
     EXPECT_EQ(report["config"]["board"], "adm-xrc-ii");
     EXPECT_EQ(report["config"]["host_factor"], 2.5);
     EXPECT_EQ(report["config"]["transfer"], "dma");
@@ -191,7 +192,7 @@ TEST_F(Cli, TraceOnThePaperBoardByPioAndPolling) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(cdvp::read_pairs_csv((dir_ / "p.csv").string()), cdvp::read_pairs_csv(trace("hard_cases.expected.csv")))
         << "infinite slabs, denormals and touching boxes through PCI and every baseline";
-    const nlohmann::json report = nlohmann::json::parse(slurp(dir_ / "r.json"));
+    const nlohmann::json report = report_of(dir_ / "r.json");
     EXPECT_EQ(report["config"]["transfer"], "pio");
     EXPECT_EQ(report["config"]["wait"], "poll");
     const auto& f = report["frames"][0];

@@ -18,7 +18,7 @@ protected:
         return "run --scene spheres --objects " + std::to_string(objects) + " --frames " + std::to_string(frames) +
                " --quiet --board adm-xrc-ii ";
     }
-    json report() const { return json::parse(slurp(dir_ / "r.json")); }
+    json report() const { return report_of(dir_ / "r.json"); }
 };
 
 // Every frame's cycle count is the schedule's slots + L + stalls, and the

@@ -17,7 +17,7 @@ using nlohmann::json;
 
 class CliTimingQuality : public Cli {
 protected:
-    json read_json(const std::string& name) { return json::parse(slurp(dir_ / name)); }
+    json read_json(const std::string& name) { return report_of(dir_ / name); }
     // A profile whose fast speed no probe reaches: every frame is on a slowed CPU.
     void write_unreachable_profile() {
         ASSERT_EQ(run("calibrate --repeat 1 --max-spread 100 -q --out p.json").status, 0);
