@@ -18,10 +18,12 @@ PowerCoefficients power_coefficients(const Settings& settings);
 // their way in, the pairs twice (into the off-chip pair buffer, then out
 // to the bridge). With run.wait irq the host sleeps through what the frame
 // shows of the sweep and the interrupt (host_wait_ns); polling, it works.
-// The block RAMs a compare or a write cycle enables come from the
-// memories' geometry (BlockRamGeometry).
+// The block RAMs a cycle enables come from the device fit: a compare cycle
+// enables what the memories' geometry says (BlockRamGeometry) and the pair
+// FIFO's block RAMs, written and read as the lanes find pairs; an upload
+// write cycle what the geometry says.
 FrameActivity frame_activity(const FramePhases& phases, uint32_t local_bus_width_bits, WaitMode wait,
-                             const BlockRamGeometry& memories);
+                             const BoardResources& fit);
 
 // The energy of a run's frames on one board.
 class BoardEnergy {
@@ -34,8 +36,8 @@ public:
 
 private:
     PowerCoefficients power_;
+    BoardResources fit_;
     Resources used_;
-    BlockRamGeometry memories_;
     uint32_t local_bus_width_bits_ = 32;
     WaitMode wait_ = WaitMode::kIrq;
 };

@@ -89,12 +89,13 @@ struct DeviceCapacity {
 
 // How the block RAMs of a board's box memories are arranged, and which of
 // them a cycle enables. A Xilinx block RAM draws its dynamic power on the
-// cycles its port enable (ENA/ENB) is high; a memory cascaded in depth
-// decodes its address's high bits into the enable of one block, so a read
-// or a write enables one block of each cascade, not the cascade (Virtex-II
-// UG002 and UltraScale UG573: block RAM port signals, cascading). A copy's
-// six coordinates share one enable (models/board/rtl: coordinate_copy), so
-// a cycle enables every word group of the copies it reads or writes.
+// cycles its port enable (ENA/ENB) is high (Virtex-II UG002, UltraScale
+// UG573); a memory cascaded in depth decodes its address's high bits into
+// the enable of one block (the Block Memory Generator's low-power
+// algorithm, PG058), so a read or a write enables one block of each
+// cascade, not the cascade. A copy's six coordinates share one enable
+// (models/board/rtl: coordinate_copy), so a cycle enables every word group
+// of the copies it reads or writes.
 struct BlockRamGeometry {
     uint64_t word_groups = 0;   // primitives side by side for a box's six coordinates
     uint64_t depth_blocks = 0;  // primitives cascaded in depth: ceil(depth / words a primitive)

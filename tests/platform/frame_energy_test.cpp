@@ -19,6 +19,14 @@ BoardConfig all_pairs(uint32_t m) {
     return b;
 }
 
+// The device fit's memories for `boxes` boxes on `board` (no pair FIFO in block RAM).
+BoardResources fit_of(const BoardConfig& board, uint64_t boxes) {
+    BoardResources fit;
+    fit.coordinate_memories.block_rams = double(board.block_rams(boxes));
+    fit.memory_geometry = board.block_ram_geometry(boxes);
+    return fit;
+}
+
 // A frame of `boxes` boxes on `board`: its sweep's cycles, its upload's bytes.
 FramePhases sweep_of(const BoardConfig& board, uint64_t boxes) {
     FramePhases p;
@@ -29,13 +37,13 @@ FramePhases sweep_of(const BoardConfig& board, uint64_t boxes) {
 }
 
 // The frame's energy with block RAM the only power drawn: its memory term.
-FrameEnergy memory_only(const BoardConfig& board, uint64_t boxes, const FramePhases& phases) {
+FrameEnergy memory_only(const BoardResources& fit, const FramePhases& phases) {
     PowerCoefficients power;
     power.block_ram_uw_per_mhz = kBlockRamPj;
-    Resources used;
-    used.block_rams = double(board.block_rams(boxes));
-    return board_frame_energy(power, used,
-                              frame_activity(phases, 32, WaitMode::kPoll, board.block_ram_geometry(boxes)));
+    return board_frame_energy(power, fit.total(), frame_activity(phases, 32, WaitMode::kPoll, fit));
+}
+FrameEnergy memory_only(const BoardConfig& board, uint64_t boxes, const FramePhases& phases) {
+    return memory_only(fit_of(board, boxes), phases);
 }
 
 // Joules a compare cycle of `boxes` boxes costs in block RAM.
@@ -51,7 +59,7 @@ TEST(BlockRamEnergy, UpToOneBlockDeepEveryBlockTheMemoriesHoldIsChargedEveryCycl
         for (uint64_t boxes : {64u, 300u, 512u}) {
             const BoardConfig board = all_pairs(m);
             const FramePhases p = sweep_of(board, boxes);
-            const FrameActivity a = frame_activity(p, 32, WaitMode::kPoll, board.block_ram_geometry(boxes));
+            const FrameActivity a = frame_activity(p, 32, WaitMode::kPoll, fit_of(board, boxes));
             // Every block held, on every compare and every write cycle.
             const double held = double(board.block_rams(boxes));
             EXPECT_DOUBLE_EQ(memory_only(board, boxes, p).dynamic_j,
@@ -76,7 +84,7 @@ TEST(BlockRamEnergy, ChargesFarLessThanEveryBlockHeldOnceTheMemoriesCascade) {
     // 3,200 boxes at m = 32: 1,344 blocks held, seven deep; 192 enabled a cycle.
     const BoardConfig board = all_pairs(32);
     const FramePhases p = sweep_of(board, 3200);
-    const FrameActivity a = frame_activity(p, 32, WaitMode::kPoll, board.block_ram_geometry(3200));
+    const FrameActivity a = frame_activity(p, 32, WaitMode::kPoll, fit_of(board, 3200));
     ASSERT_EQ(board.block_rams(3200), 1344u);
     const double every_block_held =
         1344 * kBlockRamPj * double(a.active_cycles + a.memory_write_cycles) * 1e-12;
@@ -147,14 +155,27 @@ TEST(BlockRamEnergy, ThePartsStillAddUp) {
     p.compute_ns = 300000;
     p.readback_ns = 10000;
     p.readback_bytes = 8000;
-    Resources used;
-    used.luts = 100000;
-    used.flip_flops = 50000;
-    used.block_rams = double(board.block_rams(3200)) + 1;
-    const FrameEnergy e =
-        board_frame_energy(power, used, frame_activity(p, 32, WaitMode::kIrq, board.block_ram_geometry(3200)));
+    BoardResources fit = fit_of(board, 3200);
+    fit.lanes.luts = 100000;
+    fit.lanes.flip_flops = 50000;
+    fit.pair_collector.block_rams = 1;
+    const FrameEnergy e = board_frame_energy(power, fit.total(), frame_activity(p, 32, WaitMode::kIrq, fit));
     EXPECT_DOUBLE_EQ(e.total_j(), e.static_j + e.dynamic_j + e.bus_j + e.host_j);
     EXPECT_GT(e.dynamic_j, memory_only(board, 3200, p).dynamic_j);  // logic and I/O beside the memories
+}
+
+// The pair FIFO's block RAM is written and read as the lanes find pairs:
+// charged on compare cycles, not on the upload's.
+TEST(BlockRamEnergy, APairFifoInBlockRamIsChargedOnCompareCyclesOnly) {
+    const BoardConfig board = all_pairs(8);
+    const FramePhases p = sweep_of(board, 300);
+    BoardResources fit = fit_of(board, 300);
+    const double without = memory_only(fit, p).dynamic_j;
+    fit.pair_collector.block_rams = 1;
+    const FrameActivity a = frame_activity(p, 32, WaitMode::kPoll, fit);
+    EXPECT_DOUBLE_EQ(a.block_rams_read, 8 * 6 + 1);
+    EXPECT_DOUBLE_EQ(a.block_rams_written, 8 * 6);
+    EXPECT_NEAR(memory_only(fit, p).dynamic_j - without, kBlockRamPj * double(a.active_cycles) * 1e-12, 1e-18);
 }
 
 }  // namespace
