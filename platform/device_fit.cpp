@@ -57,9 +57,11 @@ const std::vector<BoardResources>& costs_by_m(const Settings& settings, uint64_t
         at_m.board.m = m;
         const BoardConfig board = planned_board(at_m, capacity);  // block RAM or SSRAM tiles at this m
         // Lanes in the board's format; memories at the format's block RAM depth.
-        const auto memories = static_cast<double>(board.block_rams(capacity));
+        const BlockRamGeometry geometry = board.block_ram_geometry(capacity);
+        const auto memories = static_cast<double>(geometry.block_rams());
         costs.push_back(board.grid_board() ? grid_board_resources(table, device, board.format.name(), m, memories)
                                            : board_resources(table, device, board.format.name(), m, memories));
+        costs.back().memory_geometry = geometry;
     }
     if (kept.size() == kKept) {
         kept.erase(order.front());

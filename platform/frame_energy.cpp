@@ -19,7 +19,8 @@ PowerCoefficients power_coefficients(const Settings& s) {
     return p;
 }
 
-FrameActivity frame_activity(const FramePhases& p, uint32_t local_bus_width_bits, WaitMode wait) {
+FrameActivity frame_activity(const FramePhases& p, uint32_t local_bus_width_bits, WaitMode wait,
+                             const BoardResources& fit) {
     FrameActivity a;
     a.frame_ns = p.total_ns;
     a.transfer_ns = p.upload_ns + p.start_ns + p.readback_ns;
@@ -32,18 +33,23 @@ FrameActivity frame_activity(const FramePhases& p, uint32_t local_bus_width_bits
     const uint64_t upload_bits = p.upload_bytes * 8;
     const uint64_t width = std::max<uint32_t>(local_bus_width_bits, 1);
     a.memory_write_cycles = (upload_bits + width - 1) / width;
+    a.block_rams_read = double(fit.memory_geometry.read_enabled()) + fit.pair_collector.block_rams;
+    a.block_rams_written = double(fit.memory_geometry.write_enabled());
     a.io_bits = upload_bits + 2 * p.readback_bytes * 8;
     return a;
 }
 
-BoardEnergy::BoardEnergy(const Settings& settings, const Resources& used)
-    : power_(power_coefficients(settings)), used_(used), wait_(settings.driver.wait) {
+BoardEnergy::BoardEnergy(const Settings& settings, const BoardResources& fit)
+    : power_(power_coefficients(settings)),
+      fit_(fit),
+      used_(fit.total()),
+      wait_(settings.driver.wait) {
     if (settings.bus_type == BusType::kPci) local_bus_width_bits_ = settings.pci.local_bus.width_bits;
     if (settings.bus_type == BusType::kPcie) local_bus_width_bits_ = settings.pcie.local_bus.width_bits;
 }
 
 FrameEnergy BoardEnergy::frame(const FramePhases& phases) const {
-    return board_frame_energy(power_, used_, frame_activity(phases, local_bus_width_bits_, wait_));
+    return board_frame_energy(power_, used_, frame_activity(phases, local_bus_width_bits_, wait_, fit_));
 }
 
 }  // namespace cdvp

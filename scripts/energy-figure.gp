@@ -24,8 +24,10 @@ plot data index 0 using 1:2 with linespoints ls 1 title "board (m = 11 or 24)", 
 stats data index 1 using 1 nooutput
 set xrange [STATS_min * 0.9 : STATS_max * 1.1]
 set title "today: Alveo U250 on PCIe Gen3 x16, AMD EPYC (two cores)"
+# The key under the lines, bottom right: the software's climb fills the top right.
+set key bottom right
 plot data index 1 using 1:2 with linespoints ls 1 title "board (m = 32)", \
      '' index 1 using 1:3 with linespoints ls 2 title "sap (Bullet), 1 core", \
      '' index 1 using 1:4 with linespoints ls 3 title "sap_mt, 1 thread", \
-     '' index 1 using 1:5 with linespoints ls 4 title "sap_mt, 2 threads (all cores; wall time on a shared, loaded machine)"
+     '' index 1 using 1:5 with linespoints ls 4 title "sap_mt, 2 threads (all cores; wall time, loaded machine)"
 unset multiplot

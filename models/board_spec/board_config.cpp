@@ -26,13 +26,19 @@ uint64_t BoardConfig::memory_depth(uint64_t capacity) const {
     return tiles.tiled() ? std::min<uint64_t>(tiles.boxes, capacity) : capacity;
 }
 
-uint64_t BoardConfig::block_rams(uint64_t capacity) const {
-    if (grid_board()) {
-        const uint64_t depth = grid.cell_capacity;
-        return cell_buffer_copies() * format.block_ram_layout(depth).primitives(depth);
-    }
-    const uint64_t depth = memory_depth(capacity);
-    return block_ram_banks() * memory_copies() * format.block_ram_layout(depth).primitives(depth);
+BlockRamGeometry BoardConfig::block_ram_geometry(uint64_t capacity) const {
+    const uint64_t depth = grid_board() ? grid.cell_capacity : memory_depth(capacity);
+    const BlockRamLayout layout = format.block_ram_layout(depth);
+    BlockRamGeometry g;
+    g.word_groups = layout.word_groups();
+    g.depth_blocks = (depth + layout.depth - 1) / layout.depth;
+    // The lanes' enable reaches both tile buffers and both cell buffer
+    // halves (their outputs are chosen after the read), one bank of boxes.
+    g.copies = grid_board() ? cell_buffer_copies() : memory_copies();
+    g.banks = grid_board() ? 1 : block_ram_banks();
+    // A tiled or grid board's boxes sit in SSRAM: its loader, not the upload, writes its block RAMs.
+    g.uploaded = !grid_board() && !tiles.tiled();
+    return g;
 }
 
 uint64_t BoardConfig::block_ram_bytes(uint64_t capacity) const {

@@ -10,6 +10,7 @@
 #include "models/address_generator/tile_config.h"
 #include "models/grid_binning/grid_config.h"
 #include "models/grid_schedule/grid_slots.h"
+#include "models/resources/resource_model.h"
 
 namespace cdvp {
 
@@ -81,7 +82,11 @@ struct BoardConfig {
     // worst case): one in block RAM, one a column tile when tiled, any
     // number on a grid board (0).
     uint64_t row_pieces(uint32_t objects) const { return grid_board() ? 0 : tiles.row_pieces(objects); }
-    uint64_t block_rams(uint64_t capacity) const;
+    uint64_t block_rams(uint64_t capacity) const { return block_ram_geometry(capacity).block_rams(); }
+    // How those primitives are arranged, and so which of them a cycle
+    // enables: G word groups, ceil(depth/D) deep, memory_copies() a bank
+    // (grid: cell_buffer_copies()), block_ram_banks() banks.
+    BlockRamGeometry block_ram_geometry(uint64_t capacity) const;
     uint64_t block_ram_bytes(uint64_t capacity) const;
     // Boxes each coordinate memory holds: all `capacity`, or one tile.
     uint64_t memory_depth(uint64_t capacity) const;

@@ -60,12 +60,20 @@ FrameEnergy board_frame_energy(const PowerCoefficients& power, const Resources& 
     check(used.luts, "LUTs");
     check(used.flip_flops, "flip-flops");
     check(used.block_rams, "block RAMs");
+    check(a.block_rams_read, "block RAMs a compare cycle enables");
+    check(a.block_rams_written, "block RAMs a write cycle enables");
+    if (std::max(a.block_rams_read, a.block_rams_written) > used.block_rams) {
+        throw std::invalid_argument("energy model: a cycle enables " +
+                                    std::to_string(std::max(a.block_rams_read, a.block_rams_written)) +
+                                    " block RAMs of the " + std::to_string(used.block_rams) +
+                                    " the board holds (expected at most those)");
+    }
     const double activity = power.toggle_rate / kPublishedToggleRate;
     const double logic_pj = clbs_used(used, power) * power.clb_uw_per_mhz * activity * double(a.active_cycles);
-    // Every coordinate memory is read each cycle the lanes compare, and
-    // written (all m copies at once) each cycle of the upload.
-    const double memory_pj = used.block_rams * power.block_ram_uw_per_mhz *
-                             double(a.active_cycles + a.memory_write_cycles);
+    // Only the block RAMs a cycle enables switch: one block of each cascade
+    // a read, every copy a write (BlockRamGeometry).
+    const double memory_pj = power.block_ram_uw_per_mhz * (a.block_rams_read * double(a.active_cycles) +
+                                                           a.block_rams_written * double(a.memory_write_cycles));
     const double io_pj = double(a.io_bits) * power.toggle_rate * power.io_pj_per_toggle;
     FrameEnergy e;
     e.static_j = power.static_w * a.frame_ns * kSecondsPerNs;

@@ -38,6 +38,10 @@ struct FrameActivity {
     double host_wait_ns = 0;         // of frame_ns, the host asleep on the board's interrupt (at most frame_ns)
     uint64_t active_cycles = 0;      // board cycles the lanes compare (the sweep less its stalls)
     uint64_t memory_write_cycles = 0;  // board cycles the coordinate memories are written (upload)
+    // Block RAMs a cycle enables (BlockRamGeometry): a compare cycle and an
+    // upload write cycle. One block of each cascade, not its depth.
+    double block_rams_read = 0;
+    double block_rams_written = 0;
     uint64_t io_bits = 0;            // bits through the device's pins: boxes in, pairs out
 };
 
@@ -57,7 +61,8 @@ double clbs_used(const Resources& used, const PowerCoefficients& power);
 // A frame on the board. Dynamic energy a cycle does not depend on the
 // clock, so a sweep of fixed cycles costs the same dynamic energy at any
 // clock, while the static and host parts follow the frame's time.
-// Throws std::invalid_argument for a negative or non-finite input.
+// Throws std::invalid_argument for a negative or non-finite input, or for
+// more block RAMs enabled a cycle than the board holds.
 FrameEnergy board_frame_energy(const PowerCoefficients& power, const Resources& used, const FrameActivity& activity);
 
 // Software on the host: its package power x its time on the frame.

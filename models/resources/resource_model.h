@@ -87,6 +87,32 @@ struct DeviceCapacity {
     std::string source;
 };
 
+// How the block RAMs of a board's box memories are arranged, and which of
+// them a cycle enables. A Xilinx block RAM draws its dynamic power on the
+// cycles its port enable (ENA/ENB) is high (Virtex-II UG002, UltraScale
+// UG573); a memory cascaded in depth decodes its address's high bits into
+// the enable of one block (the Block Memory Generator's low-power
+// algorithm, PG058), so a read or a write enables one block of each
+// cascade, not the cascade. A copy's six coordinates share one enable
+// (models/board/rtl: coordinate_copy), so a cycle enables every word group
+// of the copies it reads or writes.
+struct BlockRamGeometry {
+    uint64_t word_groups = 0;   // primitives side by side for a box's six coordinates
+    uint64_t depth_blocks = 0;  // primitives cascaded in depth: ceil(depth / words a primitive)
+    uint64_t copies = 0;        // copies a compare cycle enables (a bank's m; both tile buffers or cell halves)
+    uint64_t banks = 1;         // banks of those copies, one swept while the host writes another
+    // Whether the host's upload writes these memories (the boxes in block
+    // RAM) or not (a tiled or grid board keeps its boxes in SSRAM; its
+    // loader writes the buffers on cycles they are enabled for the lanes).
+    bool uploaded = true;
+
+    uint64_t block_rams() const { return banks * copies * word_groups * depth_blocks; }
+    // A compare cycle: every word group of every copy, one block of each cascade.
+    uint64_t read_enabled() const { return copies * word_groups; }
+    // An upload write cycle: every copy of the bank written, one block of each cascade.
+    uint64_t write_enabled() const { return uploaded ? copies * word_groups : 0; }
+};
+
 // Where the pair FIFO lives: a block RAM when one is left beside the boxes,
 // else LUTs as distributed RAM.
 enum class FifoMemory { kBlockRam, kDistributed };
@@ -106,6 +132,8 @@ struct BoardResources {
     // What the block RAMs of coordinate_memories hold: "the boxes", or the
     // grid board's "the cell buffer" (a cell's boxes at a time).
     const char* memories_hold = "the boxes";
+    // The arrangement of coordinate_memories' block RAMs (BoardConfig::block_ram_geometry).
+    BlockRamGeometry memory_geometry;
     Resources total() const {
         return lanes + coordinate_memories + address_generator + pair_collector + control + grid_blocks;
     }

@@ -89,7 +89,7 @@ private:
     void prepare() {
         const Settings& settings = r_.setup.values.settings();
         describe_device_fit(description_, settings);
-        energy_.emplace(settings, description_.device_fit ? description_.device_fit->resources.total() : Resources{});
+        energy_.emplace(settings, description_.device_fit ? description_.device_fit->resources : BoardResources{});
         totals_.set_host_power(energy_->host_w());
         description_.source = r_.source.describe();
         description_.command_line = r_.spec.command_line;

@@ -34,6 +34,8 @@ FrameActivity frame(double frame_ns, uint64_t active_cycles) {
     a.transfer_ns = frame_ns / 4;
     a.active_cycles = active_cycles;
     a.memory_write_cycles = 3000;
+    a.block_rams_read = 72;  // m = 12 copies of six coordinates, one block deep
+    a.block_rams_written = 72;
     a.io_bits = 96000;
     return a;
 }
@@ -67,6 +69,10 @@ TEST(EnergyModel, PartsAddUpToTheTotalAndEachIsWorkedOutFromItsCoefficient) {
     // 1000 CLBs x 5.9 pJ x 10,000 cycles; 72 block RAMs x 73 pJ x 13,000
     // cycles; 96,000 bits x 12.5% x 54 pJ.
     EXPECT_NEAR(e.dynamic_j, (1000 * 5.9 * 10000 + 72 * 73 * 13000 + 96000 * 0.125 * 54) * 1e-12, 1e-15);
+    // The block RAMs a cycle enables are charged, not those the board holds:
+    // the same 72 enabled of a memory 20 blocks deep cost the same.
+    EXPECT_DOUBLE_EQ(board_frame_energy(virtex2(), board(8000, 4000, 72 * 20), frame(400000, 10000)).dynamic_j,
+                     e.dynamic_j);
     EXPECT_DOUBLE_EQ(e.total_j(), e.static_j + e.dynamic_j + e.bus_j + e.host_j);
     FrameEnergy sum;
     sum += e;
@@ -116,15 +122,22 @@ TEST(EnergyModel, RefusesNegativeOrNonFiniteInputsNamingThem) {
     PowerCoefficients p = virtex2();
     p.static_w = std::numeric_limits<double>::quiet_NaN();
     try {
-        board_frame_energy(p, board(1, 1, 1), frame(1, 1));
+        board_frame_energy(p, board(1, 1, 72), frame(1, 1));
         FAIL() << "a NaN static power was taken";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("static power"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(board_frame_energy(virtex2(), board(1, 1, 1), frame(-5, 1)), std::invalid_argument);
+    EXPECT_THROW(board_frame_energy(virtex2(), board(1, 1, 72), frame(-5, 1)), std::invalid_argument);
     p = virtex2();
     p.luts_per_clb = 0;
-    EXPECT_THROW(board_frame_energy(p, board(1, 1, 1), frame(1, 1)), std::invalid_argument);
+    EXPECT_THROW(board_frame_energy(p, board(1, 1, 72), frame(1, 1)), std::invalid_argument);
+    // A cycle cannot enable more block RAMs than the board holds.
+    try {
+        board_frame_energy(virtex2(), board(1, 1, 71), frame(1, 1));
+        FAIL() << "72 block RAMs enabled of 71 were taken";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("block RAMs"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
