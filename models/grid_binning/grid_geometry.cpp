@@ -1,5 +1,6 @@
 #include "models/grid_binning/grid_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -9,7 +10,64 @@ namespace cdvp {
 namespace {
 constexpr uint32_t kMinusInfinityWord = 0xFF80'0000u;
 constexpr uint32_t kPlusInfinityWord = 0x7F80'0000u;
+
+// GridGeometry::cell_of_value without branches, so that a loop of them
+// vectorizes: the position clamped before it is converted.
+inline uint32_t cell_of_position(float position, float dims_value, uint32_t dims) {
+    const float inside = position > 0.0f && position < dims_value ? position : 0.0f;
+    const auto cell = static_cast<uint32_t>(static_cast<int32_t>(inside));
+    return position >= dims_value ? dims - 1 : cell;
+}
+
+// One float32 bound over a run: NumberFormat::key, excluded and
+// GridGeometry::cell written out for the vectorizer, in each width the CPU
+// may have (function multiversioning picks one when the program loads).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+void float32_bound_cells(const uint32_t* words, uint32_t n, GridAxis axis, uint32_t dims, uint32_t minus_infinity,
+                         uint32_t plus_infinity, uint32_t* keys, uint32_t* cells, uint32_t* excluded) {
+    const auto dims_value = static_cast<float>(dims);
+    for (uint32_t k = 0; k < n; ++k) {
+        const uint32_t word = words[k];
+        excluded[k] |= static_cast<uint32_t>((word & 0x7FFF'FFFFu) > 0x7F80'0000u);
+        const uint32_t key = NumberFormat::float32().key(word);
+        keys[k] = key;
+        const float position = (NumberFormat::float32_value(key) - axis.lo) * axis.scale;
+        uint32_t cell = cell_of_position(position, dims_value, dims);
+        cell = key <= minus_infinity ? 0 : cell;
+        cells[k] = key >= plus_infinity ? dims - 1 : cell;
+    }
+}
+
+// The same for a fixed-point format: no infinities, nothing excluded.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+void fixed_bound_cells(const uint32_t* words, uint32_t n, uint32_t mask, GridAxis axis, uint32_t dims, uint32_t* keys,
+                       uint32_t* cells) {
+    const auto dims_value = static_cast<float>(dims);
+    for (uint32_t k = 0; k < n; ++k) {
+        const uint32_t key = words[k] & mask;
+        keys[k] = key;
+        cells[k] = cell_of_position((NumberFormat::fixed_value(key) - axis.lo) * axis.scale, dims_value, dims);
+    }
+}
+
 }  // namespace
+
+void GridGeometry::fill_run(const uint32_t* const* words, uint32_t begin, uint32_t n, BoundRun& run) const {
+    std::fill(run.excluded, run.excluded + n, 0u);
+    for (uint32_t c = 0; c < 6; ++c) {
+        const GridAxis& axis = axes_[c % 3];
+        if (format_.is_float()) {
+            float32_bound_cells(words[c] + begin, n, axis, dims_, minus_infinity_, plus_infinity_, run.key[c],
+                                run.cell[c], run.excluded);
+        } else {
+            fixed_bound_cells(words[c] + begin, n, format_.word_mask(), axis, dims_, run.key[c], run.cell[c]);
+        }
+    }
+}
 
 uint32_t GridConfig::dims_for(uint64_t objects) const {
     if (dims != 0) return dims;

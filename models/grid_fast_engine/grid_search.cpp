@@ -76,27 +76,36 @@ uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
     cell_words_.assign(cells, CellWords{});
     uint64_t count_slots = 0, entries = 0;
     uint32_t candidates = 0, fullest = 0;
-    for (uint32_t i = 0; i < objects; ++i) {
-        Box& box = boxes_[i];
-        Binned& b = binned_[i];
-        b.kind = keys_of(format, words, i, box.key) ? Kind::kExcluded : Kind::kBinned;
-        uint64_t covered = 0;
-        if (b.kind == Kind::kExcluded) {
-            ++stats_.excluded_boxes;
-        } else if (grid_.classify(box.key, grid.max_span, b.range) == BoxClass::kCandidate) {
-            covered = b.range.cells();
-            ++candidates;
-            entries += covered;
-            ++cell_words_[grid_.linear(b.range.lo[0], b.range.lo[1], b.range.lo[2])].first;
-            CellTable::for_each_cell(b.range, grid_, [&](uint64_t c) { fullest = std::max(fullest, ++cell_words_[c].boxes); });
-        } else {
-            b.kind = Kind::kLarge;
-            large_.push_back(i);
+    // A run of boxes at a time: the keys and cells of each bound over the
+    // run first (vectorized), then each box's verdict and counts.
+    for (uint32_t begin = 0; begin < objects; begin += BoundRun::kBoxes) {
+        const uint32_t n = std::min(BoundRun::kBoxes, objects - begin);
+        grid_.fill_run(words.data(), begin, n, run_);
+        for (uint32_t k = 0; k < n; ++k) {
+            const uint32_t i = begin + k;
+            Box& box = boxes_[i];
+            Binned& b = binned_[i];
+            for (uint32_t c = 0; c < kCoordinates; ++c) box.key[c] = run_.key[c][k];
+            b.kind = run_.excluded[k] != 0 ? Kind::kExcluded : Kind::kBinned;
+            uint64_t covered = 0;
+            if (b.kind == Kind::kExcluded) {
+                ++stats_.excluded_boxes;
+            } else if (grid_.classify_run(run_, k, grid.max_span, b.range) == BoxClass::kCandidate) {
+                covered = b.range.cells();
+                ++candidates;
+                entries += covered;
+                ++cell_words_[grid_.linear(b.range.lo[0], b.range.lo[1], b.range.lo[2])].first;
+                CellTable::for_each_cell(b.range, grid_,
+                                         [&](uint64_t c) { fullest = std::max(fullest, ++cell_words_[c].boxes); });
+            } else {
+                b.kind = Kind::kLarge;
+                large_.push_back(i);
+            }
+            box.index = i;
+            box.first = b.range.lo;
+            box.kind = b.kind;
+            count_slots += slots_.box(covered);  // a candidate's counts are read whether it fits or not
         }
-        box.index = i;
-        box.first = b.range.lo;
-        box.kind = b.kind;
-        count_slots += slots_.box(covered);  // a candidate's counts are read whether it fits or not
     }
     // No cell fills and the entries fit: every candidate binned, whatever
     // the order (pass 3 touches the cells pass 2 read); else box by box.

@@ -102,6 +102,7 @@ private:
     GridGeometry grid_;
     std::vector<Box> boxes_;      // every box by index
     std::vector<Binned> binned_;  // every box's cells, by index
+    BoundRun run_;                // pass 2's run of boxes
     std::vector<uint32_t> large_;  // ascending
     // The busy cells and their lists (in index order): positions in placed_,
     // the binned boxes copied in first-cell order so that a cell's boxes lie
