@@ -45,7 +45,7 @@ private:
     // A box as the cell sweep and the large sweep see it: its keys
     // (Coordinate order), its index, its first cell and its kind; 32 bytes,
     // two to a cache line.
-    struct Box {
+    struct alignas(32) Box {
         uint32_t key[kCoordinates];
         uint32_t index;
         std::array<uint8_t, 3> first;
