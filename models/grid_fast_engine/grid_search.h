@@ -52,8 +52,8 @@ private:
         Kind kind;
     };
     static_assert(sizeof(Box) == 32, "a box is half a cache line");
-    // A box as pass 2 leaves it: its cells and kind.
-    struct Binned {
+    // A box as pass 2 leaves it: its cells and kind, a word.
+    struct alignas(8) Binned {
         CellRange range;
         Kind kind;
     };
