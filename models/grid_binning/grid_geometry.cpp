@@ -54,7 +54,58 @@ void fixed_bound_cells(const uint32_t* words, uint32_t n, uint32_t mask, GridAxi
     }
 }
 
+// One axis's box centres over a run, float32: the centre of the bounds'
+// values as keys give them (NumberFormat::approximate of key), and whether
+// either word is a NaN.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+void float32_centres(const uint32_t* lo_words, const uint32_t* hi_words, uint32_t n, float* centres,
+                     uint32_t* excluded) {
+    const NumberFormat format = NumberFormat::float32();
+    for (uint32_t k = 0; k < n; ++k) {
+        const uint32_t lo = lo_words[k], hi = hi_words[k];
+        excluded[k] |= static_cast<uint32_t>((lo & 0x7FFF'FFFFu) > 0x7F80'0000u) |
+                       static_cast<uint32_t>((hi & 0x7FFF'FFFFu) > 0x7F80'0000u);
+        centres[k] = GridBounds::centre_of(NumberFormat::float32_value(format.key(lo)),
+                                           NumberFormat::float32_value(format.key(hi)));
+    }
+}
+
+// The same for a fixed-point format: nothing excluded.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+void fixed_centres(const uint32_t* lo_words, const uint32_t* hi_words, uint32_t n, uint32_t mask, float* centres) {
+    for (uint32_t k = 0; k < n; ++k) {
+        centres[k] = GridBounds::centre_of(NumberFormat::fixed_value(lo_words[k] & mask),
+                                           NumberFormat::fixed_value(hi_words[k] & mask));
+    }
+}
+
 }  // namespace
+
+void GridBounds::add_run(const uint32_t* const* words, uint32_t begin, uint32_t n) {
+    float centres[3][BoundRun::kBoxes];
+    uint32_t excluded[BoundRun::kBoxes] = {};
+    for (uint32_t a = 0; a < 3; ++a) {
+        if (format_.is_float()) {
+            float32_centres(words[a] + begin, words[a + 3] + begin, n, centres[a], excluded);
+        } else {
+            fixed_centres(words[a] + begin, words[a + 3] + begin, n, format_.word_mask(), centres[a]);
+        }
+    }
+    // In box order, as add() takes them.
+    for (uint32_t k = 0; k < n; ++k) {
+        if (excluded[k] != 0) continue;
+        for (uint32_t a = 0; a < 3; ++a) {
+            const float centre = centres[a][k];
+            if (!(centre - centre == 0.0f)) continue;  // an infinity or NaN: no bound of the grid
+            least_[a] = std::min(least_[a], centre);
+            greatest_[a] = std::max(greatest_[a], centre);
+        }
+    }
+}
 
 void GridGeometry::fill_run(const uint32_t* const* words, uint32_t begin, uint32_t n, BoundRun& run) const {
     std::fill(run.excluded, run.excluded + n, 0u);

@@ -146,6 +146,10 @@ public:
             greatest_[a] = std::max(greatest_[a], centre);
         }
     }
+    // add() of boxes begin .. begin + n - 1 (n <= BoundRun::kBoxes) from
+    // their words (words[c][i]: word c of box i), excluded ones left out:
+    // the centres over the run in one loop an axis, which the compiler vectorizes.
+    void add_run(const uint32_t* const* words, uint32_t begin, uint32_t n);
     // The grid: origin at the least centre; scale dims / (greatest - least),
     // or 1 / cell_size when that is set; 0 where the axis has no extent.
     GridGeometry geometry(const GridConfig& config, uint32_t dims) const;

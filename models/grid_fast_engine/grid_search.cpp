@@ -42,29 +42,13 @@ uint64_t GridSearch::run(uint32_t objects, const CoordinateWords& words, PairLis
     return stats_.slots;
 }
 
-namespace {
-
-// A box's keys, and whether a word of it is excluded (a NaN).
-inline bool keys_of(NumberFormat format, const CoordinateWords& words, uint32_t i, uint32_t (&keys)[kCoordinates]) {
-    bool excluded = false;
-    for (uint32_t c = 0; c < kCoordinates; ++c) {
-        const uint32_t word = words[c][i];
-        excluded |= format.excluded(word);
-        keys[c] = format.key(word);
-    }
-    return excluded;
-}
-
-}  // namespace
-
 uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
     const NumberFormat format = config_.format;
     const GridConfig& grid = config_.grid;
     // Pass 1: the bounds.
     GridBounds bounds(format);
-    for (uint32_t i = 0; i < objects; ++i) {
-        uint32_t keys[kCoordinates];
-        if (!keys_of(format, words, i, keys)) bounds.add(keys);
+    for (uint32_t begin = 0; begin < objects; begin += BoundRun::kBoxes) {
+        bounds.add_run(words.data(), begin, std::min(BoundRun::kBoxes, objects - begin));
     }
     grid_ = bounds.geometry(grid, grid.dims_for(objects));
     stats_.dims = grid_.dims();

@@ -114,8 +114,9 @@ TEST(GridGeometry, ClassifiesInvertedAndSpanningBoxes) {
     EXPECT_EQ(BoxClass::kCandidate, grid.classify(k, 8, range));
 }
 
-// A run of boxes in bulk (the fast engine's pass 2) gives each box the keys,
-// NaN flag, cells and class that cell() and classify() give it alone.
+// A run of boxes in bulk (the fast engine's passes 1 and 2) gives the grid
+// the bounds add() gives it, and each box the keys, NaN flag, cells and class
+// that cell() and classify() give it alone.
 TEST(GridGeometry, ARunOfBoxesBinsAsEachBoxAlone) {
     std::mt19937 rng(35);
     std::uniform_int_distribution<uint32_t> any;
@@ -143,6 +144,25 @@ TEST(GridGeometry, ARunOfBoxesBinsAsEachBoxAlone) {
             }
             const uint32_t* words[6];
             for (uint32_t c = 0; c < 6; ++c) words[c] = columns[c].data();
+            // The bounds: box by box, and a run at a time.
+            GridBounds alone_bounds(format), run_bounds(format);
+            for (uint32_t i = 0; i < n; ++i) {
+                uint32_t box_words[6], keys[6];
+                for (uint32_t c = 0; c < 6; ++c) {
+                    box_words[c] = columns[c][i];
+                    keys[c] = format.key(box_words[c]);
+                }
+                if (!excluded_box(format, box_words)) alone_bounds.add(keys);
+            }
+            for (uint32_t begin = 0; begin < n; begin += BoundRun::kBoxes) {
+                run_bounds.add_run(words, begin, std::min(BoundRun::kBoxes, n - begin));
+            }
+            const GridGeometry alone_fit = alone_bounds.geometry(GridConfig{}, 29);
+            const GridGeometry run_fit = run_bounds.geometry(GridConfig{}, 29);
+            for (uint32_t a = 0; a < 3; ++a) {
+                EXPECT_EQ(bits(alone_fit.axis(a).lo), bits(run_fit.axis(a).lo)) << format.name();
+                EXPECT_EQ(bits(alone_fit.axis(a).scale), bits(run_fit.axis(a).scale)) << format.name();
+            }
             auto run = std::make_unique<BoundRun>();
             for (uint32_t begin = 0; begin < n; begin += BoundRun::kBoxes) {
                 const uint32_t count = std::min(BoundRun::kBoxes, n - begin);
@@ -167,6 +187,28 @@ TEST(GridGeometry, ARunOfBoxesBinsAsEachBoxAlone) {
                     }
                 }
             }
+        }
+    }
+}
+
+// A box with a NaN in a single word is left out of the bounds whole, in a
+// run as alone: here its x extent would otherwise widen the grid.
+TEST(GridBounds, ARunLeavesOutABoxWithANaNInAnyWord) {
+    for (uint32_t nan_at = 0; nan_at < 6; ++nan_at) {
+        uint32_t column[6][2];
+        for (uint32_t c = 0; c < 6; ++c) {
+            column[c][0] = bits(c < 3 ? 1.0f : 2.0f);
+            column[c][1] = bits(c < 3 ? 7.0f : 9.0f);
+        }
+        column[nan_at][1] = 0x7FC0'0000u;
+        const uint32_t* words[6];
+        for (uint32_t c = 0; c < 6; ++c) words[c] = column[c];
+        GridBounds bounds;
+        bounds.add_run(words, 0, 2);
+        const GridGeometry grid = bounds.geometry(GridConfig{}, 4);
+        for (uint32_t a = 0; a < 3; ++a) {
+            EXPECT_EQ(1.5f, grid.axis(a).lo) << "NaN in word " << nan_at;
+            EXPECT_EQ(0.0f, grid.axis(a).scale) << "NaN in word " << nan_at;
         }
     }
 }
