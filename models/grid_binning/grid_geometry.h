@@ -35,6 +35,16 @@ enum class BoxClass : uint8_t {
     kSpanning,   // more cells than max_span: swept against every box
 };
 
+// The keys, NaN flags and cells of a run of boxes, bound by bound (pass 2 of
+// the fast engine: each bound's arithmetic over the run in one loop, which
+// the compiler vectorizes).
+struct BoundRun {
+    static constexpr uint32_t kBoxes = 256;
+    uint32_t key[6][kBoxes];   // NumberFormat::key of each word, Coordinate order
+    uint32_t cell[6][kBoxes];  // GridGeometry::cell of each key on its axis
+    uint32_t excluded[kBoxes];  // nonzero: a word the format excludes (a NaN)
+};
+
 // The grid of one sweep: its cells a side and each axis's origin and scale.
 class GridGeometry {
 public:
@@ -66,6 +76,24 @@ public:
         for (uint32_t a = 0; a < 3; ++a) {
             const uint32_t lo = cell(a, keys[a]);
             const uint32_t hi = cell(a, keys[a + 3]);
+            range.lo[a] = static_cast<uint8_t>(lo);
+            range.hi[a] = static_cast<uint8_t>(hi);
+            cells *= hi - lo + 1;
+        }
+        return cells > max_span ? BoxClass::kSpanning : BoxClass::kCandidate;
+    }
+
+    // Boxes begin .. begin + n - 1 (n <= BoundRun::kBoxes) from their words
+    // (words[c][i]: word c of box i): their keys, NaN flags and cells.
+    void fill_run(const uint32_t* const* words, uint32_t begin, uint32_t n, BoundRun& run) const;
+    // classify() of box k of a run whose words the format does not exclude.
+    BoxClass classify_run(const BoundRun& run, uint32_t k, uint32_t max_span, CellRange& range) const {
+        for (uint32_t a = 0; a < 3; ++a) {
+            if (run.key[a][k] > run.key[a + 3][k]) return BoxClass::kInverted;
+        }
+        uint64_t cells = 1;
+        for (uint32_t a = 0; a < 3; ++a) {
+            const uint32_t lo = run.cell[a][k], hi = run.cell[a + 3][k];
             range.lo[a] = static_cast<uint8_t>(lo);
             range.hi[a] = static_cast<uint8_t>(hi);
             cells *= hi - lo + 1;
@@ -118,6 +146,10 @@ public:
             greatest_[a] = std::max(greatest_[a], centre);
         }
     }
+    // add() of boxes begin .. begin + n - 1 (n <= BoundRun::kBoxes) from
+    // their words (words[c][i]: word c of box i), excluded ones left out:
+    // the centres over the run in one loop an axis, which the compiler vectorizes.
+    void add_run(const uint32_t* const* words, uint32_t begin, uint32_t n);
     // The grid: origin at the least centre; scale dims / (greatest - least),
     // or 1 / cell_size when that is set; 0 where the axis has no extent.
     GridGeometry geometry(const GridConfig& config, uint32_t dims) const;

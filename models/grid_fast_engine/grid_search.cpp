@@ -3,11 +3,14 @@
 #include <algorithm>
 
 #include "models/comparison_unit/comparison_unit.h"
+#include "models/grid_fast_engine/cell_hits.h"
 
 namespace cdvp {
 
 GridSearch::GridSearch(const BoardConfig& config, PairBudget budget)
-    : config_((config.validate(), config)), slots_(config.grid_slots()), budget_(budget) {}
+    : config_((config.validate(), config)), slots_(config.grid_slots()), budget_(budget) {
+    for (uint32_t k = 0; k < lane_slot_.size(); ++k) lane_slot_[k] = k / slots_.lanes;
+}
 
 void GridSearch::Tile::resize(uint32_t n) {
     if (index.size() >= n) return;
@@ -42,50 +45,51 @@ uint64_t GridSearch::run(uint32_t objects, const CoordinateWords& words, PairLis
 uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
     const NumberFormat format = config_.format;
     const GridConfig& grid = config_.grid;
-    boxes_.resize(objects);
-    // A box's keys, and whether a word of it is excluded (a NaN).
-    const auto keys_of = [&](uint32_t i, uint32_t (&keys)[kCoordinates]) {
-        bool excluded = false;
-        for (uint32_t c = 0; c < kCoordinates; ++c) {
-            const uint32_t word = words[c][i];
-            excluded |= format.excluded(word);
-            keys[c] = format.key(word);
-        }
-        return excluded;
-    };
     // Pass 1: the bounds.
     GridBounds bounds(format);
-    for (uint32_t i = 0; i < objects; ++i) {
-        uint32_t keys[kCoordinates];
-        if (!keys_of(i, keys)) bounds.add(keys);
+    for (uint32_t begin = 0; begin < objects; begin += BoundRun::kBoxes) {
+        bounds.add_run(words.data(), begin, std::min(BoundRun::kBoxes, objects - begin));
     }
     grid_ = bounds.geometry(grid, grid.dims_for(objects));
     stats_.dims = grid_.dims();
     // Pass 2's verdicts that need no count (excluded, inverted, spanning),
     // and each cell's boxes and first boxes were every candidate binned.
     const uint64_t cells = grid_.cells();
-    first_words_.assign(cells + 1, 0);
-    cell_words_.assign(cells, 0);
+    boxes_.resize(objects);
+    binned_.resize(objects);
+    cell_words_.assign(cells, CellWords{});
     uint64_t count_slots = 0, entries = 0;
     uint32_t candidates = 0, fullest = 0;
-    for (uint32_t i = 0; i < objects; ++i) {
-        Box& b = boxes_[i];
-        b.kind = keys_of(i, b.key) ? Kind::kExcluded : Kind::kBinned;
-        b.index = i;
-        uint64_t covered = 0;
-        if (b.kind == Kind::kExcluded) {
-            ++stats_.excluded_boxes;
-        } else if (grid_.classify(b.key, grid.max_span, b.range) == BoxClass::kCandidate) {
-            covered = b.range.cells();
-            ++candidates;
-            entries += covered;
-            ++first_words_[grid_.linear(b.range.lo[0], b.range.lo[1], b.range.lo[2]) + 1];
-            CellTable::for_each_cell(b.range, grid_, [&](uint64_t c) { fullest = std::max(fullest, ++cell_words_[c]); });
-        } else {
-            b.kind = Kind::kLarge;
-            large_.push_back(i);
+    // A run of boxes at a time: the keys and cells of each bound over the
+    // run first (vectorized), then each box's verdict and counts.
+    for (uint32_t begin = 0; begin < objects; begin += BoundRun::kBoxes) {
+        const uint32_t n = std::min(BoundRun::kBoxes, objects - begin);
+        grid_.fill_run(words.data(), begin, n, run_);
+        for (uint32_t k = 0; k < n; ++k) {
+            const uint32_t i = begin + k;
+            Box& box = boxes_[i];
+            Binned& b = binned_[i];
+            for (uint32_t c = 0; c < kCoordinates; ++c) box.key[c] = run_.key[c][k];
+            b.kind = run_.excluded[k] != 0 ? Kind::kExcluded : Kind::kBinned;
+            uint64_t covered = 0;
+            if (b.kind == Kind::kExcluded) {
+                ++stats_.excluded_boxes;
+            } else if (grid_.classify_run(run_, k, grid.max_span, b.range) == BoxClass::kCandidate) {
+                covered = b.range.cells();
+                ++candidates;
+                entries += covered;
+                ++cell_words_[grid_.linear(b.range.lo[0], b.range.lo[1], b.range.lo[2])].first;
+                CellTable::for_each_cell(b.range, grid_,
+                                         [&](uint64_t c) { fullest = std::max(fullest, ++cell_words_[c].boxes); });
+            } else {
+                b.kind = Kind::kLarge;
+                large_.push_back(i);
+            }
+            box.index = i;
+            box.first = b.range.lo;
+            box.kind = b.kind;
+            count_slots += slots_.box(covered);  // a candidate's counts are read whether it fits or not
         }
-        count_slots += slots_.box(covered);  // a candidate's counts are read whether it fits or not
     }
     // No cell fills and the entries fit: every candidate binned, whatever
     // the order (pass 3 touches the cells pass 2 read); else box by box.
@@ -98,32 +102,36 @@ uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
 }
 
 void GridSearch::bin_sorted(uint32_t candidates, uint64_t entries) {
-    const uint64_t cells = grid_.cells();
-    // The candidates by first cell, a stable counting sort.
-    for (uint64_t c = 1; c <= cells; ++c) first_words_[c] += first_words_[c - 1];
+    // The scan, and where each cell's first boxes go in placed_: a stable
+    // counting sort of the candidates by first cell.
+    busy_.clear();
+    uint32_t next_box = 0, next_entry = 0;
+    for (uint64_t c = 0; c < cell_words_.size(); ++c) {
+        CellWords& w = cell_words_[c];
+        const uint32_t firsts = w.first, n = w.boxes;
+        w.first = next_box;
+        w.boxes = next_entry;
+        if (n >= 2) busy_.push_back({static_cast<uint32_t>(c), next_entry, n});
+        next_box += firsts;
+        next_entry += n;
+    }
+    // The candidates copied in first-cell order.
     placed_.resize(candidates);
     place_of_.resize(boxes_.size());
     for (const Box& b : boxes_) {
         if (b.kind != Kind::kBinned) continue;
-        const uint32_t at = first_words_[grid_.linear(b.range.lo[0], b.range.lo[1], b.range.lo[2])]++;
+        const uint32_t at = cell_words_[grid_.linear(b.first[0], b.first[1], b.first[2])].first++;
         placed_[at] = b;
         place_of_[b.index] = at;
     }
-    // The scan, then the place pass in first-cell order: positions in placed_.
-    busy_.clear();
+    // The place pass: each candidate's place entered in each of its cells,
+    // in index order, as the board places them, so each list is in index order.
     lists_.resize(entries);
-    uint32_t next = 0;
-    for (uint64_t c = 0; c < cells; ++c) {
-        const uint32_t n = cell_words_[c];
-        cell_words_[c] = next;
-        if (n >= 2) busy_.push_back({static_cast<uint32_t>(c), next, n});
-        next += n;
-    }
-    // In index order, as the board places them, so each list is in index order.
-    for (const Box& b : boxes_) {
+    for (uint32_t i = 0; i < binned_.size(); ++i) {
+        const Binned& b = binned_[i];
         if (b.kind != Kind::kBinned) continue;
-        const uint32_t at = place_of_[b.index];
-        CellTable::for_each_cell(b.range, grid_, [&](uint64_t c) { lists_[cell_words_[c]++] = at; });
+        const uint32_t at = place_of_[i];
+        CellTable::for_each_cell(b.range, grid_, [&](uint64_t c) { lists_[cell_words_[c].boxes++] = at; });
     }
     sorted_lists_ = true;
     stats_.cell_entries = entries;
@@ -135,9 +143,10 @@ uint64_t GridSearch::bin_in_order(uint32_t objects) {
     table_.reset(grid_.cells(), grid.cell_capacity, grid.entry_capacity);
     large_.clear();
     for (uint32_t i = 0; i < objects; ++i) {
-        Box& b = boxes_[i];
+        Binned& b = binned_[i];
         if (b.kind == Kind::kBinned && !table_.count(b.range, grid_)) {
             b.kind = Kind::kLarge;
+            boxes_[i].kind = Kind::kLarge;
             ++stats_.overflow_boxes;
         }
         if (b.kind == Kind::kLarge) large_.push_back(i);
@@ -146,7 +155,7 @@ uint64_t GridSearch::bin_in_order(uint32_t objects) {
     table_.scan();
     uint64_t place_slots = 0;
     for (uint32_t i = 0; i < objects; ++i) {
-        const Box& b = boxes_[i];
+        const Binned& b = binned_[i];
         const bool binned = b.kind == Kind::kBinned;
         if (binned) table_.place(i, b.range, grid_);
         place_slots += slots_.box(binned ? b.range.cells() : 0);
@@ -159,80 +168,66 @@ uint64_t GridSearch::bin_in_order(uint32_t objects) {
 void GridSearch::sweep_cell(const BusyCell& cell, uint64_t row_start, PairList& pairs, std::vector<uint64_t>& slots) {
     const uint32_t n = cell.count, dims = grid_.dims(), lanes = slots_.lanes;
     const uint32_t here[3] = {cell.cell % dims, cell.cell / dims % dims, cell.cell / dims / dims};
-    // The keys as BlockTest compares them, four columns at a time; and, up to
-    // 64 boxes, which start here on each axis: the one-cell rule keeps a pair
-    // only if, on every axis, one of its two boxes starts here, so only the
-    // groups of columns holding such a partner are tested.
+    // The keys as the lanes compare them; and, up to 64 boxes, which start
+    // here on each axis: the one-cell rule keeps a pair only if, on every
+    // axis, one of its two boxes starts here, so only such partners are tested.
     const bool masked = n <= 64;
     uint64_t starts[3] = {};
     for (uint32_t k = 0; k < n; ++k) {
         const Box& b = *cell_boxes_[k];
         for (uint32_t c = 0; c < kCoordinates; ++c) cell_columns_.bound[c][k] = static_cast<int32_t>(b.key[c] ^ 0x8000'0000u);
         if (masked) {
-            for (uint32_t a = 0; a < 3; ++a) starts[a] |= uint64_t{b.range.lo[a] == here[a]} << k;
+            for (uint32_t a = 0; a < 3; ++a) starts[a] |= uint64_t{b.first[a] == here[a]} << k;
         }
     }
-    const uint64_t all = masked ? ~uint64_t{0} >> (64 - n) : ~uint64_t{0};
-    // Each row is tested first, its hits gathered as bits (row_hits_), and
-    // only then turned into pairs: no call inside the test loop, so the
-    // row's keys stay in registers.
+    if (masked) {
+        // Every row tested first (masked_cell_hits), then its hits turned into pairs.
+        row_hits_.resize(n);
+        masked_cell_hits(cell_columns_, n, starts, row_hits_.data());
+        for (uint32_t r = 0; r + 1 < n; ++r) {
+            const uint32_t a = cell_boxes_[r]->index;
+            for (uint64_t hits = row_hits_[r]; hits != 0; hits &= hits - 1) {
+                const auto c = static_cast<uint32_t>(__builtin_ctzll(hits));
+                add(pairs, slots, {a, cell_boxes_[c]->index}, row_start + lane_slot_[c - r - 1]);
+            }
+            row_start += lane_slot_[n - 2 - r] + 1;  // ceil((n-1-r) / w)
+        }
+        return;
+    }
+    // Above 64 boxes: each row tested first, its hits gathered as bits, in
+    // groups of four columns aligned to four, so none straddles a word.
     row_hits_.resize((n + 63) / 64);
     uint64_t* hit_words = row_hits_.data();
     for (uint32_t r = 0; r + 1 < n; ++r) {
-        const uint64_t row_slots = (n - 1 - r + lanes - 1) / lanes;  // ceil((n-1-r) / w)
-        uint64_t partners = all;  // the columns the rule may keep beside row r (masked cells)
-        if (masked) {
-            for (uint32_t x = 0; x < 3; ++x) partners &= (starts[x] >> r & 1) != 0 ? all : starts[x];
-            partners &= ~uint64_t{0} << (r + 1);
-            if (partners == 0) {
-                row_start += row_slots;
-                continue;
-            }
-        }
         int32_t row[kCoordinates];
         cell_columns_.get(r, row);
         const BlockTest test(cell_columns_, row);
         const uint32_t first_word = (r + 1) / 64, end_word = (n + 63) / 64;
-        if (masked) {
-            // Groups of four columns from each next partner.
-            uint64_t hits = 0;
-            while (partners != 0) {
-                const auto q0 = static_cast<uint32_t>(__builtin_ctzll(partners));
-                const uint32_t wanted = static_cast<uint32_t>(partners >> q0) & 0xFu;
-                hits |= uint64_t{test.hits(q0) & wanted} << q0;
-                partners &= ~(uint64_t{0xF} << q0);
-            }
-            hit_words[0] = hits;
-        } else {
-            // Groups of four columns aligned to four, so none straddles a word.
-            for (uint32_t w = first_word; w < end_word; ++w) hit_words[w] = 0;
-            const uint32_t aligned = (r + 1) & ~3u;
-            for (uint32_t q0 = aligned; q0 < n; q0 += 4) {
-                hit_words[q0 / 64] |= uint64_t{test.hits(q0) & block_mask_before(q0, n)} << (q0 % 64);
-            }
-            hit_words[first_word] &= ~uint64_t{0} << ((r + 1) % 64);
+        for (uint32_t w = first_word; w < end_word; ++w) hit_words[w] = 0;
+        const uint32_t aligned = (r + 1) & ~3u;
+        for (uint32_t q0 = aligned; q0 < n; q0 += 4) {
+            hit_words[q0 / 64] |= uint64_t{test.hits(q0) & block_mask_before(q0, n)} << (q0 % 64);
         }
+        hit_words[first_word] &= ~uint64_t{0} << ((r + 1) % 64);
         const Box& a = *cell_boxes_[r];
         for (uint32_t w = first_word; w < end_word; ++w) {
             for (uint64_t hits = hit_words[w]; hits != 0; hits &= hits - 1) {
                 const uint32_t c = w * 64 + static_cast<uint32_t>(__builtin_ctzll(hits));
                 const Box& b = *cell_boxes_[c];
-                // The one-cell rule (masked cells kept only such partners).
+                // The one-cell rule.
                 bool keep = true;
-                if (!masked) {
-                    for (uint32_t x = 0; x < 3; ++x) keep &= a.range.lo[x] == here[x] || b.range.lo[x] == here[x];
-                }
+                for (uint32_t x = 0; x < 3; ++x) keep &= a.first[x] == here[x] || b.first[x] == here[x];
                 if (keep) add(pairs, slots, {a.index, b.index}, row_start + (c - r - 1) / lanes);
             }
         }
-        row_start += row_slots;
+        row_start += (n - 1 - r + lanes - 1) / lanes;  // ceil((n-1-r) / w)
     }
 }
 
 uint64_t GridSearch::sweep_cells(uint64_t begin, PairList& pairs, std::vector<uint64_t>& slots) {
     CellBlocks blocks(slots_, begin);
     const uint32_t capacity = config_.grid.cell_capacity;
-    cell_columns_.resize(capacity);
+    cell_columns_.resize(capacity + kCellHitsPadding);
     cell_boxes_.resize(capacity);
     if (!sorted_lists_) {
         // Lists of box indices in index order, as the board's.

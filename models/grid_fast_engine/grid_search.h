@@ -30,25 +30,38 @@ public:
     uint64_t run(uint32_t objects, const CoordinateWords& words, PairList& pairs, std::vector<uint64_t>& slots);
     const GridSweepStats& stats() const { return stats_; }
     // The most a sweep of `objects` boxes keeps, in either grid engine, for
-    // the memory estimate before a run: the count table and busy-cell list
-    // a cell; a box's keys, cells and kind, its copy in first-cell order,
-    // its entries (each a list word and a word of the cell table's lists)
-    // and its place in the large list.
+    // the memory estimate before a run: the count words and busy-cell list
+    // a cell; a box's cells and kind, its keys by index and its copy in
+    // first-cell order, its entries (each a list word and a word of the cell
+    // table's lists), its place in that order and in the large list.
     static uint64_t scratch_bytes(const GridConfig& grid, uint64_t objects) {
         if (objects < 2) return 0;
-        return grid.cells_for(objects) * (2 * sizeof(uint32_t) + 2 * sizeof(BusyCell)) +
-               objects * (2 * sizeof(Box) + grid.max_span * 2 * sizeof(uint32_t) + 2 * sizeof(uint32_t));
+        return grid.cells_for(objects) * (sizeof(CellWords) + 2 * sizeof(BusyCell)) +
+               objects * (sizeof(Binned) + 2 * sizeof(Box) + grid.max_span * 2 * sizeof(uint32_t) + 2 * sizeof(uint32_t));
     }
 
 private:
     enum class Kind : uint8_t { kBinned, kLarge, kExcluded };
-    // A box as the passes see it: its keys (Coordinate order), its cells,
-    // its kind and its index.
-    struct Box {
+    // A box as the cell sweep and the large sweep see it: its keys
+    // (Coordinate order), its index, its first cell and its kind; 32 bytes,
+    // two to a cache line.
+    struct alignas(32) Box {
         uint32_t key[kCoordinates];
+        uint32_t index;
+        std::array<uint8_t, 3> first;
+        Kind kind;
+    };
+    static_assert(sizeof(Box) == 32, "a box is half a cache line");
+    // A box as pass 2 leaves it: its cells and kind, a word.
+    struct alignas(8) Binned {
         CellRange range;
         Kind kind;
-        uint32_t index;
+    };
+    // A cell's count words: its first boxes and its boxes, counted in pass
+    // 2, then (the scan) where they go in placed_ and in lists_.
+    struct CellWords {
+        uint32_t first = 0;
+        uint32_t boxes = 0;
     };
     // A large tile, gathered: keys by coordinate and indices.
     struct Tile {
@@ -62,17 +75,17 @@ private:
     // Passes 1 to 3 and the scan; the slot after the place pass.
     uint64_t bin(uint32_t objects, const CoordinateWords& words);
     // The scan and pass 3 when no cell fills and the entries fit (then the
-    // order of the boxes cannot matter): the candidates sorted by first cell
-    // (first_words_: their counts) and placed cell by cell (cell_words_: each
-    // cell's boxes).
+    // order of the boxes cannot matter): the candidates copied in first-cell
+    // order into placed_ and their places entered in the lists.
     void bin_sorted(uint32_t candidates, uint64_t entries);
     // Passes 2 and 3 box by box in index order, as the board runs them:
     // boxes meeting a full cell or entry memory become large. The place
     // pass's box slots.
     uint64_t bin_in_order(uint32_t objects);
     // The triangle of a busy cell's boxes (cell_boxes_, in index order) from
-    // slot `row_start` on, four lane tests at a time (up to 64 boxes, only
-    // where the one-cell rule may keep a pair).
+    // slot `row_start` on: up to 64 boxes, only where the one-cell rule may
+    // keep a pair, as wide as the CPU compares (masked_cell_hits); above,
+    // four lane tests at a time.
     void sweep_cell(const BusyCell& cell, uint64_t row_start, PairList& pairs, std::vector<uint64_t>& slots);
     // The busy cells from slot `begin` on; the slot after the last one's last compare.
     uint64_t sweep_cells(uint64_t begin, PairList& pairs, std::vector<uint64_t>& slots);
@@ -87,7 +100,9 @@ private:
     GridSlots slots_;
     PairBudget budget_;
     GridGeometry grid_;
-    std::vector<Box> boxes_;
+    std::vector<Box> boxes_;      // every box by index
+    std::vector<Binned> binned_;  // every box's cells, by index
+    BoundRun run_;                // pass 2's run of boxes
     std::vector<uint32_t> large_;  // ascending
     // The busy cells and their lists (in index order): positions in placed_,
     // the binned boxes copied in first-cell order so that a cell's boxes lie
@@ -96,8 +111,7 @@ private:
     bool sorted_lists_ = false;
     std::vector<Box> placed_;
     std::vector<uint32_t> place_of_;  // a binned box's position in placed_
-    std::vector<uint32_t> first_words_;  // a word a cell: its first boxes, then where they go in placed_
-    std::vector<uint32_t> cell_words_;   // a word a cell: its boxes, then its next entry
+    std::vector<CellWords> cell_words_;
     std::vector<uint32_t> lists_;
     std::vector<BusyCell> busy_;
     CellTable table_;
@@ -105,7 +119,8 @@ private:
     // cell their keys as BlockTest takes them.
     std::vector<const Box*> cell_boxes_;
     BoxColumns cell_columns_;
-    std::vector<uint64_t> row_hits_;  // a row's hits, a bit a column
+    std::vector<uint64_t> row_hits_;  // a row's hits, a bit a column (a word a row up to 64 boxes)
+    std::array<uint32_t, 64> lane_slot_{};  // k / lanes: the slot of a row's k-th next column
     Tile tile_;
     GridSweepStats stats_;
 };

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <random>
 
 #include "models/cell_memory/cell_table.h"
@@ -111,6 +112,105 @@ TEST(GridGeometry, ClassifiesInvertedAndSpanningBoxes) {
     EXPECT_EQ(BoxClass::kInverted, grid.classify(k, 8, range));
     keys(0.0f, -0.0f, 0.0f, 0.0f, 0.0f, 0.0f, k);  // -0 == +0: not inverted
     EXPECT_EQ(BoxClass::kCandidate, grid.classify(k, 8, range));
+}
+
+// A run of boxes in bulk (the fast engine's passes 1 and 2) gives the grid
+// the bounds add() gives it, and each box the keys, NaN flag, cells and class
+// that cell() and classify() give it alone.
+TEST(GridGeometry, ARunOfBoxesBinsAsEachBoxAlone) {
+    std::mt19937 rng(35);
+    std::uniform_int_distribution<uint32_t> any;
+    const float inf = std::numeric_limits<float>::infinity();
+    const uint32_t specials[] = {bits(0.0f), bits(-0.0f), bits(inf), bits(-inf), 0x7FC0'0000u, 0xFFC0'0001u,
+                                 0x0000'0001u, 0x8000'0001u, bits(1e38f), bits(-1e38f), bits(29.0f), 29u};
+    for (const NumberFormat format : {NumberFormat::float32(), NumberFormat::fixed(12), NumberFormat::fixed(32)}) {
+        for (const GridAxis axis : {GridAxis{-3.5f, 0.7f}, GridAxis{0.0f, 1e-30f}, GridAxis{-1e38f, 1e-37f},
+                                    GridAxis{0.0f, 0.0f}, GridAxis{5.0f, inf}, GridAxis{-8.0f, 2.25f},
+                                    GridAxis{0.0f, 1.0f}}) {
+            const GridGeometry grid(format, 29, {axis, axis, axis});
+            // 300 boxes: a full run and a partial one; small words near the
+            // grid, any words, and the special values (29: the far edge).
+            const uint32_t n = 300;
+            std::vector<uint32_t> columns[6];
+            for (uint32_t k = 0; k < n; ++k) {
+                for (auto& column : columns) {
+                    const uint32_t pick = any(rng) % 4;
+                    uint32_t word = pick == 0   ? specials[any(rng) % 12]
+                                    : pick == 1 ? any(rng)
+                                                : (format.is_float() ? bits(static_cast<float>(any(rng) % 4000) / 100.0f - 8.0f)
+                                                                     : any(rng) % 64);
+                    column.push_back(word & format.word_mask());
+                }
+            }
+            const uint32_t* words[6];
+            for (uint32_t c = 0; c < 6; ++c) words[c] = columns[c].data();
+            // The bounds: box by box, and a run at a time.
+            GridBounds alone_bounds(format), run_bounds(format);
+            for (uint32_t i = 0; i < n; ++i) {
+                uint32_t box_words[6], keys[6];
+                for (uint32_t c = 0; c < 6; ++c) {
+                    box_words[c] = columns[c][i];
+                    keys[c] = format.key(box_words[c]);
+                }
+                if (!excluded_box(format, box_words)) alone_bounds.add(keys);
+            }
+            for (uint32_t begin = 0; begin < n; begin += BoundRun::kBoxes) {
+                run_bounds.add_run(words, begin, std::min(BoundRun::kBoxes, n - begin));
+            }
+            const GridGeometry alone_fit = alone_bounds.geometry(GridConfig{}, 29);
+            const GridGeometry run_fit = run_bounds.geometry(GridConfig{}, 29);
+            for (uint32_t a = 0; a < 3; ++a) {
+                EXPECT_EQ(bits(alone_fit.axis(a).lo), bits(run_fit.axis(a).lo)) << format.name();
+                EXPECT_EQ(bits(alone_fit.axis(a).scale), bits(run_fit.axis(a).scale)) << format.name();
+            }
+            auto run = std::make_unique<BoundRun>();
+            for (uint32_t begin = 0; begin < n; begin += BoundRun::kBoxes) {
+                const uint32_t count = std::min(BoundRun::kBoxes, n - begin);
+                grid.fill_run(words, begin, count, *run);
+                for (uint32_t k = 0; k < count; ++k) {
+                    uint32_t keys[6], box_words[6];
+                    for (uint32_t c = 0; c < 6; ++c) {
+                        box_words[c] = columns[c][begin + k];
+                        keys[c] = format.key(box_words[c]);
+                        ASSERT_EQ(keys[c], run->key[c][k]);
+                        ASSERT_EQ(grid.cell(c % 3, keys[c]), run->cell[c][k]) << format.name() << " word " << box_words[c];
+                    }
+                    const bool excluded = excluded_box(format, box_words);
+                    ASSERT_EQ(excluded, run->excluded[k] != 0);
+                    if (excluded) continue;
+                    CellRange alone, in_run;
+                    const BoxClass verdict = grid.classify(keys, 8, alone);
+                    ASSERT_EQ(verdict, grid.classify_run(*run, k, 8, in_run));
+                    if (verdict != BoxClass::kInverted) {
+                        EXPECT_EQ(alone.lo, in_run.lo);
+                        EXPECT_EQ(alone.hi, in_run.hi);
+                    }
+                }
+            }
+        }
+    }
+}
+
+// A box with a NaN in a single word is left out of the bounds whole, in a
+// run as alone: here its x extent would otherwise widen the grid.
+TEST(GridBounds, ARunLeavesOutABoxWithANaNInAnyWord) {
+    for (uint32_t nan_at = 0; nan_at < 6; ++nan_at) {
+        uint32_t column[6][2];
+        for (uint32_t c = 0; c < 6; ++c) {
+            column[c][0] = bits(c < 3 ? 1.0f : 2.0f);
+            column[c][1] = bits(c < 3 ? 7.0f : 9.0f);
+        }
+        column[nan_at][1] = 0x7FC0'0000u;
+        const uint32_t* words[6];
+        for (uint32_t c = 0; c < 6; ++c) words[c] = column[c];
+        GridBounds bounds;
+        bounds.add_run(words, 0, 2);
+        const GridGeometry grid = bounds.geometry(GridConfig{}, 4);
+        for (uint32_t a = 0; a < 3; ++a) {
+            EXPECT_EQ(1.5f, grid.axis(a).lo) << "NaN in word " << nan_at;
+            EXPECT_EQ(0.0f, grid.axis(a).scale) << "NaN in word " << nan_at;
+        }
+    }
 }
 
 TEST(CellTable, CountsScansAndPlacesBoxesWholeOrNotAtAll) {
