@@ -17,6 +17,12 @@
 #   file's compile on code that runs once, while the models they call keep
 #   the build's -O3. Benchmarks are not GoogleTest programs and keep -O3.
 #
+# - In a sanitized build the test programs' own files are not instrumented
+#   (cdvp_without_sanitizers): the sanitizers are there for the code under
+#   test, which stays instrumented, and instrumenting the test bodies tripled
+#   their compile time (docs/testing.md, CI). A model's source compiled into
+#   a test program keeps the checks.
+#
 # Every file still includes what it uses: -DCDVP_PRECOMPILED_HEADERS=OFF
 # -DCDVP_TEST_UNITY_BATCH=1 builds each file on its own, to check that.
 option(CDVP_PRECOMPILED_HEADERS "Precompile <gtest/gtest.h> for the test programs" ON)
@@ -49,13 +55,24 @@ if(CDVP_PRECOMPILED_HEADERS)
 endif()
 
 cdvp_targets_below("${CMAKE_SOURCE_DIR}/tests" cdvp_test_targets)
-foreach(target IN LISTS cdvp_test_targets cdvp_test_headers)
+foreach(target IN LISTS cdvp_test_targets ITEMS cdvp_test_headers)
   get_target_property(type ${target} TYPE)
   get_target_property(libraries ${target} LINK_LIBRARIES)
   if(NOT (type STREQUAL "EXECUTABLE" AND libraries MATCHES "GTest::"))
     continue()
   endif()
   target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:${CDVP_TEST_RELEASE_OPT}>)
+  get_target_property(sources ${target} SOURCES)
+  get_target_property(source_dir ${target} SOURCE_DIR)
+  set(code_under_test "")
+  foreach(source IN LISTS sources)
+    get_filename_component(source "${source}" ABSOLUTE BASE_DIR "${source_dir}")
+    string(FIND "${source}" "${CMAKE_SOURCE_DIR}/tests/" at)
+    if(NOT at EQUAL 0 AND NOT source STREQUAL "${cdvp_test_headers_main}")
+      list(APPEND code_under_test "${source}")
+    endif()
+  endforeach()
+  cdvp_without_sanitizers(${target} INSTRUMENTED ${code_under_test})
   set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${CDVP_TEST_UNITY_BATCH})
   if(CDVP_PRECOMPILED_HEADERS AND NOT target STREQUAL "cdvp_test_headers")
     target_precompile_headers(${target} REUSE_FROM cdvp_test_headers)
