@@ -100,13 +100,13 @@ piece_design() {
             sources="$root/models/control_registers/rtl/board_control.v"
             params="" ;;
         grid_cell_function)
-            sources="$root/models/grid_binning/rtl/grid_float_add.v $root/models/grid_binning/rtl/grid_cell_function.v"
+            sources="$root/models/grid_binning/rtl/grid_float_add.v $root/models/grid_binning/rtl/grid_code_float.v $root/models/grid_binning/rtl/grid_cell_function.v"
             params=$(format_params "$format") ;;
         home_cell_filter)
             sources="$root/models/grid_schedule/rtl/home_cell_filter.v"
             params="-set LANES $((2 * m - 1))" ;;
         cell_loader)
-            sources="$root/models/grid_binning/rtl/grid_float_add.v $root/models/grid_binning/rtl/grid_cell_function.v"
+            sources="$root/models/grid_binning/rtl/grid_float_add.v $root/models/grid_binning/rtl/grid_code_float.v $root/models/grid_binning/rtl/grid_cell_function.v"
             sources="$sources $root/models/cell_memory/rtl/cell_loader.v"
             params="$(format_params "$format") -set AW $address_bits -set EAW 24 -set CAW 9 -set LAT 2" ;;
         cell_buffer)
