@@ -44,6 +44,7 @@ grid_sources=(
   "$root/models/grid_schedule/rtl/home_cell_filter.v"
   "$root/models/cell_memory/rtl/cell_loader.v"
   "$root/models/cell_memory/rtl/cell_buffer.v"
+  "$root/models/cell_memory/rtl/grid_cell_memory.v"
   "$root/models/grid_clocked_engine/rtl/grid_sequencer.v"
 )
 grid_configurations=(

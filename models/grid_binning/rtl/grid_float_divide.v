@@ -2,9 +2,9 @@
 // b (subnormals included): the setup's divider, which gives each axis its
 // scale, dims / extent, or 1 / cell_size (GridBounds::geometry). Overflow
 // gives +infinity (a subnormal extent), a quotient below the normal range a
-// subnormal. Both operands normalised, a 50-by-24-bit integer quotient with
-// a guard bit and the remainder as sticky, one rounding. Combinational: the
-// setup spends one slot on each axis.
+// subnormal. Both operands normalised, a 27-bit quotient of their mantissas
+// with a guard bit and the remainder as sticky, one rounding. Combinational:
+// the setup spends one slot on each axis.
 module grid_float_divide (
     input  wire [31:0] a,
     input  wire [31:0] b,
@@ -26,17 +26,25 @@ module grid_float_divide (
     wire [23:0] b_mant = b_raw << b_zeros;
     wire signed [10:0] a_exp = $signed({3'b0, a[30:23] == 0 ? 8'd1 : a[30:23]}) - $signed({6'b0, a_zeros});
     wire signed [10:0] b_exp = $signed({3'b0, b[30:23] == 0 ? 8'd1 : b[30:23]}) - $signed({6'b0, b_zeros});
-    // a_mant / b_mant lies in (1/2, 2): 26 or 27 quotient bits.
-    wire [49:0] dividend = {a_mant, 26'b0};
-    wire [49:0] divisor = {26'b0, b_mant};
-    wire [49:0] whole = dividend / divisor;
-    wire [49:0] rest = dividend % divisor;
+    // a_mant / b_mant lies in (1/2, 2): 26 or 27 quotient bits, by restoring
+    // division (27 subtractions of 25 bits), the remainder left for the sticky bit.
+    reg [26:0] whole;
+    reg [25:0] rest;
+    integer i;
+    always @* begin
+        rest = {2'b0, a_mant};
+        for (i = 26; i >= 0; i = i - 1) begin
+            whole[i] = rest >= {2'b0, b_mant};
+            if (whole[i]) rest = rest - {2'b0, b_mant};
+            if (i > 0) rest = rest << 1;
+        end
+    end
 
     reg [23:0] mant;          // the quotient's 24 leading bits
     reg guard, sticky;
     reg signed [10:0] exponent;
     reg [10:0] shift;         // right shift into the subnormal range
-    reg [49:0] wide;
+    reg [49:0] wide;  // the subnormal shift: 24 bits, guard and 25 spare
     reg [24:0] rounded;
     always @* begin
         wide = 0;

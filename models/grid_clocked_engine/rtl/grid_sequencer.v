@@ -18,10 +18,11 @@
 // as the cell loader reads it.
 //
 // The cell memory (count table, entry lists, busy-cell and large-box lists,
-// each box's kind) is held here as register files: a box's last count or
-// place slot reads and writes all its cells (up to SPAN) at once, where the
-// model's board spends max(1, k) SSRAM slots on them. The count table is
-// cleared at the setup's end, as the model's is.
+// each box's kind) is grid_cell_memory (models/cell_memory/rtl): register
+// files whose box ports read and write all of a box's cells (up to SPAN) in
+// its last count or place slot, where the model's board spends max(1, k)
+// SSRAM slots on them. The count table is cleared at the setup's end, as the
+// model's is.
 module grid_sequencer #(
     parameter FLOAT = 1,
     parameter WIDTH = 32,
@@ -154,20 +155,6 @@ module grid_sequencer #(
     reg [CAW:0] tile_count;
     reg [31:0] first_column, columns_left;
 
-    // ---- The cell memory --------------------------------------------------
-    reg [EAW:0] counts [0:(1<<CW)-1];        // a cell's count, then its next entry
-    reg [(1<<CW)-1:0] written;               // cells written this sweep (the others count 0)
-    reg [AW-1:0] entry_list [0:(1<<EAW)-1];
-    reg [AW-1:0] large_list [0:(1<<AW)-1];
-    reg [1:0] kinds [0:(1<<AW)-1];
-    reg [CW-1:0] busy_cell [0:(1<<CW)-1];
-    reg [EAW-1:0] busy_first [0:(1<<CW)-1];
-    reg [CAW:0] busy_count [0:(1<<CW)-1];
-
-    function automatic [EAW:0] count_of(input [CW-1:0] cell_address);
-        count_of = written[cell_address] ? counts[cell_address] : {(EAW+1){1'b0}};
-    endfunction
-    wire [EAW:0] scan_count = count_of(pass_slot[CW-1:0]);
     wire [31:0] n_objects = {{(31-AW){1'b0}}, objects};
     wire [31:0] cells_total = dims * dims * dims;
 
@@ -235,20 +222,22 @@ module grid_sequencer #(
     assign pop = bin_slot && box_left == 0;
     wire [49:0] data = pop ? next_box : held;
     wire [AW:0] this_box = pass_slot == FILL ? {(AW+1){1'b0}} : box;
-    wire [1:0] this_kind = pop ? kinds[this_box[AW-1:0]] : held_kind;
+    wire [1:0] place_kind;
+    wire [1:0] this_kind = pop ? place_kind : held_kind;
     wire [7:0] lo_x = data[7:0], lo_y = data[15:8], lo_z = data[23:16];
     wire [7:0] hi_x = data[31:24], hi_y = data[39:32], hi_z = data[47:40];
     wire [31:0] k = ({23'b0, hi_x - lo_x} + 32'd1) * ({23'b0, hi_y - lo_y} + 32'd1) * ({23'b0, hi_z - lo_z} + 32'd1);
     wire excluded = data[49], inverted = data[48];
     wire candidate = !excluded && !inverted && k <= {25'b0, max_span};
     wire placing = pass == PLACE && this_kind == BINNED;
-    wire [31:0] box_cells = pass == COUNT ? (candidate ? k : 32'd0) : (placing ? k : 32'd0);
-    wire [31:0] left = pop ? (box_cells > 32'd1 ? box_cells : 32'd1) : box_left;
+    wire [31:0] cells_taken = pass == COUNT ? (candidate ? k : 32'd0) : (placing ? k : 32'd0);
+    wire [31:0] left = pop ? (cells_taken > 32'd1 ? cells_taken : 32'd1) : box_left;
     wire commit = bin_slot && left == 32'd1;
-    // The box's cells, x fastest, and whether each has room.
-    reg [CW-1:0] cell_at [0:SPAN-1];
-    reg cell_on [0:SPAN-1];
-    reg room;
+    // The box's cells, x fastest, and whether it fits.
+    reg [SPAN*CW-1:0] box_cells;
+    reg [SPAN-1:0] box_on;
+    wire box_full;
+    reg entries_fit;
     reg [7:0] x, y, z;
     /* verilator lint_off UNUSEDSIGNAL */
     reg [31:0] linear;      // a cell number in 32 bits, of which the table takes CW
@@ -258,12 +247,11 @@ module grid_sequencer #(
         x = lo_x;
         y = lo_y;
         z = lo_z;
-        room = {{(32-EAW-1){1'b0}}, entry_capacity - entries_n} >= k;
+        entries_fit = {{(32-EAW-1){1'b0}}, entry_capacity - entries_n} >= k;
         for (j = 0; j < SPAN; j = j + 1) begin
-            cell_on[j] = j < k;
+            box_on[j] = j < k;
             linear = {24'b0, x} + {23'b0, dims} * ({24'b0, y} + {23'b0, dims} * {24'b0, z});
-            cell_at[j] = linear[CW-1:0];
-            if (cell_on[j] && count_of(cell_at[j]) >= {{(EAW-CAW){1'b0}}, capacity}) room = 0;
+            box_cells[j*CW +: CW] = linear[CW-1:0];
             if (x == hi_x) begin
                 x = lo_x;
                 if (y == hi_y) begin
@@ -277,6 +265,7 @@ module grid_sequencer #(
             end
         end
     end
+    wire room = entries_fit && !box_full;
     wire binned = candidate && room;
 
     // ---- Cells: this slot's busy cell ---------------------------------------
@@ -284,7 +273,9 @@ module grid_sequencer #(
     wire in_block_now = in_block || block_starts;
     wire [31:0] row_now = block_starts ? 32'd0 : row;
     wire [31:0] column_now = block_starts ? 32'd1 : column;
-    wire [31:0] cell_n = {{(31-CAW){1'b0}}, busy_count[block[CW-1:0]]};
+    wire [CW-1:0] sweep_cell;
+    wire [CAW:0] sweep_count;
+    wire [31:0] cell_n = {{(31-CAW){1'b0}}, sweep_count};
     wire [31:0] cell_rest = cell_n - column_now;
     wire [7:0] cell_lanes = cell_rest < LANES ? cell_rest[7:0] : LANES[7:0];
     wire [31:0] column_next = column_now + LANES;
@@ -295,7 +286,7 @@ module grid_sequencer #(
     wire [31:0] lead = {{(31-CAW){1'b0}}, tile_count} + 3 * LAT + F;
     wire streaming = pass == LARGE && pass_slot >= lead;
     wire box_begins = streaming && box_left == 0;
-    wire [1:0] stream_kind = kinds[box[AW-1:0]];
+    wire [1:0] stream_kind;
     wire [AW:0] after = rank + 1'b1;
     wire [AW:0] after_tile = after - tile_begin > {{(AW-CAW){1'b0}}, tile_count} ? {{(AW-CAW){1'b0}}, tile_count} : after - tile_begin;
     wire [31:0] first_now = !box_begins ? first_column
@@ -337,14 +328,16 @@ module grid_sequencer #(
     assign load_start = enable && (cells_load || tile_load);
     assign load_due = (pass == CELLS && first_load) || (pass == LARGE && pass_slot == 0);
     assign load_half = cells_load ? load_block[0] : 1'b0;
-    assign load_count = tile_load ? tile_count : busy_count[load_block];
+    wire [CAW:0] busy_load_count;
+    wire [EAW-1:0] busy_load_first;
+    assign load_count = tile_load ? tile_count : busy_load_count;
     reg [EAW-1:0] tile_first;
     always @* begin
         tile_first = 0;
         tile_first[AW:0] = tile_begin;
     end
-    assign load_first = tile_load ? tile_first : busy_first[load_block];
-    wire [AW-1:0] entry_now = pass == LARGE ? large_list[entry_addr[AW-1:0]] : entry_list[entry_addr];
+    assign load_first = tile_load ? tile_first : busy_load_first;
+    wire [AW-1:0] entry_now;
     generate
         if (LAT == 0) begin : g_entry_now
             assign entry_word = entry_now;
@@ -391,6 +384,26 @@ module grid_sequencer #(
     wire extent_usable = !extent[31] && extent[30:0] != 0 && extent[30:23] != 8'hFF;
     wire [8:0] candidate_dims = dims_search | (9'd1 << (4'd8 - setup_slot[3:0]));
     wire [35:0] candidate_boxes = 36'd16 * candidate_dims * candidate_dims * candidate_dims;
+
+    // ---- The cell memory ---------------------------------------------------------
+    wire count_commit = pass == COUNT && commit;
+    wire [EAW:0] scan_count;
+    grid_cell_memory #(.AW(AW), .CW(CW), .EAW(EAW), .CAW(CAW), .SPAN(SPAN)) memory (
+        .clk(clk), .enable(enable), .clear(pass == SETUP && setup_slot == GRID_SETUP - 1),
+        .box_cells(box_cells), .box_on(box_on), .capacity(capacity), .box_full(box_full),
+        .count_box(count_commit && binned), .place_box(pass == PLACE && commit && placing),
+        .box_index(this_box[AW-1:0]),
+        .scan_cell(pass_slot[CW-1:0]), .scan_count(scan_count), .scan_write(pass == SCAN), .scan_base(scanned),
+        .busy_write(pass == SCAN && scan_count >= 2), .busy_addr(busy_n[CW-1:0]),
+        .sweep_busy(block[CW-1:0]), .sweep_cell(sweep_cell), .sweep_count(sweep_count),
+        .load_busy(load_block), .load_first(busy_load_first), .load_count(busy_load_count),
+        .kind_write(count_commit), .kind_addr(this_box[AW-1:0]),
+        .kind_data(excluded ? EXCLUDED : binned ? BINNED : LARGE_BOX),
+        .place_kind_addr(this_box[AW-1:0]), .place_kind(place_kind),
+        .stream_kind_addr(box[AW-1:0]), .stream_kind(stream_kind),
+        .large_write(count_commit && !excluded && !binned), .large_addr(large_n[AW-1:0]),
+        .large_box(this_box[AW-1:0]),
+        .entry_from_large(pass == LARGE), .entry_addr(entry_addr), .entry_box(entry_now));
 
     // ---- The slots ------------------------------------------------------------
     always @(posedge clk) begin
@@ -460,7 +473,6 @@ module grid_sequencer #(
                         lo[axis] <= no_centre ? 32'b0 : least[axis];
                         scale[axis] <= no_centre || !(fixed_cells || extent_usable) ? 32'b0 : quotient;
                     end else if (setup_slot == GRID_SETUP - 1) begin
-                        written <= 0;
                         entries_n <= 0;
                         pass <= COUNT;
                         pass_slot <= 0;
@@ -479,22 +491,8 @@ module grid_sequencer #(
                         if (commit) begin
                             box <= this_box + 1'b1;
                             if (pass == COUNT) begin
-                                kinds[this_box[AW-1:0]] <= excluded ? EXCLUDED : binned ? BINNED : LARGE_BOX;
                                 if (excluded) excluded_boxes <= excluded_boxes + 1'b1;
                                 if (candidate && !room) overflow_boxes <= overflow_boxes + 1'b1;
-                                if (!excluded && !binned) large_list[large_n[AW-1:0]] <= this_box[AW-1:0];
-                                if (binned) begin
-                                    for (j = 0; j < SPAN; j = j + 1)
-                                        if (cell_on[j]) begin
-                                            counts[cell_at[j]] <= count_of(cell_at[j]) + 1'b1;
-                                            written[cell_at[j]] <= 1;
-                                        end
-                                end
-                            end else if (placing) begin
-                                for (j = 0; j < SPAN; j = j + 1) if (cell_on[j]) begin
-                                    entry_list[counts[cell_at[j]][EAW-1:0]] <= this_box[AW-1:0];
-                                    counts[cell_at[j]] <= counts[cell_at[j]] + 1'b1;
-                                end
                             end
                             if (this_box + 1'b1 == objects) begin
                                 pass_slot <= 0;
@@ -517,15 +515,8 @@ module grid_sequencer #(
                 end
                 SCAN: begin
                     pass_slot <= pass_slot + 1;
-                    counts[pass_slot[CW-1:0]] <= scanned;
-                    written[pass_slot[CW-1:0]] <= 1;
                     scanned <= scanned + scan_count;
-                    if (scan_count >= 2) begin
-                        busy_cell[busy_n[CW-1:0]] <= pass_slot[CW-1:0];
-                        busy_first[busy_n[CW-1:0]] <= scanned[EAW-1:0];
-                        busy_count[busy_n[CW-1:0]] <= scan_count[CAW:0];
-                        busy_n <= busy_n + 1'b1;
-                    end
+                    if (scan_count >= 2) busy_n <= busy_n + 1'b1;
                     if (pass_slot + 1 == cells_total) begin
                         pass <= PLACE;
                         pass_slot <= 0;
@@ -536,7 +527,7 @@ module grid_sequencer #(
                     first_load <= 0;
                     if (block_starts) begin
                         in_block <= 1;
-                        cell_number <= busy_cell[block[CW-1:0]];
+                        cell_number <= sweep_cell;
                     end
                     if (load_done) blocks_loaded <= blocks_loaded + 1'b1;
                     if (!in_block_now) begin
