@@ -44,12 +44,21 @@ module grid_cell_function #(
                 value <= word == 32'h8000_0000 ? 32'b0 : word;  // -0 is +0
             end
         end else begin : g_fixed
-            wire [31:0] code_value;
-            grid_code_float #(.WIDTH(WIDTH)) convert (.code(word), .value(code_value));
+            // The code rounded to binary32: its leading one at bit 31, then 24 bits kept.
+            reg [31:0] code;
+            always @* begin
+                code = 0;
+                code[WIDTH-1:0] = word;
+            end
+            wire [5:0] code_zeros = leading_zeros({16'b0, code}, 32);
+            wire [31:0] code_norm = code << code_zeros[4:0];
+            // Rounding up carries into the exponent field by itself.
+            wire [7:0] code_exp = 8'd158 - {2'b0, code_zeros};
+            wire round_up = code_norm[7] & ((|code_norm[6:0]) | code_norm[8]);
             always @(posedge clk) if (enable) begin
                 below <= 0;
                 above <= 0;
-                value <= code_value;
+                value <= code_norm[31] ? {1'b0, code_exp, code_norm[30:8]} + {31'b0, round_up} : 32'b0;
             end
         end
     endgenerate

@@ -1,7 +1,9 @@
 // A fixed-point board's stored bound as the binning stage sees it: the
 // unsigned WIDTH-bit code rounded to binary32, nearest even (exact up to 24
-// bits), as the C++ NumberFormat::fixed_value gives it. Combinational; the
-// cell-function unit and the bounds unit each hold one a bound.
+// bits), as the C++ NumberFormat::fixed_value gives it. Combinational: the
+// sequencer's bounds unit holds one a bound. The cell-function unit's first
+// stage computes the same inline (so that its stored synthesis row stays the
+// one Yosys gives for it: ABC's result shifts with how the design is written).
 module grid_code_float #(
     parameter WIDTH = 32
 ) (

@@ -156,7 +156,8 @@ module grid_sequencer #(
     reg [31:0] first_column, columns_left;
 
     wire [31:0] n_objects = {{(31-AW){1'b0}}, objects};
-    wire [31:0] cells_total = dims * dims * dims;
+    wire [24:0] cells_cube = dims * dims * dims;   // up to 256^3
+    wire [31:0] cells_total = {7'b0, cells_cube};
 
     // ---- Reading boxes: the bounds pass, and ahead of the count and place passes ----
     wire binning = pass == COUNT || pass == PLACE;
@@ -226,7 +227,10 @@ module grid_sequencer #(
     wire [1:0] this_kind = pop ? place_kind : held_kind;
     wire [7:0] lo_x = data[7:0], lo_y = data[15:8], lo_z = data[23:16];
     wire [7:0] hi_x = data[31:24], hi_y = data[39:32], hi_z = data[47:40];
-    wire [31:0] k = ({23'b0, hi_x - lo_x} + 32'd1) * ({23'b0, hi_y - lo_y} + 32'd1) * ({23'b0, hi_z - lo_z} + 32'd1);
+    wire [8:0] cells_x = {1'b0, hi_x - lo_x} + 9'd1, cells_y = {1'b0, hi_y - lo_y} + 9'd1;
+    wire [8:0] cells_z = {1'b0, hi_z - lo_z} + 9'd1;
+    wire [26:0] cells_xyz = cells_x * cells_y * cells_z;
+    wire [31:0] k = {5'b0, cells_xyz};
     wire excluded = data[49], inverted = data[48];
     wire candidate = !excluded && !inverted && k <= {25'b0, max_span};
     wire placing = pass == PLACE && this_kind == BINNED;
@@ -238,30 +242,37 @@ module grid_sequencer #(
     reg [SPAN-1:0] box_on;
     wire box_full;
     reg entries_fit;
-    reg [7:0] x, y, z;
+    // The first cell's number, then steps: +1 along x, to the next row
+    // (+dims less the row's span), to the next plane (+dims^2 less the rows').
+    wire [7:0] span_x = hi_x - lo_x, span_y = hi_y - lo_y;
+    wire [16:0] plane = dims * dims;
+    wire [31:0] first_cell = {24'b0, lo_x} + dims * ({24'b0, lo_y} + dims * {24'b0, lo_z});
+    wire [31:0] row_step = {23'b0, dims} - {24'b0, span_x};
+    wire [31:0] plane_step = {15'b0, plane} - dims * {24'b0, span_y} - {24'b0, span_x};
+    reg [7:0] x, y;
     /* verilator lint_off UNUSEDSIGNAL */
-    reg [31:0] linear;      // a cell number in 32 bits, of which the table takes CW
+    reg [31:0] cell_address;  // a cell number in 32 bits, of which the table takes CW
     /* verilator lint_on UNUSEDSIGNAL */
     integer j;
     always @* begin
         x = lo_x;
         y = lo_y;
-        z = lo_z;
+        cell_address = first_cell;
         entries_fit = {{(32-EAW-1){1'b0}}, entry_capacity - entries_n} >= k;
         for (j = 0; j < SPAN; j = j + 1) begin
             box_on[j] = j < k;
-            linear = {24'b0, x} + {23'b0, dims} * ({24'b0, y} + {23'b0, dims} * {24'b0, z});
-            box_cells[j*CW +: CW] = linear[CW-1:0];
-            if (x == hi_x) begin
-                x = lo_x;
-                if (y == hi_y) begin
-                    y = lo_y;
-                    z = z + 8'd1;
-                end else begin
-                    y = y + 8'd1;
-                end
-            end else begin
+            box_cells[j*CW +: CW] = cell_address[CW-1:0];
+            if (x != hi_x) begin
                 x = x + 8'd1;
+                cell_address = cell_address + 32'd1;
+            end else if (y != hi_y) begin
+                x = lo_x;
+                y = y + 8'd1;
+                cell_address = cell_address + row_step;
+            end else begin
+                x = lo_x;
+                y = lo_y;
+                cell_address = cell_address + plane_step;
             end
         end
     end
