@@ -200,6 +200,7 @@ all_rows() {
         done
         echo "$family grid_cell_function float32 -"
         for k in 8 16 24 32; do echo "$family grid_cell_function fixed$k -"; done  # fixedK between: interpolated
+        echo "$family grid_sequencer float32 8"  # minutes: its two adders, divider and pass logic flattened
     done
 }
 
