@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <random>
 #include <string>
@@ -117,6 +118,7 @@ bool same(const Probes& a, const Probes& b) {
 // What the sweeps met, so that the test knows it reached each path.
 struct Seen {
     uint64_t overflow_boxes = 0, excluded_boxes = 0, busy_cells = 0, pauses = 0, stalls = 0;
+    uint64_t subnormal_scales = 0, infinite_scales = 0;  // from extents near FLT_MAX and subnormal ones
     uint32_t tiles = 0;
 } seen;
 
@@ -141,6 +143,9 @@ void expect_grid(const BoardConfig& config, const testing::WordScene& scene, con
     }
     const GridGeometry grid = bounds.geometry(config.grid, config.grid.dims_for(scene.size()));
     for (uint32_t a = 0; a < 3; ++a) {
+        const float scale = grid.axis(a).scale;
+        seen.subnormal_scales += scale > 0.0f && scale < std::numeric_limits<float>::min();
+        seen.infinite_scales += std::isinf(scale);
         EXPECT_EQ(ComparisonUnit::as_bits(rtl[a].lo), ComparisonUnit::as_bits(grid.axis(a).lo)) << "axis " << a << " origin";
         EXPECT_EQ(ComparisonUnit::as_bits(rtl[a].scale), ComparisonUnit::as_bits(grid.axis(a).scale))
             << "axis " << a << " scale " << rtl[a].scale << ", model " << grid.axis(a).scale;
@@ -292,9 +297,9 @@ TEST_F(GridSequencerRtl, Float32ScenesEdgeForEdgeWithTheClockedEngine) {
     auto special = testing::random_scene(200, 8.0f, 2.0f, rng);
     testing::sprinkle_special_values(special, 0.05, rng);  // NaN (excluded), infinities, inverted boxes
     scenes.push_back(special);
-    // Extents that overflow float32 (scale 0), that are subnormal (scale
-    // infinite) and grids of every magnitude between: the setup's divider.
-    for (float factor : {1e37f, 1e-39f, 1e-44f, 1e30f, 1e-30f}) {
+    // Extents near FLT_MAX (subnormal scales), subnormal extents (infinite
+    // scales) and grids of every magnitude between: the setup's divider.
+    for (float factor : {4e37f, 1e-39f, 1e-44f, 1e30f, 1e-30f}) {
         auto scaled = testing::random_scene(60, 10.0f, 3.0f, rng);
         for (auto& words : scaled.words) {
             for (uint32_t& w : words) w = ComparisonUnit::as_bits((ComparisonUnit::as_float(w) - 5.0f) * factor);
@@ -315,6 +320,8 @@ TEST_F(GridSequencerRtl, Float32ScenesEdgeForEdgeWithTheClockedEngine) {
     EXPECT_GT(seen.tiles, 10u);             // many large tiles in one sweep
     EXPECT_GT(seen.pauses, 100u);           // a full pair buffer
     EXPECT_GT(seen.stalls, 10000u);         // back-pressure from the pair FIFO
+    EXPECT_GT(seen.subnormal_scales, 0u);   // the divider's quotient below the normal range
+    EXPECT_GT(seen.infinite_scales, 0u);    // and beyond FLT_MAX (a subnormal extent)
     std::printf("%llu sweeps, %llu edges compared\n", static_cast<unsigned long long>(sweeps),
                 static_cast<unsigned long long>(edges));
 }
