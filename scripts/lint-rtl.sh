@@ -4,7 +4,8 @@
 # models/board/rtl/verilator.vlt) in several configurations: block RAM and
 # tiled, float32 and fixed point, combinational and piped compare lanes; then
 # the grid board's blocks (cell function, one-cell filter, cell loader and
-# buffer) in float32 and fixed point, SSRAM latencies 0 and 8, one lane and many.
+# buffer, binning sequencer) in float32 and fixed point, SSRAM latencies 0
+# and 8, one lane and many.
 # Exit status 0 when every configuration is clean.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -37,10 +38,14 @@ done
 grid_sources=(
   "$root/models/board/rtl/verilator.vlt"
   "$root/models/grid_binning/rtl/grid_float_add.v"
+  "$root/models/grid_binning/rtl/grid_code_float.v"
+  "$root/models/grid_binning/rtl/grid_float_divide.v"
   "$root/models/grid_binning/rtl/grid_cell_function.v"
   "$root/models/grid_schedule/rtl/home_cell_filter.v"
   "$root/models/cell_memory/rtl/cell_loader.v"
   "$root/models/cell_memory/rtl/cell_buffer.v"
+  "$root/models/cell_memory/rtl/grid_cell_memory.v"
+  "$root/models/grid_clocked_engine/rtl/grid_sequencer.v"
 )
 grid_configurations=(
   "grid_cell_function"
@@ -53,6 +58,9 @@ grid_configurations=(
   "cell_loader -GLAT=8 -GAW=20 -GEAW=24 -GCAW=16"
   "cell_buffer -GM=1"
   "cell_buffer -GM=8 -GEW=120 -GCAW=10"
+  "grid_sequencer"
+  "grid_sequencer -GFLOAT=0 -GWIDTH=16 -GLAT=0 -GM=1 -GSPAN=1 -GCW=6 -GAW=10 -GEAW=12 -GCAW=4"
+  "grid_sequencer -GLAT=8 -GM=32 -GSPAN=64 -GAW=18 -GEAW=22 -GCAW=16 -GCW=15"
 )
 for g in "${grid_configurations[@]}"; do
   top=${g%% *}

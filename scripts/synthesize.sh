@@ -10,7 +10,9 @@
 #                                          board's blocks: grid_cell_function FORMAT -,
 #                                          home_cell_filter - M (in the table), and
 #                                          cell_loader FORMAT -, cell_buffer FORMAT M (not
-#                                          in it: docs/grid_board.md compares them with the model)
+#                                          in it: docs/grid_board.md compares them with the model),
+#                                          grid_sequencer FORMAT M (its logic, without the
+#                                          cell-function units and the cell memory)
 #   scripts/synthesize.sh --check FAMILY PIECE FORMAT M
 #                                          re-synthesises one row and compares it with the stored one
 #   scripts/synthesize.sh --board FAMILY M [FORMAT]
@@ -80,6 +82,7 @@ format_params() {
 # The timing table (scripts/timing.sh) synthesises the same pieces.
 piece_design() {
     local piece=$2 format=$3 m=$4 latency=${5:--}
+    black_boxes=""  # Verilog files read as black boxes (their ports only)
     case $piece in
         compare_lane)
             sources="$root/models/comparison_unit/rtl/float_le.v $root/models/comparison_unit/rtl/compare_lane.v"
@@ -115,6 +118,13 @@ piece_design() {
             [[ $format == float32 ]] || width=${format#fixed}
             sources="$root/models/cell_memory/rtl/cell_buffer.v"
             params="-set M $m -set EW $((24 + address_bits + 6 * width)) -set CAW 9" ;;
+        grid_sequencer)
+            # Its logic alone: the cell-function units are costed as grid_cell_function and
+            # the cell memory is the board's SSRAM (docs/grid_board.md), so both are black boxes.
+            sources="$root/models/grid_binning/rtl/grid_float_add.v $root/models/grid_binning/rtl/grid_code_float.v"
+            sources="$sources $root/models/grid_binning/rtl/grid_float_divide.v $root/models/grid_clocked_engine/rtl/grid_sequencer.v"
+            black_boxes="$root/models/grid_binning/rtl/grid_cell_function.v $root/models/cell_memory/rtl/grid_cell_memory.v"
+            params="$(format_params "$format") -set M $m -set AW $address_bits -set EAW 24 -set CW 15 -set CAW 9 -set SPAN 8 -set LAT 2" ;;
         tile_walker)
             sources="$root/models/board/rtl/tile_walker.v"
             params="-set M $m -set AW $address_bits -set T $tile_boxes -set TAW $tile_bits -set LAT 2" ;;
@@ -124,19 +134,22 @@ piece_design() {
 
 # One row: FAMILY PIECE FORMAT M ("-" where a parameter does not apply).
 row() {
-    local family=$1 piece=$2 format=$3 m=$4 sources params
+    local family=$1 piece=$2 format=$3 m=$4 sources params black_boxes
     piece_design "$family" "$piece" "$format" "$m"
     local log
     log=$(mktemp)
     trap 'rm -f "$log"' RETURN
     local chparam=""
     [[ -n $params ]] && chparam="chparam $params $piece;"
-    yosys -q -p "read_verilog -sv $sources; $chparam synth_xilinx -family $family -top $piece -flatten -noiopad; tee -q -o $log stat" \
+    local read_black_boxes=""
+    [[ -n $black_boxes ]] && read_black_boxes="read_verilog -sv -lib $black_boxes;"
+    yosys -q -p "read_verilog -sv $sources; $read_black_boxes $chparam synth_xilinx -family $family -top $piece -flatten -noiopad; tee -q -o $log stat" \
         >/dev/null 2>&1 || die "yosys failed on $piece ($family, $format, m=$m)"
     local depth=-
     [[ $piece == pair_collector ]] && depth=$fifo_depth
     local bits=-
-    [[ $piece == address_generator || $piece == pair_collector || $piece == cell_loader || $piece == cell_buffer ]] && bits=$address_bits
+    [[ $piece == address_generator || $piece == pair_collector || $piece == cell_loader || $piece == cell_buffer ||
+       $piece == grid_sequencer ]] && bits=$address_bits
     echo "$family,$piece,$format,$m,$bits,$depth,$(count_cells "$family" <"$log")"
 }
 
@@ -187,6 +200,7 @@ all_rows() {
         done
         echo "$family grid_cell_function float32 -"
         for k in 8 16 24 32; do echo "$family grid_cell_function fixed$k -"; done  # fixedK between: interpolated
+        echo "$family grid_sequencer float32 8"  # minutes: its two adders, divider and pass logic flattened
     done
 }
 

@@ -75,8 +75,9 @@ bool RtlVariant::serves(const BoardConfig& config, uint32_t boxes) const {
 
 std::string rtl_unsupported(const BoardConfig& config) {
     if (config.grid_board()) {
-        return "the grid board (board.algorithm grid) has no RTL top: only its cell function, one-cell filter, cell "
-               "loader and cell buffer are RTL, tested block by block; run it at the cycle, fast or analytic level";
+        return "the grid board (board.algorithm grid) has no RTL top: only its binning sequencer, cell function, "
+               "one-cell filter, cell loader and cell buffer are RTL, tested block by block; run it at the cycle, fast "
+               "or analytic level";
     }
     if (config.box_banks != 1) {
         return "the board RTL has one box bank (pipelined frames run on the cycle or fast engine); box_banks is " +

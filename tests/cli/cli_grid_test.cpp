@@ -90,8 +90,8 @@ TEST_F(CliGrid, ScenesPastTheCellBufferOrTheSsramAreRefused) {
                    "cdvp run: -c board.grid.dims: expected an integer from 0 to 256, got '300'");
     expect_refusal(run(spheres(100, 1) + "-c board.algorithm=grid --fidelity rtl"),
                    "cdvp run: --fidelity rtl at 100 objects (--objects): fidelity rtl: the grid board (board.algorithm "
-                   "grid) has no RTL top: only its cell function, one-cell filter, cell loader and cell buffer are RTL, "
-                   "tested block by block; run it at the cycle, fast or analytic level");
+                   "grid) has no RTL top: only its binning sequencer, cell function, one-cell filter, cell loader and "
+                   "cell buffer are RTL, tested block by block; run it at the cycle, fast or analytic level");
     EXPECT_EQ(files(), std::vector<std::string>{}) << "a refused run leaves no output";
 }
 
