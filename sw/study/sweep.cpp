@@ -125,7 +125,16 @@ void check_out_dir(const std::string& out, const std::optional<Manifest>& existi
         }
         return;
     }
-    const std::vector<std::string> names = directory_contents(out);
+    // What a sweep killed before its manifest was written leaves (its empty
+    // directories, a temporary) is no other sweep's: it starts over there.
+    std::vector<std::string> names;
+    for (const std::string& name : directory_contents(out)) {
+        const fs::path path = fs::path(out) / name;
+        std::error_code error;
+        const bool own_empty_directory = (path == fs::path(points_dir(out)) || path == fs::path(software_timings_dir(out))) &&
+                                         fs::is_directory(path, error) && fs::is_empty(path, error);
+        if (!own_empty_directory && name.find(".part-") == std::string::npos) names.push_back(name);
+    }
     if (!names.empty()) {
         throw InputError("--out: " + dir + " holds " + excerpt(names.front()) +
                          (names.size() > 1 ? " and " + std::to_string(names.size() - 1) + " more" : std::string()) +

@@ -103,6 +103,24 @@ TEST_F(CliSweepState, AResumeRefusesRowsItDidNotWriteOrRerunsThemWhenAsked) {
     EXPECT_EQ(untimed("res"), fresh) << "the points run again, the table is whole and right";
 }
 
+// A sweep killed after making its directories but before its manifest was
+// committed (a Dask task's, say) left only its own empty directories and a
+// temporary: the same command starts there; one point's report there is not
+// its own, and is refused.
+TEST_F(CliSweepState, ASweepKilledBeforeItsManifestStartsOverWhereItsEmptyDirectoriesAre) {
+    fs::create_directories(dir_ / "res" / "points");
+    fs::create_directories(dir_ / "res" / "software");
+    write("res/sweep.json.part-4242", "{\"format");
+    const Result r = run(kStateSweep + "--out res -q");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir_ / "res" / "sweep.json"));
+    EXPECT_FALSE(fs::exists(dir_ / "res" / "sweep.json.part-4242")) << "the temporary is removed";
+
+    fs::create_directories(dir_ / "other" / "points");
+    write("other/points/p0.json", "{}");
+    expect_refusal(run(kStateSweep + "--out other -q"), "cdvp sweep: --out: other holds points but no sweep.json");
+}
+
 TEST_F(CliSweepState, ADamagedRowAManifestGoneOrDamagedAndAChangedInputAreRefusedNamingTheFile) {
     ASSERT_EQ(run(kStateSweep + "--out res -q").status, 0);
     const std::string manifest = slurp(dir_ / "res" / "sweep.json");
@@ -111,7 +129,7 @@ TEST_F(CliSweepState, ADamagedRowAManifestGoneOrDamagedAndAChangedInputAreRefuse
     fs::remove(dir_ / "res" / "sweep.json");
     // Another grid would adopt the old rows: refused.
     expect_refusal(run("sweep --board adm-xrc-ii --set m=4,8 --set objects=20,40 --out res -q"),
-                   "cdvp sweep: --out: res holds fit.csv and 6 more but no sweep.json");
+                   "cdvp sweep: --out: res holds fit.csv and 5 more but no sweep.json");
     write("res/sweep.json", manifest);
     Rows table = rows("res");
     table[1].pop_back();
