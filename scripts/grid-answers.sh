@@ -10,9 +10,9 @@
 #
 #   OUT/software/  board.algorithm x m x N = 100 .. 10^5 against Bullet's sweep and prune (sap) and
 #                  dynamic tree (dbvt): time-BOARD.png, speedup-BOARD-BASELINE.png, crossover.csv
-#   OUT/million/   the same boards at N = 10^6, without software: Bullet's sap inserts its first
-#                  frame's proxies in O(N^2), and both it and dbvt remove a proxy's pairs from their
-#                  pair cache in O(pairs) each, so a world of 10^6 proxies is not torn down in hours
+#   OUT/million/   the same boards at N = 10^6, without software: Bullet's sap inserts a world's
+#                  proxies in O(N^2) (about 3 CPU minutes at 10^5 boxes, so hours at 10^6), and a
+#                  frame of either takes seconds there; SOFTWARE_OBJECTS=1000000 times them anyway
 #
 # The analytic level times every point (exact where its bound holds; docs/analytic.md), in the
 # sweep's own process. Points that do not fit a device (the ADM-XRC-II's SSRAM at 10^6 boxes,
