@@ -78,3 +78,14 @@ foreach(target IN LISTS cdvp_test_targets ITEMS cdvp_test_headers)
     target_precompile_headers(${target} REUSE_FROM cdvp_test_headers)
   endif()
 endforeach()
+
+# A sanitized build runs no benchmark (they are timed in Release builds):
+# there they are not part of `all`, and `cmake --build ... --target NAME`
+# still builds one.
+if(cdvp_sanitizers)
+  foreach(target IN LISTS cdvp_test_targets)
+    if(target MATCHES "_bench$")
+      set_property(TARGET ${target} PROPERTY EXCLUDE_FROM_ALL ON)
+    endif()
+  endforeach()
+endif()
