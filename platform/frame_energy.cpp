@@ -42,14 +42,13 @@ FrameActivity frame_activity(const FramePhases& p, uint32_t local_bus_width_bits
 BoardEnergy::BoardEnergy(const Settings& settings, const BoardResources& fit)
     : power_(power_coefficients(settings)),
       fit_(fit),
-      used_(fit.total()),
       wait_(settings.driver.wait) {
     if (settings.bus_type == BusType::kPci) local_bus_width_bits_ = settings.pci.local_bus.width_bits;
     if (settings.bus_type == BusType::kPcie) local_bus_width_bits_ = settings.pcie.local_bus.width_bits;
 }
 
 FrameEnergy BoardEnergy::frame(const FramePhases& phases) const {
-    return board_frame_energy(power_, used_, frame_activity(phases, local_bus_width_bits_, wait_, fit_));
+    return board_frame_energy(power_, fit_.total(), frame_activity(phases, local_bus_width_bits_, wait_, fit_));
 }
 
 }  // namespace cdvp

@@ -37,7 +37,6 @@ public:
 private:
     PowerCoefficients power_;
     BoardResources fit_;
-    Resources used_;
     uint32_t local_bus_width_bits_ = 32;
     WaitMode wait_ = WaitMode::kIrq;
 };

@@ -98,12 +98,7 @@ void GridBounds::add_run(const uint32_t* const* words, uint32_t begin, uint32_t 
     // In box order, as add() takes them.
     for (uint32_t k = 0; k < n; ++k) {
         if (excluded[k] != 0) continue;
-        for (uint32_t a = 0; a < 3; ++a) {
-            const float centre = centres[a][k];
-            if (!(centre - centre == 0.0f)) continue;  // an infinity or NaN: no bound of the grid
-            least_[a] = std::min(least_[a], centre);
-            greatest_[a] = std::max(greatest_[a], centre);
-        }
+        for (uint32_t a = 0; a < 3; ++a) take(a, centres[a][k]);
     }
 }
 

@@ -69,18 +69,8 @@ public:
     // class and, for candidates, its cells (max_span bounds the cells).
     // Inline: the fast engine classifies every box of a frame.
     BoxClass classify(const uint32_t (&keys)[6], uint32_t max_span, CellRange& range) const {
-        for (uint32_t a = 0; a < 3; ++a) {
-            if (keys[a] > keys[a + 3]) return BoxClass::kInverted;
-        }
-        uint64_t cells = 1;
-        for (uint32_t a = 0; a < 3; ++a) {
-            const uint32_t lo = cell(a, keys[a]);
-            const uint32_t hi = cell(a, keys[a + 3]);
-            range.lo[a] = static_cast<uint8_t>(lo);
-            range.hi[a] = static_cast<uint8_t>(hi);
-            cells *= hi - lo + 1;
-        }
-        return cells > max_span ? BoxClass::kSpanning : BoxClass::kCandidate;
+        return classify_by([&](uint32_t c) { return keys[c]; }, [&](uint32_t c) { return cell(c % 3, keys[c]); },
+                           max_span, range);
     }
 
     // Boxes begin .. begin + n - 1 (n <= BoundRun::kBoxes) from their words
@@ -88,17 +78,8 @@ public:
     void fill_run(const uint32_t* const* words, uint32_t begin, uint32_t n, BoundRun& run) const;
     // classify() of box k of a run whose words the format does not exclude.
     BoxClass classify_run(const BoundRun& run, uint32_t k, uint32_t max_span, CellRange& range) const {
-        for (uint32_t a = 0; a < 3; ++a) {
-            if (run.key[a][k] > run.key[a + 3][k]) return BoxClass::kInverted;
-        }
-        uint64_t cells = 1;
-        for (uint32_t a = 0; a < 3; ++a) {
-            const uint32_t lo = run.cell[a][k], hi = run.cell[a + 3][k];
-            range.lo[a] = static_cast<uint8_t>(lo);
-            range.hi[a] = static_cast<uint8_t>(hi);
-            cells *= hi - lo + 1;
-        }
-        return cells > max_span ? BoxClass::kSpanning : BoxClass::kCandidate;
+        return classify_by([&](uint32_t c) { return run.key[c][k]; }, [&](uint32_t c) { return run.cell[c][k]; },
+                           max_span, range);
     }
 
     // The float32 arithmetic of the hardware's cell-function unit.
@@ -111,6 +92,22 @@ public:
     }
 
 private:
+    // classify() from each bound's key and cell (c in Coordinate order).
+    template <class KeyOf, class CellOf>
+    static BoxClass classify_by(KeyOf key, CellOf cell_of, uint32_t max_span, CellRange& range) {
+        for (uint32_t a = 0; a < 3; ++a) {
+            if (key(a) > key(a + 3)) return BoxClass::kInverted;
+        }
+        uint64_t cells = 1;
+        for (uint32_t a = 0; a < 3; ++a) {
+            const uint32_t lo = cell_of(a), hi = cell_of(a + 3);
+            range.lo[a] = static_cast<uint8_t>(lo);
+            range.hi[a] = static_cast<uint8_t>(hi);
+            cells *= hi - lo + 1;
+        }
+        return cells > max_span ? BoxClass::kSpanning : BoxClass::kCandidate;
+    }
+
     NumberFormat format_;
     uint32_t dims_ = 1;
     std::array<GridAxis, 3> axes_{};
@@ -139,12 +136,7 @@ public:
     explicit GridBounds(NumberFormat format = NumberFormat::float32()) : format_(format) {}
     // A box's keys (Coordinate order); the caller leaves out excluded boxes.
     void add(const uint32_t (&keys)[6]) {
-        for (uint32_t a = 0; a < 3; ++a) {
-            const float centre = centre_of(format_.approximate(keys[a]), format_.approximate(keys[a + 3]));
-            if (!(centre - centre == 0.0f)) continue;  // an infinity or NaN: no bound of the grid
-            least_[a] = std::min(least_[a], centre);
-            greatest_[a] = std::max(greatest_[a], centre);
-        }
+        for (uint32_t a = 0; a < 3; ++a) take(a, centre_of(format_.approximate(keys[a]), format_.approximate(keys[a + 3])));
     }
     // add() of boxes begin .. begin + n - 1 (n <= BoundRun::kBoxes) from
     // their words (words[c][i]: word c of box i), excluded ones left out:
@@ -157,6 +149,12 @@ public:
     static float centre_of(float lo, float hi) { return (lo + hi) * 0.5f; }
 
 private:
+    // A box's centre on axis a into the least and greatest.
+    void take(uint32_t a, float centre) {
+        if (!(centre - centre == 0.0f)) return;  // an infinity or NaN: no bound of the grid
+        least_[a] = std::min(least_[a], centre);
+        greatest_[a] = std::max(greatest_[a], centre);
+    }
     NumberFormat format_;
     std::array<float, 3> least_{kNone, kNone, kNone};
     std::array<float, 3> greatest_{-kNone, -kNone, -kNone};
