@@ -22,12 +22,6 @@ AnalyticBoard analytic_board(const BoardConfig& board) {
     return analytic;
 }
 
-namespace {
-std::shared_ptr<const BusTiming> bus_or_ideal(const std::shared_ptr<const BusTiming>& bus) {
-    return bus ? bus : std::make_shared<IdealBusTiming>();
-}
-}  // namespace
-
 AnalyticPlatform::AnalyticPlatform(const PlatformConfig& config, uint32_t capacity)
     : capacity_(capacity),
       stall_free_pairs_(config.board.collector.fifo_depth > config.board.lanes()

@@ -12,9 +12,6 @@ namespace cdvp {
 using namespace sc_core;
 
 namespace {
-std::shared_ptr<const BusTiming> bus_or_ideal(const std::shared_ptr<const BusTiming>& bus) {
-    return bus ? bus : std::make_shared<IdealBusTiming>();
-}
 // The run's pair budget bounds the driver's read-back.
 DriverConfig driver_for(const PlatformConfig& config) {
     DriverConfig driver = config.driver;

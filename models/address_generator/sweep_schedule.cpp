@@ -4,11 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace cdvp {
+#include "models/common/integer_math.h"
 
-namespace {
-uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
-}  // namespace
+namespace cdvp {
 
 uint64_t SweepSchedule::triangle_slots(uint64_t n, uint32_t lanes) {
     // Closed form of sum_{r=1}^{n-1} ceil(r / w): full groups of w rows

@@ -86,6 +86,11 @@ inline std::string excerpt(const std::string& text) {
     return printable(text.substr(0, cut)) + "... (" + std::to_string(text.size()) + " bytes)";
 }
 
+// Whether a name ends with a suffix (a file's extension, a column's kind).
+inline bool ends_with(const std::string& text, const std::string& end) {
+    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
 // Levenshtein distance: how far a misspelt name is from a valid one, so a
 // refusal can suggest the nearest.
 inline std::size_t edit_distance(const std::string& a, const std::string& b) {

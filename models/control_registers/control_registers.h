@@ -25,6 +25,9 @@ constexpr uint64_t kPairBufferSize = 0x0100'0000;
 constexpr uint64_t kDeltaStream = 0x0900'0000;
 constexpr uint64_t kDeltaStreamSize = 0x0100'0000;
 constexpr uint32_t kDeltaRecordWords = 7;
+constexpr uint64_t kDeltaRecordBytes = 4 * kDeltaRecordWords;
+// The bus address of coordinate memory c's window.
+constexpr uint32_t coordinate_window(uint32_t c) { return static_cast<uint32_t>(kCoordinateBase + c * kWindowSize); }
 // The address map limits a board to 4M boxes and 2M buffered pairs.
 constexpr uint32_t kMaxObjects = kWindowSize / 4;
 constexpr uint32_t kMaxBufferedPairs = kPairBufferSize / 8;

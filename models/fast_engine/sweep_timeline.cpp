@@ -6,12 +6,12 @@
 
 #include "models/address_generator/address_generator.h"
 #include "models/block_ram/block_ram.h"
+#include "models/common/integer_math.h"
 
 namespace cdvp {
 
 namespace {
 constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
-uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
 // AddressGenerator::sweep_cycles with one 32-bit division (boxes < 2^32):
 // this runs once per hit slot.
 uint64_t sweep_cycles32(uint32_t objects, uint32_t lanes) {

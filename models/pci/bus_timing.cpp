@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "models/common/integer_math.h"
+
 namespace cdvp {
 
 namespace {
@@ -16,7 +18,6 @@ void require(bool ok, const std::string& what, double got) {
         throw std::invalid_argument(s.str());
     }
 }
-uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
 }  // namespace
 
 void PciConfig::validate() const {

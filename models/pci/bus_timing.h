@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace cdvp {
@@ -38,6 +39,11 @@ public:
     double interrupt_ns() const override { return 0.0; }
     uint64_t dma_transaction_bytes(Direction) const override { return 4096; }
 };
+
+// The bus a platform is given, or the ideal bus when it is given none.
+inline std::shared_ptr<const BusTiming> bus_or_ideal(std::shared_ptr<const BusTiming> bus) {
+    return bus ? std::move(bus) : std::make_shared<IdealBusTiming>();
+}
 
 // The board's local bus between the PCI bridge and the FPGA: DMA cannot move
 // data faster than it.

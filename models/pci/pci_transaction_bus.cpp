@@ -7,12 +7,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "models/common/integer_math.h"
+
 namespace cdvp {
 
 namespace {
 
 constexpr uint64_t kNever = std::numeric_limits<uint64_t>::max();
-uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
 
 // A bus master as the arbiter sees it.
 struct Master {

@@ -24,7 +24,7 @@ Resources operator*(double times, const Resources& r) {
 
 namespace {
 
-constexpr const char* kHeader =
+constexpr const char* kSynthesisTableHeader =
     "family,piece,format,m,address_bits,fifo_depth,luts,lutram_luts,flip_flops,carry_cells,block_rams_18k,"
     "multipliers";
 Resources lerp(const Resources& a, const Resources& b, double t) { return (1 - t) * a + t * b; }
@@ -33,7 +33,7 @@ Resources lerp(const Resources& a, const Resources& b, double t) { return (1 - t
 
 SynthesisTable SynthesisTable::parse(const std::string& csv, const std::string& origin) {
     SynthesisTable table;
-    read_table(csv, origin, kHeader, [&](const std::vector<std::string>& f, const std::string& where) {
+    read_table(csv, origin, kSynthesisTableHeader, [&](const std::vector<std::string>& f, const std::string& where) {
         Row row;
         static_cast<TableRowKey&>(row) = table_row_key(f, where);
         row.resources.luts = table_count(f[6], where, "luts") + table_count(f[7], where, "lutram_luts");

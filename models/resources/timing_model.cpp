@@ -11,7 +11,7 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kHeader =
+constexpr const char* kTimingTableHeader =
     "family,piece,format,m,latency,speed_grade,path_ns,luts,carry_cells,wide_muxes,from,to";
 
 // A path delay in ns: finite and positive.
@@ -38,7 +38,7 @@ std::string grade_text(uint32_t speed_grade) { return "speed grade -" + std::to_
 
 TimingTable TimingTable::parse(const std::string& csv, const std::string& origin) {
     TimingTable table;
-    read_table(csv, origin, kHeader, [&](const std::vector<std::string>& f, const std::string& where) {
+    read_table(csv, origin, kTimingTableHeader, [&](const std::vector<std::string>& f, const std::string& where) {
         Row row;
         static_cast<TableRowKey&>(row) = table_row_key(f, where);
         row.latency = static_cast<uint32_t>(table_count(f[4], where, "latency"));

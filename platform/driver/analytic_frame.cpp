@@ -4,13 +4,12 @@
 
 #include "models/address_generator/address_generator.h"
 #include "models/address_generator/sweep_schedule.h"
+#include "models/common/integer_math.h"
 #include "platform/driver/driver_sequence.h"
 
 namespace cdvp {
 
 namespace {
-uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
-
 DriverConfig uploading_every_box(DriverConfig driver) {
     driver.upload = UploadMode::kFull;
     return driver;

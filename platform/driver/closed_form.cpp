@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/common/integer_math.h"
 #include "models/comparison_unit/comparison_unit.h"
 #include "models/control_registers/control_registers.h"
 #include "models/pair_collector/pair_format.h"
@@ -17,8 +18,6 @@ using R = ControlRegisters;
 using D = DmaRegisters;
 
 namespace {
-uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
-
 [[noreturn]] void unmodelled(const char* access, uint64_t address) {
     throw std::logic_error(std::string("the closed form models no ") + access + " at " + hex(address) +
                            ": the driver's sequence uses a register platform/driver/closed_form.cpp does not answer");

@@ -17,14 +17,6 @@ namespace cdvp {
 using R = ControlRegisters;
 using D = DmaRegisters;
 
-namespace {
-constexpr uint64_t kDeltaRecordBytes = 4 * address_map::kDeltaRecordWords;
-
-uint32_t coordinate_window(uint32_t c) {
-    return static_cast<uint32_t>(address_map::kCoordinateBase + c * address_map::kWindowSize);
-}
-}  // namespace
-
 template <class X>
 DriverSequence<X>::DriverSequence(X& executor, const DriverConfig& config, SimTime period_fs)
     : x_(executor), config_(config), period_(period_fs) {}
@@ -178,7 +170,7 @@ void DriverSequence<X>::upload(const Frame& frame) {
     if (may_delta && upload_as_delta(config_, x_.bus(), n, changed)) {
         upload_delta(changed);
         phases.boxes_sent = static_cast<uint32_t>(changed);
-        phases.upload_bytes = kDeltaRecordBytes * changed;
+        phases.upload_bytes = address_map::kDeltaRecordBytes * changed;
     } else {
         upload_full(n);
         phases.boxes_sent = n;
@@ -193,7 +185,7 @@ template <class X>
 void DriverSequence<X>::upload_full(uint32_t n) {
     if (config_.transfer != Transfer::kDma) {
         for (uint32_t c = 0; c < kCoordinates; ++c) {
-            x_.pio_write(coordinate_window(c), x_.host_address(HostArea::kCoordinates, c), 4 * n);
+            x_.pio_write(address_map::coordinate_window(c), x_.host_address(HostArea::kCoordinates, c), 4 * n);
         }
         return;
     }
@@ -207,7 +199,7 @@ template <class X>
 void DriverSequence<X>::upload_delta(uint64_t changed) {
     if (changed == 0) return;
     x_.stage_delta_records();
-    const uint64_t bytes = kDeltaRecordBytes * changed;
+    const uint64_t bytes = address_map::kDeltaRecordBytes * changed;
     const auto stream = static_cast<uint32_t>(address_map::kDeltaStream);
     if (config_.transfer != Transfer::kDma) {
         const uint64_t records = x_.host_address(HostArea::kDeltaRecords);

@@ -33,11 +33,6 @@ uint64_t descriptor_area_at(uint32_t capacity, uint32_t buffer_depth, const Driv
 // A chain of the six arrays, or of the delta stream in window-sized pieces
 // (at most 7 for 4M boxes).
 constexpr uint32_t kChainDescriptors = 8;
-constexpr uint64_t kDeltaRecordBytes = 4 * address_map::kDeltaRecordWords;
-
-uint32_t coordinate_window(uint32_t c) {
-    return static_cast<uint32_t>(address_map::kCoordinateBase + c * address_map::kWindowSize);
-}
 }  // namespace
 
 uint64_t PortExecutor::host_memory_bytes(uint32_t capacity, uint32_t buffer_depth, const DriverConfig& config) {
@@ -49,7 +44,7 @@ PortExecutor::PortExecutor(HostPort& port, SimTime period_fs, const DriverConfig
     : port_(port),
       period_(period_fs),
       config_(config),
-      bus_(bus ? std::move(bus) : std::make_shared<IdealBusTiming>()) {}
+      bus_(bus_or_ideal(std::move(bus))) {}
 
 void PortExecutor::open(uint32_t capacity, uint32_t buffer_depth, uint32_t parallelism, NumberFormat format,
                         const TileConfig& tiles, const std::optional<GridConfig>& grid) {
@@ -183,11 +178,11 @@ uint64_t PortExecutor::stage_chain(Chain chain, uint64_t count) {
         const auto n = static_cast<uint32_t>(count);
         for (uint32_t c = 0; c < kCoordinates; ++c) {
             const uint64_t next = c + 1 < kCoordinates ? at + (c + 1) * sizeof(DmaDescriptor) : 0;
-            descriptors[c] = DmaDescriptor{coordinate_area(capacity_, c), next, coordinate_window(c), 4 * n};
+            descriptors[c] = DmaDescriptor{coordinate_area(capacity_, c), next, address_map::coordinate_window(c), 4 * n};
         }
         return at;
     }
-    const uint64_t bytes = kDeltaRecordBytes * count;
+    const uint64_t bytes = address_map::kDeltaRecordBytes * count;
     const uint64_t records = host_address(HostArea::kDeltaRecords);
     const auto stream = static_cast<uint32_t>(address_map::kDeltaStream);
     uint32_t pieces = 0;

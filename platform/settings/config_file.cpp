@@ -16,10 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-bool ends_with(const std::string& text, const std::string& end) {
-    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
-}
-
 // The setting called 'name', or a refusal naming the nearest one.
 const Setting& setting_named(const std::string& where, const std::string& name) {
     if (const Setting* s = find_setting(name)) return *s;

@@ -166,6 +166,11 @@ const Setting* find_setting(const std::string& name) {
     return nullptr;
 }
 
+const Setting& declared_setting(const std::string& name) {
+    if (const Setting* s = find_setting(name)) return *s;
+    throw std::logic_error("no setting '" + name + "' is declared");
+}
+
 std::vector<std::string> setting_names() {
     std::vector<std::string> names;
     for (const Setting& s : settings_table()) names.push_back(s.name);

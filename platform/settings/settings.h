@@ -183,6 +183,8 @@ struct Setting {
 const std::vector<Setting>& settings_table();
 // nullptr if no setting has this name.
 const Setting* find_setting(const std::string& name);
+// A setting the code names itself: std::logic_error if the table lacks it.
+const Setting& declared_setting(const std::string& name);
 // The name in 'names' nearest to 'name' (edit distance).
 std::string nearest_name(const std::string& name, const std::vector<std::string>& names);
 std::vector<std::string> setting_names();

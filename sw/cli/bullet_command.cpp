@@ -15,7 +15,7 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kBulletUsage =
     "Usage: cdvp bullet --scene NAME [--objects N] [--frames F] [--seed S] [--board B] [options]\n"
     "\n"
     "Steps a Bullet scene (btDiscreteDynamicsWorld) with the virtual board as its broad phase and, in\n"
@@ -97,7 +97,7 @@ RunSpec bullet_spec(const BulletOptions& o, const po::variables_map& vm, int arg
 int bullet_command(int argc, char** argv) {
     BulletOptions o;
     const po::options_description options = bullet_options(o);
-    return run_command_line("cdvp bullet", argc, argv, kUsage, options, [&](const po::variables_map& vm) {
+    return run_command_line("cdvp bullet", argc, argv, kBulletUsage, options, [&](const po::variables_map& vm) {
         const RunSpec spec = bullet_spec(o, vm, argc, argv);
         CommandObserver observer("cdvp bullet", false);
         return command_status("cdvp bullet", run(spec, observer));

@@ -35,7 +35,7 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kCalibrateUsage =
     "Usage: cdvp calibrate [--out PROFILE.json] [--repeat R] [--max-spread P] [--time-limit S] [--strict] [-q]\n"
     "\n"
     "Times the reference workload on this machine in the thread's CPU time: every software baseline (sap,\n"
@@ -266,7 +266,7 @@ int calibrate_command(int argc, char** argv) {
         ("time-limit", number<double>(&o.time_limit_s, 1, 86400, "S"), "stop repeating after S seconds")
         ("strict", po::bool_switch(&o.strict), "refuse, writing nothing, when the spread stays over P%")
         ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors");
-    return run_command_line("cdvp calibrate", argc, argv, kUsage, options,
+    return run_command_line("cdvp calibrate", argc, argv, kCalibrateUsage, options,
                             [&o](const po::variables_map& vm) { return calibrate(o, vm); });
 }
 

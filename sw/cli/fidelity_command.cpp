@@ -26,7 +26,7 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kHelp =
+constexpr const char* kFidelityHelp =
     "Usage: cdvp fidelity (--trace FILE | --scene spheres [--objects N] [--frames F] [--seed S])\n"
     "                     [board and host options of cdvp run] --out DIR [-q]\n"
     "\n"
@@ -121,7 +121,7 @@ std::vector<std::string> formula_overrides(const RunSpec& scene) {
 
 int fidelity(int argc, char** argv) {
     for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {
-        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return print_help("cdvp fidelity", kHelp);
+        if (std::string(argv[k]) == "--help" || std::string(argv[k]) == "-h") return print_help("cdvp fidelity", kFidelityHelp);
     }
     FidelityOptions o = parse_fidelity_options(argc, argv);
     // Declared first, so they go last: temporaries are removed before the

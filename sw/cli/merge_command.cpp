@@ -21,7 +21,7 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kHelp =
+constexpr const char* kMergeHelp =
     "Usage: cdvp merge --out OUT SHARD_DIR... [-q]\n"
     "       cdvp merge OUT SHARD_DIR... [-q]\n"
     "\n"
@@ -85,7 +85,7 @@ int merge_command(int argc, char** argv) {
     return exit_status_of("cdvp merge", [&] {
         try {
             const std::optional<MergeSpec> options = parse_merge_options(argc, argv);
-            return options ? run_merge_command(*options) : print_help("cdvp merge", kHelp);
+            return options ? run_merge_command(*options) : print_help("cdvp merge", kMergeHelp);
         } catch (po::error& e) {
             throw InputError(option_error_text(e, "cdvp merge"));
         }

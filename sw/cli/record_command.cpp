@@ -17,7 +17,7 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kRecordUsage =
     "Usage: cdvp record --scene NAME [--objects N] [--frames F] [--seed S] --out TRACE.csv [-q]\n"
     "\n"
     "Steps a Bullet scene on the board's broad phase, a float32 board's pairs found on the host (so the\n"
@@ -62,7 +62,7 @@ int record_command(int argc, char** argv) {
         ("out", po::value(&o.out)->value_name("TRACE.csv"), "the trace to write (written only if the run succeeds)")
         ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors");
     options.add(output);
-    return run_command_line("cdvp record", argc, argv, kUsage, options,
+    return run_command_line("cdvp record", argc, argv, kRecordUsage, options,
                             [&o](const po::variables_map& vm) { return record(o, vm); });
 }
 

@@ -15,7 +15,7 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kHelp =
+constexpr const char* kRtlVariantsHelp =
     "Usage: cdvp rtl-variants [--json]\n"
     "\n"
     "Lists the parameter sets of the whole-board RTL (models/board/rtl/collision_board_top.v)\n"
@@ -70,7 +70,7 @@ int rtl_variants_command(int argc, char** argv) {
         return kExitBadInput;
     }
     const std::string mode = argc == 2 ? argv[1] : "";
-    if (mode == "--help" || mode == "-h") return print_help("cdvp rtl-variants", kHelp);
+    if (mode == "--help" || mode == "-h") return print_help("cdvp rtl-variants", kRtlVariantsHelp);
     if (mode == "--json") return print_to_stdout("cdvp rtl-variants", rtl_variants_json().dump(2) + "\n");
     if (!mode.empty()) {
         std::cerr << "cdvp rtl-variants: unknown option '" << excerpt(mode) << "'; expected --json\n";

@@ -20,7 +20,7 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kHelp =
+constexpr const char* kSettingsHelp =
     "Usage: cdvp settings [--json | --markdown]\n"
     "       cdvp settings [--board NAME] [--config FILE] [-c NAME=VALUE]... [--json]\n"
     "\n"
@@ -169,7 +169,7 @@ int settings_command(int argc, char** argv) {
         return kExitBadInput;
     }
     const std::string mode = argc == 2 ? argv[1] : "";
-    if (mode == "--help" || mode == "-h") return print_help("cdvp settings", kHelp);
+    if (mode == "--help" || mode == "-h") return print_help("cdvp settings", kSettingsHelp);
     if (mode == "--json") return print_to_stdout("cdvp settings", settings_json().dump(2) + "\n");
     if (mode == "--markdown") return print_to_stdout("cdvp settings", settings_markdown());
     if (!mode.empty()) {

@@ -22,7 +22,7 @@ namespace cdvp {
 
 namespace {
 
-constexpr const char* kHelp =
+constexpr const char* kSweepHelp =
     "Usage: cdvp sweep [--board LIST] [--set NAME=LIST]... [--fidelity LIST] [--scene LIST | --trace LIST]\n"
     "                  [options of cdvp run] --out DIR [--jobs J] [--shard K/N] [--record full|compact]\n"
     "                  [--software-timings DIR|none] [--no-plots] [--rerun-invalid] [-q]\n"
@@ -216,7 +216,7 @@ void read_forwarded_options(const ParsedCommandLine& line, SweepSpec& o) {
 
 }  // namespace
 
-std::string sweep_help() { return kHelp; }
+std::string sweep_help() { return kSweepHelp; }
 
 std::optional<SweepSpec> parse_sweep_options(int argc, char** argv) {
     for (int k = 1; k < argc && std::string(argv[k]) != "--"; ++k) {

@@ -22,8 +22,6 @@ namespace cdvp {
 
 namespace {
 
-const Setting& setting(const char* name) { return *find_setting(name); }
-
 // A software step with a speed probe before and after it: the slower in `slower`.
 StepTimes probed_step(BulletWorld& world, SpeedProbe& probe, double& slower) {
     const double before = probe.time_ns();
@@ -251,11 +249,11 @@ RunSetup bullet_setup(const RunSpec& spec, const BulletWorlds& worlds) {
     static_cast<BoardSetup&>(setup) = checked_board_setup(spec.settings, worlds.name);
     setup.level = model_level(setup.values, spec.outputs.waves.has_value());
     if (setup.level == ModelLevel::kAnalytic) {
-        throw InputError(setup.values.where(setting("run.fidelity")) +
+        throw InputError(setup.values.where(declared_setting("run.fidelity")) +
                          " analytic: cdvp bullet runs Bullet's world on the platform's engines; expected cycle or fast");
     }
     if (setup.values.settings().board.box_banks > 1) {
-        throw InputError(setup.values.where(setting("board.box_banks")) +
+        throw InputError(setup.values.where(declared_setting("board.box_banks")) +
                          ": two box banks pipeline frames, but a Bullet world steps on each frame's pairs, so its next "
                          "frame is not known ahead; expected 1 (cdvp record, then cdvp run --trace, pipelines its frames)");
     }
@@ -282,7 +280,7 @@ RunOutcome run_bullet_worlds(const RunSpec& spec, RunObserver& observer) {
     const SettingValues& values = setup.values;
     const SceneSpec scene = bullet_scene_spec(worlds.name, values);
     const uint64_t frames = values.settings().scene.frames;
-    if (frames == 0) throw InputError(values.where(setting("scene.frames")) + ": expected at least 1 frame to step, got 0");
+    if (frames == 0) throw InputError(values.where(declared_setting("scene.frames")) + ": expected at least 1 frame to step, got 0");
     const FrameOrigin origin{"", worlds.name};
     RunBudgets budgets(values, setup.platform, budget_shape(spec, setup), origin);
     if (const auto warning = check_scene_fits(origin, values, scene_layout(scene).proxies, frames, budgets)) {

@@ -22,8 +22,6 @@ const char* command_of(const RunSpec& spec) {
 
 namespace {
 
-const Setting& setting(const char* name) { return *find_setting(name); }
-
 // The generated scene's name, empty for a trace.
 std::string scene_name(const RunSpec& spec) {
     if (const auto* scene = std::get_if<SceneFrames>(&*spec.frames)) return scene->name;
@@ -35,7 +33,7 @@ std::string scene_name(const RunSpec& spec) {
 void check_analytic_run(const RunSetup& setup, const RunSpec& spec) {
     const SettingValues& values = setup.values;
     const SettingNames& names = values.names();
-    const Setting& fidelity = setting("run.fidelity");
+    const Setting& fidelity = declared_setting("run.fidelity");
     const std::string level =
         std::string("the ") + name_of(values.settings().run.fidelity) + " level (" + values.where(fidelity) + ")";
     if (!spec.faults.empty()) {
@@ -56,7 +54,7 @@ RunSetup make_setup(const RunSpec& spec) {
     // Pipelined frames must be known ahead; an application's next frame
     // comes from this frame's pairs.
     if (const auto* scene = std::get_if<SceneFrames>(&*spec.frames); scene && setup.values.settings().board.box_banks > 1) {
-        throw InputError(setup.values.where(setting("board.box_banks")) + ": two box banks pipeline frames, but " +
+        throw InputError(setup.values.where(declared_setting("board.box_banks")) + ": two box banks pipeline frames, but " +
                          names.input("scene") + " " + scene->name + " steps on each frame's pairs, so its next frame is " +
                          "not known ahead; expected " + names.input("trace") +
                          " (cdvp record writes a Bullet scene's frames to one)");
@@ -64,7 +62,7 @@ RunSetup make_setup(const RunSpec& spec) {
     setup.trace_window = vcd_window(spec.outputs.waves ? spec.outputs.waves->frames : std::nullopt, names);
     setup.baselines = BaselineTimer(spec.baselines, setup.host, setup.values.settings().run.retime_tries,
                                     names.input("baseline"), BaselineOptions{baseline_threads(setup.values.settings().run.threads, setup.values.settings().host.cores)});
-    const Setting& repeat = setting("run.repeat");
+    const Setting& repeat = declared_setting("run.repeat");
     if (!setup.values.is_default(repeat) && setup.baselines.empty()) {
         throw InputError(setup.values.where(repeat) + ": reruns the software baselines over the frames; give " +
                          names.input("baseline") + " too");
@@ -119,7 +117,7 @@ RunOutcome run_frames_of(const RunSpec& spec, RunObserver& observer, const RunCo
         check_scene_fits(origin, setup.values, boxes, scene.frames, budgets);  // its warning comes below
         const std::optional<uint64_t> last = scene.frames > 0 ? std::optional<uint64_t>(scene.frames - 1) : std::nullopt;
         check_inject_frames(setup.platform.faults, last, [](uint64_t) { return true; },
-                            setup.values.names().setting_to(setting("scene.frames"), std::to_string(scene.frames)), names);
+                            setup.values.names().setting_to(declared_setting("scene.frames"), std::to_string(scene.frames)), names);
     }
     if (needs_kernel) return RunOutcome{false, 0, {}};  // checked first: the child reads the frames
     std::unique_ptr<FrameSource> source = open_source(spec, setup.values, budgets, context.memo);

@@ -12,8 +12,6 @@ namespace cdvp {
 
 namespace {
 
-const Setting& setting(const char* name) { return *find_setting(name); }
-
 // The largest pair budget: more than a frame of the address map's boxes can hold.
 constexpr uint64_t kMaxPairBudget = uint64_t{1} << 43;
 
@@ -26,7 +24,7 @@ std::string count_text(uint64_t n, const char* one, const char* many) {
 RunBudgets::RunBudgets(const SettingValues& values, const PlatformConfig& platform, BudgetShape shape,
                        FrameOrigin origin, MachineMemory machine)
     : values_(values), platform_(platform), shape_(std::move(shape)), origin_(std::move(origin)), machine_(machine) {
-    const Setting& max_memory = setting("run.max_memory");
+    const Setting& max_memory = declared_setting("run.max_memory");
     const uint64_t mib = values_.settings().run.max_memory_mib;
     const uint64_t least = machine_.least();
     if (mib == 0) {
@@ -70,7 +68,7 @@ TraceLimits RunBudgets::trace_limits() const {
 }
 
 InputLimits spooled_trace_limits() {
-    const Setting& size = setting("run.max_trace_size");
+    const Setting& size = declared_setting("run.max_trace_size");
     InputLimits limits;
     limits.max_bytes = std::get<uint64_t>(size.default_value()) << 20;
     limits.max_bytes_origin = to_text(size.default_value()) + " MiB (the default of --" + size.flag + ")";
@@ -80,7 +78,7 @@ InputLimits spooled_trace_limits() {
 InputLimits RunBudgets::input_limits() const {
     InputLimits limits;
     limits.max_bytes = values_.settings().run.max_trace_mib << 20;
-    limits.max_bytes_origin = values_.value_and_origin(setting("run.max_trace_size"));
+    limits.max_bytes_origin = values_.value_and_origin(declared_setting("run.max_trace_size"));
     return limits;
 }
 
@@ -93,7 +91,7 @@ std::string RunBudgets::frames_text(uint64_t frames) const {
 }
 
 std::string RunBudgets::pairs_origin() const {
-    const Setting& max_pairs = setting("run.max_pairs");
+    const Setting& max_pairs = declared_setting("run.max_pairs");
     if (values_.settings().run.max_pairs != 0) return values_.value_and_origin(max_pairs);
     return (values_.is_default(max_pairs) ? values_.origin_text(max_pairs) : values_.value_and_origin(max_pairs)) +
            ": what the memory budget of " + size_text(memory_bytes_) + " leaves, at " +
@@ -112,10 +110,10 @@ void RunBudgets::check_memory(uint64_t max_objects, uint64_t frames) {
     const std::string budget = "the memory budget of " + size_text(memory_bytes_) + " (" + memory_origin_ + ")";
     if (f.before_pairs() > memory_bytes_) {
         const std::string model = shape_.clocked ? ", the board model's block RAM words at " +
-                                                       values_.value_and_origin(setting("board.m")) + " " +
+                                                       values_.value_and_origin(declared_setting("board.m")) + " " +
                                                        size_text(f.model)
                                                  : "";
-        throw InputError(values_.where(setting("run.max_memory")) + ": " + budget + " is too little for " +
+        throw InputError(values_.where(declared_setting("run.max_memory")) + ": " + budget + " is too little for " +
                          objects_text(max_objects) + " in " + frames_text(frames) + ": they need an estimated " +
                          size_text(f.before_pairs()) + " before any pair (the boxes " + size_text(f.boxes) + model +
                          ", the frames " + size_text(f.frames) + ", the program " + size_text(f.program) +
@@ -129,7 +127,7 @@ void RunBudgets::check_memory(uint64_t max_objects, uint64_t frames) {
     }
     pairs_ = asked;
     if (f.with_pairs(asked) > memory_bytes_) {
-        throw InputError(values_.where(setting("run.max_pairs")) + ": " + std::to_string(asked) +
+        throw InputError(values_.where(declared_setting("run.max_pairs")) + ": " + std::to_string(asked) +
                          " pairs a frame at " + std::to_string(f.per_pair) + " bytes a pair need an estimated " +
                          size_text(f.with_pairs(asked) - f.before_pairs()) + ", and the rest of the run " +
                          size_text(f.before_pairs()) + " for " + objects_text(max_objects) + ": more than " + budget +
@@ -164,15 +162,15 @@ void RunBudgets::check_time(uint64_t max_objects, uint64_t frames) const {
     const double limit_ns = ns_from_fs(kSimulatedTimeLimit);
     if (total_ns <= limit_ns) return;
     throw InputError("a run of " + frames_text(frames) + " of up to " + objects_text(max_objects) + " at " +
-                     values_.value_and_origin(setting("board.m")) + " and " +
-                     values_.value_and_origin(setting("board.clock_mhz")) + " would reach " +
+                     values_.value_and_origin(declared_setting("board.m")) + " and " +
+                     values_.value_and_origin(declared_setting("board.clock_mhz")) + " would reach " +
                      simulated_seconds(total_ns) + " of simulated time (up to " + simulated_seconds(frame_ns) +
                      " a frame before any pair, and the deadline of its longest wait " +
                      simulated_seconds(timeout_ns) + " later), past the limit of " + simulated_seconds(limit_ns) +
                      " (2^63 fs, half SystemC's 64-bit femtosecond clock): use fewer objects or frames, or a larger m");
 }
 
-std::string RunBudgets::named(const char* name) const { return values_.names().named(setting(name)); }
+std::string RunBudgets::named(const char* name) const { return values_.names().named(declared_setting(name)); }
 
 std::string RunBudgets::pair_budget_refusal(uint64_t frame, uint64_t found) const {
     return "frame " + std::to_string(frame) + ": " + std::to_string(found) + " pairs found, more than the pair budget of " +

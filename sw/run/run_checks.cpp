@@ -23,11 +23,9 @@ namespace cdvp {
 
 namespace {
 
-const Setting& setting(const char* name) { return *find_setting(name); }
-
 // How to run past the device's capacity, in the face's words: "--ignore-capacity".
 std::string ignore_capacity(const SettingValues& values) {
-    return values.names().setting_to(setting("run.ignore_capacity"), "yes");
+    return values.names().setting_to(declared_setting("run.ignore_capacity"), "yes");
 }
 
 }  // namespace
@@ -42,14 +40,14 @@ std::string objects_origin(const FrameOrigin& origin, const SettingValues& value
     // around (a ground, walls, a ball): the boxes are what the board holds.
     if (is_bullet_scene(origin.scene)) {
         return count + " boxes (the collision objects of " + names.input("scene") + " " + origin.scene + " at " +
-               values.value_and_origin(setting("scene.objects")) + ")";
+               values.value_and_origin(declared_setting("scene.objects")) + ")";
     }
-    return count + " objects (" + values.origin_text(setting("scene.objects")) + ")";
+    return count + " objects (" + values.origin_text(declared_setting("scene.objects")) + ")";
 }
 
 std::string frames_origin(const FrameOrigin& origin, const SettingValues& values) {
     return !origin.trace.empty() ? "the frames of " + values.names().input("trace") + " " + excerpt(origin.trace)
-                                 : values.origin_text(setting("scene.frames"));
+                                 : values.origin_text(declared_setting("scene.frames"));
 }
 
 void check_path_lengths(const std::vector<std::pair<const char*, const std::optional<std::string>*>>& paths,
@@ -111,7 +109,7 @@ void check_frame_input(const std::optional<FrameInput>& frames, const SettingNam
 SceneSpec bullet_scene_spec(const std::string& scene, const SettingValues& values) {
     const SceneSettings& settings = values.settings().scene;
     if (settings.objects < 1 || settings.objects > kMaxSceneObjects) {
-        throw InputError(values.where(setting("scene.objects")) + ": expected 1 to " + std::to_string(kMaxSceneObjects) +
+        throw InputError(values.where(declared_setting("scene.objects")) + ": expected 1 to " + std::to_string(kMaxSceneObjects) +
                          " objects in Bullet's scene " + scene + ", got " + std::to_string(settings.objects));
     }
     return SceneSpec{scene, static_cast<uint32_t>(settings.objects), settings.seed};
@@ -145,11 +143,11 @@ std::vector<FaultSpec> fault_specs(const std::vector<std::string>& texts, const 
                                    spec.kind == FaultKind::kDmaHang;
             if (needs_dma && driver.transfer != Transfer::kDma) {
                 throw InputError(label + ": '" + to_string(spec) + "' faults a DMA; it needs " +
-                                 names.setting_to(setting("run.transfer"), "dma"));
+                                 names.setting_to(declared_setting("run.transfer"), "dma"));
             }
             if (spec.kind == FaultKind::kLostIrq && driver.wait != WaitMode::kIrq) {
                 throw InputError(label + ": '" + to_string(spec) + "' loses an interrupt; it needs " +
-                                 names.setting_to(setting("run.wait"), "irq"));
+                                 names.setting_to(declared_setting("run.wait"), "irq"));
             }
             specs.push_back(spec);
         }
@@ -172,7 +170,6 @@ void check_inject_frames(const std::vector<FaultSpec>& specs, std::optional<uint
 }
 
 namespace {
-
 // The first device resource the board overflows, as the error names it:
 // the setting, its capacity and unit, and what the board needs.
 struct Overflow {
@@ -195,13 +192,13 @@ std::string whole(double value) { return std::to_string(static_cast<uint64_t>(st
 // to schedule (the model's bound, so --ignore-capacity does not lift it).
 void check_ssram(const FrameOrigin& origin, const SettingValues& values, uint64_t max_objects, const MemoryPlan& plan) {
     const Settings& settings = values.settings();
-    const std::string memory = values.value_and_origin(setting("board.memory"));
+    const std::string memory = values.value_and_origin(declared_setting("board.memory"));
     if (plan.ssram_capacity == 0) {
-        throw InputError(values.where(setting("device.ssram_banks")) + ": the device has no off-chip SSRAM (0 banks); " +
+        throw InputError(values.where(declared_setting("device.ssram_banks")) + ": the device has no off-chip SSRAM (0 banks); " +
                          memory + " needs some: use block_ram or give device.ssram_banks");
     }
     if (!settings.run.ignore_capacity && max_objects > plan.ssram_capacity) {
-        throw InputError(values.where(setting("device.ssram_words")) + ": " + std::to_string(settings.device.ssram_words) +
+        throw InputError(values.where(declared_setting("device.ssram_words")) + ": " + std::to_string(settings.device.ssram_words) +
                          " words a bank in " + std::to_string(settings.device.ssram_banks) + " SSRAM banks hold " +
                          std::to_string(plan.ssram_capacity) + " boxes, too few for " +
                          objects_origin(origin, values, max_objects) + " (" + memory +
@@ -209,7 +206,7 @@ void check_ssram(const FrameOrigin& origin, const SettingValues& values, uint64_
     }
     const uint64_t tiles = (max_objects + plan.tiles.boxes - 1) / plan.tiles.boxes;
     if (tiles > SweepSchedule::kMaxTiles) {
-        throw InputError(values.where(setting("board.tile_boxes")) + ": tiles of " + std::to_string(plan.tiles.boxes) +
+        throw InputError(values.where(declared_setting("board.tile_boxes")) + ": tiles of " + std::to_string(plan.tiles.boxes) +
                          " boxes make " + std::to_string(tiles) + " tiles of " + objects_origin(origin, values, max_objects) +
                          "; expected at most " + std::to_string(SweepSchedule::kMaxTiles) + " tiles: give larger tiles");
     }
@@ -228,9 +225,9 @@ void check_ssram(const FrameOrigin& origin, const SettingValues& values, uint64_
     board.m = settings.board.m;
     // The format's own layout: word groups a box, boxes a primitive.
     const BlockRamLayout layout = board.format.block_ram_layout(board.memory_depth(max_objects));
-    throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(settings.device.block_rams) +
+    throw InputError(values.where(declared_setting("device.block_rams")) + ": " + std::to_string(settings.device.block_rams) +
                      " block RAMs are too few for the SSRAM tile buffers of " +
-                     values.value_and_origin(setting("board.m")) + " at " + objects_origin(origin, values, max_objects) +
+                     values.value_and_origin(declared_setting("board.m")) + " at " + objects_origin(origin, values, max_objects) +
                      " in tiles of " + std::to_string(plan.tiles.boxes) + " boxes: they need " +
                      std::to_string(layout.word_groups()) + " x (2m+2) x ceil(T/" + std::to_string(layout.depth) +
                      ") = " + std::to_string(board.block_rams(max_objects)) +
@@ -244,7 +241,7 @@ void check_device_fits(const FrameOrigin& origin, const SettingValues& values, u
     if (settings.run.ignore_capacity) return;
     const MemoryPlan plan = plan_memory(settings, max_objects);
     const BoardConfig board = planned_board(settings, max_objects);
-    const std::string m = values.value_and_origin(setting("board.m"));
+    const std::string m = values.value_and_origin(declared_setting("board.m"));
     const std::string at = m + " at " + objects_origin(origin, values, max_objects);
     const std::string explore = "; " + ignore_capacity(values) + " runs it anyway";
     // The coordinate memories alone: a check that needs no synthesis family.
@@ -254,7 +251,7 @@ void check_device_fits(const FrameOrigin& origin, const SettingValues& values, u
     if (block_rams != 0 && needed > block_rams) {
         // At a smaller m the boxes may fit, or move to SSRAM tiles (--memory auto).
         const uint64_t largest = largest_m_in_block_rams(settings, max_objects);
-        throw InputError(values.where(setting("device.block_rams")) + ": " + std::to_string(block_rams) +
+        throw InputError(values.where(declared_setting("device.block_rams")) + ": " + std::to_string(block_rams) +
                          " block RAMs are too few for " + at + ": they need " +
                          std::to_string(board.format.block_ram_layout(max_objects).word_groups()) + " x m x ceil(N/" +
                          std::to_string(board.format.block_ram_layout(max_objects).depth) + ")" +
@@ -268,7 +265,7 @@ void check_device_fits(const FrameOrigin& origin, const SettingValues& values, u
     const DeviceFit fit = fit_on_device(settings, max_objects);
     if (fit.use.fits()) return;
     const Overflow over = overflow_of(fit);
-    throw InputError(values.where(setting(over.setting)) + ": " + whole(over.available) + " " + over.unit +
+    throw InputError(values.where(declared_setting(over.setting)) + ": " + whole(over.available) + " " + over.unit +
                      " are too few for " + at + ": the board needs " + whole(over.needed) + " (" +
                      std::to_string(2 * board.m - 1) + " " + board.format.name() +
                      " lanes, the memories, address generator, pair FIFO "
@@ -309,7 +306,7 @@ void check_rtl_built(const FrameOrigin& origin, const SettingValues& values, uin
     try {
         rtl_variant_for(planned_board(values.settings(), max_objects), static_cast<uint32_t>(max_objects));
     } catch (const std::invalid_argument& e) {
-        throw InputError(values.value_and_origin(setting("run.fidelity")) + " at " +
+        throw InputError(values.value_and_origin(declared_setting("run.fidelity")) + " at " +
                          objects_origin(origin, values, max_objects) + ": " + e.what());
     }
 }

@@ -27,10 +27,6 @@ std::string sanitized(std::string name, const char* also = "") {
     return name.empty() ? "-" : name;
 }
 
-bool ends_with(const std::string& text, const std::string& end) {
-    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
-}
-
 // The readable part of a value's fragment: a file (a trace, a preset) is
 // named by its file name without the extension.
 std::string readable_fragment(const std::string& value) {

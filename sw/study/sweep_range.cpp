@@ -18,7 +18,7 @@ namespace cdvp {
 
 namespace {
 
-[[noreturn]] void refuse(const std::string& label, const std::string& list, const std::string& why) {
+[[noreturn]] void refuse_range(const std::string& label, const std::string& list, const std::string& why) {
     throw InputError(label + ": '" + excerpt(list) + "': " + why);
 }
 
@@ -67,7 +67,7 @@ struct Range {
 
     void check_count(long double count) const {
         if (count > static_cast<long double>(kMaxAxisValues)) {
-            refuse(label, list, count_text(count) + " values, more than " + std::to_string(kMaxAxisValues));
+            refuse_range(label, list, count_text(count) + " values, more than " + std::to_string(kMaxAxisValues));
         }
     }
 
@@ -78,7 +78,7 @@ struct Range {
         constexpr double kTop = 9.2e18;  // below INT64_MAX: B beyond it is taken as INT64_MAX
         int64_t b = std::numeric_limits<int64_t>::max();
         if (to < kTop && !whole_number(to_text, to, b)) b = static_cast<int64_t>(std::floor(to));
-        if (b < a) refuse(label, list, "A is above B");
+        if (b < a) refuse_range(label, list, "A is above B");
         if (geometric) {
             for (int64_t value = a;; value *= s) {
                 values.push_back(std::to_string(value));
@@ -121,20 +121,20 @@ std::vector<std::string> expand_range(const std::string& list, const std::string
     const std::size_t first_colon = list.find(':');
     const std::size_t second_colon = first_colon == std::string::npos ? first_colon : list.find(':', first_colon + 1);
     if (second_colon == std::string::npos || list.find(':', second_colon + 1) != std::string::npos) {
-        refuse(label, list, "expected a,b,c or A:B:xF or A:B:+S");
+        refuse_range(label, list, "expected a,b,c or A:B:xF or A:B:+S");
     }
     Range r{list, label, list.substr(0, first_colon), list.substr(first_colon + 1, second_colon - first_colon - 1),
             list.substr(second_colon + 1)};
     if (!parse_number(r.from_text, r.from) || !parse_number(r.to_text, r.to)) {
-        refuse(label, list, "expected numbers A and B in A:B:xF or A:B:+S");
+        refuse_range(label, list, "expected numbers A and B in A:B:xF or A:B:+S");
     }
     r.geometric = !r.step_text.empty() && r.step_text[0] == 'x';
     if (r.step_text.empty() || (!r.geometric && r.step_text[0] != '+') || !parse_number(r.step_text.substr(1), r.step)) {
-        refuse(label, list, "expected the step as xF (a factor) or +S (an increment) after A:B:");
+        refuse_range(label, list, "expected the step as xF (a factor) or +S (an increment) after A:B:");
     }
-    if (r.from > r.to) refuse(label, list, "A is above B");
-    if (r.geometric && (r.step <= 1 || r.from <= 0)) refuse(label, list, "a geometric range needs A > 0 and a factor above 1");
-    if (!r.geometric && r.step <= 0) refuse(label, list, "an arithmetic range needs an increment above 0");
+    if (r.from > r.to) refuse_range(label, list, "A is above B");
+    if (r.geometric && (r.step <= 1 || r.from <= 0)) refuse_range(label, list, "a geometric range needs A > 0 and a factor above 1");
+    if (!r.geometric && r.step <= 0) refuse_range(label, list, "an arithmetic range needs an increment above 0");
     std::vector<std::string> values;
     if (!r.integral(values)) r.real(values);
     return values;

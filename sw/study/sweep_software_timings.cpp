@@ -21,10 +21,6 @@ namespace {
 
 constexpr const char* kIdSuffix = "_timing_id";
 
-bool ends_with(const std::string& text, const std::string& suffix) {
-    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 }  // namespace
 
 namespace {

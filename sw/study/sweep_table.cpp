@@ -7,6 +7,7 @@
 #include "models/common/user_text.h"
 #include "sw/output/digest.h"
 #include "sw/run/report_summary.h"
+#include "sw/study/figure_plan.h"
 #include "sw/study/sweep_csv.h"
 
 namespace cdvp {
@@ -14,16 +15,6 @@ namespace cdvp {
 namespace {
 
 const std::vector<std::string> kFixedColumns{"point", "index", "status", "reason", kChecksumColumn, "format_version"};
-
-bool ends_with(const std::string& text, const std::string& end) {
-    return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
-}
-
-std::string number_text(double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.10g", value);
-    return text;
-}
 
 double median(std::vector<double> values) {
     if (values.empty()) return 0;
