@@ -9,10 +9,9 @@
 #   in each of some hundred files. Larger headers (nlohmann/json,
 #   Boost.Program_options, the standard library) cost more to load than most
 #   files saved, and are left out.
-# - Unity batches: a program's files compiled CDVP_TEST_UNITY_BATCH at a time
-#   as one translation unit, so the headers they share are parsed once a
-#   batch. A test file's helpers therefore need names its batch-mates do not
-#   use (the build says which when two collide).
+# - Unity batches, as for every target (CDVP_UNITY_BATCH, the top
+#   CMakeLists.txt): a program's files compiled eight at a time as one
+#   translation unit, so the headers they share are parsed once a batch.
 # - -O1 for the test bodies in a Release build: -O3 spends most of a test
 #   file's compile on code that runs once, while the models they call keep
 #   the build's -O3. Benchmarks are not GoogleTest programs and keep -O3.
@@ -24,9 +23,8 @@
 #   a test program keeps the checks.
 #
 # Every file still includes what it uses: -DCDVP_PRECOMPILED_HEADERS=OFF
-# -DCDVP_TEST_UNITY_BATCH=1 builds each file on its own, to check that.
+# -DCDVP_UNITY_BATCH=1 builds each file on its own, to check that.
 option(CDVP_PRECOMPILED_HEADERS "Precompile <gtest/gtest.h> for the test programs" ON)
-set(CDVP_TEST_UNITY_BATCH 8 CACHE STRING "Test files compiled together as one unit (1: each on its own)")
 set(CDVP_TEST_RELEASE_OPT "-O1" CACHE STRING "Optimisation of the test programs' own files in a Release build")
 
 # The build-system targets of DIR and of the directories below it.
@@ -73,7 +71,6 @@ foreach(target IN LISTS cdvp_test_targets ITEMS cdvp_test_headers)
     endif()
   endforeach()
   cdvp_without_sanitizers(${target} INSTRUMENTED ${code_under_test})
-  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${CDVP_TEST_UNITY_BATCH})
   if(CDVP_PRECOMPILED_HEADERS AND NOT target STREQUAL "cdvp_test_headers")
     target_precompile_headers(${target} REUSE_FROM cdvp_test_headers)
   endif()
