@@ -79,7 +79,10 @@ module grid_board_top #(
     endfunction
     localparam LANES = 2 * M - 1;
     localparam D = 1 + COMPARE_LATENCY;           // block RAM stage + compare stages
-    localparam CAW = $clog2(CELL_CAPACITY);
+    // A cell never holds more than the 2^AW boxes there are: cells of more
+    // are cells of 2^AW (the same counts, tiles and buffer).
+    localparam HELD = CELL_CAPACITY < (1 << AW) ? CELL_CAPACITY : (1 << AW);
+    localparam CAW = $clog2(HELD);
     localparam CELLS = grid_cells_for(DIMS, 1 << AW);
     localparam CW = CELLS > 4 ? $clog2(CELLS) : 2;
     localparam EAW = $clog2(ENTRY_CAPACITY + 1) > AW ? $clog2(ENTRY_CAPACITY + 1) : AW + 1;
@@ -175,7 +178,7 @@ module grid_board_top #(
     wire [EAW:0] cell_entries;
     wire [CW:0] busy_cells;
     wire [47:0] slots;
-    localparam [31:0] ENTRIES = ENTRY_CAPACITY, CAPACITY_CELLS = CELL_CAPACITY, DIMS_SETTING = DIMS,
+    localparam [31:0] ENTRIES = ENTRY_CAPACITY, CAPACITY_CELLS = HELD, DIMS_SETTING = DIMS,
                       SPAN_SETTING = MAX_SPAN;
     grid_sequencer #(.FLOAT(FLOAT), .WIDTH(WIDTH), .AW(AW), .LAT(LAT), .M(M), .CAW(CAW), .CW(CW), .EAW(EAW),
                      .SPAN(MAX_SPAN)) sequencer (
