@@ -45,30 +45,27 @@ std::string RtlVariant::name() const {
 std::vector<std::string> RtlVariant::verilator_parameters() const {
     const bool is_float = format_bits == 0;
     auto parameter = [](const char* name, uint64_t value) { return std::string("-G") + name + "=" + std::to_string(value); };
+    std::vector<std::string> parameters{parameter("M", m),
+                                        parameter("AW", address_bits),
+                                        parameter("FLOAT", is_float ? 1 : 0),
+                                        parameter("WIDTH", is_float ? 32 : format_bits),
+                                        parameter("COMPARE_LATENCY", compare_latency),
+                                        parameter("FIFO_DEPTH", fifo_depth),
+                                        parameter("BUFFER_DEPTH", buffer_depth)};
     if (grid) {
-        return {parameter("M", m),
-                parameter("AW", address_bits),
-                parameter("FLOAT", is_float ? 1 : 0),
-                parameter("WIDTH", is_float ? 32 : format_bits),
-                parameter("COMPARE_LATENCY", compare_latency),
-                parameter("FIFO_DEPTH", fifo_depth),
-                parameter("BUFFER_DEPTH", buffer_depth),
-                parameter("LAT", tile_latency),
-                parameter("DIMS", grid_dims),
-                parameter("CELL_SIZE", cell_size_bits),
-                parameter("CELL_CAPACITY", cell_capacity),
-                parameter("MAX_SPAN", max_span),
-                parameter("ENTRY_CAPACITY", entry_capacity)};
+        for (const auto& [name, value] : {std::pair<const char*, uint64_t>{"LAT", tile_latency},
+                                          {"DIMS", grid_dims},
+                                          {"CELL_SIZE", cell_size_bits},
+                                          {"CELL_CAPACITY", cell_capacity},
+                                          {"MAX_SPAN", max_span},
+                                          {"ENTRY_CAPACITY", entry_capacity}}) {
+            parameters.push_back(parameter(name, value));
+        }
+    } else {
+        parameters.push_back(parameter("TILE_BOXES", tile_boxes));
+        parameters.push_back(parameter("TILE_LATENCY", tile_latency));
     }
-    return {parameter("M", m),
-            parameter("AW", address_bits),
-            parameter("FLOAT", is_float ? 1 : 0),
-            parameter("WIDTH", is_float ? 32 : format_bits),
-            parameter("COMPARE_LATENCY", compare_latency),
-            parameter("FIFO_DEPTH", fifo_depth),
-            parameter("BUFFER_DEPTH", buffer_depth),
-            parameter("TILE_BOXES", tile_boxes),
-            parameter("TILE_LATENCY", tile_latency)};
+    return parameters;
 }
 
 RtlVariant RtlVariant::for_board(const BoardConfig& config, uint32_t capacity) {

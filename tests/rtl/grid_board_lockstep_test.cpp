@@ -142,10 +142,7 @@ TEST(GridBoardLockstep, AModelOfAnotherGridPartsFromTheRtl) {
     model.grid.cell_capacity -= 1;
     std::mt19937 rng(11);
     const auto boxes = random_boxes(120, 12.0f, 3.0f, rng);
-    CoordinateStore store;
-    for (uint32_t c = 0; c < kCoordinates; ++c) {
-        for (const FloatBox& b : boxes) store[c].push_back(ComparisonUnit::as_bits(c < 3 ? b.min[c] : b.max[c - 3]));
-    }
+    const CoordinateStore store = testing::float32_store(boxes);
     const auto capacity = static_cast<uint32_t>(built->variant.capacity());
     LockstepEngine lockstep(model, rtl, capacity);
     lockstep.start(store, 120);

@@ -119,10 +119,7 @@ TEST(RtlLockstepCheck, StopsAtTheFirstDifferenceWithItsCycleAndSignal) {
     model.compare.latency_cycles -= 1;
     std::mt19937 rng(7);
     const auto boxes = random_boxes(64, 8.0f, 3.0f, rng);
-    CoordinateStore store;
-    for (uint32_t c = 0; c < kCoordinates; ++c) {
-        for (const FloatBox& b : boxes) store[c].push_back(ComparisonUnit::as_bits(c < 3 ? b.min[c] : b.max[c - 3]));
-    }
+    const CoordinateStore store = testing::float32_store(boxes);
     // The model's first edge with hits.
     ClockedEngine alone(model, 64);
     alone.start(store, 64);

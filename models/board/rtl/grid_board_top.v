@@ -143,19 +143,7 @@ module grid_board_top #(
         end
     endgenerate
     wire [6*WIDTH-1:0] box_words;
-    generate
-        if (LAT == 0) begin : g_flow_through
-            assign box_words = answer;
-        end else begin : g_pipelined
-            reg [6*WIDTH-1:0] read_stage [0:LAT-1];
-            integer r;
-            always @(posedge clk) if (enable) begin
-                read_stage[0] <= answer;
-                for (r = 1; r < LAT; r = r + 1) read_stage[r] <= read_stage[r-1];
-            end
-            assign box_words = read_stage[LAT-1];
-        end
-    endgenerate
+    slot_delay #(.W(6 * WIDTH), .STAGES(LAT)) read_stages (.clk(clk), .enable(enable), .d(answer), .q(box_words));
 
     // ------------------------------------------------------------------
     // The sequencer, the cell loader and the cell buffer.
@@ -284,19 +272,7 @@ module grid_board_top #(
     localparam MW = 1 + 24 + 24 + AW + LANES * (24 + AW);
     wire [MW-1:0] meta_in = {large_q, here, row_entry[EW-1 -: 24], row_index, column_first, column_index};
     wire [MW-1:0] meta;
-    generate
-        if (COMPARE_LATENCY == 0) begin : g_combinational
-            assign meta = meta_in;
-        end else begin : g_staged
-            reg [MW-1:0] meta_q [0:COMPARE_LATENCY-1];
-            integer t;
-            always @(posedge clk) if (enable) begin
-                meta_q[0] <= meta_in;
-                for (t = 1; t < COMPARE_LATENCY; t = t + 1) meta_q[t] <= meta_q[t-1];
-            end
-            assign meta = meta_q[COMPARE_LATENCY-1];
-        end
-    endgenerate
+    slot_delay #(.W(MW), .STAGES(COMPARE_LATENCY)) meta_stages (.clk(clk), .enable(enable), .d(meta_in), .q(meta));
     wire meta_large = meta[MW-1];
     wire [23:0] meta_here = meta[MW-2 -: 24];
     wire [23:0] meta_row_first = meta[MW-26 -: 24];
@@ -349,4 +325,29 @@ module grid_board_top #(
             default: grid_register = 0;
         endcase
     end
+endmodule
+
+// STAGES registers clocked with the slots (none: a wire).
+module slot_delay #(
+    parameter W = 8,
+    parameter STAGES = 1
+) (
+    input  wire         clk,
+    input  wire         enable,
+    input  wire [W-1:0] d,
+    output wire [W-1:0] q
+);
+    generate
+        if (STAGES == 0) begin : g_wire
+            assign q = d;
+        end else begin : g_stages
+            reg [W-1:0] stage [0:STAGES-1];
+            integer s;
+            always @(posedge clk) if (enable) begin
+                stage[0] <= d;
+                for (s = 1; s < STAGES; s = s + 1) stage[s] <= stage[s-1];
+            end
+            assign q = stage[STAGES-1];
+        end
+    endgenerate
 endmodule
