@@ -5,7 +5,8 @@
 # tiled, float32 and fixed point, combinational and piped compare lanes; then
 # the grid board's blocks (cell function, one-cell filter, cell loader and
 # buffer, binning sequencer) in float32 and fixed point, SSRAM latencies 0
-# and 8, one lane and many.
+# and 8, one lane and many; and the grid board's whole top
+# (models/board/rtl/grid_board_top.v) in five configurations.
 # Exit status 0 when every configuration is clean.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -71,5 +72,21 @@ for g in "${grid_configurations[@]}"; do
     status=1
   fi
 done
-[[ $status -eq 0 ]] && echo "lint-rtl.sh: $((${#configurations[@]} + ${#grid_configurations[@]})) configurations clean"
+# The grid board's top: the board's host side and lanes with the grid blocks.
+grid_top_configurations=(
+  ""
+  "-GM=8 -GAW=10 -GCOMPARE_LATENCY=0 -GLAT=0 -GFLOAT=0 -GWIDTH=16 -GCELL_CAPACITY=9 -GMAX_SPAN=1 -GENTRY_CAPACITY=100"
+  "-GM=3 -GAW=12 -GCOMPARE_LATENCY=1 -GLAT=8 -GDIMS=11 -GCELL_SIZE=32'h3F800000 -GCELL_CAPACITY=64 -GMAX_SPAN=27 -GENTRY_CAPACITY=110592"
+  "-GM=1 -GAW=4 -GFIFO_DEPTH=1 -GBUFFER_DEPTH=1 -GCELL_CAPACITY=2 -GMAX_SPAN=64 -GENTRY_CAPACITY=1024"
+  "-GM=2 -GAW=5 -GCELL_CAPACITY=512 -GENTRY_CAPACITY=256"
+)
+for g in "${grid_top_configurations[@]}"; do
+  # shellcheck disable=SC2086
+  if ! verilator --lint-only -Wall --top-module grid_board_top $g "${sources[@]}" "${grid_sources[@]:1}"; then
+    echo "lint-rtl.sh: not clean: grid_board_top ${g:-defaults}" >&2
+    status=1
+  fi
+done
+total=$((${#configurations[@]} + ${#grid_configurations[@]} + ${#grid_top_configurations[@]}))
+[[ $status -eq 0 ]] && echo "lint-rtl.sh: $total configurations clean"
 exit $status

@@ -155,7 +155,7 @@ row() {
 
 # The whole board's Verilog files (collision_board_top and every piece).
 board_sources() {
-    echo "$root/models/board/rtl/collision_board_top.v $root/models/board/rtl/board_ram.v" \
+    echo "$root/models/board/rtl/collision_board_top.v $root/models/board/rtl/board_host.v $root/models/board/rtl/board_ram.v" \
         "$root/models/board/rtl/tile_walker.v $root/models/address_generator/rtl/address_generator.v" \
         "$root/models/comparison_unit/rtl/float_le.v $root/models/comparison_unit/rtl/compare_lane.v" \
         "$root/models/pair_collector/rtl/pair_collector.v $root/models/control_registers/rtl/board_control.v"

@@ -59,9 +59,14 @@ void GridClockedEngine::advance_to(uint64_t edges) {
     while (pipeline_.state() == SweepState::kRunning && pipeline_.edges() < edges) step();
 }
 
+const GridClockedEngine::Slot GridClockedEngine::kNoSlot{};
+
 void GridClockedEngine::step() {
     pipeline_.step([this] { return issue(); },
-                   [](PairCollector& collector, const Slot& slot) { collector.push_pairs(slot.pairs.data(), slot.count); });
+                   [this](PairCollector& collector, const Slot& slot) {
+                       pushed_hits_ = slot.hits;
+                       collector.push_pairs(slot.pairs.data(), slot.count);
+                   });
 }
 
 bool GridClockedEngine::keys_of(uint32_t i, uint32_t (&keys)[kCoordinates]) const {

@@ -77,6 +77,14 @@ public:
     const PortWindow& last_issue() const { return last_issue_; }
     const Slot& compare_output() const { return pipeline_.compare_output(); }
     bool stalled() const { return pipeline_.stalled(); }
+    // The last edge's slot issued into the pipeline (a bubble when none was)
+    // and the lane hits, after the one-cell rule, it pushed into the FIFO (0
+    // when none): what the lockstep check holds the RTL to.
+    const Slot& issued() const {
+        const Slot* slot = pipeline_.issued();
+        return slot != nullptr ? *slot : kNoSlot;
+    }
+    uint64_t pushed_hits() const { return pipeline_.pushed_this_edge() ? pushed_hits_ : 0; }
     uint32_t fifo_level() const { return pipeline_.collector().fifo_level(); }
     SweepState state() const { return pipeline_.state(); }
     uint64_t edges() const { return pipeline_.edges(); }
@@ -140,6 +148,8 @@ private:
     uint32_t first_column_ = 0, columns_left_ = 0;
     bool end_issued_ = false;
     uint64_t slots_issued_ = 0;
+    uint64_t pushed_hits_ = 0;  // the last push's lane hits
+    static const Slot kNoSlot;
     PortWindow last_issue_{};
 };
 

@@ -109,6 +109,12 @@ Resources SynthesisTable::home_cell_filter(const std::string& family, uint32_t m
     return by_m(family, "home_cell_filter", "-", m);
 }
 
+Resources SynthesisTable::grid_sequencer(const std::string& family) const {
+    const Row* row = find(family, "grid_sequencer", "float32");
+    if (row == nullptr) throw std::invalid_argument("no synthesis of the grid sequencer for the " + family + " family");
+    return row->resources;
+}
+
 Resources SynthesisTable::by_m(std::string_view family, std::string_view piece, std::string_view format,
                                uint32_t m) const {
     const Row* below = nullptr;
@@ -178,7 +184,7 @@ BoardResources grid_board_resources(const SynthesisTable& table, const DeviceCap
                                     const std::string& format, uint32_t m, double cell_buffer_block_rams) {
     BoardResources r = board_resources(table, device, format, m, cell_buffer_block_rams);
     r.grid_blocks = double(kCellFunctionUnits) * table.cell_function(device.family, format) +
-                    table.home_cell_filter(device.family, m);
+                    table.home_cell_filter(device.family, m) + table.grid_sequencer(device.family);
     r.memories_hold = "the cell buffer";
     return r;
 }

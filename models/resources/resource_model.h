@@ -59,6 +59,11 @@ public:
     // one-cell filter of an m board's 2m-1 lanes.
     Resources cell_function(const std::string& family, const std::string& format) const;
     Resources home_cell_filter(const std::string& family, uint32_t m) const;
+    // The binning sequencer's own logic (its cell-function units and cell
+    // memory apart): the one row synthesised, float32 at m = 8 and 2^16
+    // boxes, for every grid board (its passes, counters and setup arithmetic
+    // hardly depend on m, the format or the boxes' bits: docs/grid_board.md).
+    Resources grid_sequencer(const std::string& family) const;
     std::vector<std::string> families() const;
     std::vector<std::string> formats(const std::string& family) const;
 
@@ -127,7 +132,8 @@ struct BoardResources {
     Resources pair_collector;
     FifoMemory pair_fifo_memory = FifoMemory::kBlockRam;
     Resources control;
-    // The grid board's cell-function units and one-cell filter (none on the all-pairs board).
+    // The grid board's cell-function units, one-cell filter and binning
+    // sequencer (none on the all-pairs board).
     Resources grid_blocks;
     // What the block RAMs of coordinate_memories hold: "the boxes", or the
     // grid board's "the cell buffer" (a cell's boxes at a time).
@@ -150,9 +156,9 @@ BoardResources board_resources(const SynthesisTable& table, const DeviceCapacity
 // address generator, pair FIFO and controller around its cell buffer
 // ('cell_buffer_block_rams', BoardConfig::block_rams), plus the binning
 // stage's cell-function units (kCellFunctionUnits: one a bound of a box,
-// shared by the binning passes and the cell loader, which never run at once)
-// and the one-cell filter. The binning sequencer, the scan and the SSRAM
-// sequencing have no synthesis rows: not counted.
+// shared by the binning passes and the cell loader, which never run at once),
+// the one-cell filter and the binning sequencer's logic (its row). Its cell
+// memory is the board's SSRAM: no logic counted for it.
 BoardResources grid_board_resources(const SynthesisTable& table, const DeviceCapacity& device,
                                     const std::string& format, uint32_t m, double cell_buffer_block_rams);
 constexpr uint32_t kCellFunctionUnits = 6;

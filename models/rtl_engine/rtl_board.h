@@ -20,8 +20,13 @@ struct RtlMemoryShape {
     uint32_t address_bits = 9;  // AW: 2^AW boxes
     uint32_t tile_boxes = 0;    // TILE_BOXES (0: block RAM, no SSRAM)
     uint32_t tile_latency = 2;  // TILE_LATENCY
+    // 1: the grid board's top (grid_board_top.v): its boxes in SSRAM, which
+    // answers in its address's cycle (the top holds the read latency).
+    uint32_t grid = 0;
 
     uint64_t capacity() const { return uint64_t{1} << address_bits; }
+    bool has_ssram() const { return tile_boxes > 0 || grid != 0; }
+    uint32_t ssram_latency() const { return grid != 0 ? 0 : tile_latency; }
 };
 
 // What the RTL shows after a rising edge.
@@ -40,6 +45,9 @@ struct RtlProbes {
     uint32_t first_column = 0;  // port 1's box,
     uint64_t valid_lanes = 0;   // and the lanes with a box (a mask)
     uint64_t hits = 0;          // lane hits the next edge pushes into the FIFO
+    // The grid board's last sweep, as its grid registers keep it (GridSweepStats).
+    uint32_t grid_dims = 0, grid_large = 0, grid_overflow = 0, grid_excluded = 0, grid_busy = 0;
+    uint64_t grid_entries = 0, grid_slots = 0;
 
     static constexpr uint8_t kIdle = 1, kSweep = 2, kDrain = 4, kPaused = 8, kDone = 16;
 };

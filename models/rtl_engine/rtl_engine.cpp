@@ -37,7 +37,7 @@ void RtlEngine::upload(const CoordinateStore& store, uint32_t objects) {
             if (loaded_[c][i] != store[c][i]) words.push_back({c, i, store[c][i]});
         }
     }
-    if (config_.tiles.tiled()) {
+    if (variant_.memory().has_ssram()) {
         for (const Word& w : words) board_->load_ssram(w.coordinate, w.index, w.value);
     } else {
         // The host's writes come before START: place them on the edges just before it.
@@ -53,6 +53,19 @@ void RtlEngine::upload(const CoordinateStore& store, uint32_t objects) {
         }
     }
     for (const Word& w : words) loaded_[w.coordinate][w.index] = w.value;
+}
+
+GridSweepStats RtlEngine::grid_stats() const {
+    if (!variant_.grid) return {};
+    GridSweepStats stats;
+    stats.dims = probes_.grid_dims;
+    stats.large_boxes = probes_.grid_large;
+    stats.overflow_boxes = probes_.grid_overflow;
+    stats.excluded_boxes = probes_.grid_excluded;
+    stats.cell_entries = probes_.grid_entries;
+    stats.busy_cells = probes_.grid_busy;
+    stats.slots = probes_.grid_slots;
+    return stats;
 }
 
 void RtlEngine::command(uint32_t control) {

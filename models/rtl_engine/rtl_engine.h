@@ -1,11 +1,12 @@
-// The RTL engine: the whole-board RTL (models/board/rtl/collision_board_top.v),
-// compiled by Verilator, behind the BoardEngine seam. BoardCore keeps the
-// host's registers and stores; at START this engine writes the boxes that
-// changed into the RTL's coordinate memories (or its SSRAM) over the RTL's
-// own register bus, writes OBJECT_COUNT and START, and clocks the RTL edge
-// by edge: its counters, state and the pairs entering its pair buffer are
-// what counters_after() and buffer_entry() answer. Like the clocked engine
-// it may step a segment ahead in bulk and answer for earlier edges.
+// The RTL engine: the whole-board RTL (models/board/rtl/collision_board_top.v,
+// or grid_board_top.v for a grid board), compiled by Verilator, behind the
+// BoardEngine seam. BoardCore keeps the host's registers and stores; at
+// START this engine writes the boxes that changed into the RTL's coordinate
+// memories over the RTL's own register bus (a tiled or grid board's SSRAM
+// directly), writes OBJECT_COUNT and START, and clocks the RTL edge by edge:
+// its counters, state and the pairs entering its pair buffer are what
+// counters_after() and buffer_entry() answer. Like the clocked engine it may
+// step a segment ahead in bulk and answer for earlier edges.
 #pragma once
 
 #include <cstdint>
@@ -39,6 +40,8 @@ public:
     bool segment_finishes() override;
     SweepCounters counters_after(uint64_t edges) override;
     const IndexPair& buffer_entry(uint32_t k) override { return pairs_[k]; }
+    // A grid board's last sweep, as its grid registers keep it.
+    GridSweepStats grid_stats() const override;
 
     // Steps the RTL to `edges` edges of the segment, or to its end.
     void advance_to(uint64_t edges);

@@ -99,7 +99,8 @@ std::string entry_source(const RtlKit& kit, const RtlVariant& variant) {
     std::string text = read_text(kit.path(kit.cxx.front()));
     if (text.empty()) throw InputError(kit.path(kit.cxx.front()) + ": cannot read the RTL model's entry template");
     const std::pair<std::string, std::string> fills[] = {{"@prefix@", "Vcdvp_rtl_" + variant.name()},
-                                                         {"@entry@", kRtlBoardMakerSymbol}};
+                                                         {"@entry@", kRtlBoardMakerSymbol},
+                                                         {"@probes@", variant.probes()}};
     for (const auto& [key, value] : fills) {
         for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size())) {
             text.replace(at, key.size(), value);
@@ -172,7 +173,7 @@ std::string compile_rtl_model(const RtlVariant& variant, const RtlToolchain& too
     const unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
     std::vector<std::string> args{tools.verilator, "--cc", "--exe", "--build", "-j", std::to_string(jobs),
                                   "--Mdir", directory + "/verilated", "--prefix", "Vcdvp_rtl_" + variant.name(),
-                                  "--top-module", "collision_board_top", "--trace", "-o", directory + "/model.so",
+                                  "--top-module", variant.top(), "--trace", "-o", directory + "/model.so",
                                   "-MAKEFLAGS", "CXX=" + tools.compiler, "-MAKEFLAGS", "LINK=" + tools.compiler,
                                   "-CFLAGS", "-I" + kit.root};
     const std::vector<std::string>& options = rtl_model_make_options();

@@ -1,5 +1,5 @@
-// Which Verilator build of the board RTL (models/board/rtl/collision_board_top.v)
-// serves a board. Verilator fixes a top's parameters when it compiles it, so
+// Which Verilator build of the board RTL (models/board/rtl/collision_board_top.v,
+// or grid_board_top.v for board.algorithm grid) serves a board. Verilator fixes a top's parameters when it compiles it, so
 // each parameter set is its own C++ model: those of the CMake list
 // CDVP_RTL_VARIANTS are built into the binary, any other is compiled on first
 // use into a per-user cache and loaded from there (rtl_model_cache.h, docs/rtl.md).
@@ -26,16 +26,29 @@ struct RtlVariant {
     uint32_t tile_boxes = 0;         // TILE_BOXES (0: block RAM)
     uint32_t tile_latency = 2;       // TILE_LATENCY
     uint32_t address_bits = 9;       // AW: 2^AW boxes
+    // The grid board (grid_board_top.v) when set; its SSRAM latency is
+    // tile_latency (LAT) and the grid as built:
+    bool grid = false;
+    uint32_t grid_dims = 0;          // DIMS
+    uint32_t cell_size_bits = 0;     // CELL_SIZE (binary32 bits)
+    uint32_t cell_capacity = 512;    // CELL_CAPACITY
+    uint32_t max_span = 8;           // MAX_SPAN
+    uint64_t entry_capacity = 0;     // ENTRY_CAPACITY: the board's, at most 2^AW x max_span (never fills)
 
     uint64_t capacity() const { return uint64_t{1} << address_bits; }
     NumberFormat format() const { return format_bits == 0 ? NumberFormat::float32() : NumberFormat::fixed(format_bits); }
-    // "m=8,format=float32,latency=2,fifo=512,buffer=262144,tile=0,tile_latency=2,capacity=512"
+    // "m=8,format=float32,latency=2,fifo=512,buffer=262144,tile=0,tile_latency=2,capacity=512";
+    // a grid board's adds ",algorithm=grid,dims=0,cell_size=0,cell_capacity=512,max_span=8,entries=4096".
     std::string spec() const;
-    // "m8_float32_l2_f512_b262144_t0_s2_a9": a name for files and C++ classes.
+    // "m8_float32_l2_f512_b262144_t0_s2_a9" (a grid board's with "_grid_d0_z0_c512_k8_e4096"):
+    // a name for files and C++ classes.
     std::string name() const;
+    // The Verilog top it compiles, and the C++ type that reads its probes (verilated_board.h).
+    std::string top() const { return grid ? "grid_board_top" : "collision_board_top"; }
+    std::string probes() const { return grid ? "GridTopProbes" : "AllPairsTopProbes"; }
     // The top's parameters as Verilator takes them: "-GM=8", "-GAW=9", ...
     std::vector<std::string> verilator_parameters() const;
-    RtlMemoryShape memory() const { return {address_bits, tile_boxes, tile_latency}; }
+    RtlMemoryShape memory() const { return {address_bits, tile_boxes, tile_latency, grid ? 1u : 0u}; }
     // The variant a board of this configuration and capacity needs (the
     // smallest power-of-two capacity at or above it, at least 2^4).
     static RtlVariant for_board(const BoardConfig& config, uint32_t capacity);

@@ -26,7 +26,7 @@ const StateNames& rtl_controller_states() {
 }
 
 std::vector<TracedSignal> rtl_waves(const RtlVariant& v) {
-    const std::string top = "board.collision_board_top.";
+    const std::string top = "board." + v.top() + ".";
     const int aw = static_cast<int>(v.address_bits);
     const int lanes = static_cast<int>(2 * v.m - 1);
     const int buffer_bits = (v.buffer_depth > 1 ? log2_ceiling(v.buffer_depth) : 1) + 1;
@@ -53,7 +53,7 @@ std::vector<TracedSignal> rtl_waves(const RtlVariant& v) {
         {"board: pair collector", top + "buffered", buffer_bits, F::kDecimal},
         {"board: pair collector", top + "total_pairs", 64, F::kDecimal},
     };
-    if (v.tile_boxes != 0) {
+    if (v.memory().has_ssram()) {
         waves.push_back({"board: tile loader", "board.ssram_re", 1, F::kBit});
         waves.push_back({"board: tile loader", "board.ssram_addr", aw, F::kDecimal});
     }

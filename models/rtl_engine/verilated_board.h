@@ -1,6 +1,6 @@
-// RtlBoard for one Verilator-built variant of collision_board_top: Model is
-// the generated class (Vcdvp_rtl_<name>), Root its root (the public signals
-// of probes.vlt). Included only by a variant's entry (rtl_model_entry.cpp.in),
+// RtlBoard for one Verilator-built variant of a board top (collision_board_top
+// or grid_board_top): Model is the generated class (Vcdvp_rtl_<name>), Root
+// its root (the public signals of probes.vlt), Probes how to read them. Included only by a variant's entry (rtl_model_entry.cpp.in),
 // compiled with Verilator's headers: at build time for a built-in variant, on
 // first use for the others (part of the RTL kit: standard and Verilator
 // headers and rtl_board.h only).
@@ -18,16 +18,61 @@
 
 namespace cdvp {
 
-template <class Model, class Root>
+// The signals both tops name alike (probes.vlt), read from Verilator's root
+// of the top `top`.
+#define CDVP_READ_BOARD_PROBES(r, top, p)                        \
+    do {                                                          \
+        (p).state = (r).top##__DOT__state;                        \
+        (p).cycles = (r).top##__DOT__cycles;                      \
+        (p).stalls = (r).top##__DOT__stalls;                      \
+        (p).total_pairs = (r).top##__DOT__total_pairs;            \
+        (p).buffered = (r).top##__DOT__buffered;                  \
+        (p).fifo_level = (r).top##__DOT__fifo_level;              \
+        (p).pair_valid = (r).top##__DOT__out_valid;               \
+        (p).enable = (r).top##__DOT__enable;                      \
+        (p).window = (r).top##__DOT__src_window;                  \
+        (p).row = (r).top##__DOT__src_row;                        \
+        (p).first_column = (r).top##__DOT__src_first;             \
+        (p).valid_lanes = (r).top##__DOT__src_valid;              \
+        (p).hits = (r).top##__DOT__pushed_hits;                   \
+    } while (false)
+
+// The seed's board (collision_board_top.v).
+struct AllPairsTopProbes {
+    template <class Root>
+    static uint64_t read(const Root& r, RtlProbes& p) {
+        CDVP_READ_BOARD_PROBES(r, collision_board_top, p);
+        return r.collision_board_top__DOT__out_pair;
+    }
+};
+// The grid board (grid_board_top.v), with its last sweep's registers.
+struct GridTopProbes {
+    template <class Root>
+    static uint64_t read(const Root& r, RtlProbes& p) {
+        CDVP_READ_BOARD_PROBES(r, grid_board_top, p);
+        p.grid_dims = r.grid_board_top__DOT__sweep_dims;
+        p.grid_large = r.grid_board_top__DOT__sweep_large;
+        p.grid_overflow = r.grid_board_top__DOT__sweep_overflow;
+        p.grid_excluded = r.grid_board_top__DOT__sweep_excluded;
+        p.grid_busy = r.grid_board_top__DOT__sweep_busy;
+        p.grid_entries = r.grid_board_top__DOT__sweep_entries;
+        p.grid_slots = r.grid_board_top__DOT__sweep_slots;
+        return r.grid_board_top__DOT__out_pair;
+    }
+};
+#undef CDVP_READ_BOARD_PROBES
+
+// Probes: AllPairsTopProbes or GridTopProbes, after the top compiled.
+template <class Model, class Root, class Probes>
 class VerilatedBoard final : public RtlBoard {
 public:
     explicit VerilatedBoard(const RtlMemoryShape& shape)
         : shape_(shape), context_(std::make_unique<VerilatedContext>()) {
         context_->traceEverOn(true);
         model_ = std::make_unique<Model>(context_.get(), "board");
-        if (shape_.tile_boxes > 0) {
+        if (shape_.has_ssram()) {
             ssram_.assign(kSsramBanks * shape_.capacity(), 0);
-            answers_.assign(shape_.tile_latency + 1, Word{});
+            answers_.assign(shape_.ssram_latency() + 1, Word{});
         }
         model_->clk = 0;
         model_->reset = 1;
@@ -71,11 +116,11 @@ public:
             // A pipelined read answers tile_latency edges after its address.
             for (std::size_t s = answers_.size() - 1; s >= 2; --s) answers_[s] = answers_[s - 1];
             if (answers_.size() >= 2) answers_[1] = read_now;
-            if (shape_.tile_latency > 0) drive_ssram(answers_[shape_.tile_latency]);
+            if (shape_.ssram_latency() > 0) drive_ssram(answers_[shape_.ssram_latency()]);
         }
         model_->clk = 0;
         model_->eval();
-        if (tiled && shape_.tile_latency == 0) {
+        if (tiled && shape_.ssram_latency() == 0) {
             // A flow-through SSRAM answers the address it sees in the same cycle.
             drive_ssram(ssram_word(model_->ssram_addr));
             model_->eval();
@@ -101,24 +146,10 @@ public:
     }
 
     RtlProbes probes() const override {
-        const Root& r = *model_->rootp;
         RtlProbes p;
-        p.state = r.collision_board_top__DOT__state;
-        p.cycles = r.collision_board_top__DOT__cycles;
-        p.stalls = r.collision_board_top__DOT__stalls;
-        p.total_pairs = r.collision_board_top__DOT__total_pairs;
-        p.buffered = r.collision_board_top__DOT__buffered;
-        p.fifo_level = r.collision_board_top__DOT__fifo_level;
-        p.pair_valid = r.collision_board_top__DOT__out_valid;
-        const uint64_t pair = r.collision_board_top__DOT__out_pair;
+        const uint64_t pair = Probes::read(*model_->rootp, p);
         const uint64_t index_mask = (uint64_t{1} << shape_.address_bits) - 1;
         p.pair = IndexPair{static_cast<uint32_t>(pair >> shape_.address_bits), static_cast<uint32_t>(pair & index_mask)};
-        p.enable = r.collision_board_top__DOT__enable;
-        p.window = r.collision_board_top__DOT__src_window;
-        p.row = r.collision_board_top__DOT__src_row;
-        p.first_column = r.collision_board_top__DOT__src_first;
-        p.valid_lanes = r.collision_board_top__DOT__src_valid;
-        p.hits = r.collision_board_top__DOT__pushed_hits;
         return p;
     }
 

@@ -88,10 +88,9 @@ TEST_F(CliGrid, ScenesPastTheCellBufferOrTheSsramAreRefused) {
         << "--ignore-capacity explores a larger memory";
     expect_refusal(run(spheres(100, 1) + "-c board.algorithm=grid -c board.grid.dims=300"),
                    "cdvp run: -c board.grid.dims: expected an integer from 0 to 256, got '300'");
-    expect_refusal(run(spheres(100, 1) + "-c board.algorithm=grid --fidelity rtl"),
-                   "cdvp run: --fidelity rtl at 100 objects (--objects): fidelity rtl: the grid board (board.algorithm "
-                   "grid) has no RTL top: only its binning sequencer, cell function, one-cell filter, cell loader and "
-                   "cell buffer are RTL, tested block by block; run it at the cycle, fast or analytic level");
+    expect_refusal(run(spheres(100, 1) + "-c board.algorithm=grid -c device.ssram_banks=3 --fidelity rtl"),
+                   "cdvp run: --fidelity rtl at 100 objects (--objects): fidelity rtl: the grid board RTL reads a box "
+                   "from six SSRAM banks in one slot (q = 1); cycles_per_box is 2 (device.ssram_banks below 6)");
     EXPECT_EQ(files(), std::vector<std::string>{}) << "a refused run leaves no output";
 }
 

@@ -30,7 +30,8 @@ SynthesisTable small_table() {
                                      "xc2v,grid_cell_function,fixed8,-,-,-,700,0,130,300,0,4\n"
                                      "xc2v,grid_cell_function,fixed16,-,-,-,800,0,130,300,0,4\n"
                                      "xc2v,home_cell_filter,-,1,-,-,7,0,0,0,0,0\n"
-                                     "xc2v,home_cell_filter,-,3,-,-,27,0,0,0,0,0\n",
+                                     "xc2v,home_cell_filter,-,3,-,-,27,0,0,0,0,0\n"
+                                     "xc2v,grid_sequencer,float32,8,16,-,5000,0,600,2000,0,6\n",
                                  "small.csv");
 }
 
@@ -93,15 +94,17 @@ TEST(BoardResources, PutThePairFifoInLutsWhenTheMemoriesTakeEveryBlockRam) {
     EXPECT_DOUBLE_EQ(r.pair_collector.luts, (2200 + 3600) / 2);
 }
 
-TEST(BoardResources, TheGridBoardAddsSixCellFunctionsAndItsFilterAroundItsCellBuffer) {
+TEST(BoardResources, TheGridBoardAddsSixCellFunctionsItsFilterAndItsSequencerAroundItsCellBuffer) {
     const SynthesisTable table = small_table();
     const BoardResources all_pairs = board_resources(table, kDevice, "float32", 2, 12);
     const BoardResources grid = grid_board_resources(table, kDevice, "float32", 2, 12);
     EXPECT_STREQ(all_pairs.memories_hold, "the boxes");
     EXPECT_STREQ(grid.memories_hold, "the cell buffer");
     EXPECT_DOUBLE_EQ(all_pairs.grid_blocks.luts, 0);
-    EXPECT_DOUBLE_EQ(grid.grid_blocks.luts, 6 * 900 + (7 + 27) / 2.0);  // the filter at m = 2: between m = 1 and 3
-    EXPECT_DOUBLE_EQ(grid.grid_blocks.multipliers, 6 * 4);
+    // The filter at m = 2: between m = 1 and 3; the sequencer's one row whatever m and the format.
+    EXPECT_DOUBLE_EQ(grid.grid_blocks.luts, 6 * 900 + (7 + 27) / 2.0 + 5000);
+    EXPECT_DOUBLE_EQ(grid.grid_blocks.multipliers, 6 * 4 + 6);
+    EXPECT_DOUBLE_EQ(grid_board_resources(table, kDevice, "fixed8", 3, 12).grid_blocks.flip_flops, 6 * 130 + 600);
     EXPECT_DOUBLE_EQ(grid.total().luts, all_pairs.total().luts + grid.grid_blocks.luts);
     EXPECT_DOUBLE_EQ(grid.total().block_rams, all_pairs.total().block_rams);
     // fixedK between two synthesised widths: interpolated in K; beyond them, no guess.

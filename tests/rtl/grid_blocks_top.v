@@ -50,7 +50,7 @@ module grid_blocks_top (
         .hits(hits), .here(here), .row_first(row_first), .column_first(column_first), .kept(kept));
     wire write_half;
     cell_loader #(.FLOAT(1), .WIDTH(32), .AW(10), .EAW(12), .CAW(6), .LAT(2)) loader (
-        .clk(clk), .enable(enable), .start(load_start), .half(load_half), .count(load_count),
+        .clk(clk), .enable(enable), .clear(1'b0), .start(load_start), .half(load_half), .count(load_count),
         .first_entry(load_first_entry), .lo(grid_lo), .scale(grid_scale), .dims(dims),
         .entry_re(entry_re), .entry_addr(entry_addr), .entry_word(entry_word),
         .box_re(box_re), .box_addr(box_addr), .box_words(box_words),

@@ -82,14 +82,14 @@ module grid_sequencer_harness #(
         
         .load_start(load_start), .load_due(load_due), .load_half(load_half), .load_count(load_count), .load_first(load_first),
         .load_done(load_done), .entry_addr(entry_addr), .entry_word(entry_word),
-        .grid_lo(lo), .grid_scale(scale), .grid_dims(dims),
+        .grid_lo(lo), .grid_scale(scale), .grid_dims(dims), .stream_words(),
         .slot_kind(slot_kind), .window_row(window_row), .window_column(window_column), .window_lanes(window_lanes),
         .sweep_half(sweep_half), .pass(pass), .box(box), .cell_number(cell_number), .tile(tile),
         .waiting(waiting), .last_row(last_row), .last_column(last_column), .last_lanes(last_lanes),
         .large_boxes(large_boxes), .overflow_boxes(overflow_boxes), .excluded_boxes(excluded_boxes),
         .cell_entries(cell_entries), .busy_cells(busy_cells), .slots(slots));
     cell_loader #(.FLOAT(FLOAT), .WIDTH(WIDTH), .AW(AW), .EAW(EAW), .CAW(CAW), .LAT(LAT)) loader (
-        .clk(clk), .enable(enable), .start(load_start), .half(load_half), .count(load_count),
+        .clk(clk), .enable(enable), .clear(start), .start(load_start), .half(load_half), .count(load_count),
         .first_entry(load_first), .lo(lo), .scale(scale), .dims(dims),
         .entry_re(entry_re), .entry_addr(entry_addr), .entry_word(entry_word),
         .box_re(loader_re), .box_addr(loader_addr), .box_words(words),

@@ -34,10 +34,16 @@ CDVP_RTL_CACHE="$cache" "$work/prefix/bin/cdvp" run --board adm-xrc-ii --m 3 --f
 entry="$kit/models/rtl_engine/rtl_model_entry.cpp.in"
 verilog=()
 for file in "$@"; do case "$file" in *.v|*.vlt) verilog+=("$kit/$file") ;; esac; done
-verilator --cc --Mdir "$work/obj" --prefix Vkit --top-module collision_board_top --trace -GM=2 -GAW=5 \
-  "${verilog[@]}" > "$work/verilator.log" 2>&1 || fail "verilator on the installed kit: $(tail -5 "$work/verilator.log")"
-sed -e 's/@prefix@/Vkit/g' -e 's/@entry@/cdvp_rtl_make_board/g' "$entry" > "$work/entry.cpp"
 root=$(verilator --getenv VERILATOR_ROOT)
-"$compiler" -std=c++17 -fsyntax-only -I "$kit" -I "$work/obj" -I "$root/include" -I "$root/include/vltstd" "$work/entry.cpp" 2> "$work/cxx.log" ||
-  fail "the entry does not compile from the kit alone: $(head -5 "$work/cxx.log")"
-echo "installed kit: $# files, loaded from the cache, the entry compiles from the kit alone"
+# Both tops, each with the reader of its probes.
+for top in collision_board_top:AllPairsTopProbes grid_board_top:GridTopProbes; do
+  module=${top%%:*}
+  probes=${top##*:}
+  rm -rf "$work/obj"
+  verilator --cc --Mdir "$work/obj" --prefix Vkit --top-module "$module" --trace -GM=2 -GAW=5 \
+    "${verilog[@]}" > "$work/verilator.log" 2>&1 || fail "verilator on the installed kit ($module): $(tail -5 "$work/verilator.log")"
+  sed -e 's/@prefix@/Vkit/g' -e 's/@entry@/cdvp_rtl_make_board/g' -e "s/@probes@/$probes/g" "$entry" > "$work/entry.cpp"
+  "$compiler" -std=c++17 -fsyntax-only -I "$kit" -I "$work/obj" -I "$root/include" -I "$root/include/vltstd" "$work/entry.cpp" 2> "$work/cxx.log" ||
+    fail "the entry of $module does not compile from the kit alone: $(head -5 "$work/cxx.log")"
+done
+echo "installed kit: $# files, loaded from the cache, the entry of either top compiles from the kit alone"

@@ -477,7 +477,7 @@ public:
         sim.write_vectors(lines_, "commands.txt");
         const std::vector<std::string> results =
             sim.run("tb_board_top",
-                    {"models/board/rtl/collision_board_top.v", "models/board/rtl/board_ram.v",
+                    {"models/board/rtl/collision_board_top.v", "models/board/rtl/board_host.v", "models/board/rtl/board_ram.v",
                      "models/board/rtl/tile_walker.v", "models/address_generator/rtl/address_generator.v",
                      "models/comparison_unit/rtl/float_le.v", "models/comparison_unit/rtl/compare_lane.v",
                      "models/pair_collector/rtl/pair_collector.v", "models/control_registers/rtl/board_control.v"},

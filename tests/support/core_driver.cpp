@@ -83,4 +83,12 @@ uint32_t read_register(BoardCore& core, uint32_t offset) {
     return value;
 }
 
+CoordinateStore float32_store(const std::vector<FloatBox>& boxes) {
+    CoordinateStore store;
+    for (uint32_t c = 0; c < kCoordinates; ++c) {
+        for (const FloatBox& b : boxes) store[c].push_back(ComparisonUnit::as_bits(c < 3 ? b.min[c] : b.max[c - 3]));
+    }
+    return store;
+}
+
 }  // namespace cdvp::testing

@@ -20,6 +20,9 @@ struct CoreRun {
 // Loads boxes, starts, steps until done, drains the pair buffer on each pause.
 CoreRun run_core(BoardCore& core, const std::vector<FloatBox>& boxes);
 
+// The float32 words of boxes as an engine's box store holds them.
+CoordinateStore float32_store(const std::vector<FloatBox>& boxes);
+
 // Boxes with corners uniform in [0, extent)^3 and sizes uniform in [0, size).
 std::vector<FloatBox> random_boxes(std::size_t n, float extent, float size, std::mt19937& rng);
 

@@ -16,6 +16,7 @@ module cell_loader #(
 ) (
     input  wire                 clk,
     input  wire                 enable,
+    input  wire                 clear,        // a new sweep: a load cut short by ABORT ends
     input  wire                 start,        // slot 0 of a load (while none is under way)
     input  wire                 half,         // the half it fills
     input  wire [CAW:0]         count,        // n >= 1
@@ -72,7 +73,9 @@ module cell_loader #(
     assign done = live && now == boxes + FILL_SLOTS - 1'b1;
     assign busy = active;
 
-    always @(posedge clk) if (enable) begin
+    always @(posedge clk) if (clear) begin
+        active <= 0;
+    end else if (enable) begin
         if (start) begin
             active <= !done;
             slot <= 1;

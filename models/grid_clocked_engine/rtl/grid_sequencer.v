@@ -13,6 +13,7 @@
 //   cells   the busy cells' triangles, the next cell loaded (cell_loader)
 //           into the idle half while one is swept
 //   large   each tile of large boxes loaded, then every box streamed past it
+//           (read ahead from the box store into the row register)
 // Slots are clock edges with enable; a stall holds everything. One box a
 // slot from the box store (six SSRAM banks, GridSlots::cycles_per_box = 1),
 // as the cell loader reads it.
@@ -60,6 +61,8 @@ module grid_sequencer #(
     output wire [95:0]          grid_lo,
     output wire [95:0]          grid_scale,
     output wire [8:0]           grid_dims,
+    // The large sweep's streamed box (the row register): its words in each of its slots.
+    output wire [6*WIDTH-1:0]   stream_words,
     // This slot: its kind (0 bubble, 1 sweep, 2 end) and window, the half the lanes read.
     output reg  [1:0]           slot_kind,
     output reg  [31:0]          window_row,
@@ -165,8 +168,10 @@ module grid_sequencer #(
     wire pop;                                 // a box's first slot takes its data
     wire [AW:0] outstanding = issued - popped - {{AW{1'b0}}, pop};
     wire read_ahead = binning && issued < objects && {{(31-AW){1'b0}}, outstanding} <= FILL;
-    assign box_re = (pass == BOUNDS && pass_slot < n_objects) || read_ahead;
-    assign box_addr = pass == BOUNDS ? pass_slot[AW-1:0] : issued[AW-1:0];
+    wire stream_read;                         // the large sweep reads its next streamed box
+    wire [AW-1:0] stream_issued;
+    assign box_re = (pass == BOUNDS && pass_slot < n_objects) || read_ahead || stream_read;
+    assign box_addr = pass == BOUNDS ? pass_slot[AW-1:0] : pass == LARGE ? stream_issued : issued[AW-1:0];
 
     // Six cell-function units on the words LAT slots after a read; the
     // box's flags delayed to meet their cells F slots later.
@@ -309,6 +314,59 @@ module grid_sequencer #(
     wire stream_box_ends = columns_now <= LANES;   // q = 1: the box's slots end with its columns
     wire [AW:0] tile_next = tile_begin + {{(AW-CAW){1'b0}}, tile_count};
     wire [AW:0] tile_rest = large_n - tile_next;
+
+    // ---- Large: the streamed boxes read ahead into the row register -------------
+    // Box j is read at least LAT slots before its first slot (a tile's lead
+    // leaves LAT slots after the loader's last read), a box a slot, never
+    // more than LAT + 1 boxes ahead of the one streamed; they wait in a FIFO,
+    // and the row register holds box j's words over its slots.
+    localparam SAW = $clog2(LAT + 2);
+    reg [AW:0] s_issued, s_popped;
+    reg [6*WIDTH-1:0] s_fifo [0:(1<<SAW)-1];
+    reg [SAW:0] s_n;
+    reg [SAW-1:0] s_head;
+    reg [6*WIDTH-1:0] row_register;
+    wire s_arriving;                          // the words of a read LAT slots ago
+    wire [31:0] s_ahead_limit = {{(31-AW){1'b0}}, s_popped} + {31'b0, box_begins} + LAT;
+    assign stream_read = pass == LARGE && pass_slot + LAT >= lead && s_issued < objects &&
+                         {{(31-AW){1'b0}}, s_issued} <= s_ahead_limit;
+    assign stream_issued = s_issued[AW-1:0];
+    wire [6*WIDTH-1:0] s_next = s_n != 0 ? s_fifo[s_head] : box_words;
+    assign stream_words = box_begins ? s_next : row_register;
+    generate
+        if (LAT == 0) begin : g_stream_now
+            assign s_arriving = stream_read;
+        end else begin : g_stream_later
+            reg [LAT-1:0] s_ahead;
+            integer t;
+            always @(posedge clk) begin
+                if (start) begin
+                    s_ahead <= 0;
+                end else if (enable) begin
+                    s_ahead[0] <= stream_read;
+                    for (t = 1; t < LAT; t = t + 1) s_ahead[t] <= s_ahead[t-1];
+                end
+            end
+            assign s_arriving = s_ahead[LAT-1];
+        end
+    endgenerate
+    always @(posedge clk) begin
+        if (start || (enable && (pass != LARGE || pass_slot == 0))) begin
+            s_issued <= 0;
+            s_popped <= 0;
+            s_n <= 0;
+            s_head <= 0;
+        end else if (enable) begin
+            if (stream_read) s_issued <= s_issued + 1'b1;
+            if (box_begins) begin
+                s_popped <= s_popped + 1'b1;
+                row_register <= s_next;
+            end
+            if (s_arriving && !(box_begins && s_n == 0)) s_fifo[s_head + s_n[SAW-1:0]] <= box_words;
+            if (box_begins && s_n != 0) s_head <= s_head + 1'b1;
+            s_n <= s_n + {{SAW{1'b0}}, s_arriving} - {{SAW{1'b0}}, box_begins};
+        end
+    end
 
     // ---- The slot's kind and window --------------------------------------------
     always @* begin

@@ -6,19 +6,25 @@
 // head entry's mask each cycle (a priority encoder) and clears it, and
 // moves to the next entry when the mask is empty. One write and one read a
 // cycle, so the entries fit a simple dual-port memory whatever m is.
+// LISTED = 1 (the grid board, whose lanes read boxes by cell buffer
+// position): an entry keeps every lane's column index instead of the first,
+// {row, columns, hit mask}, and a pair leaves as {min, max} of the row and
+// its lane's column.
 module pair_collector #(
     parameter M = 8,
     parameter AW = 9,
     parameter DEPTH = 512,   // pairs (and entries: an entry holds at least one)
     parameter DISTRIBUTED = 0, // 1: entries in LUTs (distributed RAM), 0: in block RAM
-    parameter DRAIN_FIRST = 0  // 1: the pair leaving this cycle frees its place for this
+    parameter DRAIN_FIRST = 0, // 1: the pair leaving this cycle frees its place for this
                                // cycle's hits (the C++ model drains before it pushes)
+    parameter LISTED = 0       // 1: each lane's column given (columns), pairs as {min, max}
 ) (
     input  wire            clk,
     input  wire            clear,
     input  wire [2*M-2:0]  hits,
     input  wire [AW-1:0]   row,
     input  wire [AW-1:0]   first,
+    input  wire [(2*M-1)*AW-1:0] columns,  // LISTED: lane k's column at k*AW
     input  wire            drain_ready,  // the pair buffer takes a pair
     output wire            room,         // this cycle's hits fit
     output reg             out_valid,
@@ -26,7 +32,7 @@ module pair_collector #(
     output wire [$clog2(DEPTH+1)-1:0] level  // pairs held (before this cycle's move)
 );
     localparam LANES = 2 * M - 1;
-    localparam EW = 2 * AW + LANES;  // entry: row, first, mask
+    localparam EW = LISTED ? AW + LANES * AW + LANES : 2 * AW + LANES;  // entry: row, first or columns, mask
     localparam PW = DEPTH > 1 ? $clog2(DEPTH) : 1;  // a one-pair FIFO (m = 1) still has an address bit
     localparam CW = $clog2(DEPTH + 1);
     localparam LW = LANES > 1 ? $clog2(LANES) : 1;
@@ -54,7 +60,7 @@ module pair_collector #(
         end
     endgenerate
     wire write = room && (|hits);
-    wire [EW-1:0] entry = {row, first, hits};
+    wire [EW-1:0] entry;
 
     // The lowest hit of the head entry not yet passed on.
     wire [LANES-1:0] left = held != 0 ? head[LANES-1:0] & ~consumed : 0;
@@ -70,12 +76,28 @@ module pair_collector #(
     assign level = pairs;
     wire [PW-1:0] read_next = advance ? (read_at + 1 == DEPTH ? 0 : read_at + 1) : read_at;
 
+    // The head's pair for `lane`: its row and column.
+    wire [AW-1:0] head_row = head[EW-1 -: AW];
+    wire [AW-1:0] head_column;
+    wire [2*AW-1:0] head_pair;
+    generate
+        if (LISTED) begin : g_listed
+            assign entry = {row, columns, hits};
+            assign head_column = head[LANES + lane * AW +: AW];
+            assign head_pair = head_row < head_column ? {head_row, head_column} : {head_column, head_row};
+        end else begin : g_consecutive
+            assign entry = {row, first, hits};
+            assign head_column = head[LANES +: AW] + lane;
+            assign head_pair = {head_row, head_column};
+        end
+    endgenerate
+
     pair_fifo_memory #(.W(EW), .DEPTH(DEPTH), .AW(PW), .DISTRIBUTED(DISTRIBUTED)) entries (
         .clk(clk), .write(write), .write_at(write_at), .data(entry), .read_at(read_next), .q(head));
 
     always @(posedge clk) begin
         out_valid <= take;
-        if (take) out_pair <= {head[EW-1 -: AW], head[LANES +: AW] + lane};
+        if (take) out_pair <= head_pair;
         if (clear) begin
             write_at <= 0;
             read_at <= 0;
