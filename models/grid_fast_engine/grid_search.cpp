@@ -59,7 +59,7 @@ uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
     binned_.resize(objects);
     cell_words_.assign(cells, CellWords{});
     uint64_t count_slots = 0, entries = 0;
-    uint32_t candidates = 0, fullest = 0;
+    uint32_t candidates = 0;
     // A run of boxes at a time: the keys and cells of each bound over the
     // run first (vectorized), then each box's verdict and counts.
     for (uint32_t begin = 0; begin < objects; begin += BoundRun::kBoxes) {
@@ -79,8 +79,7 @@ uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
                 ++candidates;
                 entries += covered;
                 ++cell_words_[grid_.linear(b.range.lo[0], b.range.lo[1], b.range.lo[2])].first;
-                CellTable::for_each_cell(b.range, grid_,
-                                         [&](uint64_t c) { fullest = std::max(fullest, ++cell_words_[c].boxes); });
+                CellTable::for_each_cell(b.range, grid_, [&](uint64_t c) { ++cell_words_[c].boxes; });
             } else {
                 b.kind = Kind::kLarge;
                 large_.push_back(i);
@@ -93,6 +92,8 @@ uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
     }
     // No cell fills and the entries fit: every candidate binned, whatever
     // the order (pass 3 touches the cells pass 2 read); else box by box.
+    uint32_t fullest = 0;  // the fullest cell's boxes
+    for (const CellWords& w : cell_words_) fullest = std::max(fullest, w.boxes);
     const bool in_any_order = fullest <= grid.cell_capacity && entries <= grid.entry_capacity;
     if (in_any_order) bin_sorted(candidates, entries);
     const uint64_t place_slots = in_any_order ? count_slots : bin_in_order(objects);
