@@ -110,11 +110,15 @@ bool SweepTimeline::run_listed_unstalled(Cursor& c, std::vector<Cursor>& checkpo
     // enter, one pair at a time (no drain between pairs of one slot).
     int64_t fifo = start.fifo;
     int64_t last = static_cast<int64_t>(start.advances) - 1;
-    uint32_t hit_slots = 0;
+    uint32_t until_checkpoint = kCheckpointEvery;  // hit slots
     for (uint64_t k = start.next_pair; k < n; ++k) {
         const auto arrival = static_cast<int64_t>(slots[k] + line_delay_);
         const int64_t edges = arrival - last;
-        if (edges != 0 && ++hit_slots % kCheckpointEvery == 0) checkpoints.push_back(before(k, fifo, last));
+        until_checkpoint -= edges != 0 ? 1 : 0;  // (counted without a branch on it)
+        if (until_checkpoint == 0) {
+            checkpoints.push_back(before(k, fifo, last));
+            until_checkpoint = kCheckpointEvery;
+        }
         fifo = std::max<int64_t>(fifo - drain * edges, 0) + 1;
         last = arrival;
         if (fifo > fifo_depth_) {  // back-pressure: the slot waits
