@@ -161,9 +161,6 @@ void SweepTimeline::run_unpaused(Cursor& c, std::vector<Cursor>& checkpoints) co
         c.fifo = static_cast<uint32_t>(fifo);
         c.buffer = static_cast<uint32_t>(buffer0 + (c.total - total0) - (fifo - fifo0));
     };
-    const uint64_t* listed = listed_slots_ != nullptr ? listed_slots_->data() : nullptr;
-    const uint64_t listed_end = listed_slots_ != nullptr ? listed_slots_->size() : 0;
-    const uint64_t* listed_end_ptr = listed + listed_end;
     uint32_t slots = 0;
     if (!c.end_seen) {
         for (;;) {
@@ -171,20 +168,7 @@ void SweepTimeline::run_unpaused(Cursor& c, std::vector<Cursor>& checkpoints) co
                 settle();
                 checkpoints.push_back(c);
             }
-            if (listed != nullptr) {  // locate_head's listed case, inline: the following pairs of the same slot
-                c.head.known = true;
-                c.head.slot = sweep_cycles_;
-                c.head.hits = 0;
-                if (c.next_pair < listed_end) {
-                    const uint64_t* at = listed + c.next_pair;
-                    const uint64_t* end = at + 1;
-                    while (end != listed_end_ptr && *end == *at) ++end;
-                    c.head.slot = *at;
-                    c.head.hits = static_cast<uint32_t>(end - at);
-                }
-            } else {
-                locate_head(c);
-            }
+            locate_head(c);
             // Empty slots and bubbles up to the head's arrival (advance edge slot + D).
             const uint64_t arrival = c.head.slot + line_delay_;
             if (advances < arrival) {

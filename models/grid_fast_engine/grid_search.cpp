@@ -228,8 +228,8 @@ void GridSearch::add_small_cell(uint32_t n, uint64_t row_start, PairList& pairs,
     }
     if (rows == 0) return;
     // One pair an iteration, rows and columns ascending, with no branch on
-    // a row's hits (a row's last hit moves to the next row with hits; after
-    // the last, to row 63, which has none and is not read as a pair).
+    // a row's hits: a row's last hit moves to the next row with hits (after
+    // the last, to word 63, never a row of a cell, read but not used).
     uint64_t hits = small_.row_hits[__builtin_ctzll(rows)], found = 0;
     for (; rows != 0; ++found) {
         const auto r = static_cast<uint32_t>(__builtin_ctzll(rows));
