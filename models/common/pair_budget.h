@@ -12,6 +12,7 @@
 // "Budgets before work".
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -58,6 +59,13 @@ public:
     void push(PairList& list, const IndexPair& pair) const {
         if (list.size() >= max_pairs_) throw PairBudgetExceeded(uint64_t{list.size()} + 1, max_pairs_);
         list.push_back(pair);
+    }
+
+    // Before `more` pairs are appended to a list of `size`: throws as push()
+    // would at the first pair past the budget (for loops that count a
+    // block's pairs before appending them).
+    void check_room(uint64_t size, uint64_t more) const {
+        if (more > max_pairs_ - std::min(size, max_pairs_)) throw PairBudgetExceeded(max_pairs_ + 1, max_pairs_);
     }
 
 private:

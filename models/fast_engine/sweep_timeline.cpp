@@ -72,7 +72,142 @@ void SweepTimeline::resume() {
 void SweepTimeline::run_segment(const Cursor& start) {
     checkpoints_.assign(1, start);
     end_ = start;
-    run(end_, kNever, &checkpoints_);
+    if (cannot_pause(start)) {
+        if (listed_slots_ == nullptr || start.end_seen || !run_listed_unstalled(end_, checkpoints_)) {
+            run_unpaused(end_, checkpoints_);
+        }
+    } else {
+        run(end_, kNever, &checkpoints_);
+    }
+}
+
+bool SweepTimeline::cannot_pause(const Cursor& start) const {
+    return start.fifo + (pairs_->size() - start.next_pair) <= uint64_t{buffer_depth_} - start.buffer;
+}
+
+bool SweepTimeline::run_listed_unstalled(Cursor& c, std::vector<Cursor>& checkpoints) const {
+    const std::vector<uint64_t>& slots = *listed_slots_;
+    const uint64_t n = slots.size();
+    const auto drain = static_cast<int64_t>(drain_per_cycle_);
+    const Cursor start = c;
+    // The state when pair k's slot arrives, the last hit slot having arrived
+    // on advance edge `last` and left `fifo` pairs in the FIFO: every
+    // advance edge so far, no stall.
+    const auto before = [&](uint64_t k, int64_t fifo, int64_t last) {
+        Cursor at = start;
+        at.advances = static_cast<uint64_t>(last + 1);
+        at.segment_edges = start.segment_edges + (at.advances - start.advances);
+        at.cycles = start.cycles + (at.advances - start.advances);
+        at.total = start.total + (k - start.next_pair);
+        at.next_pair = k;
+        at.fifo = static_cast<uint32_t>(fifo);
+        at.buffer = static_cast<uint32_t>(start.buffer + (at.total - start.total) - (at.fifo - start.fifo));
+        at.head.known = false;
+        return at;
+    };
+    // A slot arrives on advance edge slot + D; the edges since the last
+    // arrival (the head's own edge included) drain the FIFO, then its hits
+    // enter, one pair at a time (no drain between pairs of one slot).
+    int64_t fifo = start.fifo;
+    int64_t last = static_cast<int64_t>(start.advances) - 1;
+    uint32_t until_checkpoint = kCheckpointEvery;  // hit slots
+    for (uint64_t k = start.next_pair; k < n; ++k) {
+        const auto arrival = static_cast<int64_t>(slots[k] + line_delay_);
+        const int64_t edges = arrival - last;
+        until_checkpoint -= edges != 0 ? 1 : 0;  // (counted without a branch on it)
+        if (until_checkpoint == 0) {
+            checkpoints.push_back(before(k, fifo, last));
+            until_checkpoint = kCheckpointEvery;
+        }
+        fifo = std::max<int64_t>(fifo - drain * edges, 0) + 1;
+        last = arrival;
+        if (fifo > fifo_depth_) {  // back-pressure: the slot waits
+            checkpoints.resize(1);
+            return false;
+        }
+    }
+    const auto end_arrival = static_cast<int64_t>(sweep_cycles_ + line_delay_);
+    if (end_arrival <= last) {
+        checkpoints.resize(1);
+        return false;
+    }
+    // The end marker's edge and those before it drain; the FIFO's last pairs
+    // then take a stall edge each drain.
+    const auto left = static_cast<uint64_t>(std::max<int64_t>(fifo - drain * (end_arrival - last), 0));
+    const uint64_t tail = ceil_div(left, drain_per_cycle_);
+    c = before(n, 0, end_arrival);
+    c.segment_edges += tail;
+    c.cycles += tail;
+    c.stalls += tail;
+    c.buffer = static_cast<uint32_t>(start.buffer + start.fifo + (n - start.next_pair));
+    c.end_seen = true;
+    c.head = {sweep_cycles_, 0, true};
+    c.phase = SweepState::kDone;
+    return true;
+}
+
+void SweepTimeline::run_unpaused(Cursor& c, std::vector<Cursor>& checkpoints) const {
+    // Every pair in the FIFO always finds room in the buffer, so an edge
+    // drains min(drain, fifo) and no edge pauses; the buffer holds what
+    // entered the FIFO and left it, the cycles count the edges.
+    const uint64_t drain = drain_per_cycle_;
+    const uint64_t edges0 = c.segment_edges, cycles0 = c.cycles, buffer0 = c.buffer, total0 = c.total, fifo0 = c.fifo;
+    uint64_t edges = c.segment_edges, stalls = c.stalls, advances = c.advances, fifo = c.fifo;
+    const auto settle = [&] {
+        c.segment_edges = edges;
+        c.cycles = cycles0 + (edges - edges0);
+        c.stalls = stalls;
+        c.advances = advances;
+        c.fifo = static_cast<uint32_t>(fifo);
+        c.buffer = static_cast<uint32_t>(buffer0 + (c.total - total0) - (fifo - fifo0));
+    };
+    uint32_t slots = 0;
+    if (!c.end_seen) {
+        for (;;) {
+            if (++slots % kCheckpointEvery == 0) {
+                settle();
+                checkpoints.push_back(c);
+            }
+            locate_head(c);
+            // Empty slots and bubbles up to the head's arrival (advance edge slot + D).
+            const uint64_t arrival = c.head.slot + line_delay_;
+            if (advances < arrival) {
+                const uint64_t k = arrival - advances;
+                fifo -= std::min(k * drain, fifo);
+                edges += k;
+                advances = arrival;
+            }
+            const uint64_t hits = c.head.hits;
+            if (hits == 0) {  // the end marker's edge
+                fifo -= std::min(drain, fifo);
+                ++edges;
+                ++advances;
+                c.end_seen = true;
+                break;
+            }
+            if (fifo - std::min(drain, fifo) + hits > fifo_depth_) {
+                // Back-pressure: the stall edges until an edge's drain leaves room.
+                const uint64_t k = ceil_div(fifo + hits - fifo_depth_, drain) - 1;
+                fifo -= std::min(k * drain, fifo);
+                edges += k;
+                stalls += k;
+            }
+            // The head's edge: its hits enter the FIFO.
+            fifo = fifo - std::min(drain, fifo) + hits;
+            ++edges;
+            ++advances;
+            c.total += hits;
+            c.next_pair += hits;
+            c.head.known = false;
+        }
+    }
+    // The FIFO's last pairs, a stall edge each drain.
+    const uint64_t k = ceil_div(fifo, drain);
+    edges += k;
+    stalls += k;
+    fifo = 0;
+    settle();
+    c.phase = SweepState::kDone;
 }
 
 BoardObservation SweepTimeline::observe(uint64_t edges) const {

@@ -36,7 +36,10 @@ struct BoardObservation {
 //     the end-of-sweep drain edges cost one stall each;
 //   - an edge that finds a pair to move and the buffer full pauses the board
 //     (a stall); RESUME empties the buffer.
-// Work is O(hit slots + pauses) per sweep. Each segment (START or RESUME to the
+// Work is O(hit slots + pauses) per sweep; a segment whose pairs all fit in
+// the buffer's room cannot pause and runs without the buffer's checks, and
+// from listed slots that never meet back-pressure it is one pass over the
+// slots (the FIFO's level in closed form). Each segment (START or RESUME to the
 // next pause or done) keeps a cursor every kCheckpointEvery events, so
 // observe() replays at most that many events.
 class SweepTimeline {
@@ -100,6 +103,20 @@ private:
     void run(Cursor& cursor, uint64_t limit, std::vector<Cursor>* checkpoints) const;
     // k edges that each drain: advance edges (stall_per_edge 0) or stall edges (1).
     void drain_edges(Cursor& cursor, uint64_t k, uint32_t stall_per_edge) const;
+    // Whether a segment from `start` can never pause: the pairs still to
+    // come and those in the FIFO fit in the buffer's room.
+    bool cannot_pause(const Cursor& start) const;
+    // run() to the segment's end for a segment that cannot pause: the buffer
+    // never limits a drain, so each hit slot is a few lines of arithmetic
+    // (the same edges, stalls and levels), with a checkpoint every
+    // kCheckpointEvery hit slots.
+    void run_unpaused(Cursor& cursor, std::vector<Cursor>& checkpoints) const;
+    // The same from listed slots, when no slot meets back-pressure either:
+    // then the FIFO after each pair's edge is max(f - drain x (slots since
+    // the last pair's), 0) + 1, one branch-free pass over the slots, and
+    // the segment's end follows in closed form. False (the cursor and the
+    // checkpoints as they were) when a slot would meet back-pressure.
+    bool run_listed_unstalled(Cursor& cursor, std::vector<Cursor>& checkpoints) const;
     // Runs from `start` to the segment's end, keeping checkpoints.
     void run_segment(const Cursor& start);
     // The first segment of a sweep whose pairs and slots are set.

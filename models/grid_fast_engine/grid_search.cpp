@@ -59,7 +59,7 @@ uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
     binned_.resize(objects);
     cell_words_.assign(cells, CellWords{});
     uint64_t count_slots = 0, entries = 0;
-    uint32_t candidates = 0, fullest = 0;
+    uint32_t candidates = 0;
     // A run of boxes at a time: the keys and cells of each bound over the
     // run first (vectorized), then each box's verdict and counts.
     for (uint32_t begin = 0; begin < objects; begin += BoundRun::kBoxes) {
@@ -79,8 +79,7 @@ uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
                 ++candidates;
                 entries += covered;
                 ++cell_words_[grid_.linear(b.range.lo[0], b.range.lo[1], b.range.lo[2])].first;
-                CellTable::for_each_cell(b.range, grid_,
-                                         [&](uint64_t c) { fullest = std::max(fullest, ++cell_words_[c].boxes); });
+                CellTable::for_each_cell(b.range, grid_, [&](uint64_t c) { ++cell_words_[c].boxes; });
             } else {
                 b.kind = Kind::kLarge;
                 large_.push_back(i);
@@ -93,6 +92,8 @@ uint64_t GridSearch::bin(uint32_t objects, const CoordinateWords& words) {
     }
     // No cell fills and the entries fit: every candidate binned, whatever
     // the order (pass 3 touches the cells pass 2 read); else box by box.
+    uint32_t fullest = 0;  // the fullest cell's boxes
+    for (const CellWords& w : cell_words_) fullest = std::max(fullest, w.boxes);
     const bool in_any_order = fullest <= grid.cell_capacity && entries <= grid.entry_capacity;
     if (in_any_order) bin_sorted(candidates, entries);
     const uint64_t place_slots = in_any_order ? count_slots : bin_in_order(objects);
@@ -177,21 +178,14 @@ void GridSearch::sweep_cell(const BusyCell& cell, uint64_t row_start, PairList& 
         const Box& b = *cell_boxes_[k];
         for (uint32_t c = 0; c < kCoordinates; ++c) cell_columns_.bound[c][k] = static_cast<int32_t>(b.key[c] ^ 0x8000'0000u);
         if (masked) {
+            small_.index[k] = b.index;
             for (uint32_t a = 0; a < 3; ++a) starts[a] |= uint64_t{b.first[a] == here[a]} << k;
         }
     }
     if (masked) {
         // Every row tested first (masked_cell_hits), then its hits turned into pairs.
-        row_hits_.resize(n);
-        masked_cell_hits(cell_columns_, n, starts, row_hits_.data());
-        for (uint32_t r = 0; r + 1 < n; ++r) {
-            const uint32_t a = cell_boxes_[r]->index;
-            for (uint64_t hits = row_hits_[r]; hits != 0; hits &= hits - 1) {
-                const auto c = static_cast<uint32_t>(__builtin_ctzll(hits));
-                add(pairs, slots, {a, cell_boxes_[c]->index}, row_start + lane_slot_[c - r - 1]);
-            }
-            row_start += lane_slot_[n - 2 - r] + 1;  // ceil((n-1-r) / w)
-        }
+        masked_cell_hits(cell_columns_, n, starts, small_.row_hits.data());
+        add_small_cell(n, row_start, pairs, slots);
         return;
     }
     // Above 64 boxes: each row tested first, its hits gathered as bits, in
@@ -222,6 +216,34 @@ void GridSearch::sweep_cell(const BusyCell& cell, uint64_t row_start, PairList& 
         }
         row_start += (n - 1 - r + lanes - 1) / lanes;  // ceil((n-1-r) / w)
     }
+}
+
+void GridSearch::add_small_cell(uint32_t n, uint64_t row_start, PairList& pairs, std::vector<uint64_t>& slots) {
+    // The rows with hits and each row's first slot.
+    uint64_t rows = 0;
+    for (uint32_t r = 0; r + 1 < n; ++r) {
+        rows |= uint64_t{small_.row_hits[r] != 0} << r;
+        small_.row_slot[r] = row_start;
+        row_start += lane_slot_[n - 2 - r] + 1;  // ceil((n-1-r) / w)
+    }
+    if (rows == 0) return;
+    // One pair an iteration, rows and columns ascending, with no branch on
+    // a row's hits: a row's last hit moves to the next row with hits (after
+    // the last, to word 63, never a row of a cell, read but not used).
+    uint64_t hits = small_.row_hits[__builtin_ctzll(rows)], found = 0;
+    for (; rows != 0; ++found) {
+        const auto r = static_cast<uint32_t>(__builtin_ctzll(rows));
+        const auto c = static_cast<uint32_t>(__builtin_ctzll(hits));
+        small_.pairs[found] = {small_.index[r], small_.index[c]};
+        small_.slots[found] = small_.row_slot[r] + lane_slot_[c - r - 1];
+        hits &= hits - 1;
+        const bool row_done = hits == 0;
+        rows = row_done ? rows & (rows - 1) : rows;
+        hits = row_done ? small_.row_hits[__builtin_ctzll(rows | uint64_t{1} << 63)] : hits;
+    }
+    budget_.check_room(pairs.size(), found);
+    pairs.insert(pairs.end(), small_.pairs.begin(), small_.pairs.begin() + static_cast<std::ptrdiff_t>(found));
+    slots.insert(slots.end(), small_.slots.begin(), small_.slots.begin() + static_cast<std::ptrdiff_t>(found));
 }
 
 uint64_t GridSearch::sweep_cells(uint64_t begin, PairList& pairs, std::vector<uint64_t>& slots) {

@@ -87,6 +87,9 @@ private:
     // keep a pair, as wide as the CPU compares (masked_cell_hits); above,
     // four lane tests at a time.
     void sweep_cell(const BusyCell& cell, uint64_t row_start, PairList& pairs, std::vector<uint64_t>& slots);
+    // The pairs of a cell of up to 64 boxes from its rows' hits (small_),
+    // its first row compared from slot `row_start` on.
+    void add_small_cell(uint32_t n, uint64_t row_start, PairList& pairs, std::vector<uint64_t>& slots);
     // The busy cells from slot `begin` on; the slot after the last one's last compare.
     uint64_t sweep_cells(uint64_t begin, PairList& pairs, std::vector<uint64_t>& slots);
     // The large tiles from slot `begin` on; the slot after the last stream.
@@ -119,7 +122,17 @@ private:
     // cell their keys as BlockTest takes them.
     std::vector<const Box*> cell_boxes_;
     BoxColumns cell_columns_;
-    std::vector<uint64_t> row_hits_;  // a row's hits, a bit a column (a word a row up to 64 boxes)
+    std::vector<uint64_t> row_hits_;  // above 64 boxes: a row's hits, a bit a column
+    // A cell of up to 64 boxes: its boxes' indices, each row's hits (a bit a
+    // column) and first slot, and its pairs before they are appended.
+    struct SmallCell {
+        std::array<uint32_t, 64> index;
+        std::array<uint64_t, 64> row_hits;
+        std::array<uint64_t, 64> row_slot;
+        std::array<IndexPair, 64 * 63 / 2> pairs;
+        std::array<uint64_t, 64 * 63 / 2> slots;
+    };
+    SmallCell small_{};
     std::array<uint32_t, 64> lane_slot_{};  // k / lanes: the slot of a row's k-th next column
     Tile tile_;
     GridSweepStats stats_;

@@ -171,5 +171,31 @@ TEST(GridSearch, PairsComeInTheBoardsOrder) {
     EXPECT_GT(runs, 0u);
 }
 
+// The pair budget: a sweep of exactly the budget's pairs finds them all; one
+// pair fewer stops at the first pair past it (cells and large tiles alike).
+TEST(GridSearch, StopsAtTheFirstPairPastItsBudget) {
+    std::mt19937 rng(10);
+    for (uint32_t capacity : {512u, 6u}) {  // the cells alone, and overflow into the large sweep
+        const auto scene = testing::random_scene(2000, 14.0f, 2.5f, rng);
+        BoardConfig config = grid_board();
+        config.grid.cell_capacity = capacity;
+        PairList all, pairs;
+        std::vector<uint64_t> slots;
+        GridSearch(config).run(scene.size(), scene.view(), all, slots);
+        ASSERT_GT(all.size(), 100u);
+        GridSearch(config, PairBudget(all.size())).run(scene.size(), scene.view(), pairs, slots);
+        EXPECT_EQ(pairs, all) << "capacity " << capacity;
+        for (uint64_t budget : {uint64_t{0}, uint64_t{1}, all.size() / 2, all.size() - 1}) {
+            try {
+                GridSearch(config, PairBudget(budget)).run(scene.size(), scene.view(), pairs, slots);
+                ADD_FAILURE() << "no refusal at a budget of " << budget;
+            } catch (const PairBudgetExceeded& e) {
+                EXPECT_EQ(e.found(), budget + 1) << "capacity " << capacity;
+                EXPECT_EQ(e.budget(), budget);
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace cdvp
