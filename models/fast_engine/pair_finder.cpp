@@ -61,8 +61,10 @@ struct PairFinder::Grid {
     uint16_t cell(int axis, float value) const {
         if (cells[axis] == 1) return 0;  // (and inverse_size 0 would turn infinities into NaN)
         const float at = (value - origin[axis]) * inverse_size[axis];
-        // Clamped first, so truncation is floor (and infinities land in the end cells).
-        return static_cast<uint16_t>(std::min(std::max(at, 0.0f), static_cast<float>(cells[axis] - 1)));
+        // Clamped first, so truncation is floor and infinities land in the end cells; a NaN
+        // (a box that meets nothing) lands in cell 0: max(0, NaN) is 0, where max(NaN, 0) is
+        // NaN, which no integer holds.
+        return static_cast<uint16_t>(std::min(std::max(0.0f, at), static_cast<float>(cells[axis] - 1)));
     }
 };
 
