@@ -38,7 +38,8 @@ std::string variant_label(const Sample& s) {
 Figure largest_m_figure(const std::string& board, const std::vector<const Sample*>& points,
                         const std::map<std::string, Line>& by_variant) {
     std::vector<std::pair<std::vector<std::pair<double, double>>, std::vector<std::string>>> groups;
-    for (const auto& [order, line] : by_variant) {
+    for (const auto& entry : by_variant) {
+        const Line& line = entry.second;
         const auto same = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == line.points; });
         const std::string name = line.variant.empty() ? board : line.variant;
         if (same == groups.end()) {

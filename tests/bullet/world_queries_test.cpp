@@ -225,7 +225,9 @@ TEST_F(WorldQueries, RayTestsShortAndLongAreBitIdentical) {
     for (int round = 0; round < kRounds; ++round) {
         place(worlds(), rng_);
         for (int query = 0; query < kQueries; ++query) {
-            const auto [from, to] = segment(query);
+            const auto ends = segment(query);  // not a structured binding: lambdas below capture them
+            const auto& from = ends.first;
+            const auto& to = ends.second;
             const Bits closest = closest_ray(*board_, from, to);
             ASSERT_EQ(closest, closest_ray(*simple_, from, to)) << "round " << round << " ray " << query;
             ASSERT_TRUE(same_or_tie(closest, closest_ray(*dbvt_, from, to),
