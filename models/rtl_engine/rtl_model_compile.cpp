@@ -125,11 +125,11 @@ std::string entry_source(const RtlKit& kit, const RtlVariant& variant) {
 
 const std::vector<std::string>& rtl_model_make_options() {
     // As the built-in variants' code: the model at -O3, its once-run (__Slow)
-    // files at -O1, Verilator's run time at -O2; position-independent, and
+    // files unoptimised, Verilator's run time at -O2; position-independent, and
     // only the entry point visible outside the shared object.
     static const std::vector<std::string> options{"-CFLAGS", "-fPIC", "-CFLAGS", "-fvisibility=hidden",
                                                   "-CFLAGS", "-std=c++17",
-                                                  "-MAKEFLAGS", "OPT_FAST=-O3", "-MAKEFLAGS", "OPT_SLOW=-O1",
+                                                  "-MAKEFLAGS", "OPT_FAST=-O3", "-MAKEFLAGS", "OPT_SLOW=-O0",
                                                   "-MAKEFLAGS", "OPT_GLOBAL=-O2", "-MAKEFLAGS", "VM_PARALLEL_BUILDS=1",
                                                   "-LDFLAGS", "-shared"};
     return options;
