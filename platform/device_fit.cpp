@@ -100,6 +100,7 @@ BoardTiming timing_of(const Settings& settings, uint64_t capacity, uint32_t grad
     timed.compare_latency = board.compare.latency_cycles;
     timed.fifo_memory = fifo_memory;
     timed.tiled = board.tiles.tiled();
+    timed.grid = board.grid_board();
     return board_timing(TimingTable::stored(), timed);
 }
 

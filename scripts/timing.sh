@@ -11,7 +11,9 @@
 #   scripts/timing.sh                  every row, in parallel (GNU parallel), CSV on stdout
 #   scripts/timing.sh --row FAMILY PIECE FORMAT M LATENCY
 #                                      the rows of one synthesis, one a speed grade (e.g.
-#                                      xc2v compare_lane float32 - 2, xcup pair_collector block_ram 8 -)
+#                                      xc2v compare_lane float32 - 2, xcup pair_collector block_ram 8 -;
+#                                      the grid board's: grid_cell_function FORMAT - -, cell_loader
+#                                      FORMAT - -, home_cell_filter - M -, grid_sequencer float32 8 -)
 #   scripts/timing.sh --check FAMILY PIECE FORMAT M LATENCY
 #                                      re-derives those rows and compares them with the stored ones
 #   scripts/timing.sh --path FAMILY PIECE FORMAT M LATENCY GRADE
@@ -38,12 +40,24 @@ timing_header="family,piece,format,m,latency,speed_grade,path_ns,luts,carry_cell
 latencies="0 1 2"   # compare stages; more only delay the AND (compare_lane.v)
 
 # Ports that meet a block RAM on the board (their other ports meet registers).
-from_ram_ports() { case $1 in compare_lane) echo "box_i box_j" ;; *) echo "" ;; esac; }
+# The grid sequencer's cell memory is the board's SSRAM, as its resource row
+# takes it (its ports, everted from the black box, named memory__PORT; a
+# name ending in * is a prefix); the SSRAM's read stages and the
+# cell-function units' stages are registers.
+from_ram_ports() {
+    case $1 in
+        compare_lane) echo "box_i box_j" ;;
+        grid_sequencer) echo 'memory__*' ;;
+        *) echo "" ;;
+    esac
+}
 to_ram_ports() {
     case $1 in
         address_generator) echo "row columns" ;;
         tile_walker) echo "row_local columns_local land_addr" ;;
         pair_collector) echo "out_pair out_valid" ;;
+        cell_loader) echo "write write_half write_addr write_data" ;;
+        grid_sequencer) echo 'memory__*' ;;
         *) echo "" ;;
     esac
 }
@@ -144,12 +158,21 @@ strip_parameters() {
 # The harness around module 'piece': every port but clk behind a boundary
 # cell, as the board drives and takes it (FROM_RAM, TO_RAM: block RAM ports).
 harness() {
-    awk -v from_ram=" $2 " -v to_ram=" $3 " '
+    awk -v from_ram="$2" -v to_ram="$3" '
+        function listed(list, name,    n, k, item) {
+            n = split(list, item, " ")
+            for (k = 1; k <= n; k++) {
+                if (item[k] == name) return 1
+                if (item[k] ~ /\*$/ && index(name, substr(item[k], 1, length(item[k]) - 1)) == 1) return 1
+            }
+            return 0
+        }
         /^module piece[ (]/ { inside = 1; next }
         inside && /^endmodule/ { exit }
         inside && /^  (input|output) / {
             width = $0 ~ /\[/ ? $2 " " : ""
             name = $NF; sub(/;$/, "", name)
+            if (name ~ /__clk$/) next  # an everted black box clock: the clock itself
             high = 0
             if (width != "") { w = width; gsub(/[\[\] ]/, "", w); split(w, r, ":"); high = r[1] }
             ports = ports ", " name
@@ -158,10 +181,10 @@ harness() {
             decl = decl "  wire " width name "_q;\n"
             conn = conn ", ." name "(" name "_q)"
             if ($1 == "input") {
-                cell = index(from_ram, " " name " ") ? "TIMING_FROM_RAM" : "TIMING_FROM_FF"
+                cell = listed(from_ram, name) ? "TIMING_FROM_RAM" : "TIMING_FROM_FF"
                 body = body "  " cell " " name "_boundary [" high ":0] (.I(" name "), .O(" name "_q));\n"
             } else {
-                cell = index(to_ram, " " name " ") ? "TIMING_TO_RAM" : "TIMING_TO_FF"
+                cell = listed(to_ram, name) ? "TIMING_TO_RAM" : "TIMING_TO_FF"
                 body = body "  " cell " " name "_boundary [" high ":0] (.I(" name "_q), .O(" name "));\n"
             }
         }
@@ -207,14 +230,22 @@ family_cells() {
 # Synthesises one design into DIR: netlist.v (parameters stripped) and
 # harness.v, with cells.v the family's cell models (TIMING_CELLS_DIR keeps one
 # a family for a whole table). Arguments: FAMILY TOP "SOURCES" "PARAMS"
-# "FROM_RAM" "TO_RAM".
+# "FROM_RAM" "TO_RAM" ["BLACK_BOXES"]. Black boxes (piece_design's) are
+# everted: their connections become the piece's ports, INSTANCE__PORT, and
+# meet the harness's boundary cells like the others.
 prepare() {
-    local dir=$1 family=$2 top=$3 sources=$4 params=$5 from_ram=$6 to_ram=$7
-    local chparam="" cells
+    local dir=$1 family=$2 top=$3 sources=$4 params=$5 from_ram=$6 to_ram=$7 black_boxes=${8:-}
+    local chparam="" cells read_black_boxes="" evert=""
     [[ -n $params ]] && chparam="chparam $params $top;"
-    yosys -q -p "read_verilog -sv $sources; $chparam synth_xilinx -family $family -top $top -flatten -noiopad; rename -top piece; write_verilog -noattr $dir/raw.v" \
+    if [[ -n $black_boxes ]]; then
+        read_black_boxes="read_verilog -sv -lib $black_boxes;"
+        evert="expose -evert$(for file in $black_boxes; do printf ' t:%s' "$(basename "$file" .v)"; done);"
+    fi
+    yosys -q -p "read_verilog -sv $sources; $read_black_boxes $chparam synth_xilinx -family $family -top $top -flatten -noiopad; rename -top piece; $evert write_verilog -noattr $dir/raw.v" \
         >/dev/null 2>&1 || die "yosys failed on $top ($family: $params)"
-    strip_parameters "$dir/raw.v" >"$dir/netlist.v"
+    # An everted port's escaped name (\memory.box_full) as a plain one (memory__box_full).
+    perl -pe 's/\\(\S*\.\S*) /my $n = $1; $n =~ s{\.}{__}g; $n =~ s{\W}{_}g; $n/ge' "$dir/raw.v" >"$dir/plain.v"
+    strip_parameters "$dir/plain.v" >"$dir/netlist.v"
     harness "$dir/netlist.v" "$from_ram" "$to_ram" >"$dir/harness.v"
     cells=${TIMING_CELLS_DIR:-}/$family.v
     if [[ -n ${TIMING_CELLS_DIR:-} && -s $cells ]]; then
@@ -246,26 +277,45 @@ analyse() {
     echo "$report"
 }
 
+# A piece's design as timed: piece_design's (sources, params, black_boxes),
+# with the controller's 64-bit counters and the model's phase rules, and the
+# cell loader's cell-function units as black boxes (their stages are
+# registers; they have rows of their own), so its row is its own logic.
+# Sets 'constants' where an endpoint no path reaches is a constant, not an
+# error, as on the whole board: the grid pieces' fixed-point words narrower
+# than a unit's register or a black box's port are tied off above their width.
+timing_design() {
+    piece_design "$@"
+    case $2 in
+        board_control) params="-set CW 64 -set MODEL_TIMING 1" ;;
+        cell_loader)
+            local unit="$root/models/grid_binning/rtl/grid_cell_function.v"
+            sources=${sources/" $unit"/}
+            black_boxes=$unit ;;
+    esac
+    constants=""
+    case $2 in grid_cell_function | cell_loader | grid_sequencer) constants=constants ;; esac
+}
+
 # The rows of one piece: FAMILY PIECE FORMAT M LATENCY, one a speed grade.
 timing_rows() {
-    local family=$1 piece=$2 format=$3 m=$4 latency=$5 sources params dir grade
-    piece_design "$family" "$piece" "$format" "$m" "$latency"
-    # The board's controller: 64-bit counters and the model's phase rules.
-    [[ $piece == board_control ]] && params="-set CW 64 -set MODEL_TIMING 1"
+    local family=$1 piece=$2 format=$3 m=$4 latency=$5 sources params black_boxes constants dir grade
+    timing_design "$family" "$piece" "$format" "$m" "$latency"
     dir=$(mktemp -d)
     # shellcheck disable=SC2064
     trap "rm -rf '$dir'" RETURN
-    prepare "$dir" "$family" "$piece" "$sources" "$params" "$(from_ram_ports "$piece")" "$(to_ram_ports "$piece")"
+    prepare "$dir" "$family" "$piece" "$sources" "$params" "$(from_ram_ports "$piece")" "$(to_ram_ports "$piece")" \
+        "$black_boxes"
     local fields
     for grade in $(speed_grades "$family"); do
-        fields=$(analyse "$dir" "$family" "$grade" | path_fields)
+        fields=$(analyse "$dir" "$family" "$grade" "$constants" | path_fields)
         echo "$family,$piece,$format,$m,$latency,$grade,$fields"
     done
 }
 
 # Every row's synthesis: FAMILY PIECE FORMAT M LATENCY.
 all_timing_rows() {
-    local family k m latency
+    local family k m latency format
     for family in $families; do
         echo "$family board_control - - -"
         for latency in $latencies; do
@@ -277,7 +327,13 @@ all_timing_rows() {
             echo "$family tile_walker - $m -"
             echo "$family pair_collector block_ram $m -"
             echo "$family pair_collector distributed $m -"
+            echo "$family home_cell_filter - $m -"
         done
+        for format in float32 fixed8 fixed16 fixed24 fixed32; do  # the synthesis table's; fixedK between: the slower
+            echo "$family grid_cell_function $format - -"
+            echo "$family cell_loader $format - -"
+        done
+        echo "$family grid_sequencer float32 8 -"  # minutes: its adders, divider and pass logic flattened
     done
 }
 
@@ -300,11 +356,10 @@ case "${1:-}" in
     --row) shift; [[ $# -eq 5 ]] || die "--row needs FAMILY PIECE FORMAT M LATENCY"; timing_rows "$@" ;;
     --path)
         shift; [[ $# -eq 6 ]] || die "--path needs FAMILY PIECE FORMAT M LATENCY GRADE"
-        piece_design "$1" "$2" "$3" "$4" "$5"
-        [[ $2 == board_control ]] && params="-set CW 64 -set MODEL_TIMING 1"
+        timing_design "$1" "$2" "$3" "$4" "$5"
         dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
-        prepare "$dir" "$1" "$2" "$sources" "$params" "$(from_ram_ports "$2")" "$(to_ram_ports "$2")"
-        analyse "$dir" "$1" "$6" | sed -n '/^Latest arrival/,/^Arrival histogram/p' | sed '$d' ;;
+        prepare "$dir" "$1" "$2" "$sources" "$params" "$(from_ram_ports "$2")" "$(to_ram_ports "$2")" "$black_boxes"
+        analyse "$dir" "$1" "$6" "$constants" | sed -n '/^Latest arrival/,/^Arrival histogram/p' | sed '$d' ;;
     --board) shift; [[ $# -eq 3 || $# -eq 4 ]] || die "--board needs FAMILY GRADE M [FORMAT]"; board_timing "$@" ;;
     --check)
         shift; [[ $# -eq 5 ]] || die "--check needs FAMILY PIECE FORMAT M LATENCY"
@@ -321,7 +376,7 @@ case "${1:-}" in
         TIMING_CELLS_DIR=$(mktemp -d)
         trap 'rm -rf "$TIMING_CELLS_DIR"' EXIT
         for family in $families; do family_cells "$family" "$TIMING_CELLS_DIR/$family.v"; done
-        export -f timing_rows piece_design format_params prepare analyse path_fields harness strip_parameters timing_cells \
+        export -f timing_rows timing_design piece_design format_params prepare analyse path_fields harness strip_parameters timing_cells \
             family_cells delay_flags speed_grades from_ram_ports to_ram_ports die
         export root address_bits fifo_depth tile_boxes tile_bits arcs delays TIMING_CELLS_DIR
         echo "$timing_header"

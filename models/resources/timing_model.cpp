@@ -126,6 +126,43 @@ PathDelay TimingTable::control(const std::string& family, uint32_t speed_grade) 
     return rows_[rows.front()].path;
 }
 
+PathDelay TimingTable::by_format(const std::string& family, const std::string& piece, uint32_t speed_grade,
+                                 const std::string& format, const std::string& what) const {
+    const std::string fixed = "fixed";
+    if (format.rfind(fixed, 0) != 0) return rows_[rows_of(family, piece, format, speed_grade, what).front()].path;
+    const uint32_t width = static_cast<uint32_t>(std::strtoul(format.c_str() + fixed.size(), nullptr, 10));
+    const Row* below = nullptr;
+    const Row* above = nullptr;
+    for (uint32_t k = 1; k <= 64; ++k) {
+        const auto rows = by_key_.find(std::make_tuple(family, piece, fixed + std::to_string(k), speed_grade));
+        if (rows == by_key_.end()) continue;
+        const Row& row = rows_[rows->second.front()];
+        if (k <= width) below = &row;
+        if (k >= width && above == nullptr) above = &row;
+    }
+    if (below == nullptr || above == nullptr) {
+        throw std::invalid_argument("no timing of the " + what + " for the " + family + " family at " +
+                                    grade_text(speed_grade) + " (no synthesised width on both sides)");
+    }
+    return below->path.ns >= above->path.ns ? below->path : above->path;
+}
+
+PathDelay TimingTable::cell_function(const std::string& family, uint32_t speed_grade, const std::string& format) const {
+    return by_format(family, "grid_cell_function", speed_grade, format, format + " cell-function unit");
+}
+
+PathDelay TimingTable::cell_loader(const std::string& family, uint32_t speed_grade, const std::string& format) const {
+    return by_format(family, "cell_loader", speed_grade, format, format + " cell loader");
+}
+
+PathDelay TimingTable::home_cell_filter(const std::string& family, uint32_t speed_grade, uint32_t m) const {
+    return by_m(family, "home_cell_filter", "-", speed_grade, m, "one-cell filter");
+}
+
+PathDelay TimingTable::grid_sequencer(const std::string& family, uint32_t speed_grade) const {
+    return by_m(family, "grid_sequencer", "float32", speed_grade, 8, "binning sequencer");
+}
+
 std::vector<uint32_t> TimingTable::speed_grades(const std::string& family) const {
     const auto grades = grades_.find(family);
     return grades == grades_.end() ? std::vector<uint32_t>() : grades->second;
@@ -159,7 +196,21 @@ BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
     BoardTiming timing;
     timing.speed_grade = grade;
     timing.pieces.push_back({"lane", lane, table.lane(family, grade, board.format, board.compare_latency)});
-    if (board.tiled) {
+    if (board.grid) {
+        // Written to the model's slots, not to a clock (docs/grid_board.md),
+        // so reported, not held to: the cell-function unit's binary32 adder is
+        // one of its four stages (GridConfig::kCellFunctionSlots), the
+        // sequencer's setup divider and bounds adders one step a slot, and the
+        // one-cell filter sits between the lanes' hit registers and the pair
+        // FIFO with no register of its own (it lengthens the FIFO's path).
+        timing.pieces.push_back({"cell_function", board.format + " cell-function unit as written",
+                                 table.cell_function(family, grade, board.format), false});
+        timing.pieces.push_back({"cell_loader", board.format + " cell loader",
+                                 table.cell_loader(family, grade, board.format)});
+        timing.pieces.push_back({"sequencer", "binning sequencer as written", table.grid_sequencer(family, grade), false});
+        timing.pieces.push_back({"one_cell_filter", "one-cell filter in front of the pair FIFO",
+                                 table.home_cell_filter(family, grade, board.m), false});
+    } else if (board.tiled) {
         timing.pieces.push_back({"tile_walker", "tile walker", table.tile_walker(family, grade, board.m), false});
     } else {
         const PathDelay generator = table.address_generator(family, grade, board.m);

@@ -1,6 +1,8 @@
 // How fast a board configuration can be clocked, from synthesis: each piece
 // that decides it (comparison lane per number format and compare latency,
-// address generator or tile walker and pair FIFO per m, controller) was
+// address generator or tile walker and pair FIFO per m, controller; on the
+// grid board the cell-function unit and cell loader per format, the one-cell
+// filter per m and the binning sequencer in place of the address generator) was
 // synthesised with Yosys and its longest register-to-register path found by
 // Yosys's static timing analysis with the family's cell delays at each speed
 // grade (scripts/timing.sh; rows in timing.csv, compiled into cdvp). A board
@@ -53,6 +55,14 @@ public:
     PathDelay pair_collector(const std::string& family, uint32_t speed_grade, uint32_t m,
                              const std::string& memory) const;
     PathDelay control(const std::string& family, uint32_t speed_grade) const;
+    // The grid board's pieces. A fixedK format between two synthesised widths
+    // takes the slower of the two neighbours.
+    PathDelay cell_function(const std::string& family, uint32_t speed_grade, const std::string& format) const;
+    PathDelay cell_loader(const std::string& family, uint32_t speed_grade, const std::string& format) const;
+    PathDelay home_cell_filter(const std::string& family, uint32_t speed_grade, uint32_t m) const;
+    // Synthesised at float32, m = 8, as its resource row: its long paths
+    // (setup divider, bounds adders) do not grow with m.
+    PathDelay grid_sequencer(const std::string& family, uint32_t speed_grade) const;
     // The family's speed grades, ascending (the slowest first: -4 on Virtex-II, -1 on UltraScale+).
     std::vector<uint32_t> speed_grades(const std::string& family) const;
 
@@ -67,6 +77,8 @@ private:
                                             uint32_t speed_grade, const std::string& what) const;
     PathDelay by_m(std::string_view family, std::string_view piece, std::string_view format, uint32_t speed_grade,
                    uint32_t m, const std::string& what) const;
+    PathDelay by_format(const std::string& family, const std::string& piece, uint32_t speed_grade,
+                        const std::string& format, const std::string& what) const;
     std::vector<Row> rows_;
     std::map<Key, std::vector<std::size_t>, std::less<>> by_key_;
     std::map<std::string, std::vector<uint32_t>, std::less<>> grades_;  // ascending, by family
@@ -74,14 +86,19 @@ private:
 
 // A board's pieces with their paths, as the timing table gives them.
 struct PieceTiming {
-    std::string key;    // lane, address_generator or tile_walker, pair_fifo, controller
+    // lane, address_generator or tile_walker, pair_fifo, controller; on the
+    // grid board cell_function, cell_loader, one_cell_filter, sequencer
+    std::string key;
     std::string piece;  // "float32 comparison lane at compare latency 2", "pair FIFO in block RAM", ...
     PathDelay path;
     // Whether the board's clock is held to this piece. The pair FIFO's
     // bookkeeping and the tile walker are written as one combinational step a
     // cycle, to match the C++ model cycle for cycle, not to meet a clock (the
     // paper's board drained its FIFO at its clock): their paths are reported,
-    // not held to (docs/resources.md).
+    // not held to (docs/resources.md). So are the grid board's cell-function
+    // unit (its adder one of the model's four stages), one-cell filter
+    // (combinational in front of the pair FIFO) and binning sequencer (its
+    // setup divider and bounds adders one step a slot; docs/grid_board.md).
     bool holds_clock = true;
 };
 struct BoardTiming {
@@ -103,6 +120,7 @@ struct TimedBoard {
     uint32_t compare_latency = 0;
     FifoMemory fifo_memory = FifoMemory::kBlockRam;  // BoardResources::pair_fifo_memory
     bool tiled = false;        // boxes in SSRAM tiles: the tile walker, not the address generator
+    bool grid = false;         // the grid board: its sequencer, loader and cell-function units instead
 };
 BoardTiming board_timing(const TimingTable& table, const TimedBoard& board);
 

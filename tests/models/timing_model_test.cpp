@@ -36,6 +36,26 @@ TimingTable small_timing_table() {
                               "small.csv");
 }
 
+// The small table with the grid board's pieces: fixed8 and fixed24 the synthesised fixed widths.
+TimingTable grid_timing_table(double loader_ns) {
+    std::string csv = kTimingHeader +
+                      "xc2v,board_control,-,-,-,4,5.0,1,30,0,flip_flop,flip_flop\n"
+                      "xc2v,compare_lane,float32,-,2,4,9.0,4,16,0,block_ram,flip_flop\n"
+                      "xc2v,compare_lane,fixed16,-,2,4,6.0,2,8,0,block_ram,flip_flop\n"
+                      "xc2v,address_generator,-,3,-,4,20.0,3,12,0,flip_flop,flip_flop\n"
+                      "xc2v,tile_walker,-,3,-,4,21.0,5,20,0,flip_flop,flip_flop\n"
+                      "xc2v,pair_collector,block_ram,3,-,4,11.0,7,0,6,block_ram,flip_flop\n"
+                      "xc2v,home_cell_filter,-,3,-,4,4.0,3,0,0,flip_flop,flip_flop\n"
+                      "xc2v,grid_cell_function,float32,-,-,4,30.0,6,20,0,flip_flop,flip_flop\n"
+                      "xc2v,grid_cell_function,fixed8,-,-,4,25.0,6,10,0,flip_flop,flip_flop\n"
+                      "xc2v,grid_cell_function,fixed24,-,-,4,26.0,6,12,0,flip_flop,flip_flop\n"
+                      "xc2v,cell_loader,float32,-,-,4," + std::to_string(loader_ns) + ",4,20,0,flip_flop,block_ram\n"
+                      "xc2v,cell_loader,fixed8,-,-,4,7.0,4,20,0,flip_flop,block_ram\n"
+                      "xc2v,cell_loader,fixed24,-,-,4,7.5,4,20,0,flip_flop,block_ram\n"
+                      "xc2v,grid_sequencer,float32,8,-,4,40.0,30,50,4,flip_flop,flip_flop\n";
+    return TimingTable::parse(csv, "grid.csv");
+}
+
 std::string timing_parse_error(const std::string& csv) {
     try {
         TimingTable::parse(csv, "t.csv");
@@ -127,6 +147,47 @@ TEST(BoardTiming, TheSlowestPieceTheClockIsHeldToSetsTheFmax) {
     EXPECT_EQ(timing.limiting().piece, "fixed16 comparison lane at compare latency 2");
 }
 
+TEST(BoardTiming, AGridBoardIsHeldToItsCellLoaderNotToTheSeedsAddressPieces) {
+    TimedBoard board{"xc2v", 4, "float32", 3, 2, FifoMemory::kBlockRam, false, true};
+    BoardTiming timing = board_timing(grid_timing_table(6.0), board);
+    std::vector<std::string> keys;
+    for (const PieceTiming& piece : timing.pieces) keys.push_back(piece.key + (piece.holds_clock ? "" : " (reported)"));
+    EXPECT_EQ(keys, (std::vector<std::string>{"lane", "cell_function (reported)", "cell_loader", "sequencer (reported)",
+                                              "one_cell_filter (reported)", "pair_fifo (reported)", "controller"}));
+    // The lane (9 ns) limits; the sequencer as written (40 ns) is the slowest of all.
+    EXPECT_EQ(timing.limiting().piece, "float32 comparison lane at compare latency 2");
+    EXPECT_EQ(timing.slowest().piece, "binning sequencer as written");
+    EXPECT_EQ(timing.pieces[1].piece, "float32 cell-function unit as written");
+    EXPECT_DOUBLE_EQ(timing.pieces[1].path.ns, 30.0);
+    // A slower loader (12 ns) limits the grid board; the address generator (20 ns) and tile
+    // walker (21 ns), which it has not, would have limited it before it.
+    timing = board_timing(grid_timing_table(12.0), board);
+    EXPECT_EQ(timing.limiting().piece, "float32 cell loader");
+    EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 12.0);
+    // With fixed16 lanes (6 ns) the fixed16 loader limits: fixed16 lies between the
+    // synthesised fixed8 (7 ns) and fixed24 (7.5 ns) and takes the slower.
+    board.format = "fixed16";
+    timing = board_timing(grid_timing_table(6.0), board);
+    EXPECT_EQ(timing.limiting().piece, "fixed16 cell loader");
+    EXPECT_DOUBLE_EQ(timing.limiting().path.ns, 7.5);
+    EXPECT_DOUBLE_EQ(timing.pieces[1].path.ns, 26.0);
+    // The seed's board on the same table: its address generator, none of the grid's pieces.
+    board.grid = false;
+    timing = board_timing(grid_timing_table(12.0), board);
+    EXPECT_EQ(timing.limiting().piece, "address generator");
+    for (const PieceTiming& piece : timing.pieces) {
+        EXPECT_EQ(piece.key.find("cell"), std::string::npos) << piece.key;
+        EXPECT_NE(piece.key, "sequencer");
+    }
+    // A fixed width outside the synthesised ones is named as missing.
+    try {
+        grid_timing_table(6.0).cell_function("xc2v", 4, "fixed32");
+        ADD_FAILURE() << "fixed32 found";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "no timing of the fixed32 cell-function unit for the xc2v family at speed grade -4 "
+                               "(no synthesised width on both sides)");
+    }
+}
 
 // What the stored table (the RTL, synthesised and timed) says, for every
 // family and speed grade in it.

@@ -6,10 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <map>
 #include <sstream>
 #include <string>
 
 #include "models/common/user_text.h"
+#include "models/resources/timing_model.h"
 #include "platform/settings/board_preset.h"
 #include "platform/settings/config_file.h"
 
@@ -75,6 +80,39 @@ TEST(DeviceFitTiming, TheEstimateIsTheSlowestPieceTheClockIsHeldTo) {
     EXPECT_LT(fixed.timing.pieces[0].path.ns, fit.timing.pieces[0].path.ns);
 }
 
+TEST(DeviceFitTiming, AGridBoardIsHeldToItsCellLoaderAndReportsItsOtherPiecesTheSeedsBoardToNone) {
+    const DeviceFit grid = fit_on_device(preset("adm-xrc-ii", {"board.algorithm=grid"}).settings(), kBoxes);
+    std::map<std::string, bool> held;  // key: holds_clock
+    double slowest_held = 0;
+    for (const PieceTiming& piece : grid.timing.pieces) {
+        held[piece.key] = piece.holds_clock;
+        if (piece.holds_clock) slowest_held = std::max(slowest_held, piece.path.ns);
+    }
+    EXPECT_EQ(held, (std::map<std::string, bool>{{"lane", true},
+                                                 {"cell_function", false},
+                                                 {"cell_loader", true},
+                                                 {"controller", true},
+                                                 {"sequencer", false},
+                                                 {"one_cell_filter", false},
+                                                 {"pair_fifo", false}}));
+    EXPECT_DOUBLE_EQ(grid.timing.fmax_mhz(), 1e3 / slowest_held);
+    const TimingTable& table = TimingTable::stored();
+    EXPECT_GE(slowest_held, table.cell_loader("xc2v", 4, "float32").ns);
+    // The report lists them (config.resources.timing).
+    const nlohmann::json report = timing_json(grid);
+    for (const char* key : {"cell_function", "cell_loader", "sequencer", "one_cell_filter"}) {
+        EXPECT_TRUE(report["pieces"].contains(key)) << key;
+    }
+    EXPECT_FALSE(report["pieces"]["sequencer"]["holds_clock"].get<bool>());
+    // The seed's board has none of them.
+    const DeviceFit seed = fit_on_device(preset("adm-xrc-ii").settings(), kBoxes);
+    for (const PieceTiming& piece : seed.timing.pieces) {
+        EXPECT_TRUE(piece.key != "cell_function" && piece.key != "cell_loader" && piece.key != "sequencer" &&
+                    piece.key != "one_cell_filter")
+            << piece.key;
+    }
+}
+
 TEST(ClockCheck, AClockBeyondTheEstimateIsRefusedNamingItsOriginTheEstimateAndThePiece) {
     const SettingValues fine = preset("adm-xrc-ii");
     EXPECT_EQ(refusal(fine), "");
@@ -96,6 +134,25 @@ TEST(ClockCheck, AClockBeyondTheEstimateIsRefusedNamingItsOriginTheEstimateAndTh
               std::string::npos);
     // No device family: nothing to estimate, nothing refused.
     EXPECT_EQ(refusal(preset("adm-xrc-ii", {"board.clock_mhz=500", "device.family=none"})), "");
+}
+
+TEST(ClockCheck, AGridBoardsRefusalNamesTheGridPieceThatLimitsIt) {
+    // On the XC2V6000-4 the float32 cell loader's own logic (10.40 ns) is slower than the lane
+    // (10.15 ns): it sets the grid board's Fmax, and the seed's board, which has no loader, is faster.
+    const TimingTable& table = TimingTable::stored();
+    const double loader = table.cell_loader("xc2v", 4, "float32").ns;
+    ASSERT_GT(loader, table.lane("xc2v", 4, "float32", 2).ns);
+    char expected[96];
+    std::snprintf(expected, sizeof expected, "the board reaches on the XC2V6000-4 (speed grade -4): its float32 cell "
+                  "loader takes %.2f ns a cycle", loader);
+    const std::string error = refusal(preset("adm-xrc-ii", {"board.algorithm=grid", "board.clock_mhz=500"}));
+    EXPECT_NE(error.find(expected), std::string::npos) << error;
+    const DeviceFit grid = fit_on_device(preset("adm-xrc-ii", {"board.algorithm=grid"}).settings(), kBoxes);
+    const DeviceFit seed = fit_on_device(preset("adm-xrc-ii").settings(), kBoxes);
+    EXPECT_DOUBLE_EQ(grid.timing.fmax_mhz(), 1e3 / loader);
+    EXPECT_GT(seed.timing.fmax_mhz(), grid.timing.fmax_mhz());
+    // The preset's 66 MHz is within both.
+    EXPECT_EQ(refusal(preset("adm-xrc-ii", {"board.algorithm=grid"})), "");
 }
 
 TEST(ClockCheck, IgnoreTimingWarnsInsteadAndAnUnknownGradeIsRefused) {
