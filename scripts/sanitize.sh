@@ -10,7 +10,8 @@
 # Environment: SANITIZERS (default address,undefined,float-cast-overflow), BUILD_DIR (build-asan),
 # SANITIZE_OPT (-O1 -g1: optimisation and debug info), JOBS (nproc),
 # RTL_VARIANTS (the board RTL's Verilator builds: by default the few the
-# command-line and waveform tests name, not the whole default list).
+# command-line and waveform tests name and the grid board's lockstep test's,
+# not the whole default list).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -34,7 +35,8 @@ export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 export SYSTEMC_MEMPOOL_DONT_USE=1
 
 paper="format=float32,latency=2,fifo=512,buffer=262144,capacity=512"
-rtl_variants="${RTL_VARIANTS-m=8,$paper;m=8,fifo=15,buffer=128,capacity=1024;m=2,buffer=40,capacity=512;m=2,format=fixed16,latency=1,fifo=3,buffer=64,capacity=1024;m=2,fifo=8,buffer=64,tile=64,tile_latency=2,capacity=1024}"
+grid="m=3,fifo=5,buffer=24,tile_latency=2,capacity=512,algorithm=grid,cell_capacity=9,entries=400"
+rtl_variants="${RTL_VARIANTS-m=8,$paper;m=8,fifo=15,buffer=128,capacity=1024;m=2,buffer=40,capacity=512;m=2,format=fixed16,latency=1,fifo=3,buffer=64,capacity=1024;m=2,fifo=8,buffer=64,tile=64,tile_latency=2,capacity=1024;$grid}"
 
 # -O1 -g1: what ASan's and UBSan's checks need (every check is compiled in
 # at any level; -O1 keeps the tests fast) and line tables for the reports'
