@@ -2,8 +2,10 @@
 
 #include <stdexcept>
 
+#include "sw/baselines/box_pruning.h"
 #include "sw/baselines/brute_force.h"
 #include "sw/baselines/bullet_broad_phase.h"
+#include "sw/baselines/hierarchical_grid.h"
 #include "sw/baselines/parallel_sap.h"
 #include "sw/baselines/soa_broad_phase.h"
 #include "models/common/user_text.h"
@@ -23,9 +25,11 @@ public:
 
 }  // namespace
 
-std::vector<std::string> broad_phase_names() { return {"sap", "dbvt", "brute", "soa", "sap_mt"}; }
+std::vector<std::string> broad_phase_names() {
+    return {"sap", "dbvt", "brute", "soa", "sap_mt", "prune", "prune_mt", "hgrid", "hgrid_mt"};
+}
 
-std::vector<std::string> single_thread_broad_phase_names() { return {"sap", "dbvt", "brute", "soa"}; }
+std::vector<std::string> single_thread_broad_phase_names() { return {"sap", "dbvt", "brute", "soa", "prune", "hgrid"}; }
 
 std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name, const BaselineOptions& options) {
     if (name == "sap") return make_bullet_broad_phase(BulletKind::sap);
@@ -33,6 +37,12 @@ std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name, const Base
     if (name == "brute") return std::make_unique<BruteBroadPhase>();
     if (name == "soa") return std::make_unique<SoaBroadPhase>();
     if (name == "sap_mt") return std::make_unique<ParallelSapBroadPhase>(options.threads);
+    if (name == "prune" || name == "prune_mt") {
+        return std::make_unique<BoxPruningBroadPhase>(options.threads, name == "prune_mt");
+    }
+    if (name == "hgrid" || name == "hgrid_mt") {
+        return std::make_unique<HierarchicalGridBroadPhase>(options.threads, name == "hgrid_mt");
+    }
     std::string expected;
     for (const std::string& known : broad_phase_names()) {
         expected += (expected.empty() ? "" : ", ") + known;

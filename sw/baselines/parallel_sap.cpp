@@ -4,40 +4,9 @@
 #include <cmath>
 #include <numeric>
 
+#include "sw/baselines/box_bounds.h"
+
 namespace cdvp {
-
-namespace {
-
-bool has_nan(const FloatBox& b) {
-    for (int axis = 0; axis < 3; ++axis) {
-        if (std::isnan(b.min[axis]) || std::isnan(b.max[axis])) return true;
-    }
-    return false;
-}
-
-// The axis along which the boxes' centres spread most: sweeping it leaves
-// the fewest boxes overlapping any one's interval (a scene flat in x would
-// otherwise test nearly every pair).
-int widest_axis(const std::vector<FloatBox>& boxes, const std::vector<uint32_t>& index) {
-    double sum[3] = {}, squares[3] = {};
-    for (const uint32_t i : index) {
-        for (int axis = 0; axis < 3; ++axis) {
-            const double centre = 0.5 * (double(boxes[i].min[axis]) + double(boxes[i].max[axis]));
-            sum[axis] += centre;
-            squares[axis] += centre * centre;
-        }
-    }
-    int widest = 0;
-    double spread = -1;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double n = std::max<double>(double(index.size()), 1);
-        const double variance = squares[axis] / n - (sum[axis] / n) * (sum[axis] / n);
-        if (variance > spread) spread = variance, widest = axis;
-    }
-    return widest;
-}
-
-}  // namespace
 
 ParallelSapBroadPhase::ParallelSapBroadPhase(unsigned threads)
     : pool_(threads == 0 ? machine_threads() : threads), found_(pool_.size()) {}

@@ -7,6 +7,7 @@
 
 #include "models/common/user_text.h"
 #include "platform/settings/settings.h"
+#include "sw/baselines/broad_phase.h"
 #include "sw/bullet/scenes.h"
 #include "sw/cli/setting_flag.h"
 
@@ -74,11 +75,17 @@ po::options_description run_options_description(RunOptions& o) {
     po::options_description board("Board");
     add_board_option(board, o.layers.board_name);
     add_setting_flags(board, {"board", "bus"}, o.layers.flags);
+    // The baselines as the registry names them, so help cannot fall behind it.
+    std::string known;
+    for (const std::string& name : broad_phase_names()) known += (known.empty() ? "" : ", ") + name;
+    static const std::string baseline_help =
+        "software broad phases to time on the same frames, comma-separated: " + known +
+        " (a name ending in _mt runs on --threads threads), or best: the candidates an expert would pick for "
+        "the frames' size, each timed, the fastest named in the summary and the report (docs/baselines.md)";
     po::options_description host("Host, baselines and faults");
     add_setting_flags(host, {"host", "driver", "run"}, o.layers.flags);
     host.add_options()
-        ("baseline", po::value(&o.baselines)->value_name("LIST"),
-         "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa, sap_mt (on --threads threads)")
+        ("baseline", po::value(&o.baselines)->value_name("LIST"), baseline_help.c_str())
         ("software-timings", po::value(&o.software_timings)->value_name("DIR"),
          "share the baselines' timing through DIR (cdvp sweep gives every point OUT/software): a timing of this "
          "run's workload there (scene and its settings or the trace's frames, baselines, repeats, warm-up, this "

@@ -6,6 +6,7 @@
 #include "models/common/user_text.h"
 #include "sw/run/machine_info.h"
 #include "sw/cli/command_observer.h"
+#include "sw/run/report_summary.h"
 #include "sw/run/run_report.h"
 
 namespace cdvp {
@@ -97,6 +98,18 @@ void print_energy(std::ostream& out, const RunDescription& run, const RunTotals&
     }
 }
 
+// The software the board is held to: the fastest baseline timed.
+void print_fastest(std::ostream& out, const ReportSummary& summary) {
+    if (summary.best_software.empty() || summary.baselines.size() < 2) return;
+    const BaselineSummary& best = summary.baselines.at(summary.best_software);
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "fastest software: %s, %.1f us a frame on the host; the board's speedup over it %.2fx, energy "
+                  "ratio %.3gx (its energy a frame over the board's)\n",
+                  summary.best_software.c_str(), best.host_ns.mean / 1e3, best.speedup, best.energy_ratio);
+    out << line;
+}
+
 // The means the speedups are taken from, with p50, p99 and the maximum.
 void print_timing(std::ostream& out, const RunDescription& run, const RunTotals& totals) {
     if (totals.frames() == 0) return;
@@ -137,6 +150,7 @@ void print_timing(std::ostream& out, const RunDescription& run, const RunTotals&
                           speedup(sw, b));
             out << line;
         }
+        print_fastest(out, totals.summary(run.host_timing));
         print_timing_quality(out, totals);
     }
     if (board.too_few_frames()) {

@@ -20,7 +20,8 @@ constexpr uint64_t kWarmup = 2;  // the run's default (sw/timing/frame_samples.h
 // Small, the paper's largest, and the 72-point sweep's largest: each weighs
 // the same in the geometric mean a baseline's reference time is.
 const std::vector<uint64_t>& objects();
-// The baselines timed: every one cdvp run has (sw/baselines). The
+// The baselines timed: the five cdvp had at version 2 (a later baseline
+// takes the profile's overall factor, the geometric mean of these). The
 // multi-threaded one runs on kCalibrationThreads, so that its factor, like
 // the others', is one core's speed against the modelled host's; how it
 // scales with threads is this machine's (docs/timing.md).

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
+#include "sw/run/best_software.h"
 
 namespace cdvp {
 
@@ -136,6 +137,7 @@ nlohmann::json to_json(const ReportSummary& s) {
                            {"extra_share", s.extra.share()},
                            {"extra_readback_ns", s.extra.extra_readback_ns},
                            {"extra_driver_ns", s.extra.extra_driver_ns}};
+    if (!s.best_software.empty()) json["best_software"] = s.best_software;
     put_spread(json, "total_ns", s.total_ns);
     put_spread(json, "latency_ns", s.latency_ns);
     put_spread(json, "sim_wall_native_ns", s.sim_wall_native_ns);
@@ -192,6 +194,16 @@ ReportSummary summary_from_json(const nlohmann::json& json, const std::string& s
         }
         if (b.json().contains("native_energy_j")) out.native_energy_j = b.get<double>("native_energy_j");
         if (b.json().contains("retimed")) out.retimed = b.get<std::vector<std::array<double, 3>>>("retimed");
+    }
+    // Reports from before the fastest software was named: the fastest of their baselines.
+    if (json.contains("best_software")) {
+        s.best_software = r.get<std::string>("best_software");
+        if (s.baselines.count(s.best_software) == 0) {
+            throw InputError(source + ": summary: best_software: '" + excerpt(s.best_software) +
+                             "' is none of the summary's baselines");
+        }
+    } else if (const std::optional<std::string> fastest = fastest_baseline(s)) {
+        s.best_software = *fastest;
     }
     if (json.contains("timing_quality")) s.timing_quality = timing_quality_from_json(json["timing_quality"], source + ": summary");
     if (json.contains("retime_tries")) s.retime_tries = r.get<uint32_t>("retime_tries");

@@ -52,6 +52,9 @@ struct ReportSummary {
     uint64_t frames_in_means = 0;  // the frames after the warm-up (all of them if no more)
     bool too_few_frames = false;   // the means rest on fewer frames than a figure should
     std::map<std::string, BaselineSummary> baselines;
+    // The baseline with the least mean frame time on the modelled host (the
+    // software the board is held to; sw/run/best_software.h); empty: none timed.
+    std::string best_software;
     TimingQuality timing_quality;  // the baselines' together
     uint32_t retime_tries = 0;     // run.retime_tries: the tries a disturbed frame was given
     uint64_t pairs = 0;

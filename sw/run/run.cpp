@@ -7,6 +7,7 @@
 #include "models/common/user_text.h"
 #include "platform/fault_injection.h"
 #include "sw/bullet/scenes.h"
+#include "sw/run/best_software.h"
 #include "sw/run/bullet_scene_source.h"
 #include "sw/run/bullet_worlds.h"
 #include "sw/run/exit_codes.h"
@@ -42,6 +43,22 @@ void check_analytic_run(const RunSetup& setup, const RunSpec& spec) {
     }
 }
 
+unsigned run_baseline_threads(const Settings& settings) {
+    return baseline_threads(settings.run.threads, settings.host.cores);
+}
+
+BaselineTimer baseline_timer(const RunSpec& spec, const RunSetup& setup, std::optional<std::size_t> objects) {
+    const Settings& settings = setup.values.settings();
+    const unsigned threads = run_baseline_threads(settings);
+    return BaselineTimer(resolve_baselines(spec.baselines, objects, threads), setup.host, settings.run.retime_tries,
+                         spec.settings.names->input("baseline"), BaselineOptions{threads});
+}
+
+// "best" for the frames at hand: the candidates for their largest frame.
+void resolve_best(const RunSpec& spec, RunSetup& setup, const FrameSource& source) {
+    if (asks_for_best(spec.baselines)) setup.baselines = baseline_timer(spec, setup, source.max_objects());
+}
+
 RunSetup make_setup(const RunSpec& spec) {
     const SettingNames& names = *spec.settings.names;
     RunSetup setup;
@@ -60,8 +77,9 @@ RunSetup make_setup(const RunSpec& spec) {
                          " (cdvp record writes a Bullet scene's frames to one)");
     }
     setup.trace_window = vcd_window(spec.outputs.waves ? spec.outputs.waves->frames : std::nullopt, names);
-    setup.baselines = BaselineTimer(spec.baselines, setup.host, setup.values.settings().run.retime_tries,
-                                    names.input("baseline"), BaselineOptions{baseline_threads(setup.values.settings().run.threads, setup.values.settings().host.cores)});
+    // "best" as every candidate for now (the budgets hold all of them); the
+    // frames' size decides once they are open (resolve_best).
+    setup.baselines = baseline_timer(spec, setup, std::nullopt);
     const Setting& repeat = declared_setting("run.repeat");
     if (!setup.values.is_default(repeat) && setup.baselines.empty()) {
         throw InputError(setup.values.where(repeat) + ": reruns the software baselines over the frames; give " +
@@ -127,6 +145,7 @@ RunOutcome run_frames_of(const RunSpec& spec, RunObserver& observer, const RunCo
     check_inject_frames(setup.platform.faults, source->last_frame(),
                         [&source](uint64_t n) { return source->has_frame(n); }, source->describe(), names);
     check_trace_window(setup.trace_window, source->last_frame(), source->describe(), names);
+    resolve_best(spec, setup, *source);
     pin_to_setting_cpu(setup.values);
     std::optional<SharedBaselines> shared;
     if (spec.software_timings && !setup.baselines.empty()) {

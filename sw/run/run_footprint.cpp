@@ -63,6 +63,12 @@ uint64_t baseline_bytes_per_box(const std::string& name) {
     if (name == "dbvt") return kDbvtBox;
     if (name == "soa") return kFloatBox;  // its structure of arrays
     if (name == "sap_mt") return kFloatBox + sizeof(uint32_t);  // its sorted bounds and their indices
+    // Its valid list, keys and order twice over (the radix sort's two
+    // buffers), and the sorted key and bounds: 4 + 16 + 28 bytes.
+    if (name == "prune" || name == "prune_mt") return 48;
+    // Its valid list, level and cell a box, the 32-byte entry, and the cells
+    // (at most two a box in level 0, a quarter of that above): 4 + 1 + 4 + 32 + 11.
+    if (name == "hgrid" || name == "hgrid_mt") return 52;
     return 0;                             // brute: nothing of its own
 }
 

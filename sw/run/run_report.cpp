@@ -7,6 +7,7 @@
 
 #include "models/address_generator/sweep_schedule.h"
 #include "models/common/user_text.h"
+#include "sw/run/best_software.h"
 #include "sw/run/report_provenance.h"
 #include "sw/run/report_summary.h"
 #include "sw/run/version.h"
@@ -289,6 +290,7 @@ ReportSummary RunTotals::summary(const HostTiming& host) const {
             first_quality = false;
         }
     }
+    if (const std::optional<std::string> fastest = fastest_baseline(s)) s.best_software = *fastest;
     s.retime_tries = max_tries_;
     s.frames = frames();
     s.warmup_frames = warmup_frames();

@@ -146,7 +146,12 @@ std::string baseline_words(const std::string& baseline) {
                                                           {"dbvt", "Bullet's dynamic AABB tree"},
                                                           {"brute", "brute force"},
                                                           {"soa", "all pairs over structure of arrays"},
-                                                          {"sap_mt", "sweep and prune on several threads"}};
+                                                          {"sap_mt", "sweep and prune on several threads"},
+                                                          {"prune", "box pruning, radix sort and SIMD"},
+                                                          {"prune_mt", "box pruning on several threads"},
+                                                          {"hgrid", "hierarchical grid"},
+                                                          {"hgrid_mt", "hierarchical grid on several threads"},
+                                                          {"best", "the fastest software timed at each point"}};
     const auto at = kWhat.find(baseline);
     return at == kWhat.end() ? baseline : baseline + " (" + at->second + ")";
 }

@@ -6,6 +6,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/output/digest.h"
+#include "sw/run/best_software.h"
 #include "sw/run/report_summary.h"
 #include "sw/study/figure_plan.h"
 #include "sw/study/sweep_csv.h"
@@ -164,29 +165,36 @@ void put_summary_figures(const nlohmann::json& summary, bool any_frame, RowBuild
     }
 }
 
-// Each baseline's figures on the modelled host, as the report summarises
-// them over every --repeat run.
-void put_baselines(const ReportSummary& summary, RowBuilder& out, ColumnFilter keep) {
-    for (const auto& [name, b] : summary.baselines) {
-        const std::pair<const char*, double> figures[] = {
-            {"_mean_host_ns", b.host_ns.mean}, {"_p50_host_ns", b.host_ns.p50}, {"_p99_host_ns", b.host_ns.p99},
-            {"_max_host_ns", b.host_ns.max},   {"_host_factor", b.host_factor}, {"_speedup", b.speedup},
-            {"_energy_j", b.energy_j},         {"_energy_ratio", b.energy_ratio}};
-        for (const auto& [suffix, value] : figures) {
-            if (keep(name + suffix)) out.put(name + suffix, number_text(value));
-        }
-        // How far the figures can be trusted, and whose timing they are.
-        const TimingQuality& q = b.quality;
-        const std::pair<std::string, std::string> quality[] = {
-            {"_timing_quality", q.verdict()},
-            {"_timing_retimed", std::to_string(q.frames_retimed)},
-            {"_timing_never_clean", std::to_string(q.never_clean)},
-            {"_timing_repeat_spread", number_text(q.repeat_spread)},
-            {"_timing_id", b.timing.empty() ? "own" : b.timing}};
-        for (const auto& [suffix, value] : quality) {
-            if (keep(name + suffix)) out.put(name + suffix, value);
-        }
+// One baseline's figures on the modelled host, as the report summarises
+// them over every --repeat run, under `name`.
+void put_baseline(const std::string& name, const BaselineSummary& b, RowBuilder& out, ColumnFilter keep) {
+    const std::pair<const char*, double> figures[] = {
+        {"_mean_host_ns", b.host_ns.mean}, {"_p50_host_ns", b.host_ns.p50}, {"_p99_host_ns", b.host_ns.p99},
+        {"_max_host_ns", b.host_ns.max},   {"_host_factor", b.host_factor}, {"_speedup", b.speedup},
+        {"_energy_j", b.energy_j},         {"_energy_ratio", b.energy_ratio}};
+    for (const auto& [suffix, value] : figures) {
+        if (keep(name + suffix)) out.put(name + suffix, number_text(value));
     }
+    // How far the figures can be trusted, and whose timing they are.
+    const TimingQuality& q = b.quality;
+    const std::pair<std::string, std::string> quality[] = {
+        {"_timing_quality", q.verdict()},
+        {"_timing_retimed", std::to_string(q.frames_retimed)},
+        {"_timing_never_clean", std::to_string(q.never_clean)},
+        {"_timing_repeat_spread", number_text(q.repeat_spread)},
+        {"_timing_id", b.timing.empty() ? "own" : b.timing}};
+    for (const auto& [suffix, value] : quality) {
+        if (keep(name + suffix)) out.put(name + suffix, value);
+    }
+}
+
+// Each baseline's figures; with more than one, the fastest's again as
+// "best", and its name (the software each point's answer is held to).
+void put_baselines(const ReportSummary& summary, RowBuilder& out, ColumnFilter keep) {
+    for (const auto& [name, b] : summary.baselines) put_baseline(name, b, out, keep);
+    if (summary.baselines.size() < 2 || summary.best_software.empty()) return;
+    if (keep("best_baseline")) out.put("best_baseline", summary.best_software);
+    put_baseline(kBestSoftware, summary.baselines.at(summary.best_software), out, keep);
 }
 
 // The figures of a report: its frame count, the medians over the frames after
@@ -221,7 +229,7 @@ bool is_compact_result(const std::string& column) {
         "median_readback_ns", "median_driver_ns", "median_total_ns", "median_latency_ns", "mean_total_ns",
         "mean_energy_j", "mean_energy_static_j", "mean_energy_dynamic_j", "mean_energy_bus_j", "mean_energy_host_j",
         "mean_energy_per_pair_j",
-        "p99_total_ns", "max_total_ns"};
+        "p99_total_ns", "max_total_ns", "best_baseline"};
     return kept.count(column) != 0 || ends_with(column, "_mean_host_ns") || ends_with(column, "_speedup") ||
            ends_with(column, "_energy_j") || ends_with(column, "_energy_ratio") ||
            ends_with(column, "_timing_quality") || ends_with(column, "_timing_id");

@@ -189,27 +189,35 @@ TEST(SapBroadPhase, MoreBoxesThanA16BitSweepHolds) {
     }
 }
 
-TEST(MakeBroadPhase, NamesAreTheFiveBaselinesAndTheCalibratedFourRunOnOneThread) {
-    EXPECT_EQ(broad_phase_names(), (std::vector<std::string>{"sap", "dbvt", "brute", "soa", "sap_mt"}));
-    EXPECT_EQ(single_thread_broad_phase_names(), (std::vector<std::string>{"sap", "dbvt", "brute", "soa"}));
+TEST(MakeBroadPhase, NamesAndWhichRunOnOneThread) {
+    EXPECT_EQ(broad_phase_names(), (std::vector<std::string>{"sap", "dbvt", "brute", "soa", "sap_mt", "prune",
+                                                             "prune_mt", "hgrid", "hgrid_mt"}));
+    EXPECT_EQ(single_thread_broad_phase_names(), (std::vector<std::string>{"sap", "dbvt", "brute", "soa", "prune", "hgrid"}));
     for (const std::string& name : single_thread_broad_phase_names()) EXPECT_EQ(make_broad_phase(name)->threads(), 1u);
+    const std::vector<std::string> one_thread = single_thread_broad_phase_names();
+    for (const std::string& name : broad_phase_names()) {
+        const bool listed = std::find(one_thread.begin(), one_thread.end(), name) != one_thread.end();
+        if (!listed) EXPECT_EQ(make_broad_phase(name, BaselineOptions{3})->threads(), 3u) << name;
+    }
 }
 
 // The parallel sweep finds the same pairs whatever its threads (more threads
 // than this machine has cores, too: they take turns), frame after frame.
-TEST(ParallelSap, EveryThreadCountFindsTheExactPairs) {
+class MultiThreaded : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MultiThreaded, EveryThreadCountFindsTheExactPairs) {
     for (const unsigned threads : {1u, 2u, 3u, 8u}) {
-        auto phase = make_broad_phase("sap_mt", BaselineOptions{threads});
+        auto phase = make_broad_phase(GetParam(), BaselineOptions{threads});
         EXPECT_EQ(phase->threads(), threads);
         for (const Boxes& boxes : test::moving_frames(1500, 4, 5 + threads)) {
             expect_exact(*phase, boxes, std::to_string(threads) + " threads");
         }
     }
-    EXPECT_GE(make_broad_phase("sap_mt")->threads(), 1u);  // 0: this machine's cores
+    EXPECT_GE(make_broad_phase(GetParam())->threads(), 1u);  // 0: this machine's cores
 }
 
-TEST(ParallelSap, APairBudgetStopsItOnAnyThread) {
-    auto phase = make_broad_phase("sap_mt", BaselineOptions{3});
+TEST_P(MultiThreaded, APairBudgetStopsItOnAnyThread) {
+    auto phase = make_broad_phase(GetParam(), BaselineOptions{3});
     const Boxes boxes = test::random_boxes(700, 3);
     PairList all;
     phase->find_pairs(boxes, all);
@@ -222,12 +230,16 @@ TEST(ParallelSap, APairBudgetStopsItOnAnyThread) {
     EXPECT_EQ(out.size(), all.size());
 }
 
+INSTANTIATE_TEST_SUITE_P(Baselines, MultiThreaded, ::testing::Values("sap_mt", "prune_mt", "hgrid_mt"),
+                         [](const auto& info) { return info.param; });
+
 TEST(MakeBroadPhase, UnknownNameThrows) {
     try {
         make_broad_phase("nope");
         FAIL() << "no exception";
     } catch (const std::invalid_argument& error) {
-        EXPECT_STREQ(error.what(), "unknown baseline 'nope'; expected one of: sap, dbvt, brute, soa, sap_mt");
+        EXPECT_STREQ(error.what(), "unknown baseline 'nope'; expected one of: sap, dbvt, brute, soa, sap_mt, prune, "
+                                   "prune_mt, hgrid, hgrid_mt");
     }
 }
 
