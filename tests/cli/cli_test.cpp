@@ -123,7 +123,8 @@ TEST_F(Cli, TopLevelCommandLine) {
         EXPECT_EQ(r.err, std::string("cdvp: unknown command '") + bad +
                              "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, calibrate, rtl-variants, help (see cdvp --help)\n");
     }
-    EXPECT_EQ(run("run").err, "cdvp run: give exactly one of --trace FILE or --scene spheres\n");
+    EXPECT_EQ(run("run").err, "cdvp run: give exactly one of --trace FILE or --scene NAME (spheres, pile, heavy, planar, "
+                              "brownian, or one of Bullet's)\n");
     // cdvp help [COMMAND]: the same text as --help.
     EXPECT_EQ(run("help").out, run("--help").out);
     for (const char* command : {"run", "sweep", "merge", "settings", "bullet"}) {
