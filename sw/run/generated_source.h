@@ -34,7 +34,7 @@ std::string generated_scene_list();
 // "spheres" for scene.moving_fraction; empty for one every scene has
 // (objects, frames, seed) and for a setting of another section.
 std::string scene_of_setting(const Setting& setting);
-// A family's setting given (not its default) for another scene is refused in
+// A family's setting set off its default for another scene is refused in
 // one line: "-c scene.pile.clusters: goes with --scene pile, not --scene
 // heavy". `scene` empty (a trace): nothing here (check_scene_settings says it).
 void check_family_settings(const SettingValues& values, const std::string& scene);
