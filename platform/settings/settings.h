@@ -49,6 +49,13 @@ struct SceneSettings {
     uint64_t frames = 12;
     uint64_t seed = 1;
     double moving_fraction = 1.0;  // SpheresConfig::moving_fraction
+    // The scene families' own (sw/scene: PileConfig, HeavyConfig,
+    // PlanarConfig, BrownianConfig; a test holds the defaults equal).
+    uint64_t pile_clusters = 3;
+    double heavy_size_ratio = 100.0;
+    double heavy_large_fraction = 0.01;
+    double planar_aspect = 1.0;
+    double brownian_jump = 1.0;
 };
 
 struct RunSettings {

@@ -525,8 +525,9 @@ std::vector<Setting> host_and_run_settings() {
         real("driver.poll_gap_max_ns", "ns", 0, 1e9, member(&S::driver, &D::poll_gap_max_ns),
              "the largest gap between two polls under back-off", "assumption: 100 us, a tenth of a 1 ms frame"),
         flag(count("scene.objects", "objects", 0, address_map::kMaxObjects, member(&S::scene, &SceneSettings::objects),
-                   "objects in a generated scene: spheres, or the bodies a Bullet scene is built around (a Bullet "
-                   "scene's default is its own: cdvp bullet --help)",
+                   "objects in a generated scene: its spheres or boxes (pile releases its boxes over the frames), "
+                   "or the bodies a Bullet scene is built around (a Bullet scene's default is its own: cdvp bullet "
+                   "--help)",
                    "the paper's largest scene"),
              "objects", "N"),
         flag(count("scene.frames", "frames", 0, 1'000'000'000, member(&S::scene, &SceneSettings::frames),
@@ -542,6 +543,26 @@ std::vector<Setting> host_and_run_settings() {
                   "bounce off (a physics scene's level geometry)",
                   "1: every sphere moves, as in the paper"),
              "moving", "F"),
+        count("scene.pile.clusters", "clusters", 1, 1'048'576, member(&S::scene, &SceneSettings::pile_clusters),
+              "scene pile: the footprints its boxes fall onto and pile up on, box k onto cluster k mod clusters "
+              "(each about four layers deep)",
+              "assumption: a few heaps, as a spawner or a collapse drops them"),
+        real("scene.heavy.size_ratio", "x", 1, 10000, member(&S::scene, &SceneSettings::heavy_size_ratio),
+             "scene heavy: a large box's longest extent over a small box's mean extent (it is 0.75 to 1 x this x 1.5 "
+             "units): the level's static slabs, walls and ramps against its debris",
+             "assumption: a level's static geometry a hundred times its debris"),
+        real("scene.heavy.large_fraction", "", 0, 1, member(&S::scene, &SceneSettings::heavy_large_fraction),
+             "scene heavy: the share of its boxes that are large and static, spread evenly over the ids; the rest "
+             "are small debris drifting at up to 1 unit/s",
+             "assumption: one box in a hundred is level geometry"),
+        real("scene.planar.aspect", "x", 1, 10000, member(&S::scene, &SceneSettings::planar_aspect),
+             "scene planar: its floor's length (x) over its width (y); 1 a square floor, more a corridor; the floor's "
+             "area grows with the objects so they cover a quarter of it",
+             "assumption: a square floor"),
+        real("scene.brownian.jump", "x span", 0, 1, member(&S::scene, &SceneSettings::brownian_jump),
+             "scene brownian: each frame, each box jumps along each axis by a uniform step of up to this x the room "
+             "its centre has along that axis (mirrored at the walls); 1: positions all but redrawn every frame",
+             "assumption: no frame-to-frame coherence at all"),
         flag(choice<Transfer>("run.transfer", member(&S::driver, &D::transfer),
                     "how the driver moves boxes and pairs: bridge DMA or programmed I/O",
                     "the paper's driver uses the bridge's DMA"),

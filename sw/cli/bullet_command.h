@@ -2,7 +2,7 @@
 // phase beside the same scene on one of Bullet's own, with the modelled board
 // time against Bullet's broad-phase time and the whole step's time; its
 // settings, checks and report are `cdvp run`'s (sw/run/run_setup.h).
-// `cdvp record`: a Bullet scene's AABBs written as a trace for `cdvp run`.
+// `cdvp record`: a scene's boxes written as a trace for `cdvp run`.
 #pragma once
 
 #include <boost/program_options.hpp>
@@ -19,21 +19,8 @@ namespace cdvp {
 int bullet_command(int argc, char** argv);
 int record_command(int argc, char** argv);
 
-// The scene options of `cdvp record`: --scene, --objects, --seed, --frames.
-struct SceneOptions {
-    std::string scene;
-    uint32_t objects = 0;
-    uint64_t seed = 1;
-    uint64_t frames = 1;
-};
-boost::program_options::options_description scene_options(SceneOptions& o);
-// The checked scene; InputError naming the flag otherwise.
-SceneSpec scene_spec(const SceneOptions& o, const boost::program_options::variables_map& vm);
-// A name of one of Bullet's scenes; InputError naming --scene otherwise.
-void check_bullet_scene_name(const std::string& name);
-// --scene's and --objects' help: the scenes, and each one's default count.
+// --scene's help: Bullet's scenes.
 std::string bullet_scene_help();
-std::string bullet_objects_help();
 
 // Parses argv with cdvp's rules: options spelt in full, no stray words, each
 // given once; --help or -h (before any "--") prints 'usage' and the options.

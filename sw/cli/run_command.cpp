@@ -37,7 +37,7 @@ SettingLayers setting_layers_of(const SettingLayersText& layers, const po::varia
 RunSpec run_spec_of(const RunOptions& o, const po::variables_map& vm) {
     RunSpec spec;
     spec.settings = setting_layers_of(o.layers, vm);
-    if (vm.count("trace") && vm.count("scene")) throw InputError("give exactly one of --trace FILE or --scene spheres");
+    if (vm.count("trace") && vm.count("scene")) throw InputError("give exactly one of --trace FILE or --scene NAME");
     if (vm.count("trace")) spec.frames = TraceFrames{o.trace};
     if (vm.count("scene")) spec.frames = SceneFrames{o.scene};
     spec.baselines = comma_list(o.baselines);

@@ -66,8 +66,9 @@ void add_wave_options(po::options_description& group, std::string& vcd, std::str
 
 po::options_description run_options_description(RunOptions& o) {
     po::options_description input("Input (one of)");
-    const std::string scenes = "generated scene: spheres (the paper's application), or one of Bullet's scenes as "
-                               "cdvp record records them: " + bullet_scene_list() + " (docs/bullet.md)";
+    const std::string scenes = "generated scene: spheres (the paper's application), a kinematic family: pile, heavy, "
+                               "planar, brownian (docs/scenes.md), or one of Bullet's scenes as cdvp record records "
+                               "them: " + bullet_scene_list() + " (docs/bullet.md)";
     input.add_options()
         ("trace", po::value(&o.trace)->value_name("FILE"), "scene trace CSV (docs/formats.md)")
         ("scene", po::value(&o.scene)->value_name("NAME"), scenes.c_str());

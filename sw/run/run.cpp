@@ -11,6 +11,7 @@
 #include "sw/run/bullet_scene_source.h"
 #include "sw/run/bullet_worlds.h"
 #include "sw/run/exit_codes.h"
+#include "sw/run/generated_source.h"
 #include "sw/run/run_checks.h"
 #include "sw/run/run_frames.h"
 #include "sw/run/run_memo.h"
@@ -69,12 +70,13 @@ RunSetup make_setup(const RunSpec& spec) {
     setup.platform.fidelity = engine_of(setup.level, setup.values.settings().run.lockstep);
     if (setup.level == ModelLevel::kAnalytic || setup.level == ModelLevel::kAuto) check_analytic_run(setup, spec);
     // Pipelined frames must be known ahead; an application's next frame
-    // comes from this frame's pairs.
-    if (const auto* scene = std::get_if<SceneFrames>(&*spec.frames); scene && setup.values.settings().board.box_banks > 1) {
+    // comes from this frame's pairs (a kinematic family's does not).
+    if (const auto* scene = std::get_if<SceneFrames>(&*spec.frames);
+        scene && !is_kinematic_scene(scene->name) && setup.values.settings().board.box_banks > 1) {
         throw InputError(setup.values.where(declared_setting("board.box_banks")) + ": two box banks pipeline frames, but " +
                          names.input("scene") + " " + scene->name + " steps on each frame's pairs, so its next frame is " +
                          "not known ahead; expected " + names.input("trace") +
-                         " (cdvp record writes a Bullet scene's frames to one)");
+                         " (cdvp record writes a scene's frames to one)");
     }
     setup.trace_window = vcd_window(spec.outputs.waves ? spec.outputs.waves->frames : std::nullopt, names);
     // "best" as every candidate for now (the budgets hold all of them); the
@@ -98,12 +100,7 @@ std::unique_ptr<FrameSource> open_source(const RunSpec& spec, const SettingValue
     if (is_bullet_scene(scene)) {
         return bullet_scene_source(bullet_scene_spec(scene, values), static_cast<std::size_t>(settings.scene.frames));
     }
-    BouncingSpheresConfig spheres;
-    spheres.objects = static_cast<std::size_t>(settings.scene.objects);
-    spheres.seed = settings.scene.seed;
-    spheres.moving_fraction = settings.scene.moving_fraction;
-    const auto frames = static_cast<std::size_t>(settings.scene.frames);
-    return memo != nullptr ? memo->scenes.spheres(spheres, frames) : spheres_source(spheres, frames);
+    return generated_source(scene, values, memo != nullptr ? &memo->scenes : nullptr);
 }
 
 // A run of a trace's frames or a generated scene's.

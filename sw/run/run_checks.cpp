@@ -17,6 +17,7 @@
 #include "models/common/user_text.h"
 #include "models/rtl_engine/rtl_variant.h"
 #include "sw/bullet/scenes.h"
+#include "sw/run/generated_source.h"
 #include "sw/scene/scene.h"
 
 namespace cdvp {
@@ -94,14 +95,15 @@ std::pair<uint64_t, uint64_t> vcd_window(const std::optional<std::string>& frame
 
 void check_frame_input(const std::optional<FrameInput>& frames, const SettingNames& names) {
     if (!frames) {
-        throw InputError("give exactly one of " + names.input("trace") + " FILE or " + names.input("scene") + " spheres");
+        throw InputError("give exactly one of " + names.input("trace") + " FILE or " + names.input("scene") + " NAME (" +
+                         generated_scene_list() + ", or one of Bullet's)");
     }
     if (const auto* trace = std::get_if<TraceFrames>(&*frames)) {
         if (trace->path.empty()) throw InputError(names.input("trace") + ": expected a file path, got ''");
     } else if (const auto* scene = std::get_if<SceneFrames>(&*frames)) {
-        if (scene->name != "spheres" && !is_bullet_scene(scene->name)) {
-            throw InputError(names.input("scene") + ": expected spheres or one of Bullet's scenes (" + bullet_scene_list() +
-                             "), got '" + excerpt(scene->name) + "'");
+        if (!is_generated_scene(scene->name) && !is_bullet_scene(scene->name)) {
+            throw InputError(names.input("scene") + ": expected " + generated_scene_list() + " or one of Bullet's scenes (" +
+                             bullet_scene_list() + "), got '" + excerpt(scene->name) + "'");
         }
     }
 }

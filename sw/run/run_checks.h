@@ -29,8 +29,9 @@ struct SceneSpec;
 void check_path_lengths(const std::vector<std::pair<const char*, const std::optional<std::string>*>>& paths,
                         const SettingNames& names);
 
-// Frames from a trace (a path) or a generated scene: spheres, or one of
-// Bullet's scenes as cdvp record records it. Throws InputError.
+// Frames from a trace (a path) or a generated scene: spheres, a kinematic
+// family (pile, heavy, planar, brownian), or one of Bullet's scenes as cdvp
+// record records it. Throws InputError.
 void check_frame_input(const std::optional<FrameInput>& frames, const SettingNames& names);
 // One of Bullet's scenes (--scene NAME) as the settings give it: refused,
 // naming where the count came from, outside 1 to kMaxSceneObjects objects.

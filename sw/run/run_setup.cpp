@@ -8,6 +8,7 @@
 #include "platform/memory_plan.h"
 #include "platform/platform_settings.h"
 #include "sw/bullet/scenes.h"
+#include "sw/run/generated_source.h"
 
 namespace cdvp {
 
@@ -63,6 +64,7 @@ BoardSetup board_setup(const SettingLayers& layers, const std::optional<std::str
         throw InputError(setup.values.where(moving) + ": only " + scene_input + " spheres holds some of its spheres still; " +
                          (scene->empty() ? "a trace's boxes move as recorded" : scene_input + " " + *scene + " is Bullet's"));
     }
+    if (scene) check_family_settings(setup.values, *scene);
     setup.platform = platform_config(setup.values);
     return setup;
 }

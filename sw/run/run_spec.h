@@ -33,7 +33,8 @@ struct SettingLayers {
 struct TraceFrames {  // a trace CSV, or a pipe (copied once, so it can be read again)
     std::string path;
 };
-struct SceneFrames {  // a generated scene: "spheres" (the paper's application) or one of Bullet's, replayed
+struct SceneFrames {  // a generated scene: "spheres" (the paper's application), a kinematic family
+                      // ("pile", "heavy", "planar", "brownian") or one of Bullet's, replayed
     std::string name;
 };
 // A Bullet scene stepped in a btDiscreteDynamicsWorld with the board as its

@@ -114,14 +114,18 @@ private:
 };
 
 std::unique_ptr<FrameSource> SceneMemo::spheres(const BouncingSpheresConfig& config, std::size_t frames) {
-    const std::string key = key_of(config, frames);
+    return generated(key_of(config, frames), frames, [&] { return spheres_source(config, frames); });
+}
+
+std::unique_ptr<FrameSource> SceneMemo::generated(const std::string& key, std::size_t frames,
+                                                  const std::function<std::unique_ptr<FrameSource>()>& open) {
     if (const auto at = by_key_.find(key); at != by_key_.end()) {
         ++hits_;
         entries_.splice(entries_.begin(), entries_, at->second);
         return std::make_unique<Replay>(at->second->scene);
     }
     ++misses_;
-    std::unique_ptr<FrameSource> source = spheres_source(config, frames);
+    std::unique_ptr<FrameSource> source = open();
     if (frames == 0) return source;
     return std::make_unique<Recording>(*this, key, std::move(source));
 }

@@ -1,11 +1,12 @@
 // Generated scenes kept across the runs of one process: a sweep of analytic
-// points generates the same spheres again at every m, clock and bus. A
+// points generates the same scene again at every m, clock and bus. A
 // scene's frames depend on its settings alone (the application steps on the
 // float32 pairs, whatever the board), so a scene of the same settings is
 // replayed frame for frame. Bounded in bytes, least recently used first out.
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <list>
 #include <map>
 #include <memory>
@@ -26,6 +27,10 @@ public:
     // when kept, else generated (spheres_source) and kept once the run has
     // taken every one of them.
     std::unique_ptr<FrameSource> spheres(const BouncingSpheresConfig& config, std::size_t frames);
+    // The same for any generated scene: `key` names it and its every setting
+    // (the frame count among them), `open` generates it.
+    std::unique_ptr<FrameSource> generated(const std::string& key, std::size_t frames,
+                                           const std::function<std::unique_ptr<FrameSource>()>& open);
 
     std::size_t hits() const { return hits_; }
     std::size_t misses() const { return misses_; }

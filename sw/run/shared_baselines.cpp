@@ -6,6 +6,7 @@
 #include "models/common/user_text.h"
 #include "platform/settings/setting_values.h"
 #include "sw/run/baseline_timing.h"
+#include "sw/run/generated_source.h"
 #include "sw/run/machine_info.h"
 #include "sw/output/digest.h"
 #include "sw/run/version.h"
@@ -57,7 +58,11 @@ nlohmann::json software_workload(const std::string& scene, FrameSource& source, 
     }
     nlohmann::json scene_settings = nlohmann::json::object();
     for (const Setting* s : values.effective()) {
-        if (s->section() == "scene") scene_settings[s->name] = to_json(s->get(settings));
+        // A family's settings go with its own scene only (a pile's key holds no heavy.*).
+        const std::string owner = scene_of_setting(*s);
+        if (s->section() == "scene" && (owner.empty() || owner == scene || owner == "spheres")) {
+            scene_settings[s->name] = to_json(s->get(settings));
+        }
     }
     workload["scene"] = scene;
     workload["scene_settings"] = scene_settings;

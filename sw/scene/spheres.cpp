@@ -1,5 +1,7 @@
 #include "sw/scene/spheres.h"
 
+#include "sw/scene/scene_random.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -9,57 +11,7 @@ namespace cdvp {
 
 namespace {
 
-// Results must be bit-identical on every platform: only IEEE basic
-// operations are used (no libm transcendental functions, whose last bit
-// varies between C libraries) and the library is built without FMA
-// contraction (see CMakeLists.txt).
-
-// xoshiro256** seeded through splitmix64, as its authors recommend.
-class Rng {
-public:
-    explicit Rng(uint64_t seed) {
-        for (uint64_t& word : s_) {
-            seed += 0x9e3779b97f4a7c15ULL;
-            uint64_t z = seed;
-            z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-            z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-            word = z ^ (z >> 31);
-        }
-    }
-
-    uint64_t next() {
-        uint64_t result = rotl(s_[1] * 5, 7) * 9;
-        uint64_t t = s_[1] << 17;
-        s_[2] ^= s_[0];
-        s_[3] ^= s_[1];
-        s_[1] ^= s_[2];
-        s_[0] ^= s_[3];
-        s_[2] ^= t;
-        s_[3] = rotl(s_[3], 45);
-        return result;
-    }
-
-    // Uniform in [0, 1) with 53 random bits.
-    double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
-private:
-    static uint64_t rotl(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-    uint64_t s_[4];
-};
-
-// Cube root of x > 0 by Newton's method from an exact exponent split, since
-// std::cbrt is not correctly rounded everywhere.
-double cube_root(double x) {
-    int e = 0;
-    double m = std::frexp(x, &e);  // x = m * 2^e, m in [0.5, 1), exact
-    int r = ((e % 3) + 3) % 3;
-    m = std::ldexp(m, r);          // m in [0.5, 4), e - r divisible by 3
-    double y = 1.0;
-    for (int i = 0; i < 8; ++i) {
-        y = (2.0 * y + m / (y * y)) / 3.0;
-    }
-    return std::ldexp(y, (e - r) / 3);
-}
+// Bit-identical on every platform: see scene_random.h.
 
 constexpr double kPi = 3.141592653589793;
 
@@ -88,9 +40,9 @@ SpheresPlacement place_spheres(const SpheresConfig& c) {
     double volume = static_cast<double>(c.objects) * (4.0 / 3.0) * kPi * mean_r3 /
                     c.volume_fraction;
     SpheresPlacement placement;
-    placement.edge = std::max(volume > 0.0 ? cube_root(volume) : 0.0, 2.0 * b);
+    placement.edge = std::max(volume > 0.0 ? exact_cube_root(volume) : 0.0, 2.0 * b);
 
-    Rng rng(c.seed);
+    SceneRng rng(c.seed);
     placement.spheres.resize(c.objects);
     for (SphereState& s : placement.spheres) {
         s.radius = a + (b - a) * rng.unit();
@@ -114,40 +66,16 @@ SpheresPlacement place_spheres(const SpheresConfig& c) {
     // Sphere k moves when floor((k + 1) f) > floor(k f): floor(N f) of them,
     // evenly spread; the draws above stay the same whatever f is.
     for (std::size_t k = 0; k < placement.spheres.size(); ++k) {
-        const double f = c.moving_fraction;
         SphereState& s = placement.spheres[k];
-        s.fixed = std::floor(static_cast<double>(k + 1) * f) == std::floor(static_cast<double>(k) * f);
+        s.fixed = !in_even_share(k, c.moving_fraction);
         if (s.fixed) s.velocity = {0.0, 0.0, 0.0};
     }
     return placement;
 }
 
-double centre_limit(double edge, double radius) {
-    // Rounding of edge - radius could put centre + radius an ulp past the
-    // wall; step hi down until it cannot.
-    double hi = edge - radius;
-    while (hi + radius > edge) {
-        hi = std::nextafter(hi, 0.0);
-    }
-    return hi;
-}
-
 void move_sphere(SphereState& s, double hi, double dt) {
-    double lo = s.radius;
     for (int axis = 0; axis < 3; ++axis) {
-        double& x = s.centre[axis];
-        double& v = s.velocity[axis];
-        x += v * dt;
-        // Mirror at the wall; the clamp covers a step longer than the free
-        // space (tiny cube, huge speed).
-        if (x < lo) {
-            x = 2.0 * lo - x;
-            v = -v;
-        } else if (x > hi) {
-            x = 2.0 * hi - x;
-            v = -v;
-        }
-        x = std::clamp(x, lo, hi);
+        bounce(s.centre[axis], s.velocity[axis], s.radius, hi, dt);
     }
 }
 

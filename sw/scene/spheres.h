@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sw/scene/scene.h"
+#include "sw/scene/scene_random.h"  // centre_limit
 
 namespace cdvp {
 
@@ -47,10 +48,6 @@ struct SpheresPlacement {
 // Validates config (InputError) and places config.objects spheres: radii,
 // centres and velocities drawn from config.seed; edge as SpheresScene::edge().
 SpheresPlacement place_spheres(const SpheresConfig& config);
-
-// The largest centre coordinate keeping centre + radius <= edge exactly,
-// despite rounding (requires 2 * radius <= edge).
-double centre_limit(double edge, double radius);
 
 // Moves s by dt, mirroring it at the walls: each centre coordinate stays in
 // [radius, hi] with hi = centre_limit(edge, radius).

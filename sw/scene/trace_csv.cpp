@@ -149,33 +149,48 @@ std::vector<Frame> read_trace_csv(const std::string& path, const TraceLimits& li
     return parse_trace_csv(in, path, limits);
 }
 
-void write_trace_csv(std::ostream& out, const std::vector<Frame>& frames) {
-    std::string text = std::string(kTraceCsvHeader) + "\n";
-    for (const Frame& frame : frames) {
-        if (frame.ids.size() != frame.boxes.size()) {
-            throw std::invalid_argument("write_trace_csv: frame " +
-                                        std::to_string(frame.number) +
-                                        " has different numbers of ids and boxes");
-        }
-        for (std::size_t k = 0; k < frame.ids.size(); ++k) {
-            char buf[48];
-            std::snprintf(buf, sizeof buf, "%" PRIu64 ",%" PRIu64, frame.number,
-                          frame.ids[k]);
-            text += buf;
-            for (const double* bounds : {frame.boxes[k].min, frame.boxes[k].max}) {
-                for (int axis = 0; axis < 3; ++axis) {
-                    text += ',';
-                    append_number(text, bounds[axis]);
-                }
+namespace {
+
+// A frame's rows appended to text, written out in chunks so a large trace
+// is not held twice in memory.
+void add_frame_rows(std::ostream& out, std::string& text, const Frame& frame) {
+    if (frame.ids.size() != frame.boxes.size()) {
+        throw std::invalid_argument("write_trace_csv: frame " +
+                                    std::to_string(frame.number) +
+                                    " has different numbers of ids and boxes");
+    }
+    for (std::size_t k = 0; k < frame.ids.size(); ++k) {
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "%" PRIu64 ",%" PRIu64, frame.number,
+                      frame.ids[k]);
+        text += buf;
+        for (const double* bounds : {frame.boxes[k].min, frame.boxes[k].max}) {
+            for (int axis = 0; axis < 3; ++axis) {
+                text += ',';
+                append_number(text, bounds[axis]);
             }
-            text += '\n';
         }
-        // Write in chunks so a large trace is not held twice in memory.
+        text += '\n';
         if (text.size() > (1u << 16)) {
             out << text;
             text.clear();
         }
     }
+}
+
+}  // namespace
+
+void write_trace_csv(std::ostream& out, const std::vector<Frame>& frames) {
+    std::string text = std::string(kTraceCsvHeader) + "\n";
+    for (const Frame& frame : frames) add_frame_rows(out, text, frame);
+    out << text;
+}
+
+void write_trace_header(std::ostream& out) { out << kTraceCsvHeader << '\n'; }
+
+void write_trace_frame(std::ostream& out, const Frame& frame) {
+    std::string text;
+    add_frame_rows(out, text, frame);
     out << text;
 }
 

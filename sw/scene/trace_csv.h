@@ -93,5 +93,8 @@ std::vector<Frame> read_trace_csv(const std::string& path, const TraceLimits& li
 // produce no rows (and so do not come back on reading). Throws
 // std::invalid_argument if a frame's ids and boxes differ in number.
 void write_trace_csv(std::ostream& out, const std::vector<Frame>& frames);
+// The same a frame at a time: the header, then each frame's rows.
+void write_trace_header(std::ostream& out);
+void write_trace_frame(std::ostream& out, const Frame& frame);
 
 }  // namespace cdvp

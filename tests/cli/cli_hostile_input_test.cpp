@@ -32,7 +32,7 @@ TEST_F(Cli, HugeValuesAreQuotedShortInEveryMessage) {
         {small + "--m " + kHuge, "--m: expected an integer from 1 to 32, got 'xxxx"},
         {small + "--clock-mhz " + kHuge, "--clock-mhz: expected a number from 1 to 1000, got 'xxxx"},
         {"--scene " + kHuge,
-         "--scene: expected spheres or one of Bullet's scenes (pyramid, boxes, mixed, stack, bullet-spheres), got 'xxxx"},
+         "--scene: expected spheres, pile, heavy, planar, brownian or one of Bullet's scenes (pyramid, boxes, mixed, stack, bullet-spheres), got 'xxxx"},
         {small + "--transfer " + kHuge, "--transfer: expected dma or pio, got 'xxxx"},
         {small + "--wait " + kHuge, "--wait: expected irq or poll, got 'xxxx"},
         {small + "--baseline " + kHuge, "--baseline: unknown baseline 'xxxx"},

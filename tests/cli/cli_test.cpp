@@ -123,7 +123,8 @@ TEST_F(Cli, TopLevelCommandLine) {
         EXPECT_EQ(r.err, std::string("cdvp: unknown command '") + bad +
                              "'; expected one of: run, fidelity, settings, sweep, merge, bullet, record, calibrate, rtl-variants, help (see cdvp --help)\n");
     }
-    EXPECT_EQ(run("run").err, "cdvp run: give exactly one of --trace FILE or --scene spheres\n");
+    EXPECT_EQ(run("run").err, "cdvp run: give exactly one of --trace FILE or --scene NAME (spheres, pile, heavy, planar, "
+                              "brownian, or one of Bullet's)\n");
     // cdvp help [COMMAND]: the same text as --help.
     EXPECT_EQ(run("help").out, run("--help").out);
     for (const char* command : {"run", "sweep", "merge", "settings", "bullet"}) {
@@ -148,7 +149,7 @@ TEST_F(Cli, AnEmptyPresetDirectoryIsSaidSoNotListedAsNothing) {
 TEST_F(Cli, ControlCharactersInArgumentsKeepErrorsOnOneLine) {
     const Result r = run("run --scene \"$(printf 'two\\nlines\\033[31m')\"");
     EXPECT_EQ(r.status, 2);
-    EXPECT_EQ(r.err, "cdvp run: --scene: expected spheres or one of Bullet's scenes (pyramid, boxes, mixed, stack, "
+    EXPECT_EQ(r.err, "cdvp run: --scene: expected spheres, pile, heavy, planar, brownian or one of Bullet's scenes (pyramid, boxes, mixed, stack, "
                      "bullet-spheres), got 'two\\nlines\\x1b[31m'\n");
 }
 
@@ -278,7 +279,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"EmptyTracePath", nullptr, "--trace ''", "--trace: expected a file path, got ''"},
         BadInput{"EmptyBoard", nullptr, "--board ''", "--board: expected a preset name or a .json path, got ''"},
         BadInput{"EmptyReportPath", nullptr, "--report ''", "--report: expected a file path, got ''"},
-        BadInput{"EmptyScene", nullptr, "--scene ''", "--scene: expected spheres or one of Bullet's scenes"},
+        BadInput{"EmptyScene", nullptr, "--scene ''", "--scene: expected spheres, pile, heavy, planar, brownian or one of Bullet's scenes"},
         BadInput{"BoardIsADirectory", nullptr, "--board ./", "./: cannot open: Is a directory (EISDIR)"},
         BadInput{"OutputIsADirectory", nullptr, "--report .", "--report: .: cannot write: is a directory"},
         BadInput{"OutputInAFile", nullptr, "--report " CDVP_SOURCE_DIR "/README.md/r.json", "is not a directory"}),

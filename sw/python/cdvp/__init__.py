@@ -56,8 +56,9 @@ def presets():
 def run(board=None, scene=None, trace=None, settings=None, pairs=False, **options):
     """One run of the virtual platform; returns its Report.
 
-    board: a preset's name or a .json path; scene ("spheres", ...) or trace (a CSV path), one of
-    them. Paths may be str, bytes or os.PathLike.
+    board: a preset's name or a .json path; scene ("spheres", "pile", "heavy", "planar", "brownian",
+    or one of Bullet's; a family's own settings go in settings=, e.g. {"scene.pile.clusters": 2}) or
+    trace (a CSV path), one of them. Paths may be str, bytes or os.PathLike.
     settings: {"bus.interrupt_ns": 5000, ...}: any setting by its dotted name, typed.
     pairs: also read the pairs back (Report.pairs, Report.pairs_csv).
     options: every setting with a keyword (its flag of cdvp run, '_' for '-'), typed: objects=500,

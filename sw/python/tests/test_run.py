@@ -46,6 +46,15 @@ def test_report_and_pairs_equal_the_commands(cli, tmp_path):
     assert list(ours.pairs.columns) == ["frame", "a", "b"] and len(ours.pairs) == ours.summary.pairs
 
 
+def test_a_scene_family_runs_with_its_settings_and_refuses_another_familys():
+    pile = cdvp.run(scene="pile", objects=200, frames=2, settings={"scene.pile.clusters": 2})
+    assert pile.config["source"] == "pile objects=200 seed=1 clusters=2"
+    assert pile.summary.frames == 2 and pile.summary.pairs > 0
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.run(scene="heavy", objects=200, frames=2, settings={"scene.pile.clusters": 2})
+    assert str(refused.value) == "cdvp.run: settings['scene.pile.clusters']: goes with scene= pile, not scene= heavy"
+
+
 def test_a_bad_value_is_an_input_error_naming_the_keyword():
     with pytest.raises(cdvp.InputError) as refused:
         cdvp.run(board="adm-xrc-ii", scene="spheres", m=33)
