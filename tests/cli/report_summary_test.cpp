@@ -28,6 +28,12 @@ ReportSummary example() {
     sap.run_means_native_ns = {91, 90, 89};
     sap.host_factor = 4.25;
     sap.speedup = 1.43;
+    BaselineSummary& hgrid = s.baselines["hgrid"];
+    hgrid.native_ns = {30, 29, 40, 41};
+    hgrid.host_ns = hgrid.native_ns.scaled(4.0);
+    hgrid.host_factor = 4.0;
+    hgrid.speedup = 0.45;
+    s.best_software = "hgrid";
     return s;
 }
 
@@ -44,6 +50,27 @@ TEST(ReportSummary, ReadsBackEveryFieldItWrites) {
     // The frame time's mean is the phases' (summed as they come), written last.
     EXPECT_DOUBLE_EQ(json.at("mean_total_ns").get<double>(), 7000.0);
     EXPECT_DOUBLE_EQ(json.at("extra_share").get<double>(), 7.0 / 107.0);
+}
+
+// The fastest software is named as written; a report from before it was
+// written names the fastest of its baselines; a name that is none of them
+// is refused.
+TEST(ReportSummary, NamesTheFastestSoftware) {
+    nlohmann::json json = to_json(example());
+    EXPECT_EQ(json.at("best_software"), "hgrid");
+    json.erase("best_software");
+    EXPECT_EQ(summary_from_json(json, "r.json").best_software, "hgrid");
+    json["best_software"] = "sap_mt";
+    try {
+        summary_from_json(json, "r.json");
+        ADD_FAILURE() << "a best_software of no baseline was taken";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "r.json: summary: best_software: 'sap_mt' is none of the summary's baselines");
+    }
+    ReportSummary none = example();
+    none.baselines.clear();
+    none.best_software.clear();
+    EXPECT_FALSE(to_json(none).contains("best_software"));
 }
 
 TEST(ReportSummary, RefusesASummaryLackingAKeyOrOfTheWrongTypeNamingIt) {
