@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "sw/baselines/box_bounds.h"
 
@@ -14,6 +15,10 @@ namespace {
 // takes when the frame is split over threads.
 constexpr std::size_t kQueryChunk = 512;
 constexpr std::size_t kTasksPerThread = 32;
+// Boxes below which filing them is not split over threads, and the most
+// parts it is split into (each part counts every cell of every level).
+constexpr std::size_t kBoxesPerPart = 4096;
+constexpr std::size_t kMaxParts = 8;
 
 // Sizes each axis's cells by the largest extent among the bulk of the boxes:
 // those within four times the median (a sample of the boxes gives the
@@ -100,50 +105,69 @@ void HierarchicalGridBroadPhase::plan_levels(const std::vector<FloatBox>& boxes)
 }
 
 // Each valid box to the lowest level where it spans at most two cells on
-// every axis (the top level, one cell, takes any), then a counting sort per
-// level puts each level's boxes in cell order.
+// every axis (the top level, one cell, takes any), then a counting sort puts
+// each level's boxes in cell order. On several threads the boxes are cut
+// into parts, each counted and placed by one thread (a cell holds part 0's
+// boxes, then part 1's, ...: the order is the same whatever the timing).
 void HierarchicalGridBroadPhase::file_boxes(const std::vector<FloatBox>& boxes) {
-    level_of_.resize(valid_.size());
-    cell_of_.resize(valid_.size());
-    for (std::size_t l = 0; l < used_; ++l) levels_[l].start.assign(levels_[l].cells() + 1, 0);
-    for (std::size_t k = 0; k < valid_.size(); ++k) {
-        const FloatBox& box = boxes[valid_[k]];
-        float lo[3], hi[3];
-        normalised(box, lo, hi);
-        for (std::size_t l = 0; l < used_; ++l) {
-            const Level& level = levels_[l];
-            int32_t c[3];
-            bool fits = true;
-            for (int axis = 0; axis < 3 && fits; ++axis) {
-                c[axis] = level.cell(axis, lo[axis]);
-                fits = level.cell(axis, hi[axis]) - c[axis] <= 1;
+    const std::size_t n = valid_.size();
+    level_of_.resize(n);
+    cell_of_.resize(n);
+    std::size_t total = 0;  // the cells of every level, one after another
+    for (std::size_t l = 0; l < used_; ++l) base_[l] = total, total += levels_[l].cells();
+    const std::size_t parts = std::clamp<std::size_t>(n / kBoxesPerPart, 1, std::min<std::size_t>(pool_.size(), kMaxParts));
+    counts_.resize(parts);
+    const auto part = [&](std::size_t p) { return std::make_pair(n * p / parts, n * (p + 1) / parts); };
+    pool_.run([&](unsigned p) {
+        if (p >= parts) return;
+        std::vector<uint32_t>& count = counts_[p];
+        count.assign(total, 0);
+        const auto [first, last] = part(p);
+        for (std::size_t k = first; k < last; ++k) {
+            float lo[3], hi[3];
+            normalised(boxes[valid_[k]], lo, hi);
+            for (std::size_t l = 0; l < used_; ++l) {
+                const Level& level = levels_[l];
+                int32_t c[3];
+                bool fits = true;
+                for (int axis = 0; axis < 3 && fits; ++axis) {
+                    c[axis] = level.cell(axis, lo[axis]);
+                    fits = level.cell(axis, hi[axis]) - c[axis] <= 1;
+                }
+                if (!fits) continue;
+                level_of_[k] = static_cast<uint8_t>(l);
+                cell_of_[k] = static_cast<uint32_t>(
+                    base_[l] + (std::size_t(c[2]) * level.dims[1] + c[1]) * level.dims[0] + c[0]);
+                ++count[cell_of_[k]];
+                break;
             }
-            if (!fits) continue;
-            level_of_[k] = static_cast<uint8_t>(l);
-            cell_of_[k] = static_cast<uint32_t>((std::size_t(c[2]) * level.dims[1] + c[1]) * level.dims[0] + c[0]);
-            ++levels_[l].start[cell_of_[k] + 1];
-            break;
         }
-    }
+    });
+    // Each cell's start, and in the counts each part's first place in it.
     for (std::size_t l = 0; l < used_; ++l) {
         Level& level = levels_[l];
-        for (std::size_t c = 1; c < level.start.size(); ++c) level.start[c] += level.start[c - 1];
-        level.entries.resize(level.start.back());
+        const std::size_t cells = level.cells();
+        level.start.resize(cells + 1);
+        uint32_t at = 0;
+        for (std::size_t c = 0; c < cells; ++c) {
+            level.start[c] = at;
+            for (std::vector<uint32_t>& count : counts_) at += std::exchange(count[base_[l] + c], at);
+        }
+        level.start[cells] = at;
+        level.entries.resize(at);
     }
-    // Placing shifts each cell's start to its end; the scan below restores it.
-    for (std::size_t k = 0; k < valid_.size(); ++k) {
-        Level& level = levels_[level_of_[k]];
-        const FloatBox& box = boxes[valid_[k]];
-        level.entries[level.start[cell_of_[k]]++] = {{box.min[0], box.min[1], box.min[2]},
-                                                     {box.max[0], box.max[1], box.max[2]},
-                                                     valid_[k],
-                                                     0};
-    }
-    for (std::size_t l = 0; l < used_; ++l) {
-        Level& level = levels_[l];
-        for (std::size_t c = level.start.size() - 1; c > 0; --c) level.start[c] = level.start[c - 1];
-        level.start[0] = 0;
-    }
+    pool_.run([&](unsigned p) {
+        if (p >= parts) return;
+        std::vector<uint32_t>& place = counts_[p];
+        const auto [first, last] = part(p);
+        for (std::size_t k = first; k < last; ++k) {
+            const FloatBox& box = boxes[valid_[k]];
+            levels_[level_of_[k]].entries[place[cell_of_[k]]++] = {{box.min[0], box.min[1], box.min[2]},
+                                                                  {box.max[0], box.max[1], box.max[2]},
+                                                                  valid_[k],
+                                                                  0};
+        }
+    });
 }
 
 // The frame's work as tasks: each level's cells, and for each two levels

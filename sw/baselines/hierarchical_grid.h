@@ -82,7 +82,9 @@ private:
     ThreadPairs found_;
     std::vector<uint32_t> valid_;        // the boxes with no NaN bound
     std::vector<uint8_t> level_of_;      // per valid box
-    std::vector<uint32_t> cell_of_;      // per valid box: its cell in its level
+    std::vector<uint32_t> cell_of_;      // per valid box: its cell, counted over every level's cells
+    std::size_t base_[kMaxLevels] = {};  // a level's first cell in that count
+    std::vector<std::vector<uint32_t>> counts_;  // a part's boxes a cell, then where they go
     std::vector<float> sample_;          // extents, to size level 0
     std::vector<Level> levels_;          // kMaxLevels, kept (and their memory) from frame to frame
     std::size_t used_ = 0;               // of which the last frame used these

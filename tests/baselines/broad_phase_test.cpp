@@ -197,7 +197,9 @@ TEST(MakeBroadPhase, NamesAndWhichRunOnOneThread) {
     const std::vector<std::string> one_thread = single_thread_broad_phase_names();
     for (const std::string& name : broad_phase_names()) {
         const bool listed = std::find(one_thread.begin(), one_thread.end(), name) != one_thread.end();
-        if (!listed) EXPECT_EQ(make_broad_phase(name, BaselineOptions{3})->threads(), 3u) << name;
+        if (!listed) {
+            EXPECT_EQ(make_broad_phase(name, BaselineOptions{3})->threads(), 3u) << name;
+        }
     }
 }
 

@@ -115,6 +115,20 @@ TEST(HierarchicalGrid, LargeBoxesGoToCoarserLevels) {
     for (std::size_t k = 0; k < grid.level_count(); ++k) EXPECT_LE(grid.level(k).cells(), 6000u);
 }
 
+// Past a few thousand boxes the multi-threaded grid files them in parts,
+// one a thread: the same pairs, whatever the threads.
+TEST(HierarchicalGrid, FilingInPartsKeepsEveryPair) {
+    Boxes boxes = test::random_boxes(20000, 5);
+    for (std::size_t i = 0; i < boxes.size(); i += 997) boxes[i] = {{0, 0, 0}, {kInf, 3e38f, 1e6f}};
+    const PairList want = reference_pairs(boxes);
+    for (const unsigned threads : {2u, 3u, 8u}) {
+        HierarchicalGridBroadPhase grid(threads, true);
+        PairList got;
+        grid.find_pairs(boxes, got);
+        EXPECT_EQ(sorted(got), want) << threads << " threads";
+    }
+}
+
 // An unbounded box lands in the top level, a single cell.
 TEST(HierarchicalGrid, AnUnboundedBoxLivesInTheTopLevel) {
     Boxes boxes = test::random_boxes(500, 3);
