@@ -14,7 +14,7 @@ namespace cdvp {
 class BroadPhase {
 public:
     virtual ~BroadPhase() = default;
-    virtual std::string name() const = 0;  // "sap", "dbvt", "brute", "soa", "sap_mt"
+    virtual std::string name() const = 0;  // one of broad_phase_names()
     // The exact overlapping pairs of this frame (closed intervals, float32, the same test as
     // reference_pairs): each pair once, first < second (indices into boxes), in any order.
     // Consecutive calls with the same box count are the same objects moved, so incremental
@@ -40,14 +40,17 @@ struct BaselineOptions {
 
 // Names: "sap" (Bullet btAxisSweep3), "dbvt" (Bullet btDbvtBroadphase),
 // "brute" (scalar all pairs), "soa" (vectorized all pairs), "sap_mt" (sweep
-// and prune on options.threads threads). Throws std::invalid_argument
-// "unknown baseline 'x'; expected one of: sap, dbvt, brute, soa, sap_mt" for others.
+// and prune on options.threads threads), "fcl_tree", "fcl_sap",
+// "fcl_interval", "fcl_hash" (FCL's managers: fcl_broad_phase.h),
+// "ode_hash", "ode_quadtree", "ode_sap" (ODE's spaces: ode_broad_phase.h).
+// Throws std::invalid_argument "unknown baseline 'x'; expected one of: sap,
+// dbvt, brute, soa, sap_mt, fcl_tree, ..." (every name) for others.
 std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name, const BaselineOptions& options = {});
 
 // The names make_broad_phase accepts, in the order above.
 std::vector<std::string> broad_phase_names();
-// Of those, the ones that run on the calling thread alone: a host profile
-// calibrates them (a multi-threaded one's time depends on the cores it gets).
+// Of those, the ones that run on the calling thread alone (all but sap_mt):
+// their time is the thread's CPU time.
 std::vector<std::string> single_thread_broad_phase_names();
 
 }  // namespace cdvp
