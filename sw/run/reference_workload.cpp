@@ -1,7 +1,5 @@
 #include "sw/run/reference_workload.h"
 
-#include "sw/baselines/broad_phase.h"
-
 namespace cdvp::reference_workload {
 
 const std::vector<uint64_t>& objects() {
@@ -9,13 +7,15 @@ const std::vector<uint64_t>& objects() {
     return sizes;
 }
 
+// Named here, not taken from broad_phase_names(): a baseline added later
+// leaves the workload, and every profile and preset stated for it, as it was.
 const std::vector<std::string>& baselines() {
-    static const std::vector<std::string> names = broad_phase_names();
+    static const std::vector<std::string> names{"sap", "dbvt", "brute", "soa", "sap_mt"};
     return names;
 }
 
 const std::vector<std::string>& first_version_baselines() {
-    static const std::vector<std::string> names = single_thread_broad_phase_names();
+    static const std::vector<std::string> names{"sap", "dbvt", "brute", "soa"};
     return names;
 }
 
