@@ -78,7 +78,9 @@ po::options_description run_options_description(RunOptions& o) {
     add_setting_flags(host, {"host", "driver", "run"}, o.layers.flags);
     host.add_options()
         ("baseline", po::value(&o.baselines)->value_name("LIST"),
-         "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa, sap_mt (on --threads threads)")
+         "software broad phases to time on the same frames, comma-separated: sap, dbvt, brute, soa, sap_mt (on --threads "
+         "threads), fcl_tree, fcl_sap, fcl_interval, fcl_hash (FCL's managers), ode_hash, ode_quadtree, ode_sap "
+         "(ODE's spaces)")
         ("software-timings", po::value(&o.software_timings)->value_name("DIR"),
          "share the baselines' timing through DIR (cdvp sweep gives every point OUT/software): a timing of this "
          "run's workload there (scene and its settings or the trace's frames, baselines, repeats, warm-up, this "

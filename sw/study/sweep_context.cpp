@@ -146,7 +146,14 @@ std::string baseline_words(const std::string& baseline) {
                                                           {"dbvt", "Bullet's dynamic AABB tree"},
                                                           {"brute", "brute force"},
                                                           {"soa", "all pairs over structure of arrays"},
-                                                          {"sap_mt", "sweep and prune on several threads"}};
+                                                          {"sap_mt", "sweep and prune on several threads"},
+                                                          {"fcl_tree", "FCL's dynamic AABB tree"},
+                                                          {"fcl_sap", "FCL's sweep and prune"},
+                                                          {"fcl_interval", "FCL's interval manager"},
+                                                          {"fcl_hash", "FCL's spatial hash"},
+                                                          {"ode_hash", "ODE's hash space"},
+                                                          {"ode_quadtree", "ODE's quadtree space"},
+                                                          {"ode_sap", "ODE's sweep and prune space"}};
     const auto at = kWhat.find(baseline);
     return at == kWhat.end() ? baseline : baseline + " (" + at->second + ")";
 }
