@@ -27,10 +27,8 @@ public:
 }  // namespace
 
 std::vector<std::string> broad_phase_names() {
-    return {"sap",      "dbvt",     "brute",        "soa",    "sap_mt",
-            "fcl_tree", "fcl_sap",  "fcl_interval", "fcl_hash",
-            "ode_hash", "ode_quadtree", "ode_sap"};
-};
+    return {"sap",      "dbvt",    "brute",        "soa",      "sap_mt",       "fcl_tree",
+            "fcl_sap",  "fcl_interval", "fcl_hash", "ode_hash", "ode_quadtree", "ode_sap"};
 }
 
 std::vector<std::string> single_thread_broad_phase_names() {

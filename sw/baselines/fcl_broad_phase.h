@@ -11,8 +11,11 @@
 // outward by one double ulp (float to double is exact), so ties between equal
 // ends cannot drop a touching pair; every candidate passes the float32
 // closed-interval test. NaN and inverted boxes stay out of FCL and are tested
-// here against every box. Infinite bounds go to FCL as they are: its managers
-// only compare and merge them (tests/baselines: the infinite scenes).
+// here against every box. An infinite bound reaches FCL as +-1e100: its tree
+// sorts leaves by centre (inf - inf is NaN) and hung on the infinite scenes.
+// FCL's SaP moves a box's end points correctly only when both ends of an axis
+// move the same way, and its SaP and interval managers' unregisterObject
+// corrupt their lists: such frames build the manager again instead.
 //
 // fcl_hash's configuration, from the first frame of each box count as an
 // engineer would set it: the cell edge is the median of the boxes' largest
