@@ -14,8 +14,9 @@
 // here against every box. An infinite bound reaches FCL as +-1e100: its tree
 // sorts leaves by centre (inf - inf is NaN) and hung on the infinite scenes.
 // FCL's SaP moves a box's end points correctly only when both ends of an axis
-// move the same way, and its SaP and interval managers' unregisterObject
-// corrupt their lists: such frames build the manager again instead.
+// move the same way: another move reaches it in two (down to a point below
+// both boxes, then up). Its SaP and interval managers' unregisterObject
+// corrupt their lists: a frame where a box leaves builds the manager again.
 //
 // fcl_hash's configuration, from the first frame of each box count as an
 // engineer would set it: the cell edge is the median of the boxes' largest
@@ -23,8 +24,9 @@
 // per axis, the bounds of the boxes within Tukey's fences (the quartiles
 // widened by their distance), enlarged by a quarter of its span (at least a
 // cell) for motion; the cell edge is raised if the limit would exceed 2^20
-// cells an axis (FCL hashes cell coordinates as int); the table has a bucket
-// a box (FCL's default is 1000). Boxes beyond the limit are FCL's own affair
+// cells an axis (FCL hashes cell coordinates as int); the table has eight
+// buckets a box, one for each cell a box covers at most (FCL's default of
+// 1000 buckets took five times as long at 10,000 boxes). Boxes beyond the limit are FCL's own affair
 // (its outside lists). FCL puts a box in every cell it covers and has no list
 // for large ones, so boxes spanning more than 8 cells an axis, and those with
 // an infinite bound, are tested here instead.

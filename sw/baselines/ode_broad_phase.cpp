@@ -30,7 +30,8 @@ void geom_aabb(dGeomID geom, dReal aabb[6]) {
 dColliderFn* no_collider(int /*class*/) { return nullptr; }  // broad phase only
 
 // ODE once per process, its per-thread data once per thread that runs a
-// space (released when the thread ends), and the geom class once.
+// space (ODE frees it when the thread ends: initialised without
+// dInitFlagManualThreadCleanup), and the geom class once.
 int box_geom_class() {
     static std::once_flag once;
     static int geom_class = -1;
@@ -42,11 +43,8 @@ int box_geom_class() {
         cls.aabb = geom_aabb;
         geom_class = dCreateGeomClass(&cls);
     });
-    struct ThreadData {
-        ThreadData() { dAllocateODEDataForThread(dAllocateMaskAll); }
-        ~ThreadData() { dCleanupODEAllDataForThread(); }
-    };
-    thread_local ThreadData thread_data;
+    thread_local const bool thread_data = dAllocateODEDataForThread(dAllocateMaskAll) != 0;
+    if (!thread_data) throw std::runtime_error("ODE could not allocate its data for this thread");
     return geom_class;
 }
 
@@ -174,6 +172,7 @@ protected:
     }
 
     void collide(CandidateSink& sink) override {
+        box_geom_class();  // this thread's ODE data, if another thread built the space
         if (space_ != nullptr) dSpaceCollide(space_, &sink, offer_to_sink);
     }
 

@@ -218,8 +218,9 @@ TEST(LibraryBaselines, TheExactTestDropsALibrarysExtraCandidates) {
 }
 
 // FCL's SaP takes only moves that carry both ends of an axis the same way: a
-// box that grows is built again, and the pairs stay exact.
-TEST(LibraryBaselines, FclSapBuildsAgainWhenABoxGrows) {
+// box that grows, shrinks or keeps one end gets there in two of them,
+// through its update, and the pairs stay exact.
+TEST(LibraryBaselines, FclSapTakesBoxesThatGrowOrShrinkThroughItsUpdate) {
     auto sap = make_broad_phase("fcl_sap");
     Boxes boxes = test::random_boxes(400, 9);
     exact_pairs(*sap, boxes, "frame 0");
@@ -229,10 +230,16 @@ TEST(LibraryBaselines, FclSapBuildsAgainWhenABoxGrows) {
     }
     exact_pairs(*sap, boxes, "all moved along x");
     EXPECT_EQ(counts(*sap).builds, 1u);
-    boxes[7].max[1] += 3;  // grows upwards only
-    exact_pairs(*sap, boxes, "box 7 grown");
-    EXPECT_EQ(counts(*sap).builds, 2u);
-    EXPECT_EQ(counts(*sap).updates, 1u);
+    for (std::size_t i = 0; i < 100; ++i) boxes[i].max[1] += 3;  // grow upwards only
+    exact_pairs(*sap, boxes, "100 boxes grown");
+    for (std::size_t i = 50; i < 150; ++i) {  // shrink, or keep the lower end
+        boxes[i].min[2] += 0.125f;
+        boxes[i].max[2] -= i % 2 == 0 ? 0.125f : 0.0f;
+        boxes[i].max[2] = std::max(boxes[i].max[2], boxes[i].min[2]);
+    }
+    exact_pairs(*sap, boxes, "100 boxes shrunk");
+    EXPECT_EQ(counts(*sap).builds, 1u);
+    EXPECT_EQ(counts(*sap).updates, 3u);
 }
 
 TEST(LibraryBaselines, OdeHashRefusesMoreBoxesThanItsTestedMatrixIndexes) {
