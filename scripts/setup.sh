@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev      # tests
   libbenchmark-dev               # benchmarks
   libbullet-dev                  # software broad-phase baselines (Bullet 3.24, float)
+  libfcl-dev libode-dev          # the library baselines: FCL 0.7's managers, ODE 0.16's spaces (double)
   gtkwave                        # vcd2fst (--vcd-format fst), and the viewer the waveform tests open
   xvfb xauth                     # an X server for GTKWave in the tests (xvfb-run)
   clang-14 libclang-rt-14-dev    # fuzz build: libFuzzer and the clang sanitizer runtimes live in libclang-rt-14-dev

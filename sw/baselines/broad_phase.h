@@ -42,8 +42,11 @@ struct BaselineOptions {
 // "brute" (scalar all pairs), "soa" (vectorized all pairs), "sap_mt" (sweep
 // and prune on options.threads threads), "prune" and "prune_mt" (box
 // pruning: radix sort and SIMD sweep), "hgrid" and "hgrid_mt" (hierarchical
-// grid); a name ending in _mt runs on options.threads threads. Throws
-// std::invalid_argument "unknown baseline 'x'; expected one of: ..." for others.
+// grid), "fcl_tree", "fcl_sap", "fcl_interval", "fcl_hash" (FCL's managers:
+// fcl_broad_phase.h), "ode_hash", "ode_quadtree", "ode_sap" (ODE's spaces:
+// ode_broad_phase.h); a name ending in _mt runs on options.threads threads.
+// Throws std::invalid_argument "unknown baseline 'x'; expected one of: sap,
+// dbvt, ..." (every name) for others.
 std::unique_ptr<BroadPhase> make_broad_phase(const std::string& name, const BaselineOptions& options = {});
 
 // The names make_broad_phase accepts, in the order above.

@@ -38,9 +38,10 @@ namespace {
 constexpr const char* kCalibrateUsage =
     "Usage: cdvp calibrate [--out PROFILE.json] [--repeat R] [--max-spread P] [--time-limit S] [--strict] [-q]\n"
     "\n"
-    "Times the reference workload on this machine in the thread's CPU time: every software baseline (sap,\n"
-    "dbvt, brute, soa) on the spheres scene of seed 1 at 100, 500 and 2000 objects, 30 frames each, the\n"
-    "first 2 left out, with fresh instances each run. It runs the workload again until, for every baseline\n"
+    "Times the reference workload on this machine in the thread's CPU time: the software baselines sap,\n"
+    "dbvt, brute, soa and sap_mt (on one thread; the FCL and ODE ones take the overall factor) on the\n"
+    "spheres scene of seed 1 at 100, 500 and 2000 objects, 30 frames each, the first 2 left out, with\n"
+    "fresh instances each run. It runs the workload again until, for every baseline\n"
     "and size, R runs' means lie within P% of each other (those R are kept; a run a neighbour disturbed\n"
     "falls outside them), or S seconds have passed. Writes a host profile: the machine (CPU model and\n"
     "clock, cores, kernel), the build (compiler, flags, commit), the load average, each baseline's mean\n"

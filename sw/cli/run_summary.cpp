@@ -1,7 +1,9 @@
 // The summary `cdvp run` prints: the board and its resources, the first
 // frames, the totals, and the timing figures the speedups rest on.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "models/common/user_text.h"
 #include "sw/run/machine_info.h"
@@ -140,13 +142,17 @@ void print_timing(std::ostream& out, const RunDescription& run, const RunTotals&
                   wall.mean / 1e6, wall.p50 / 1e6, wall.p99 / 1e6, wall.max / 1e6);
     out << line;
     if (!baselines.empty()) {
-        out << "      N    m   board_us  software  factor  mean_host_us   p50_host_us   p99_host_us   max_host_us  speedup\n";
+        // The names' column is as wide as the longest (fcl_interval, ode_quadtree).
+        int width = 8;
+        for (const auto& entry : baselines) width = std::max(width, static_cast<int>(entry.first.size()));
+        out << "      N    m   board_us  " << std::string("software").append(width - 8, ' ')
+            << "  factor  mean_host_us   p50_host_us   p99_host_us   max_host_us  speedup\n";
         for (const auto& [name, figures] : baselines) {
             const double factor = run.host_timing.factor(name);
             const Spread sw = figures.spread.scaled(factor);
-            std::snprintf(line, sizeof line, "%7llu %4u %10.1f  %-8s %7.3g %13.1f %13.1f %13.1f %13.1f %7.2fx\n",
+            std::snprintf(line, sizeof line, "%7llu %4u %10.1f  %-*s %7.3g %13.1f %13.1f %13.1f %13.1f %7.2fx\n",
                           static_cast<unsigned long long>(totals.last_objects()), run.config.m, b.mean / 1e3,
-                          name.c_str(), factor, sw.mean / 1e3, sw.p50 / 1e3, sw.p99 / 1e3, sw.max / 1e3,
+                          width, name.c_str(), factor, sw.mean / 1e3, sw.p50 / 1e3, sw.p99 / 1e3, sw.max / 1e3,
                           speedup(sw, b));
             out << line;
         }

@@ -20,11 +20,13 @@ constexpr uint64_t kWarmup = 2;  // the run's default (sw/timing/frame_samples.h
 // Small, the paper's largest, and the 72-point sweep's largest: each weighs
 // the same in the geometric mean a baseline's reference time is.
 const std::vector<uint64_t>& objects();
-// The baselines timed: the five cdvp had at version 2 (a later baseline
-// takes the profile's overall factor, the geometric mean of these). The
-// multi-threaded one runs on kCalibrationThreads, so that its factor, like
-// the others', is one core's speed against the modelled host's; how it
-// scales with threads is this machine's (docs/timing.md).
+// The baselines timed: the five cdvp run had when version 2 was set (sw/baselines).
+// The baselines added since (box pruning, the hierarchical grid, FCL's
+// managers, ODE's spaces) are not calibrated: they take a profile's overall
+// factor, the geometric mean of these five's. The multi-threaded one runs on
+// kCalibrationThreads, so that its factor, like the others', is one core's
+// speed against the modelled host's; how it scales with threads is this
+// machine's (docs/timing.md).
 const std::vector<std::string>& baselines();
 constexpr unsigned kCalibrationThreads = 1;
 // Version 1 timed every baseline but sap_mt: a profile of it still

@@ -39,6 +39,21 @@ constexpr uint64_t kProgram = uint64_t{32} << 20;
 constexpr uint64_t kSapBox = 240, kDbvtBox = 400;
 constexpr uint64_t kBulletPair = 96;
 
+// FCL's managers and ODE's spaces, measured the same way (peak RSS over the
+// scene alone, one frame built and one moved, 100,000 spread cubes; 2,000
+// that all overlap), rounded up: per box the wrapper's object or geom and the
+// library's nodes (fcl_tree 499, fcl_sap 690, fcl_interval 1,207, fcl_hash
+// 850, ode_quadtree 413, ode_sap 446 bytes; the interval manager keeps three
+// interval trees and three maps); per pair beside the pair list, fcl_sap's
+// list of overlapping pairs (47 bytes), the set fcl_interval's collide fills
+// (63) and ode_sap's array of pairs (8); the others keep none.
+constexpr uint64_t kFclTreeBox = 512, kFclSapBox = 704, kFclIntervalBox = 1216, kFclHashBox = 864;
+constexpr uint64_t kOdeQuadtreeBox = 416, kOdeSapBox = 448;
+constexpr uint64_t kFclSapPair = 48, kFclIntervalPair = 64, kOdeSapPair = 8;
+// ODE's hash space: 810 bytes a box beside an n-by-n bit matrix of tested
+// pairs (n^2/8 bytes) it allocates every frame.
+constexpr uint64_t kOdeHashBox = 832;
+
 // A Bullet world of a scene (cdvp bullet's, or the one a run's Bullet scene
 // is recorded from), measured as the peak RSS its scenes add and rounded up
 // to cover the heaviest: a body (its rigid body, shape, proxy and solver
@@ -69,6 +84,13 @@ uint64_t baseline_bytes_per_box(const std::string& name) {
     // Its valid list, level and cell a box, the 32-byte entry, and the cells
     // (at most two a box in level 0, a quarter of that above): 4 + 1 + 4 + 32 + 11.
     if (name == "hgrid" || name == "hgrid_mt") return 52;
+    if (name == "fcl_tree") return kFclTreeBox;
+    if (name == "fcl_sap") return kFclSapBox;
+    if (name == "fcl_interval") return kFclIntervalBox;
+    if (name == "fcl_hash") return kFclHashBox;
+    if (name == "ode_hash") return kOdeHashBox;
+    if (name == "ode_quadtree") return kOdeQuadtreeBox;
+    if (name == "ode_sap") return kOdeSapBox;
     return 0;                             // brute: nothing of its own
 }
 
@@ -76,7 +98,8 @@ uint64_t baseline_bytes_per_box(const std::string& name) {
 // beyond the pair buffer (clocked); the driver's list; the float32 reference
 // of a fixed-point board (its search, its list, the board's sorted and the
 // kept); the application's sorted candidates and contacts; the pairs by id;
-// the baselines' lists (the kept pairs, a baseline's pairs) and Bullet's caches.
+// the baselines' lists (the kept pairs, a baseline's pairs), Bullet's caches
+// and the pairs FCL's SaP and interval manager and ODE's sweep keep.
 uint64_t bytes_per_pair(const BudgetShape& shape) {
     uint64_t bytes = kGrowth * kPair;  // the driver's list
     const uint64_t search = PairFinder::scratch_bytes_per_pair();
@@ -90,6 +113,9 @@ uint64_t bytes_per_pair(const BudgetShape& shape) {
     if (!shape.baselines.empty()) bytes += kPair + kGrowth * kPair;
     for (const std::string& name : shape.baselines) {
         if (name == "sap" || name == "dbvt") bytes += kBulletPair;
+        if (name == "fcl_sap") bytes += kFclSapPair;
+        if (name == "fcl_interval") bytes += kFclIntervalPair;
+        if (name == "ode_sap") bytes += kOdeSapPair;
     }
     return bytes + shape.bullet_worlds * kBulletContact;
 }
@@ -154,6 +180,9 @@ Footprint estimate_footprint(const BudgetShape& shape, uint64_t objects, uint64_
     Footprint f;
     f.program = program_bytes(shape);
     f.boxes = objects * bytes_per_box(shape);
+    for (const std::string& name : shape.baselines) {
+        if (name == "ode_hash") f.boxes = saturating_add(f.boxes, objects * ((objects + 7) / 8));  // its tested matrix
+    }
     f.model = (shape.clocked ? shape.board.block_ram_bytes(objects) : 0) + schedule_bytes(shape.board, objects) +
               (shape.board.grid_board() ? GridSearch::scratch_bytes(shape.board.grid, objects) : 0);
     f.frames = frames * bytes_per_frame(shape);

@@ -151,6 +151,13 @@ std::string baseline_words(const std::string& baseline) {
                                                           {"prune_mt", "box pruning on several threads"},
                                                           {"hgrid", "hierarchical grid"},
                                                           {"hgrid_mt", "hierarchical grid on several threads"},
+                                                          {"fcl_tree", "FCL's dynamic AABB tree"},
+                                                          {"fcl_sap", "FCL's sweep and prune"},
+                                                          {"fcl_interval", "FCL's interval manager"},
+                                                          {"fcl_hash", "FCL's spatial hash"},
+                                                          {"ode_hash", "ODE's hash space"},
+                                                          {"ode_quadtree", "ODE's quadtree space"},
+                                                          {"ode_sap", "ODE's sweep and prune space"},
                                                           {"best", "the fastest software timed at each point"}};
     const auto at = kWhat.find(baseline);
     return at == kWhat.end() ? baseline : baseline + " (" + at->second + ")";

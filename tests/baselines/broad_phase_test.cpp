@@ -190,9 +190,13 @@ TEST(SapBroadPhase, MoreBoxesThanA16BitSweepHolds) {
 }
 
 TEST(MakeBroadPhase, NamesAndWhichRunOnOneThread) {
-    EXPECT_EQ(broad_phase_names(), (std::vector<std::string>{"sap", "dbvt", "brute", "soa", "sap_mt", "prune",
-                                                             "prune_mt", "hgrid", "hgrid_mt"}));
-    EXPECT_EQ(single_thread_broad_phase_names(), (std::vector<std::string>{"sap", "dbvt", "brute", "soa", "prune", "hgrid"}));
+    EXPECT_EQ(broad_phase_names(),
+              (std::vector<std::string>{"sap", "dbvt", "brute", "soa", "sap_mt", "prune", "prune_mt", "hgrid",
+                                        "hgrid_mt", "fcl_tree", "fcl_sap", "fcl_interval", "fcl_hash", "ode_hash",
+                                        "ode_quadtree", "ode_sap"}));
+    EXPECT_EQ(single_thread_broad_phase_names(),
+              (std::vector<std::string>{"sap", "dbvt", "brute", "soa", "prune", "hgrid", "fcl_tree", "fcl_sap",
+                                        "fcl_interval", "fcl_hash", "ode_hash", "ode_quadtree", "ode_sap"}));
     for (const std::string& name : single_thread_broad_phase_names()) EXPECT_EQ(make_broad_phase(name)->threads(), 1u);
     const std::vector<std::string> one_thread = single_thread_broad_phase_names();
     for (const std::string& name : broad_phase_names()) {
@@ -240,8 +244,9 @@ TEST(MakeBroadPhase, UnknownNameThrows) {
         make_broad_phase("nope");
         FAIL() << "no exception";
     } catch (const std::invalid_argument& error) {
-        EXPECT_STREQ(error.what(), "unknown baseline 'nope'; expected one of: sap, dbvt, brute, soa, sap_mt, prune, "
-                                   "prune_mt, hgrid, hgrid_mt");
+        EXPECT_STREQ(error.what(),
+                     "unknown baseline 'nope'; expected one of: sap, dbvt, brute, soa, sap_mt, prune, prune_mt, hgrid, "
+                     "hgrid_mt, fcl_tree, fcl_sap, fcl_interval, fcl_hash, ode_hash, ode_quadtree, ode_sap");
     }
 }
 

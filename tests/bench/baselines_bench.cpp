@@ -37,6 +37,17 @@ BENCHMARK_CAPTURE(BM_Frame, brute, std::string("brute"))->Arg(500)->Arg(2000)->U
 BENCHMARK_CAPTURE(BM_Frame, soa, std::string("soa"))->Arg(500)->Arg(2000)->Unit(benchmark::kMicrosecond);
 // On its threads the call's wall time is what counts (threads_bench: its scaling).
 BENCHMARK_CAPTURE(BM_Frame, sap_mt, std::string("sap_mt"))->Arg(500)->Arg(2000)->UseRealTime()->Unit(benchmark::kMicrosecond);
+// The libraries' broad phases (FCL's managers, ODE's spaces) at 500 and
+// 10,000 boxes, with Bullet's two at 10,000 beside them.
+BENCHMARK_CAPTURE(BM_Frame, sap, std::string("sap"))->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Frame, dbvt, std::string("dbvt"))->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Frame, fcl_tree, std::string("fcl_tree"))->Arg(500)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Frame, fcl_sap, std::string("fcl_sap"))->Arg(500)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Frame, fcl_interval, std::string("fcl_interval"))->Arg(500)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Frame, fcl_hash, std::string("fcl_hash"))->Arg(500)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Frame, ode_hash, std::string("ode_hash"))->Arg(500)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Frame, ode_quadtree, std::string("ode_quadtree"))->Arg(500)->Arg(10000)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Frame, ode_sap, std::string("ode_sap"))->Arg(500)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

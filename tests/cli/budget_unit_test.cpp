@@ -102,5 +102,21 @@ TEST(Footprint, GrowsWithWhatTheRunHolds) {
         << "saturates, never wraps";
 }
 
+// Every library baseline costs memory a box; ODE's hash space an n-by-n bit
+// matrix too, which dominates at 100,000 boxes.
+TEST(Footprint, LibraryBaselinesCountTheirStructures) {
+    BudgetShape none;
+    none.trace = true;
+    for (const char* name : {"fcl_tree", "fcl_sap", "fcl_interval", "fcl_hash", "ode_hash", "ode_quadtree", "ode_sap"}) {
+        BudgetShape one = none;
+        one.baselines = {name};
+        EXPECT_GE(bytes_per_box(one), bytes_per_box(none) + 400) << name;
+    }
+    BudgetShape hash = none;
+    hash.baselines = {"ode_hash"};
+    const uint64_t objects = 100000;
+    EXPECT_EQ(estimate_footprint(hash, objects, 1).boxes, objects * bytes_per_box(hash) + objects * objects / 8);
+}
+
 }  // namespace
 }  // namespace cdvp

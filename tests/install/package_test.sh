@@ -24,6 +24,12 @@ if grep -nE 'include/bullet|[";:<]((BulletSoftBody|BulletDynamics|BulletCollisio
 fi
 grep -qF 'pkg_check_modules(Bullet REQUIRED IMPORTED_TARGET bullet)' "$work/prefix/lib/cmake/cdvp/cdvpConfig.cmake" ||
   fail "cdvpConfig.cmake does not find Bullet"
+# The same for FCL and ODE, which the static cdvp::baselines links privately.
+grep -qF 'LINK_ONLY:fcl>' <<< "$targets" || fail "cdvp::baselines does not link FCL's target fcl"
+grep -qF 'LINK_ONLY:PkgConfig::ODE>' <<< "$targets" || fail "cdvp::baselines does not link PkgConfig::ODE"
+grep -qF 'find_dependency(fcl 0.7)' "$work/prefix/lib/cmake/cdvp/cdvpConfig.cmake" || fail "cdvpConfig.cmake does not find FCL"
+grep -qF 'pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)' "$work/prefix/lib/cmake/cdvp/cdvpConfig.cmake" ||
+  fail "cdvpConfig.cmake does not find ODE"
 cp -r "$source/examples" "$work/examples"
 unset CDVP_BOARDS CDVP_BINARY
 generator=()
@@ -109,7 +115,15 @@ cat > "$work/pc_program.cpp" <<'PROGRAM'
 #include "models/board/collision_board.h"
 #include "platform/driver/board_driver.h"
 #include "platform/kernel.h"
+#include "sw/baselines/broad_phase.h"
 int sc_main(int, char*[]) {
+    // The baselines over FCL and ODE link from the flags alone: two touching boxes, one apart.
+    const std::vector<cdvp::FloatBox> boxes{{{0, 0, 0}, {1, 1, 1}}, {{1, 0, 0}, {2, 1, 1}}, {{5, 5, 5}, {6, 6, 6}}};
+    for (const char* name : {"fcl_tree", "ode_hash"}) {
+        cdvp::PairList pairs;
+        cdvp::make_broad_phase(name)->find_pairs(boxes, pairs);
+        std::printf("%s: %zu pair\n", name, pairs.size());
+    }
     cdvp::configure_kernel();
     cdvp::CollisionBoard board("board", cdvp::BoardConfig{}, 1000);
     std::printf("board of %u boxes, %u lanes; the driver needs %llu bytes of host memory\n", board.core().capacity(),
@@ -123,6 +137,8 @@ g++ -Wall -Wextra -Werror -o "$work/pc_program" "$work/pc_program.cpp" $(pkg-con
   fail "pkg-config build failed: $(head -20 "$work/pc.log")"
 "$work/pc_program" > "$work/pc_program.out" 2>/dev/null || fail "the pkg-config program failed"
 expect pc_program "board of 1000 boxes, 15 lanes"
+expect pc_program "fcl_tree: 1 pair"
+expect pc_program "ode_hash: 1 pair"
 
 # Relocatable: the moved prefix's package names its own places.
 mv "$work/prefix" "$work/moved"
