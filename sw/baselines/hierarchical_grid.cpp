@@ -107,7 +107,7 @@ void HierarchicalGridBroadPhase::plan_levels(const std::vector<FloatBox>& boxes)
 // Each valid box to the lowest level where it spans at most two cells on
 // every axis (the top level, one cell, takes any), then a counting sort puts
 // each level's boxes in cell order. On several threads the boxes are cut
-// into parts, each counted and placed by one thread (a cell holds part 0's
+// into parts, each counted and placed by one thread at a time (a cell holds part 0's
 // boxes, then part 1's, ...: the order is the same whatever the timing).
 void HierarchicalGridBroadPhase::file_boxes(const std::vector<FloatBox>& boxes) {
     const std::size_t n = valid_.size();
@@ -118,28 +118,32 @@ void HierarchicalGridBroadPhase::file_boxes(const std::vector<FloatBox>& boxes) 
     const std::size_t parts = std::clamp<std::size_t>(n / kBoxesPerPart, 1, std::min<std::size_t>(pool_.size(), kMaxParts));
     counts_.resize(parts);
     const auto part = [&](std::size_t p) { return std::make_pair(n * p / parts, n * (p + 1) / parts); };
-    pool_.run([&](unsigned p) {
-        if (p >= parts) return;
-        std::vector<uint32_t>& count = counts_[p];
-        count.assign(total, 0);
-        const auto [first, last] = part(p);
-        for (std::size_t k = first; k < last; ++k) {
-            float lo[3], hi[3];
-            normalised(boxes[valid_[k]], lo, hi);
-            for (std::size_t l = 0; l < used_; ++l) {
-                const Level& level = levels_[l];
-                int32_t c[3];
-                bool fits = true;
-                for (int axis = 0; axis < 3 && fits; ++axis) {
-                    c[axis] = level.cell(axis, lo[axis]);
-                    fits = level.cell(axis, hi[axis]) - c[axis] <= 1;
+    // Parts go to whichever thread asks next: a thread the machine keeps
+    // waiting holds up no other.
+    std::atomic<std::size_t> next{0};
+    pool_.run([&](unsigned) {
+        for (std::size_t p = next++; p < parts; p = next++) {
+            std::vector<uint32_t>& count = counts_[p];
+            count.assign(total, 0);
+            const auto [first, last] = part(p);
+            for (std::size_t k = first; k < last; ++k) {
+                float lo[3], hi[3];
+                normalised(boxes[valid_[k]], lo, hi);
+                for (std::size_t l = 0; l < used_; ++l) {
+                    const Level& level = levels_[l];
+                    int32_t c[3];
+                    bool fits = true;
+                    for (int axis = 0; axis < 3 && fits; ++axis) {
+                        c[axis] = level.cell(axis, lo[axis]);
+                        fits = level.cell(axis, hi[axis]) - c[axis] <= 1;
+                    }
+                    if (!fits) continue;
+                    level_of_[k] = static_cast<uint8_t>(l);
+                    cell_of_[k] = static_cast<uint32_t>(
+                        base_[l] + (std::size_t(c[2]) * level.dims[1] + c[1]) * level.dims[0] + c[0]);
+                    ++count[cell_of_[k]];
+                    break;
                 }
-                if (!fits) continue;
-                level_of_[k] = static_cast<uint8_t>(l);
-                cell_of_[k] = static_cast<uint32_t>(
-                    base_[l] + (std::size_t(c[2]) * level.dims[1] + c[1]) * level.dims[0] + c[0]);
-                ++count[cell_of_[k]];
-                break;
             }
         }
     });
@@ -156,16 +160,18 @@ void HierarchicalGridBroadPhase::file_boxes(const std::vector<FloatBox>& boxes) 
         level.start[cells] = at;
         level.entries.resize(at);
     }
-    pool_.run([&](unsigned p) {
-        if (p >= parts) return;
-        std::vector<uint32_t>& place = counts_[p];
-        const auto [first, last] = part(p);
-        for (std::size_t k = first; k < last; ++k) {
-            const FloatBox& box = boxes[valid_[k]];
-            levels_[level_of_[k]].entries[place[cell_of_[k]]++] = {{box.min[0], box.min[1], box.min[2]},
-                                                                  {box.max[0], box.max[1], box.max[2]},
-                                                                  valid_[k],
-                                                                  0};
+    next = 0;
+    pool_.run([&](unsigned) {
+        for (std::size_t p = next++; p < parts; p = next++) {
+            std::vector<uint32_t>& place = counts_[p];
+            const auto [first, last] = part(p);
+            for (std::size_t k = first; k < last; ++k) {
+                const FloatBox& box = boxes[valid_[k]];
+                levels_[level_of_[k]].entries[place[cell_of_[k]]++] = {{box.min[0], box.min[1], box.min[2]},
+                                                                      {box.max[0], box.max[1], box.max[2]},
+                                                                      valid_[k],
+                                                                      0};
+            }
         }
     });
 }

@@ -20,8 +20,8 @@ namespace {
 
 using test::Boxes;
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kUnbounded = std::numeric_limits<float>::infinity();
+constexpr float kNotANumber = std::numeric_limits<float>::quiet_NaN();
 
 void expect_reference(BroadPhase& phase, const Boxes& boxes, const std::string& what) {
     PairList got;
@@ -52,11 +52,11 @@ Boxes hostile_boxes(std::size_t n, uint32_t seed) {
     for (FloatBox& b : boxes) {
         const int axis = int(rng() % 3);
         switch (rng() % 10) {
-            case 0: b.min[axis] = -kInf; break;
-            case 1: b.max[axis] = kInf; break;
-            case 2: b.min[axis] = kNaN; break;
+            case 0: b.min[axis] = -kUnbounded; break;
+            case 1: b.max[axis] = kUnbounded; break;
+            case 2: b.min[axis] = kNotANumber; break;
             case 3: std::swap(b.min[axis], b.max[axis]); break;
-            case 4: b.min[axis] = b.max[axis] = kInf; break;
+            case 4: b.min[axis] = b.max[axis] = kUnbounded; break;
             case 5: b.min[axis] = -3e38f, b.max[axis] = 3e38f; break;
             case 6: b.max[axis] = b.min[axis]; break;
             default: break;
@@ -119,7 +119,7 @@ TEST(HierarchicalGrid, LargeBoxesGoToCoarserLevels) {
 // one a thread: the same pairs, whatever the threads.
 TEST(HierarchicalGrid, FilingInPartsKeepsEveryPair) {
     Boxes boxes = test::random_boxes(20000, 5);
-    for (std::size_t i = 0; i < boxes.size(); i += 997) boxes[i] = {{0, 0, 0}, {kInf, 3e38f, 1e6f}};
+    for (std::size_t i = 0; i < boxes.size(); i += 997) boxes[i] = {{0, 0, 0}, {kUnbounded, 3e38f, 1e6f}};
     const PairList want = reference_pairs(boxes);
     for (const unsigned threads : {2u, 3u, 8u}) {
         HierarchicalGridBroadPhase grid(threads, true);
@@ -132,7 +132,7 @@ TEST(HierarchicalGrid, FilingInPartsKeepsEveryPair) {
 // An unbounded box lands in the top level, a single cell.
 TEST(HierarchicalGrid, AnUnboundedBoxLivesInTheTopLevel) {
     Boxes boxes = test::random_boxes(500, 3);
-    boxes.push_back({{-kInf, -kInf, -kInf}, {kInf, kInf, kInf}});
+    boxes.push_back({{-kUnbounded, -kUnbounded, -kUnbounded}, {kUnbounded, kUnbounded, kUnbounded}});
     HierarchicalGridBroadPhase grid(1, false);
     PairList pairs;
     grid.find_pairs(boxes, pairs);
@@ -170,8 +170,8 @@ TEST(BoxPruning, EveryKernelAgrees) {
     }
     const auto key = [&](uint32_t i) { return std::min(boxes[i].min[0], boxes[i].max[0]); };
     std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
-    std::vector<float> keys(order.size() + 8, kNaN), mins[3], maxs[3];
-    for (int a = 0; a < 3; ++a) mins[a].assign(order.size() + 8, kNaN), maxs[a].assign(order.size() + 8, kNaN);
+    std::vector<float> keys(order.size() + 8, kNotANumber), mins[3], maxs[3];
+    for (int a = 0; a < 3; ++a) mins[a].assign(order.size() + 8, kNotANumber), maxs[a].assign(order.size() + 8, kNotANumber);
     for (std::size_t k = 0; k < order.size(); ++k) {
         keys[k] = key(order[k]);
         for (int a = 0; a < 3; ++a) mins[a][k] = boxes[order[k]].min[a], maxs[a][k] = boxes[order[k]].max[a];
