@@ -36,6 +36,7 @@ class Summary:
     mean_sim_wall_native_ns: float
     baselines: dict       # name -> Baseline
     extra_pairs: int      # against the float32 reference (a fixed-point format's)
+    best_software: str = ""  # the baseline with the least mean frame time ("": none timed)
 
     @classmethod
     def from_json(cls, summary):
@@ -47,7 +48,8 @@ class Summary:
                    mean_phase_ns={phase: summary[f"mean_{phase}_ns"] for phase in PHASES},
                    total_ns={stat: summary[f"{stat}_total_ns"] for stat in ("mean", "p50", "p99", "max")},
                    mean_sim_wall_native_ns=summary["mean_sim_wall_native_ns"],
-                   baselines=baselines, extra_pairs=summary["extra_pairs"])
+                   baselines=baselines, extra_pairs=summary["extra_pairs"],
+                   best_software=summary.get("best_software", ""))
 
 
 @dataclass

@@ -61,6 +61,13 @@ def test_typed_values_of_numpy_lists_and_switches_run():
     assert list(report.summary.baselines) == ["sap"]
 
 
+def test_best_names_the_fastest_of_its_candidates():
+    report = cdvp.run(**{**SMALL, "objects": 200}, fidelity="analytic", baseline="best,sap", threads=1)
+    assert set(report.summary.baselines) == {"prune", "hgrid", "sap"}
+    fastest = min(report.summary.baselines.items(), key=lambda item: item[1].mean_host_ns)[0]
+    assert report.summary.best_software == fastest
+
+
 def test_file_names_may_be_str_bytes_paths_and_not_utf8(tmp_path):
     trace = os.fsencode(tmp_path) + b"/tr\xe9ce.csv"
     shutil.copy(REPO / "traces" / "small.csv", trace)
