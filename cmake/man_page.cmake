@@ -71,8 +71,9 @@ A \fB\-\-board\fR value that contains a slash or ends in .json is a file path.
 .TP
 .B CDVP_RTL_CACHE
 Where \fB\-\-fidelity rtl\fR keeps the board RTL's variants it compiles on first
-use (those not built into the binary: \fBcdvp rtl\-variants\fR). Unset, it is
-\fI$XDG_CACHE_HOME/cdvp/rtl\fR, else \fI~/.cache/cdvp/rtl\fR. Compiling needs
+use (those not built into the binary: \fBcdvp rtl\-variants\fR); an absolute path. Unset, it is
+\fI$XDG_CACHE_HOME/cdvp/rtl\fR (when absolute), else \fI~/.cache/cdvp/rtl\fR (when HOME is set);
+with neither, such a run is refused. Only entries the user owns and alone may write are loaded. Compiling needs
 \fBverilator\fR, \fBmake\fR and the C++ compiler cdvp was built with.
 .TP
 .B CDVP_MEMORY_SHARE

@@ -112,10 +112,11 @@ struct BlockRamGeometry {
     bool uploaded = true;
 
     uint64_t block_rams() const { return banks * copies * word_groups * depth_blocks; }
-    // A compare cycle: every word group of every copy, one block of each cascade.
-    uint64_t read_enabled() const { return copies * word_groups; }
+    // A compare cycle: every word group of every copy, one block of each
+    // cascade; none when the memories hold no block (a board for no boxes).
+    uint64_t read_enabled() const { return depth_blocks > 0 ? copies * word_groups : 0; }
     // An upload write cycle: every copy of the bank written, one block of each cascade.
-    uint64_t write_enabled() const { return uploaded ? copies * word_groups : 0; }
+    uint64_t write_enabled() const { return uploaded ? read_enabled() : 0; }
 };
 
 // Where the pair FIFO lives: a block RAM when one is left beside the boxes,

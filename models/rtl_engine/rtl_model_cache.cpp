@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <openssl/evp.h>
@@ -17,6 +18,7 @@
 #include <optional>
 #include <sstream>
 
+#include "models/common/user_directories.h"
 #include "models/common/user_text.h"
 #include "models/rtl_engine/rtl_model_compile.h"
 
@@ -109,6 +111,41 @@ private:
     int fd_ = -1;
 };
 
+// Why a path of an entry may not be loaded from, or empty: dlopen runs its
+// code, so the entry and its files must be the user's own and writable by
+// nobody else (nor a symbolic link to something that may not be). A path
+// that is missing is left to the checks after.
+std::string not_private(const std::string& path) {
+    struct stat st {};
+    if (lstat(path.c_str(), &st) != 0) return {};
+    if (S_ISLNK(st.st_mode)) return "is a symbolic link";
+    if (st.st_uid != geteuid()) return "is owned by another user (uid " + std::to_string(st.st_uid) + ")";
+    if ((st.st_mode & (S_IWGRP | S_IWOTH)) != 0) return "is writable by group or others";
+    return {};
+}
+
+// Refuses, in one line naming the path, an entry someone else could have
+// put code in.
+void check_private(const std::string& entry) {
+    for (const std::string& path : {entry, entry + "/" + kStamp, entry + "/" + kModel}) {
+        const std::string why = not_private(path);
+        if (!why.empty()) {
+            throw InputError("fidelity rtl: the RTL model cache's " + printable(path) + " " + why +
+                             " (expected your own, writable only by you; remove the entry to compile it again)");
+        }
+    }
+}
+
+// Takes away group and others' write permission from what a compile made.
+void make_private(const std::string& path) {
+    std::error_code ec;
+    for (const auto& item : fs::recursive_directory_iterator(path, ec)) {
+        if (item.is_symlink(ec)) continue;
+        fs::permissions(item.path(), fs::perms::group_write | fs::perms::others_write, fs::perm_options::remove, ec);
+    }
+    fs::permissions(path, fs::perms::group_write | fs::perms::others_write, fs::perm_options::remove, ec);
+}
+
 // The entry's maker if it checks out: the stamp names this key and the
 // shared object's size and digest, which loads and has the entry point.
 // Otherwise nothing, and `damage` says why (empty: no entry at all).
@@ -116,6 +153,7 @@ RtlBoardMaker open_entry(const std::string& entry, const std::string& key, std::
     damage.clear();
     std::error_code ec;
     if (!fs::exists(entry, ec)) return nullptr;
+    check_private(entry);
     const std::optional<std::string> stamp = read_file(entry + "/" + kStamp);
     if (!stamp) {
         damage = "no " + std::string(kStamp);
@@ -202,6 +240,7 @@ void build_entry(const RtlVariant& variant, const RtlToolchain& tools, const Rtl
         remove_tree(partial);
         throw_os_error("fidelity rtl: cannot write the RTL model cache " + printable(entry), error);
     }
+    make_private(partial);
     std::error_code ec;
     if (fs::exists(entry, ec)) {
         const std::string aside = partial + ".damaged";
@@ -245,16 +284,24 @@ RtlModelCache::RtlModelCache(std::string directory, const RtlBuild& build, const
     : directory_(std::move(directory)), build_(build), kit_(kit), notice_(std::move(notice)) {}
 
 std::string RtlModelCache::default_directory() {
-    auto set = [](const char* name) -> std::optional<std::string> {
-        const char* value = std::getenv(name);
-        return value != nullptr && value[0] != '\0' ? std::optional<std::string>(value) : std::nullopt;
-    };
-    if (const auto own = set("CDVP_RTL_CACHE")) return *own;
-    if (const auto xdg = set("XDG_CACHE_HOME")) return *xdg + "/cdvp/rtl";
-    return set("HOME").value_or(".") + "/.cache/cdvp/rtl";
+    const char* own = std::getenv("CDVP_RTL_CACHE");
+    if (own != nullptr && own[0] != '\0') return own;
+    const std::string cache = user_base_directory("XDG_CACHE_HOME", ".cache");
+    return cache.empty() ? cache : cache + "/cdvp/rtl";
 }
 
 RtlBoardMaker RtlModelCache::load(const RtlVariant& variant) {
+    // Code is loaded only from where the user said, never from wherever the
+    // process happens to run.
+    if (directory_.empty()) {
+        throw InputError("fidelity rtl: " + variant.spec() +
+                         " is compiled into a cache, and there is none (neither XDG_CACHE_HOME nor HOME is an "
+                         "absolute path); set CDVP_RTL_CACHE (or HOME) to an absolute directory");
+    }
+    if (directory_[0] != '/') {
+        throw InputError("CDVP_RTL_CACHE: " + printable(directory_) +
+                         " is not an absolute path (expected one: the RTL model cache holds code cdvp loads)");
+    }
     const std::string key_text = rtl_model_key_text(variant, build_, kit_);
     const std::string key = sha256_hex(key_text);
     const std::string entry = directory_ + "/" + variant.name() + "-" + key.substr(0, kKeyDigits);

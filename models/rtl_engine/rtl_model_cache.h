@@ -37,14 +37,20 @@ public:
 
     RtlModelCache(std::string directory, const RtlBuild& build, const RtlKit& kit, Notice notice);
 
-    // $CDVP_RTL_CACHE if set and not empty, else $XDG_CACHE_HOME/cdvp/rtl,
-    // else $HOME/.cache/cdvp/rtl.
+    // $CDVP_RTL_CACHE if set and not empty, else $XDG_CACHE_HOME/cdvp/rtl
+    // when XDG_CACHE_HOME is an absolute path (a relative one is ignored, as
+    // the XDG Base Directory rules say), else $HOME/.cache/cdvp/rtl when HOME
+    // is one; empty when none is (user_base_directory): no cache.
     static std::string default_directory();
 
     // The entry point of the variant's model: loaded from the cache, or
     // compiled into it first. Throws InputError or SystemError, one line:
-    // a cache that cannot be created, a tool missing, a failed compile (with
-    // its log's path).
+    // no cache (an empty directory: which variable to set), a relative
+    // CDVP_RTL_CACHE, an entry (its directory, stamp.txt or model.so) that
+    // is not the user's own or is writable by group or others (it is never
+    // loaded), a cache that cannot be created, a tool missing, a failed
+    // compile (with its log's path). A compiled entry is made writable by
+    // its owner alone.
     RtlBoardMaker load(const RtlVariant& variant);
 
 private:

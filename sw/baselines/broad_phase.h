@@ -33,9 +33,11 @@ protected:
 };
 
 // How a baseline is built: the threads of a multi-threaded one (0: this
-// machine's cores; run.threads).
+// machine's cores; run.threads), and where they were asked for, to name in
+// the line that says the system would not start them all (--threads).
 struct BaselineOptions {
     unsigned threads = 0;
+    std::string threads_from = "threads";
 };
 
 // Names: "sap" (Bullet btAxisSweep3), "dbvt" (Bullet btDbvtBroadphase),

@@ -1,21 +1,36 @@
 #include "sw/baselines/worker_pool.h"
 
 #include <algorithm>
+#include <string>
+#include <system_error>
 
 namespace cdvp {
 
 WorkerPool::WorkerPool(unsigned threads) {
     const unsigned workers = std::max(threads, 1u) - 1;
-    for (unsigned t = 0; t < workers; ++t) workers_.emplace_back([this, t] { work(t); });
+    workers_.reserve(workers);
+    try {
+        for (unsigned t = 0; t < workers; ++t) workers_.emplace_back([this, t] { work(t); });
+    } catch (const std::system_error& e) {
+        // The members outlive the started workers only if they are joined here.
+        const std::size_t started = workers_.size() + 1;  // with the caller's
+        stop();
+        throw ThreadsUnavailable(std::to_string(workers + 1) + " threads asked; the system started " +
+                                 std::to_string(started) + " (" + e.code().message() + "); expected fewer");
+    }
 }
 
-WorkerPool::~WorkerPool() {
+WorkerPool::~WorkerPool() { stop(); }
+
+void WorkerPool::stop() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         stopping_ = true;
     }
     start_.notify_all();
-    for (std::thread& worker : workers_) worker.join();
+    for (std::thread& worker : workers_) {
+        if (worker.joinable()) worker.join();
+    }
 }
 
 void WorkerPool::run(const std::function<void(unsigned)>& job) {

@@ -11,12 +11,26 @@
 #include <thread>
 #include <vector>
 
+#include "models/common/user_text.h"
+
 namespace cdvp {
+
+// The system would not start all the threads a pool was asked for (a limit
+// on processes or address space): what() is one line, "1024 threads asked;
+// the system started 57 (Resource temporarily unavailable); expected fewer",
+// for the caller to prefix with the setting that asked (--threads).
+class ThreadsUnavailable : public SystemError {
+public:
+    using SystemError::SystemError;
+};
 
 class WorkerPool {
 public:
     // threads in all, the caller of run() one of them (so threads - 1 are
-    // started); at least one.
+    // started); at least one. A pool runs on all of them or is not made:
+    // when the system refuses a thread, those already started are stopped
+    // and joined and ThreadsUnavailable is thrown (a baseline timed on fewer
+    // threads than it names would be silently wrong).
     explicit WorkerPool(unsigned threads);
     ~WorkerPool();
     WorkerPool(const WorkerPool&) = delete;
@@ -28,6 +42,7 @@ public:
     void run(const std::function<void(unsigned)>& job);
 
 private:
+    void stop();
     void work(unsigned index);
     void finish_one(std::exception_ptr error);
 

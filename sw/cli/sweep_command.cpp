@@ -68,7 +68,8 @@ void keep_freed_memory() {
 
 void print_summary(const std::string& out, const SweepOutcome& outcome) {
     std::cout << "cdvp sweep: " << outcome.points << " points in " << table_path(out) << ": " << outcome.ok << " ok, "
-              << outcome.refused << " refused, " << outcome.faulted << " faulted (" << outcome.run_now << " run now; CPU time "
+              << outcome.refused << " refused, " << outcome.faulted << " faulted"
+              << (outcome.failed > 0 ? ", " + std::to_string(outcome.failed) + " failed" : std::string()) << " ("  << outcome.run_now << " run now; CPU time "
               << cpu_seconds(RUSAGE_SELF) << " s in the sweep, " << cpu_seconds(RUSAGE_CHILDREN)
               << " s in its points and plots)\n";
 }
@@ -82,7 +83,13 @@ int run_sweep_command(SweepSpec spec) {
     }
     SweepProgress progress(!spec.quiet && isatty(STDERR_FILENO));
     const SweepOutcome outcome = run_sweep(spec, &progress);
-    if (outcome.status == 0 && sweep_stop_signal() == 0 && !spec.quiet) print_summary(spec.out_dir, outcome);
+    const bool recorded = outcome.status == 0 || !outcome.first_failure.empty();
+    if (recorded && sweep_stop_signal() == 0 && !spec.quiet) print_summary(spec.out_dir, outcome);
+    if (!outcome.first_failure.empty() && outcome.status == kExitInternal) {
+        std::cerr << spec.program << ": " << outcome.failed << (outcome.failed == 1 ? " point" : " points")
+                  << " failed inside cdvp (internal error, a cdvp bug), recorded with the reason; the first, "
+                  << outcome.first_failure << '\n';
+    }
     return outcome.status;
 }
 

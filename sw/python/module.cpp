@@ -206,6 +206,7 @@ py::dict sweep_keywords(const py::dict& axes, const py::dict& own, const py::dic
     result["ok"] = outcome.ok;
     result["refused"] = outcome.refused;
     result["faulted"] = outcome.faulted;
+    result["failed"] = outcome.failed;
     result["run_now"] = outcome.run_now;
     result["stop_signal"] = sweep_stop_signal();
     return result;

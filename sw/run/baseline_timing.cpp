@@ -51,6 +51,8 @@ BaselineTimer::BaselineTimer(const std::vector<std::string>& names, HostTiming h
             first_run_.push_back(make_broad_phase(name, options_));
         } catch (const std::invalid_argument& e) {
             throw InputError(label + ": " + e.what());
+        } catch (const ThreadsUnavailable& e) {
+            throw SystemError(options_.threads_from + ": " + e.what());
         }
         names_.push_back(first_run_.back()->name());
     }
@@ -108,7 +110,11 @@ double BaselineTimer::mark_slowed(uint64_t warmup) {
 std::vector<std::unique_ptr<BroadPhase>> BaselineTimer::fresh(const std::vector<std::size_t>& which) const {
     std::vector<std::unique_ptr<BroadPhase>> instances;
     for (const std::size_t b : which) {
-        instances.push_back(make_broad_phase(names_[b], options_));
+        try {
+            instances.push_back(make_broad_phase(names_[b], options_));
+        } catch (const ThreadsUnavailable& e) {
+            throw SystemError(options_.threads_from + ": " + e.what());
+        }
         instances.back()->set_pair_budget(budget_);
     }
     return instances;

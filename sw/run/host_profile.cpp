@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "models/common/user_directories.h"
 #include "models/common/user_text.h"
 #include "platform/settings/preset_json.h"
 #include "sw/output/digest.h"
@@ -214,11 +215,8 @@ HostProfile parse_host_profile(const std::string& path, const std::string& text)
 }
 
 std::string default_host_profile_path() {
-    const char* config = std::getenv("XDG_CONFIG_HOME");
-    if (config != nullptr && config[0] == '/') return std::string(config) + "/cdvp/host-profile.json";
-    const char* home = std::getenv("HOME");
-    if (home != nullptr && home[0] != '\0') return std::string(home) + "/.config/cdvp/host-profile.json";
-    return {};
+    const std::string config = user_base_directory("XDG_CONFIG_HOME", ".config");
+    return config.empty() ? config : config + "/cdvp/host-profile.json";
 }
 
 }  // namespace cdvp

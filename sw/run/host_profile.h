@@ -69,7 +69,8 @@ HostProfile parse_host_profile(const std::string& path, const std::string& text)
 
 // Where a run looks for a profile when --host-profile is not given and
 // cdvp calibrate writes one without --out: $XDG_CONFIG_HOME/cdvp/host-profile.json,
-// else $HOME/.config/cdvp/host-profile.json; empty when neither is set.
+// else $HOME/.config/cdvp/host-profile.json (each only an absolute path,
+// user_base_directory); empty when neither is.
 std::string default_host_profile_path();
 
 }  // namespace cdvp

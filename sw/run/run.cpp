@@ -52,7 +52,8 @@ BaselineTimer baseline_timer(const RunSpec& spec, const RunSetup& setup, std::op
     const Settings& settings = setup.values.settings();
     const unsigned threads = run_baseline_threads(settings);
     return BaselineTimer(resolve_baselines(spec.baselines, objects, threads), setup.host, settings.run.retime_tries,
-                         spec.settings.names->input("baseline"), BaselineOptions{threads});
+                         spec.settings.names->input("baseline"),
+                         BaselineOptions{threads, setup.values.where(declared_setting("run.threads"))});
 }
 
 // "best" for the frames at hand: the candidates for their largest frame.

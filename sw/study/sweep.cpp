@@ -20,6 +20,7 @@
 #include "sw/study/directory_lock.h"
 #include "sw/study/sweep_figures.h"
 #include "sw/study/sweep_manifest.h"
+#include "sw/run/exit_codes.h"
 #include "sw/run/run_arguments.h"
 #include "sw/run/software_timing.h"
 #include "sw/study/sweep_software_timings.h"
@@ -224,7 +225,13 @@ SweepOutcome outcome_of(const SweepTable& table, std::size_t run_now) {
     outcome.run_now = run_now;
     table.for_each([&](std::size_t, const RowView& row) {
         const std::string status = row.get("status");
-        (status == "ok" ? outcome.ok : status == "refused" ? outcome.refused : outcome.faulted) += 1;
+        if (status == "failed" && outcome.first_failure.empty()) {
+            outcome.first_failure = row.get("point") + ": " + row.get("reason");
+        }
+        (status == "ok"        ? outcome.ok
+         : status == "refused" ? outcome.refused
+         : status == "failed"  ? outcome.failed
+                               : outcome.faulted) += 1;
     });
     return outcome;
 }
@@ -272,7 +279,7 @@ SweepOutcome run_sweep(const SweepSpec& given, SweepObserver* observer) {
     made.keep();
     const int status = write_figures(o.out_dir, grid, table, o.program, o.quiet, o.plots);
     outcome = outcome_of(table, todo.size());
-    outcome.status = status;
+    outcome.status = status != 0 ? status : outcome.failed > 0 ? kExitInternal : 0;
     return outcome;
 }
 

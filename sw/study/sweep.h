@@ -91,14 +91,18 @@ public:
 struct SweepOutcome {
     int status = 0;             // 0, or the exit status the sweep ended with (its reason printed)
     std::size_t points = 0;     // rows in the table
-    std::size_t ok = 0, refused = 0, faulted = 0;
+    std::size_t ok = 0, refused = 0, faulted = 0, failed = 0;
     std::size_t run_now = 0;    // points this call ran
+    std::string first_failure;  // "POINT: reason" of the first failed row, if any
 };
 
 // Runs the sweep. Throws InputError (bad OUT, another sweep's OUT, a changed
-// input, every point refused) or SystemError; a point that failed inside cdvp
-// or could not be written ends the sweep with its status, the points recorded
-// so far kept. A stop signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT) is forwarded
+// input, every point refused) or SystemError; a point that could not be
+// written ends the sweep with its status, the points recorded so far kept. A
+// point that failed inside cdvp (status 1, or killed by a signal) is recorded
+// as failed with its reason and the sweep goes on; the sweep then ends with
+// status 1 after its figures, naming the first (SweepOutcome::first_failure).
+// A stop signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT) is forwarded
 // to the running points and ends the sweep: sweep_stop_signal() says which.
 SweepOutcome run_sweep(const SweepSpec& spec, SweepObserver* observer = nullptr);
 

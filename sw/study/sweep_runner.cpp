@@ -215,13 +215,16 @@ void SweepRunner::launch(Slot& slot, std::size_t k, const Point& point) {
 // Records the point's row; 0, or the status that ends the sweep (its reason printed).
 int SweepRunner::finish(Slot& slot) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - slot.started).count();
-    const std::string& id = slot.point.id;
     if (WIFSIGNALED(slot.wait_status)) {
         remove_temporaries_of(report_file(slot.point));  // SIGKILL leaves them
         if (g_stop_signal != 0 || failing_ != 0) return 0;  // stopped with the sweep: it runs again on resume
-        std::cerr << o_.program << ": point " << id << ": cdvp run was killed by signal " << WTERMSIG(slot.wait_status)
-                  << "; the point is not recorded\n";
-        return kExitInternal;
+        // Killed by something else (the kernel out of memory, say): the row says so and the sweep goes on.
+        check_inputs_();
+        table_.add(slot.point.index, failed_row(grid_, slot.point, PointStatus::kFailed,
+                                                "cdvp run was killed by signal " + std::to_string(WTERMSIG(slot.wait_status)),
+                                                wall));
+        file_.append(table_, slot.point.index, true);
+        return 0;
     }
     return record(slot.point, WEXITSTATUS(slot.wait_status), reason_of(slot.errors.text(64 * 1024), trace_paths_), wall,
                   true);
@@ -257,7 +260,9 @@ int SweepRunner::record(const Point& point, int code, const std::string& reason,
         const PointStatus status = code == kExitBadInput ? PointStatus::kRefused : PointStatus::kFault;
         table_.add(point.index, failed_row(grid_, point, status, reason, wall));
     } else {
-        return fail(kExitInternal, "cdvp run failed (status " + std::to_string(code) + "): " + reason);
+        // A bug at one point says nothing of the others: its row keeps the reason, and the sweep goes on.
+        table_.add(point.index, failed_row(grid_, point, PointStatus::kFailed,
+                                           "cdvp run failed (status " + std::to_string(code) + "): " + reason, wall));
     }
     file_.append(table_, point.index, sync_now);
     return 0;

@@ -88,12 +88,13 @@ const char* to_string(PointStatus status) {
         case PointStatus::kOk: return "ok";
         case PointStatus::kRefused: return "refused";
         case PointStatus::kFault: return "fault";
+        case PointStatus::kFailed: return "failed";
     }
     return "?";
 }
 
 std::optional<PointStatus> parse_point_status(const std::string& text) {
-    for (PointStatus status : {PointStatus::kOk, PointStatus::kRefused, PointStatus::kFault}) {
+    for (PointStatus status : {PointStatus::kOk, PointStatus::kRefused, PointStatus::kFault, PointStatus::kFailed}) {
         if (text == to_string(status)) return status;
     }
     return std::nullopt;

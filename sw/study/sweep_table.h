@@ -27,7 +27,9 @@ constexpr uint64_t kSweepFormatVersion = 3;
 using Row = std::map<std::string, std::string>;  // column -> value, for one row being built or checked
 
 // Outcome of a point, as its child ended: ok (0), refused (2), fault (3).
-enum class PointStatus { kOk, kRefused, kFault };
+// kFailed: cdvp failed inside (a bug, or a point killed by a signal); its
+// row keeps the reason and the sweep goes on.
+enum class PointStatus { kOk, kRefused, kFault, kFailed };
 const char* to_string(PointStatus status);
 std::optional<PointStatus> parse_point_status(const std::string& text);
 

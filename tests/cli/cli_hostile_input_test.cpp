@@ -129,5 +129,24 @@ TEST_F(Cli, DeeplyNestedPresetsAndConfigFilesAreRefusedNotACrash) {
                                                  "limit.json", "limit.toml"}));
 }
 
+
+// A multi-threaded baseline the system will not start all the threads of (2
+// GiB of address space: 8 MiB of stack a thread) is refused in one line naming
+// --threads, exit 4, neither hanging (the timeout) nor aborting; as many
+// threads as the system has run.
+TEST_F(Cli, ThreadsTheSystemWillNotStartAreRefusedNamingThreads) {
+    const std::string limited = "ulimit -v 2097152 && timeout 120";
+    const std::string args = "run --board adm-xrc-ii --scene spheres --objects 50 --frames 2 -q --baseline ";
+    for (const char* baseline : {"sap_mt", "prune_mt", "hgrid_mt"}) {
+        const Result r = run(args + baseline + " --threads 1024", limited);
+        EXPECT_EQ(r.status, 4) << baseline << ": " << r.err;
+        EXPECT_EQ(r.err.rfind("cdvp run: --threads: 1024 threads asked; the system started ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find("expected fewer\n"), std::string::npos) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    const Result fewer = run(args + "sap_mt --threads 4", limited);
+    EXPECT_EQ(fewer.status, 0) << fewer.err;
+}
+
 }  // namespace
 }  // namespace cdvp::test

@@ -11,6 +11,11 @@
 // The key's inputs are checked in process, without compiling.
 #include <sys/stat.h>
 
+#include <openssl/evp.h>
+
+#include <cstdlib>
+#include <utility>
+
 #include <nlohmann/json.hpp>
 
 #include "models/common/user_text.h"
@@ -236,6 +241,126 @@ TEST(RtlModelKey, ChangesWithTheRtlTheBuildAndTheVariant) {
             << e.what();
     }
     fs::remove_all(root);
+}
+
+
+// Where the cache is, from the environment: only absolute paths; a relative
+// XDG_CACHE_HOME is ignored (the XDG Base Directory rules), and with no HOME
+// besides there is no cache, never one in the working directory.
+class RtlModelCacheDirectory : public ::testing::Test {
+protected:
+    void SetUp() override {
+        for (const char* name : {"CDVP_RTL_CACHE", "XDG_CACHE_HOME", "HOME"}) {
+            if (const char* value = std::getenv(name)) saved_.emplace_back(name, value);
+            ::unsetenv(name);
+        }
+    }
+    void TearDown() override {
+        for (const char* name : {"CDVP_RTL_CACHE", "XDG_CACHE_HOME", "HOME"}) ::unsetenv(name);
+        for (const auto& [name, value] : saved_) ::setenv(name.c_str(), value.c_str(), 1);
+    }
+    std::vector<std::pair<std::string, std::string>> saved_;
+};
+
+TEST_F(RtlModelCacheDirectory, ARelativeXdgCacheHomeIsIgnored) {
+    ::setenv("HOME", "/home/someone", 1);
+    ::setenv("XDG_CACHE_HOME", "relative/cache", 1);
+    EXPECT_EQ(RtlModelCache::default_directory(), "/home/someone/.cache/cdvp/rtl");
+    ::setenv("XDG_CACHE_HOME", "/var/cache/someone", 1);
+    EXPECT_EQ(RtlModelCache::default_directory(), "/var/cache/someone/cdvp/rtl");
+    ::setenv("CDVP_RTL_CACHE", "/srv/rtl", 1);
+    EXPECT_EQ(RtlModelCache::default_directory(), "/srv/rtl");
+}
+
+TEST_F(RtlModelCacheDirectory, WithoutHomeThereIsNoCacheAndTheRunIsRefusedInOneLine) {
+    ::setenv("XDG_CACHE_HOME", "relative/cache", 1);
+    EXPECT_EQ(RtlModelCache::default_directory(), "");
+    ::unsetenv("XDG_CACHE_HOME");
+    EXPECT_EQ(RtlModelCache::default_directory(), "");
+    ::setenv("HOME", "relative-home", 1);
+    EXPECT_EQ(RtlModelCache::default_directory(), "");
+    const RtlBuild build = rtl_build();
+    const RtlKit kit = rtl_kit_at(CDVP_SOURCE_DIR);
+    for (const std::string& directory : {std::string(), std::string("relative/rtl")}) {
+        RtlModelCache cache(directory, build, kit, [](const std::string& line) {
+            throw std::runtime_error("would compile: " + line);
+        });
+        try {
+            cache.load(RtlVariant{});
+            ADD_FAILURE() << "loaded from '" << directory << "'";
+        } catch (const InputError& e) {
+            const std::string line = e.what();
+            EXPECT_NE(line.find(directory.empty() ? "set CDVP_RTL_CACHE (or HOME) to an absolute directory"
+                                                  : "CDVP_RTL_CACHE: relative/rtl is not an absolute path"),
+                      std::string::npos)
+                << line;
+            EXPECT_EQ(line.find('\n'), std::string::npos) << line;
+        }
+    }
+}
+
+std::string sha256_of(const std::string& bytes) {
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int size = 0;
+    EXPECT_EQ(EVP_Digest(bytes.data(), bytes.size(), digest, &size, EVP_sha256(), nullptr), 1);
+    std::string hex;
+    for (unsigned int k = 0; k < size; ++k) hex += {"0123456789abcdef"[digest[k] >> 4], "0123456789abcdef"[digest[k] & 15]};
+    return hex;
+}
+
+// dlopen runs an entry's code: an entry others can write to (or that is not
+// the user's) is refused in one line naming it, not loaded and not compiled
+// over. A stamped entry whose object does not load stands in for a compiled
+// one (a private one goes on to be compiled again: the notice says so).
+TEST(RtlModelCacheEntry, AGroupWritableEntryIsRefused) {
+    const fs::path cache = fs::temp_directory_path() / ("cdvp-rtl-private-" + std::to_string(getpid()));
+    fs::remove_all(cache);
+    const RtlBuild build = rtl_build();
+    const RtlKit kit = rtl_kit_at(CDVP_SOURCE_DIR);
+    const RtlVariant variant;
+    const std::string key = sha256_of(rtl_model_key_text(variant, build, kit));
+    const fs::path entry = cache / (variant.name() + "-" + key.substr(0, 16));
+    fs::create_directories(entry);
+    const std::string object = "not a shared object";
+    std::ofstream(entry / "model.so", std::ios::binary) << object;
+    std::ofstream(entry / "stamp.txt", std::ios::binary)
+        << "key " << key << "\nmodel.so " << object.size() << ' ' << sha256_of(object) << '\n';
+    RtlModelCache loader(cache.string(), build, kit, [](const std::string& line) {
+        throw std::runtime_error("would compile: " + line);
+    });
+    const auto outcome = [&]() -> std::string {
+        try {
+            loader.load(variant);
+            return "loaded";
+        } catch (const InputError& e) {
+            return std::string("refused: ") + e.what();
+        } catch (const std::exception& e) {
+            return e.what();
+        }
+    };
+    for (const fs::path& path : {entry, entry / "model.so", entry / "stamp.txt"}) {
+        for (const auto perms : {fs::perms::group_write, fs::perms::others_write}) {
+            ASSERT_EQ(chmod(entry.c_str(), 0755), 0);
+            ASSERT_EQ(chmod((entry / "model.so").c_str(), 0644), 0);
+            ASSERT_EQ(chmod((entry / "stamp.txt").c_str(), 0644), 0);
+            fs::permissions(path, perms, fs::perm_options::add);
+            const std::string result = outcome();
+            EXPECT_EQ(result, "refused: fidelity rtl: the RTL model cache's " + path.string() +
+                                  " is writable by group or others (expected your own, writable only by you; "
+                                  "remove the entry to compile it again)");
+        }
+    }
+    ASSERT_EQ(chmod(entry.c_str(), 0755), 0);
+    ASSERT_EQ(chmod((entry / "model.so").c_str(), 0644), 0);
+    ASSERT_EQ(chmod((entry / "stamp.txt").c_str(), 0644), 0);
+    EXPECT_EQ(outcome().rfind("would compile: ", 0), 0u) << "a private entry is looked at";
+    // A symbolic link to an object elsewhere is not followed.
+    fs::rename(entry / "model.so", cache / "elsewhere.so");
+    fs::create_symlink(cache / "elsewhere.so", entry / "model.so");
+    EXPECT_EQ(outcome(), "refused: fidelity rtl: the RTL model cache's " + (entry / "model.so").string() +
+                             " is a symbolic link (expected your own, writable only by you; remove the entry to "
+                             "compile it again)");
+    fs::remove_all(cache);
 }
 
 }  // namespace

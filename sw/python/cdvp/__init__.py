@@ -124,6 +124,7 @@ def _gathered_outcome(spread, table, out):
         if spread["began_now"]:
             shutil.rmtree(os.fspath(out))
         raise InputError(f"cdvp.sweep: every point was refused; the first, {table['point'][0]}: {table['reason'][0]}", 2)
-    return {"status": 0, "points": len(table), "ok": int(statuses.get("ok", 0)),
+    failed = int(statuses.get("failed", 0))
+    return {"status": 1 if failed else 0, "points": len(table), "ok": int(statuses.get("ok", 0)),
             "refused": int(statuses.get("refused", 0)), "faulted": int(statuses.get("fault", 0)),
-            "run_now": spread["run_now"], "stop_signal": 0, "tasks": spread["tasks"]}
+            "failed": failed, "run_now": spread["run_now"], "stop_signal": 0, "tasks": spread["tasks"]}

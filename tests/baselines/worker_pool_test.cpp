@@ -1,0 +1,93 @@
+// A pool the system will not start all the threads of: the ones started are
+// stopped and joined, and the pool says so in one line (ThreadsUnavailable),
+// so that a run refuses instead of hanging or aborting. Each case runs in a
+// forked child under a lowered address-space limit, with an alarm, so that a
+// pool that hangs fails the test instead of hanging it.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "sw/baselines/broad_phase.h"
+#include "sw/baselines/worker_pool.h"
+
+namespace cdvp {
+namespace {
+
+// The process's address space now, in bytes (VmSize), or 0.
+rlim_t address_space_now() {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);) {
+        if (line.rfind("VmSize:", 0) == 0) return static_cast<rlim_t>(std::stoull(line.substr(7))) * 1024;
+    }
+    return 0;
+}
+
+// Runs 'body' in a child with 64 MiB of address space beyond what it has
+// (room for a few threads' stacks, not 256) and at most 20 s; its exit
+// status, or 128 + the signal that ended it (SIGALRM: it hung).
+template <typename Body>
+int in_child_with_little_memory(Body body) {
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        alarm(20);
+        const rlim_t now = address_space_now();
+        if (now == 0) _exit(90);
+        rlimit limit{now + (rlim_t{64} << 20), now + (rlim_t{64} << 20)};
+        if (setrlimit(RLIMIT_AS, &limit) != 0) _exit(91);
+        _exit(body());
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+TEST(WorkerPool, AThreadTheSystemRefusesStopsTheStartedOnesAndSaysSo) {
+    const int status = in_child_with_little_memory([] {
+        try {
+            WorkerPool pool(256);
+            return 10;  // the limit let all of them start: nothing tested
+        } catch (const ThreadsUnavailable& e) {
+            const std::string line = e.what();
+            if (line.rfind("256 threads asked; the system started ", 0) != 0) return 11;
+            if (line.find("expected fewer") == std::string::npos || line.find('\n') != std::string::npos) return 12;
+        }
+        // The process goes on: a pool of the threads the system has works.
+        WorkerPool small(2);
+        int ran[2] = {0, 0};
+        small.run([&](unsigned t) { ran[t] = 1; });
+        return ran[0] + ran[1] == 2 ? 0 : 13;
+    });
+    EXPECT_EQ(status, 0) << "10: all started; 11, 12: the line; 13: the small pool; 128+14: it hung; 128+6: it aborted";
+}
+
+// The same through a multi-threaded baseline: it is not made, and the broad
+// phases the system has threads for still find their pairs.
+TEST(WorkerPool, AMultiThreadedBaselineWithoutItsThreadsIsNotMade) {
+    const int status = in_child_with_little_memory([] {
+        for (const char* name : {"sap_mt", "prune_mt", "hgrid_mt"}) {
+            try {
+                make_broad_phase(name, BaselineOptions{256});
+                return 10;
+            } catch (const ThreadsUnavailable&) {
+            }
+        }
+        auto phase = make_broad_phase("sap_mt", BaselineOptions{2});
+        std::vector<FloatBox> boxes(3, FloatBox{{0, 0, 0}, {1, 1, 1}});
+        PairList found;
+        phase->find_pairs(boxes, found);
+        return found.size() == 3 ? 0 : 13;
+    });
+    EXPECT_EQ(status, 0) << "10: all started; 13: the pairs; 128+14: it hung; 128+6: it aborted";
+}
+
+}  // namespace
+}  // namespace cdvp
