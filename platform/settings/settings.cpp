@@ -177,10 +177,21 @@ std::vector<std::string> setting_names() {
     return names;
 }
 
-std::string nearest_name(const std::string& name, const std::vector<std::string>& names) {
-    return *std::min_element(names.begin(), names.end(), [&](const std::string& x, const std::string& y) {
+std::optional<std::string> nearest_name(const std::string& name, const std::vector<std::string>& names) {
+    if (names.empty()) return std::nullopt;
+    const std::string& nearest = *std::min_element(names.begin(), names.end(), [&](const std::string& x, const std::string& y) {
         return edit_distance(name, x) < edit_distance(name, y);
     });
+    const auto last_part = [](const std::string& text) { return text.substr(text.rfind('.') + 1); };
+    const std::string own = last_part(name), theirs = last_part(nearest);
+    if (edit_distance(name, nearest) <= std::max<std::size_t>(2, own.size() / 2)) return nearest;
+    const std::size_t word = own.find('_');
+    if (word != std::string::npos && word >= 3 && theirs.compare(0, word + 1, own, 0, word + 1) == 0 &&
+        name.size() - own.size() == nearest.size() - theirs.size() &&
+        name.compare(0, name.size() - own.size(), nearest, 0, nearest.size() - theirs.size()) == 0) {
+        return nearest;
+    }
+    return std::nullopt;
 }
 
 std::string to_text(const SettingValue& value) {

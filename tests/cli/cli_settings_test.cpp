@@ -232,5 +232,24 @@ TEST_F(Cli, SettingsShowWhatAPresetConfigAndOverridesResolveTo) {
     expect_refusal(run("settings -c board.mm=3"), "cdvp settings: -c board.mm: unknown setting; did you mean 'board.m'?");
 }
 
+// "Did you mean" only for a typo's distance: a name far from every setting
+// gets none, wherever a name is looked up (-c, a config file, a preset, a
+// sweep axis, an option).
+TEST_F(Cli, ANameFarFromEverySettingGetsNoSuggestion) {
+    expect_refusal(run("settings -c device.speed_grade=5"), "cdvp settings: -c device.speed_grade: unknown setting\n");
+    expect_refusal(run("run --scene spheres -c device.speed_grade=5"),
+                   "cdvp run: -c device.speed_grade: unknown setting\n");
+    write("c.toml", "[board]\nwhatever_you_like = 3\n");
+    expect_refusal(run("run --scene spheres --config c.toml"), "cdvp run: c.toml:2: board.whatever_you_like: unknown setting\n");
+    expect_refusal(run("sweep --out o --set speed_grade=1,2 --scene spheres"),
+                   "cdvp sweep: --set speed_grade: no flag of cdvp run or setting has this name (see cdvp run --help, "
+                   "cdvp settings)");
+    expect_refusal(run("run --scene spheres --speed-grade 5"),
+                   "cdvp run: unrecognised option '--speed-grade' (see cdvp run --help)");
+    // A typo still gets its suggestion.
+    expect_refusal(run("settings -c device.block_ram=5"),
+                   "cdvp settings: -c device.block_ram: unknown setting; did you mean 'device.block_rams'?\n");
+}
+
 }  // namespace
 }  // namespace cdvp::test
