@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "models/common/number_text.h"
@@ -104,10 +105,25 @@ std::string Setting::range_text() const {
     return "";
 }
 
+namespace {
+
+// A real setting's value as the board holds it: one held in a float must be
+// 0 or a normal float32 (FLT_MIN up), or the board would hold 0 or a denormal.
+double held_value(const Setting& s, double value, const std::string& shown) {
+    if (!s.float32 || value == 0 || std::abs(value) >= std::numeric_limits<float>::min()) return value;
+    const double least = std::max(s.min, static_cast<double>(std::numeric_limits<float>::min()));
+    throw std::invalid_argument("expected " + (s.min <= 0 ? std::string("0 or ") : std::string()) +
+                                show_number(least) + " to " + show_number(s.max) + (s.unit.empty() ? "" : " " + s.unit) +
+                                " (the board holds it as a float32, whose least normal value is about 1.2e-38), got " +
+                                shown);
+}
+
+}  // namespace
+
 SettingValue Setting::parse_text(const std::string& text) const {
     switch (type) {
         case SettingType::kCount: return parse_integer_text(text, count_min, count_max);
-        case SettingType::kReal: return parse_real_text(text, min, max);
+        case SettingType::kReal: return held_value(*this, parse_real_text(text, min, max), "'" + excerpt(text) + "'");
         case SettingType::kChoice:
         case SettingType::kText: return from_string(text);
     }
@@ -126,7 +142,7 @@ SettingValue Setting::from_number(double value, const std::string& shown) const 
         throw std::invalid_argument("expected " + show_number(lo) + " to " + show_number(hi) + unit_text + ", got " +
                                     shown);
     }
-    if (type == SettingType::kReal) return value;
+    if (type == SettingType::kReal) return held_value(*this, value, shown);
     if (value != std::floor(value)) throw std::invalid_argument("expected a whole number of" + unit_text + ", got " + shown);
     return static_cast<uint64_t>(value);
 }

@@ -151,6 +151,10 @@ struct Setting {
     std::string unit;
     uint64_t count_min = 0, count_max = 0;  // kCount
     double min = 0, max = 0;                // kReal
+    // kReal held in a float (binary32) on the board: a value other than 0 must
+    // be a normal float32 (at least FLT_MIN in size), or the board would hold
+    // 0 or a denormal in its place while the report recorded the value given.
+    bool float32 = false;
     std::vector<std::string> choices;       // kChoice: the names of its type (setting_choices.h)
     // kText with a grammar: what it accepts (for range_text) and the check,
     // which throws std::invalid_argument "expected ..., got '...'".
