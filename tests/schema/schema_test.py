@@ -184,12 +184,12 @@ def sweep_mode(binary, schema_dir, work, record):
 def main(argv):
     if len(argv) < 4:
         sys.exit(__doc__)
-    binary, schema_dir, mode = os.path.abspath(argv[1]), argv[2], argv[3]
+    binary, schema_dir, mode = os.path.abspath(argv[1]), os.path.abspath(argv[2]), argv[3]
     with tempfile.TemporaryDirectory() as work:
         if mode == "report" and len(argv) == 6:
             report_mode(binary, schema_dir, work, argv[4], argv[5])
         elif mode == "presets" and len(argv) == 5:
-            presets_mode(binary, schema_dir, work, argv[4])
+            presets_mode(binary, schema_dir, work, os.path.abspath(argv[4]))
         elif mode == "bullet" and len(argv) == 4:
             bullet_mode(binary, schema_dir, work)
         elif mode == "sweep" and len(argv) == 5:
