@@ -86,6 +86,10 @@ foreach(dir models platform sw/timing sw/scene sw/baselines sw/apps sw/bullet sw
   install(DIRECTORY ${CMAKE_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cdvp/${dir}
           FILES_MATCHING PATTERN "*.h" PATTERN "rtl" EXCLUDE PATTERN "boards" EXCLUDE PATTERN "figures" EXCLUDE)
 endforeach()
+# Public headers that moved keep a forwarding header at their old path, which
+# includes the new one and says so (docs/library.md); the source tree has none.
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/cmake/moved_headers/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cdvp
+        FILES_MATCHING PATTERN "*.h")
 set(cdvp_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/cdvp)
 install(EXPORT cdvpTargets NAMESPACE cdvp:: DESTINATION ${cdvp_cmake_dir})
 include(CMakePackageConfigHelpers)

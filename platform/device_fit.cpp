@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "models/common/number_text.h"
 #include "models/common/user_text.h"
 #include "platform/memory_plan.h"
 
@@ -157,8 +158,9 @@ std::optional<std::string> check_clock(const SettingValues& values, uint64_t cap
     const double clock = settings.board.clock_mhz, fmax = timing.fmax_mhz();
     if (clock <= fmax) return std::nullopt;
     const PieceTiming& limit = timing.limiting();
-    const std::string line = values.where(*find_setting("board.clock_mhz")) + ": " + megahertz(clock) +
-                             " is beyond the " + megahertz(fmax) + " the board reaches on the " +
+    const auto [clock_text, fmax_text] = distinct_figures(clock, fmax, 1);
+    const std::string line = values.where(*find_setting("board.clock_mhz")) + ": " + clock_text +
+                             " MHz is beyond the " + fmax_text + " MHz the board reaches on the " +
                              excerpt(settings.device.name) + " (speed grade -" + std::to_string(grade.grade) +
                              (grade.named ? "" : ", the family's slowest") + "): its " + limit.piece + " takes " +
                              nanoseconds(limit.path.ns) + " a cycle (synthesis timing for " +
@@ -196,10 +198,10 @@ nlohmann::json timing_json(const DeviceFit& fit) {
 std::string timing_summary(const DeviceFit& fit) {
     const PieceTiming& limit = fit.timing.limiting();
     const PieceTiming& slowest = fit.timing.slowest();
-    std::string text = "Fmax about " + megahertz(fit.timing.fmax_mhz()) + " at speed grade -" +
-                       std::to_string(fit.speed_grade.grade) + " (its " + limit.piece + ", " +
-                       nanoseconds(limit.path.ns) + ")";
-    if (fit.clock_mhz > fit.timing.fmax_mhz()) text += ", below the " + megahertz(fit.clock_mhz) + " clock";
+    const auto [fmax_text, clock_text] = distinct_figures(fit.timing.fmax_mhz(), fit.clock_mhz, 1);
+    std::string text = "Fmax about " + fmax_text + " MHz at speed grade -" + std::to_string(fit.speed_grade.grade) +
+                       " (its " + limit.piece + ", " + nanoseconds(limit.path.ns) + ")";
+    if (fit.clock_mhz > fit.timing.fmax_mhz()) text += ", below the " + clock_text + " MHz clock";
     if (&slowest != &limit) text += "; its " + slowest.piece + " as written: " + megahertz(slowest.path.fmax_mhz());
     return text;
 }

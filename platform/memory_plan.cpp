@@ -109,7 +109,8 @@ namespace cdvp {
 void check_grid_fits(const SettingValues& values, uint64_t objects, const std::string& objects_text) {
     const Settings& settings = values.settings();
     if (!settings.board.grid_board() || settings.run.ignore_capacity) return;
-    const std::string explore = "; --ignore-capacity runs it anyway";
+    const std::string explore = "; " + values.names().setting_to(*find_setting("run.ignore_capacity"), "yes") +
+                                " runs it anyway";
     const DeviceSettings& device = settings.device;
     const BoardConfig board = planned_board(settings, objects);
     const uint64_t block_rams = board.block_rams(objects);
@@ -127,6 +128,24 @@ void check_grid_fits(const SettingValues& values, uint64_t objects, const std::s
         throw InputError(values.where(*find_setting("device.ssram_banks")) +
                          ": the device has no off-chip SSRAM (0 banks); the grid board keeps its boxes and cell "
                          "lists there" + explore);
+    }
+    const uint64_t dims = settings.board.grid.dims;
+    const uint64_t count_table = 3 * settings.board.grid.cells_for(objects);
+    const uint64_t others = grid.fixed_words - count_table;  // boxes, large list, pair buffer
+    if (!grid.fits && dims != 0 && count_table > others) {
+        // The grid's own size is what does not fit: name it, and the largest that would.
+        uint64_t largest = 0;
+        while (largest < dims && others + 3 * (largest + 1) * (largest + 1) * (largest + 1) <= grid.words) ++largest;
+        throw InputError(values.where(*find_setting("board.grid.dims")) + ": a grid of " + std::to_string(dims) +
+                         "^3 cells needs a count table of 3G^3 = " + std::to_string(count_table) +
+                         " words, which with the " + std::to_string(others) +
+                         " words of the boxes, large list and pair buffer at " + objects_text + " is more than the " +
+                         std::to_string(grid.words) +
+                         " words of SSRAM (" + values.value_and_origin(*find_setting("device.ssram_banks")) + " of " +
+                         values.value_and_origin(*find_setting("device.ssram_words")) + "); expected " +
+                         (largest == 0 ? std::string("0 (fitted to each frame)")
+                                       : "at most " + std::to_string(largest) + " cells a side, or 0 (fitted)") +
+                         explore);
     }
     if (!grid.fits) {
         throw InputError(values.where(*find_setting("device.ssram_words")) + ": " + std::to_string(device.ssram_words) +

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -26,6 +27,17 @@ std::string show_number(double value) {
         return std::to_string(static_cast<int64_t>(value));
     }
     return show(value);
+}
+
+std::pair<std::string, std::string> distinct_figures(double a, double b, int decimals) {
+    const auto fixed = [](double value, int places) {
+        char text[400];
+        std::snprintf(text, sizeof text, "%.*f", places, value);
+        return std::string(text);
+    };
+    int places = decimals;
+    while (a != b && places < 12 && fixed(a, places) == fixed(b, places)) ++places;
+    return {fixed(a, places), fixed(b, places)};
 }
 
 std::string describe_range(double min, double max) { return show_number(min) + " to " + show_number(max); }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 
 namespace cdvp {
 
@@ -17,5 +18,10 @@ std::string describe_range(double min, double max);
 std::string describe_range(uint64_t min, uint64_t max);
 // Whole numbers in full (1048576, not 1.04858e+06); others as %g.
 std::string show_number(double value);
+// Two figures a message compares ("96.2 MHz is beyond the 96.19 MHz"): each
+// to 'decimals' places, or to as many more (up to 12) as it takes for the two
+// texts to differ when the values do, so a refusal never reads "96.2 is
+// beyond 96.2".
+std::pair<std::string, std::string> distinct_figures(double a, double b, int decimals);
 
 }  // namespace cdvp

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "models/control_registers/control_registers.h"
+#include "models/common/number_text.h"
 #include "models/pci/dma_registers.h"
 #include "models/pair_collector/pair_format.h"
 #include "platform/driver/driver_text.h"
@@ -103,9 +104,10 @@ SimTime PortExecutor::timeout_for(double worst_ns) const {
     const double timeout_ns = time_->timeout_ns(worst_ns);
     const double now_ns = ns_from_fs(port_.now());
     if (!(now_ns + timeout_ns <= ns_from_fs(kSimulatedTimeLimit))) {
+        const auto [until_s, limit_s] =
+            distinct_figures((now_ns + timeout_ns) * 1e-9, ns_from_fs(kSimulatedTimeLimit) * 1e-9, 3);
         throw SimulatedTimeLimit("a wait from " + simulated_seconds(now_ns) + " of simulated time could last until " +
-                                 simulated_seconds(now_ns + timeout_ns) + ", past the limit of " +
-                                 simulated_seconds(ns_from_fs(kSimulatedTimeLimit)) +
+                                 until_s + " s, past the limit of " + limit_s + " s" +
                                  " (2^63 fs, half SystemC's 64-bit femtosecond clock)");
     }
     return fs_from_ns(timeout_ns);

@@ -40,7 +40,9 @@ public:
         const json& object = section.empty() ? root_ : this->section(section);
         for (const auto& [key, value] : object.items()) {
             if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
-                fail(qualified(section, excerpt(key)) + ": unknown key; did you mean '" + nearest_name(key, keys) + "'?");
+                const std::optional<std::string> nearest = nearest_name(key, keys);
+                fail(qualified(section, excerpt(key)) + ": unknown key" +
+                     (nearest ? "; did you mean '" + *nearest + "'?" : ""));
             }
         }
     }
@@ -119,7 +121,8 @@ void refuse_undeclared_keys(const PresetReader& r, const std::string& section, B
             r.fail(known->name + ": not a preset key: the user's choice" +
                    (known->flag.empty() ? "" : " (--" + known->flag + " or -c " + known->name + ")"));
         }
-        r.fail(section + "." + excerpt(key) + ": unknown key; did you mean '" + nearest_name(key, keys) + "'?");
+        const std::optional<std::string> nearest = nearest_name(key, keys);
+        r.fail(section + "." + excerpt(key) + ": unknown key" + (nearest ? "; did you mean '" + *nearest + "'?" : ""));
     }
 }
 

@@ -19,8 +19,8 @@ using nlohmann::json;
 // The setting called 'name', or a refusal naming the nearest one.
 const Setting& setting_named(const std::string& where, const std::string& name) {
     if (const Setting* s = find_setting(name)) return *s;
-    throw InputError(where + excerpt(name) + ": unknown setting; did you mean '" + nearest_name(name, setting_names()) +
-                     "'?");
+    const std::optional<std::string> nearest = nearest_name(name, setting_names());
+    throw InputError(where + excerpt(name) + ": unknown setting" + (nearest ? "; did you mean '" + *nearest + "'?" : ""));
 }
 
 // Collects a file's settings, each with its origin; 'where' prefixes refusals.

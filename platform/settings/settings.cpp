@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "models/common/number_text.h"
@@ -104,10 +105,25 @@ std::string Setting::range_text() const {
     return "";
 }
 
+namespace {
+
+// A real setting's value as the board holds it: one held in a float must be
+// 0 or a normal float32 (FLT_MIN up), or the board would hold 0 or a denormal.
+double held_value(const Setting& s, double value, const std::string& shown) {
+    if (!s.float32 || value == 0 || std::abs(value) >= std::numeric_limits<float>::min()) return value;
+    const double least = std::max(s.min, static_cast<double>(std::numeric_limits<float>::min()));
+    throw std::invalid_argument("expected " + (s.min <= 0 ? std::string("0 or ") : std::string()) +
+                                show_number(least) + " to " + show_number(s.max) + (s.unit.empty() ? "" : " " + s.unit) +
+                                " (the board holds it as a float32, whose least normal value is about 1.2e-38), got " +
+                                shown);
+}
+
+}  // namespace
+
 SettingValue Setting::parse_text(const std::string& text) const {
     switch (type) {
         case SettingType::kCount: return parse_integer_text(text, count_min, count_max);
-        case SettingType::kReal: return parse_real_text(text, min, max);
+        case SettingType::kReal: return held_value(*this, parse_real_text(text, min, max), "'" + excerpt(text) + "'");
         case SettingType::kChoice:
         case SettingType::kText: return from_string(text);
     }
@@ -126,7 +142,7 @@ SettingValue Setting::from_number(double value, const std::string& shown) const 
         throw std::invalid_argument("expected " + show_number(lo) + " to " + show_number(hi) + unit_text + ", got " +
                                     shown);
     }
-    if (type == SettingType::kReal) return value;
+    if (type == SettingType::kReal) return held_value(*this, value, shown);
     if (value != std::floor(value)) throw std::invalid_argument("expected a whole number of" + unit_text + ", got " + shown);
     return static_cast<uint64_t>(value);
 }
@@ -177,10 +193,21 @@ std::vector<std::string> setting_names() {
     return names;
 }
 
-std::string nearest_name(const std::string& name, const std::vector<std::string>& names) {
-    return *std::min_element(names.begin(), names.end(), [&](const std::string& x, const std::string& y) {
+std::optional<std::string> nearest_name(const std::string& name, const std::vector<std::string>& names) {
+    if (names.empty()) return std::nullopt;
+    const std::string& nearest = *std::min_element(names.begin(), names.end(), [&](const std::string& x, const std::string& y) {
         return edit_distance(name, x) < edit_distance(name, y);
     });
+    const auto last_part = [](const std::string& text) { return text.substr(text.rfind('.') + 1); };
+    const std::string own = last_part(name), theirs = last_part(nearest);
+    if (edit_distance(name, nearest) <= std::max<std::size_t>(2, own.size() / 2)) return nearest;
+    const std::size_t word = own.find('_');
+    if (word != std::string::npos && word >= 3 && theirs.compare(0, word + 1, own, 0, word + 1) == 0 &&
+        name.size() - own.size() == nearest.size() - theirs.size() &&
+        name.compare(0, name.size() - own.size(), nearest, 0, nearest.size() - theirs.size()) == 0) {
+        return nearest;
+    }
+    return std::nullopt;
 }
 
 std::string to_text(const SettingValue& value) {

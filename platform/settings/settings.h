@@ -151,6 +151,10 @@ struct Setting {
     std::string unit;
     uint64_t count_min = 0, count_max = 0;  // kCount
     double min = 0, max = 0;                // kReal
+    // kReal held in a float (binary32) on the board: a value other than 0 must
+    // be a normal float32 (at least FLT_MIN in size), or the board would hold
+    // 0 or a denormal in its place while the report recorded the value given.
+    bool float32 = false;
     std::vector<std::string> choices;       // kChoice: the names of its type (setting_choices.h)
     // kText with a grammar: what it accepts (for range_text) and the check,
     // which throws std::invalid_argument "expected ..., got '...'".
@@ -192,8 +196,12 @@ const std::vector<Setting>& settings_table();
 const Setting* find_setting(const std::string& name);
 // A setting the code names itself: std::logic_error if the table lacks it.
 const Setting& declared_setting(const std::string& name);
-// The name in 'names' nearest to 'name' (edit distance).
-std::string nearest_name(const std::string& name, const std::vector<std::string>& names);
+// The name in 'names' a typo of 'name' was likely meant to be: the nearest
+// by edit distance, when within a typo's reach of it (half the characters
+// of the name's last dotted part, at least 2) or when it spells the same
+// first word ("call_nanoseconds": "call_ns"); otherwise nothing, so that a
+// name far from every one gets no suggestion.
+std::optional<std::string> nearest_name(const std::string& name, const std::vector<std::string>& names);
 std::vector<std::string> setting_names();
 // A value as text: integers in full, reals as %g, strings as they are.
 std::string to_text(const SettingValue& value);

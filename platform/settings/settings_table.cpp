@@ -30,6 +30,7 @@ using Setter = std::function<void(Settings&, const SettingValue&)>;
 struct Binding {
     Getter get;
     Setter set;
+    bool float32 = false;  // the member is a float
 };
 
 // Follows a path of member pointers: reach(s, &Settings::board, &BoardConfig::m) is s.board.m.
@@ -69,7 +70,8 @@ Binding member(Path... path) {
                 else if constexpr (std::is_same_v<T, std::string>) field = std::get<std::string>(value);
                 else if constexpr (std::is_floating_point_v<T>) field = static_cast<T>(std::get<double>(value));
                 else field = static_cast<T>(std::get<uint64_t>(value));
-            }};
+            },
+            std::is_same_v<std::decay_t<decltype(reach(std::declval<const Settings&>(), path...))>, float>};
 }
 
 Setting base(const char* name, SettingType type, const char* unit, Binding b, const char* help, const char* source) {
@@ -79,6 +81,7 @@ Setting base(const char* name, SettingType type, const char* unit, Binding b, co
     s.unit = unit;
     s.get_pci = std::move(b.get);
     s.set_pci = std::move(b.set);
+    s.float32 = b.float32;
     s.help = help;
     s.source = source;
     return s;

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "models/common/user_text.h"
+#include "models/common/number_text.h"
 #include "platform/settings/board_preset.h"
 #include "sw/run/machine_info.h"
 #include "sw/baselines/broad_phase.h"
@@ -181,11 +182,12 @@ std::string worst_words(const HostProfile& p) {
 
 // One line: why this profile is poor, and what to do.
 std::string poor_words(const HostProfile& p) {
-    char line[512];
+    const auto [spread, target] = distinct_figures(100 * p.spread, 100 * p.target_spread, 1);
+    char line[600];
     std::snprintf(line, sizeof line,
-                  "the reference workload's runs stayed %.1f%% apart (%s), over the %.1f%% asked for, after %u runs "
+                  "the reference workload's runs stayed %s%% apart (%s), over the %s%% asked for, after %u runs "
                   "in %.0f s at load %.2f to %.2f (%llu frames disturbed)",
-                  100 * p.spread, worst_words(p).c_str(), 100 * p.target_spread, p.runs, p.seconds,
+                  spread.c_str(), worst_words(p).c_str(), target.c_str(), p.runs, p.seconds,
                   p.load_average_start[0], p.load_average_end[0], static_cast<unsigned long long>(p.disturbed_frames));
     return line;
 }

@@ -154,11 +154,9 @@ std::optional<std::string> nearest_option(const std::string& typed, const po::op
     for (const auto& option : options.options()) {
         if (!option->long_name().empty()) names.push_back(option->long_name());
     }
-    if (names.empty()) return std::nullopt;
-    const std::string nearest = nearest_name(name, names);
-    const std::size_t allowed = std::max<std::size_t>(2, name.size() / 2);
-    if (edit_distance(name, nearest) > allowed) return std::nullopt;
-    return "--" + nearest;
+    const std::optional<std::string> nearest = nearest_name(name, names);
+    if (!nearest) return std::nullopt;
+    return "--" + *nearest;
 }
 
 }  // namespace

@@ -33,8 +33,9 @@ constexpr const char* kSettingsHelp =
     "With --board, --config or -c: the settings a run with those layers would use, each with its\n"
     "value and where it came from (the default, the preset file and key, the config file and line,\n"
     "-c), checked by the code cdvp run checks its settings with (all but the checks against a run's\n"
-    "frames and outputs), so that what run refuses of them settings refuses in the same words; --json\n"
-    "prints an array of {name, value, origin}.\n";
+    "frames and outputs; the clock is held to the device's estimated Fmax at scene.objects boxes), so\n"
+    "that what run refuses of them settings refuses in the same words; --json prints an array of\n"
+    "{name, value, origin}.\n";
 
 const char* type_name(SettingType type) {
     switch (type) {
@@ -142,7 +143,9 @@ int resolved_settings(int argc, char** argv) {
         throw InputError(option_error_text(e, "cdvp settings", &options));
     }
     // Exactly cdvp run's checks of its settings; the frames are not named here.
-    const SettingValues values = checked_board_setup(setting_layers_of(layers, vm), std::nullopt).values;
+    const BoardSetup setup = checked_board_setup(setting_layers_of(layers, vm), std::nullopt);
+    const SettingValues& values = setup.values;
+    if (setup.clock_warning) std::cerr << "cdvp settings: " << *setup.clock_warning << "\n";
     nlohmann::json all = nlohmann::json::array();
     std::ostringstream text;
     for (const Setting* s : values.effective()) {

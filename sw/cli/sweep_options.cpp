@@ -140,8 +140,9 @@ void resolve_axis(Axis& axis, const std::string& label, const std::set<std::stri
         return;
     }
     if (run_flags.count(axis.name) == 0) {
-        throw InputError(label + ": no flag of cdvp run or setting has this name; the nearest is '" +
-                         nearest_name(axis.name, axis_names(run_flags)) + "' (see cdvp run --help, cdvp settings)");
+        const std::optional<std::string> nearest = nearest_name(axis.name, axis_names(run_flags));
+        throw InputError(label + ": no flag of cdvp run or setting has this name" +
+                         (nearest ? "; the nearest is '" + *nearest + "'" : "") + " (see cdvp run --help, cdvp settings)");
     }
     axis.key = axis.flag = axis.name;
     // Refused here, naming the file and key or line, rather than by every point.

@@ -152,8 +152,10 @@ void set_keyword(RunSpec& spec, const std::string& key, py::handle value, const 
         for (const Setting& setting : settings_table()) {
             if (!setting.flag.empty()) keywords.push_back(keyword_of(setting));
         }
-        throw py::type_error(function + "() got an unexpected keyword argument '" + key + "' (the nearest is '" +
-                             nearest_name(key, keywords) + "'; any setting goes in settings={NAME: VALUE})");
+        const std::optional<std::string> nearest = nearest_name(key, keywords);
+        throw py::type_error(function + "() got an unexpected keyword argument '" + printable(key) + "' (" +
+                             (nearest ? "the nearest is '" + *nearest + "'; " : "") +
+                             "any setting goes in settings={NAME: VALUE})");
     }
 }
 
@@ -166,8 +168,9 @@ void set_settings(RunSpec& spec, py::handle settings) {
         const std::string label = "settings['" + printable(key) + "']";
         const Setting* s = find_setting(key);
         if (s == nullptr) {
-            throw InputError(label + ": no setting has this name; the nearest is '" + nearest_name(key, setting_names()) +
-                             "' (cdvp.settings() lists them)");
+            const std::optional<std::string> nearest = nearest_name(key, setting_names());
+            throw InputError(label + ": no setting has this name" +
+                             (nearest ? "; the nearest is '" + *nearest + "'" : "") + " (cdvp.settings() lists them)");
         }
         if (!value.is_none()) spec.settings.given.push_back(given(*s, value, label));
     }
@@ -185,8 +188,9 @@ Axis axis_of(const std::string& name, py::handle values, const std::string& labe
         for (const Setting& setting : settings_table()) {
             if (!setting.flag.empty()) names.push_back(keyword_of(setting));
         }
-        throw InputError(label + ": no setting or input has this name; the nearest is '" + nearest_name(name, names) +
-                         "' (cdvp.settings() lists the settings)");
+        const std::optional<std::string> nearest = nearest_name(name, names);
+        throw InputError(label + ": no setting or input has this name" +
+                         (nearest ? "; the nearest is '" + *nearest + "'" : "") + " (cdvp.settings() lists the settings)");
     }
     axis.key = s != nullptr ? s->name : name;
     axis.flag = s != nullptr ? (s->value_name.empty() ? std::string() : s->flag) : name;

@@ -153,9 +153,10 @@ HostTiming resolve_host_timing(const SettingValues& values) {
 
 std::string uncalibrated_note(const HostTiming& timing) {
     if (timing.profile_poor()) {
-        char text[160];
-        std::snprintf(text, sizeof text, "its runs stayed %.1f%% apart, over the %.1f%% it was asked for, at load %.2f",
-                      100 * timing.profile_spread, 100 * timing.profile_target_spread, timing.profile_load[0]);
+        const auto [spread, target] = distinct_figures(100 * timing.profile_spread, 100 * timing.profile_target_spread, 1);
+        char text[200];
+        std::snprintf(text, sizeof text, "its runs stayed %s%% apart, over the %s%% it was asked for, at load %.2f",
+                      spread.c_str(), target.c_str(), timing.profile_load[0]);
         return "host factors rest on a poor profile, " + printable(timing.profile_path) + ": " + text +
                " (cdvp calibrate on a quieter machine; docs/timing.md)";
     }

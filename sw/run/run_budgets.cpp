@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "models/common/user_text.h"
+#include "models/common/number_text.h"
 #include "models/control_registers/control_registers.h"
 #include "platform/memory_plan.h"
 #include "sw/run/run_checks.h"
@@ -161,12 +162,13 @@ void RunBudgets::check_time(uint64_t max_objects, uint64_t frames) const {
     const double total_ns = static_cast<double>(frames) * frame_ns + (faults + 1) * timeout_ns;
     const double limit_ns = ns_from_fs(kSimulatedTimeLimit);
     if (total_ns <= limit_ns) return;
+    const auto [total_s, limit_s] = distinct_figures(total_ns * 1e-9, limit_ns * 1e-9, 3);
     throw InputError("a run of " + frames_text(frames) + " of up to " + objects_text(max_objects) + " at " +
                      values_.value_and_origin(declared_setting("board.m")) + " and " +
                      values_.value_and_origin(declared_setting("board.clock_mhz")) + " would reach " +
-                     simulated_seconds(total_ns) + " of simulated time (up to " + simulated_seconds(frame_ns) +
+                     total_s + " s of simulated time (up to " + simulated_seconds(frame_ns) +
                      " a frame before any pair, and the deadline of its longest wait " +
-                     simulated_seconds(timeout_ns) + " later), past the limit of " + simulated_seconds(limit_ns) +
+                     simulated_seconds(timeout_ns) + " later), past the limit of " + limit_s + " s" +
                      " (2^63 fs, half SystemC's 64-bit femtosecond clock): use fewer objects or frames, or a larger m");
 }
 

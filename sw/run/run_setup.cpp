@@ -80,6 +80,14 @@ BoardSetup checked_board_setup(const SettingLayers& layers, const std::optional<
                          ") times a host that synchronises at every access; expected 0 (docs/analytic.md)");
     }
     setup.host = resolve_host_timing(values);
+    // A CPU the run could never pin to is refused here, in the caller's words
+    // (a run in a child would otherwise refuse it in the command line's).
+    if (const std::optional<uint32_t> cpu = values.settings().run.pinned_cpu()) {
+        if (const std::optional<std::string> refused = unpinnable_cpu(*cpu)) {
+            throw InputError(values.where(*find_setting("run.pin_cpu")) + ": " + *refused);
+        }
+    }
+    if (!scene) setup.clock_warning = check_clock(values, values.settings().scene.objects);
     return setup;
 }
 

@@ -29,6 +29,9 @@ struct BoardSetup {
     std::string board = "ideal";  // the preset's name
     ModelLevel level = ModelLevel::kFast;  // as the run goes: waveforms pick cycle (model_level)
     HostTiming host;              // from native to modelled-host time
+    // Without frames (cdvp settings): the clock's warning under
+    // run.ignore_timing, from checked_board_setup's check of it.
+    std::optional<std::string> clock_warning;
 };
 
 // The settings, each layer over the last. scene: the generated scene's name
@@ -49,9 +52,13 @@ BoardSetup board_setup(const SettingLayers& layers, const std::optional<std::str
 // Every check cdvp run makes of its settings alone, whatever its frames and
 // outputs: board_setup's, the level's (model_level without waveforms: the
 // lockstep and the error bound against the fidelity; the analytic level's
-// quantum) and the host profile's (sets setup.host). cdvp run, cdvp bullet
+// quantum) and the host profile's (sets setup.host); with no scene (cdvp
+// settings), the clock against the device's estimated Fmax too, at the
+// scene.objects boxes a generated scene would have (a run checks it at its
+// frames' boxes: check_scene_fits). cdvp run, cdvp bullet
 // and cdvp settings all come through here, so that each refuses the same
-// settings in the same words (run.pin_cpu is tried when a run pins). Throws
+// settings in the same words (run.pin_cpu is held to the CPUs this process
+// may run on here, and tried when a run pins). Throws
 // InputError.
 BoardSetup checked_board_setup(const SettingLayers& layers, const std::optional<std::string>& scene);
 

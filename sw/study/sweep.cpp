@@ -108,39 +108,42 @@ void remove_stale_temporaries(const std::string& dir) {
     }
 }
 
-// Refuses an --out that holds another sweep, another shard of this one, or
-// files that are no sweep's.
-void check_out_dir(const std::string& out, const std::optional<Manifest>& existing, const Manifest& wanted) {
-    const std::string dir = excerpt(out);
+// Refuses an OUT that holds another sweep, another shard of this one, or
+// files that are no sweep's, naming OUT and the shard as the face does
+// (--out, out=).
+void check_out_dir(const std::string& out, const std::optional<Manifest>& existing, const Manifest& wanted,
+                   const SettingNames& names) {
+    const std::string dir = excerpt(out), out_name = names.input("out");
     if (existing) {
-        if (const std::optional<SweepDifference> other = difference(*existing, wanted)) {
+        if (const std::optional<SweepDifference> other = difference(*existing, wanted, &names)) {
             if (other->input_changed) {
-                throw InputError("--out: " + dir + ": " + other->what + ": restore it to resume, or give a new --out");
+                throw InputError(out_name + ": " + dir + ": " + other->what + ": restore it to resume, or give a new " +
+                                 out_name);
             }
-            throw InputError("--out: " + dir + " holds another sweep (" + other->what +
-                             "); give a new --out, or the same command to resume it");
+            throw InputError(out_name + ": " + dir + " holds another sweep (" + other->what + "); give a new " +
+                             out_name + ", or the same command to resume it");
         }
         if (existing->shard.text() != wanted.shard.text()) {
-            throw InputError("--out: " + dir + " holds shard " + existing->shard.text() + " of this sweep, not " +
-                             wanted.shard.text() + "; give the same --shard, or a new --out");
+            throw InputError(out_name + ": " + dir + " holds shard " + existing->shard.text() + " of this sweep, not " +
+                             wanted.shard.text() + "; give the same " + names.input("shard") + ", or a new " + out_name);
         }
         return;
     }
     // What a sweep killed before its manifest was written leaves (its empty
     // directories, a temporary) is no other sweep's: it starts over there.
-    std::vector<std::string> names;
+    std::vector<std::string> held;
     for (const std::string& name : directory_contents(out)) {
         const fs::path path = fs::path(out) / name;
         std::error_code error;
         const bool own_empty_directory = (path == fs::path(points_dir(out)) || path == fs::path(software_timings_dir(out))) &&
                                          fs::is_directory(path, error) && fs::is_empty(path, error);
-        if (!own_empty_directory && name.find(".part-") == std::string::npos) names.push_back(name);
+        if (!own_empty_directory && name.find(".part-") == std::string::npos) held.push_back(name);
     }
-    if (!names.empty()) {
-        throw InputError("--out: " + dir + " holds " + excerpt(names.front()) +
-                         (names.size() > 1 ? " and " + std::to_string(names.size() - 1) + " more" : std::string()) +
+    if (!held.empty()) {
+        throw InputError(out_name + ": " + dir + " holds " + excerpt(held.front()) +
+                         (held.size() > 1 ? " and " + std::to_string(held.size() - 1) + " more" : std::string()) +
                          " but no sweep.json: not a sweep's directory, or one whose manifest is gone; give a new or "
-                         "empty --out");
+                         "empty " + out_name);
     }
 }
 
@@ -190,7 +193,7 @@ struct OpenSweep {
                                                                                                   : "OUT/software";
         const Manifest wanted{grid.axes(), to_arguments(o.run), inputs.digests(), o.shard, kCdvpVersion, o.record, timings_named};
         existing = read_manifest(manifest_path(o.out_dir));
-        check_out_dir(o.out_dir, existing, wanted);
+        check_out_dir(o.out_dir, existing, wanted, *o.run.settings.names);
         remove_stale_temporaries(o.out_dir);
         const TableRead read = read_table(o.out_dir, grid, o.shard, table, o.rerun_invalid, o.record);
         if (!o.quiet) {

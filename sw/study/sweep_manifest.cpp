@@ -227,7 +227,8 @@ std::optional<std::string> moved_beyond_tolerance(const json& then, const json& 
 
 }  // namespace
 
-std::optional<SweepDifference> difference(const Manifest& existing, const Manifest& wanted) {
+std::optional<SweepDifference> difference(const Manifest& existing, const Manifest& wanted, const SettingNames* names) {
+    const auto option = [names](const std::string& key) { return names != nullptr ? names->input(key) : "--" + key; };
     const auto other = [](std::string what) { return std::optional<SweepDifference>({std::move(what), false}); };
     if (existing.cdvp_version != wanted.cdvp_version) {
         return other("a sweep of cdvp " + excerpt(existing.cdvp_version) + ", this is " + wanted.cdvp_version);
@@ -241,11 +242,11 @@ std::optional<SweepDifference> difference(const Manifest& existing, const Manife
     }
     if (existing.run_options != wanted.run_options) return other("other options given to every point");
     if (existing.record != wanted.record) {
-        return other(std::string("--record ") + to_string(existing.record) + ", not " + to_string(wanted.record));
+        return other(option("record") + " " + to_string(existing.record) + ", not " + to_string(wanted.record));
     }
     if (existing.software_timings != wanted.software_timings) {
         return other("software timings shared through '" + excerpt(existing.software_timings) + "', not '" +
-                     excerpt(wanted.software_timings) + "' (--software-timings)");
+                     excerpt(wanted.software_timings) + "' (" + option("software-timings") + ")");
     }
     if (existing.inputs.size() != wanted.inputs.size()) return other("other input files");
     for (std::size_t k = 0; k < existing.inputs.size(); ++k) {

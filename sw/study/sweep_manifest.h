@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "platform/settings/setting_names.h"
 #include "sw/study/sweep_grid.h"
 
 namespace cdvp {
@@ -72,6 +73,9 @@ struct SweepDifference {
     std::string what;
     bool input_changed = false;  // the same sweep, over a file that is not what it read
 };
-std::optional<SweepDifference> difference(const Manifest& existing, const Manifest& wanted);
+// names: how the face names the sweep's options (--record, record=); null:
+// the command line's.
+std::optional<SweepDifference> difference(const Manifest& existing, const Manifest& wanted,
+                                          const SettingNames* names = nullptr);
 
 }  // namespace cdvp

@@ -55,6 +55,15 @@ CallTiming CallTimer::since(const Mark& start) {
 }
 
 std::optional<std::string> pin_thread_to_cpu(uint32_t cpu) {
+    if (std::optional<std::string> refused = unpinnable_cpu(cpu)) return refused;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(cpu, &one);
+    if (sched_setaffinity(0, sizeof one, &one) != 0) return "cannot pin to CPU " + std::to_string(cpu) + ": " + std::strerror(errno);
+    return std::nullopt;
+}
+
+std::optional<std::string> unpinnable_cpu(uint32_t cpu) {
     cpu_set_t allowed;
     CPU_ZERO(&allowed);
     if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return std::string("cannot read this process's CPUs: ") + std::strerror(errno);
@@ -65,10 +74,6 @@ std::optional<std::string> pin_thread_to_cpu(uint32_t cpu) {
         }
         return "CPU " + std::to_string(cpu) + " is not one this process may run on (" + list + ")";
     }
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    CPU_SET(cpu, &one);
-    if (sched_setaffinity(0, sizeof one, &one) != 0) return "cannot pin to CPU " + std::to_string(cpu) + ": " + std::strerror(errno);
     return std::nullopt;
 }
 

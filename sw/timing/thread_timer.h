@@ -49,8 +49,11 @@ private:
 // CallTimer times as a whole.
 int64_t thread_cpu_ns();
 
-// Pins the calling thread to one CPU (--pin-cpu); the reason it could not
+// Pins the calling thread to one CPU (run.pin_cpu); the reason it could not
 // (no such CPU, not in the process's allowed set), or nothing.
 std::optional<std::string> pin_thread_to_cpu(uint32_t cpu);
+// Why this process could not be pinned to 'cpu' (not in its allowed set),
+// or nothing: pin_thread_to_cpu's check, without pinning.
+std::optional<std::string> unpinnable_cpu(uint32_t cpu);
 
 }  // namespace cdvp

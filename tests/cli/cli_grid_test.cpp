@@ -94,5 +94,43 @@ TEST_F(CliGrid, ScenesPastTheCellBufferOrTheSsramAreRefused) {
     EXPECT_EQ(files(), std::vector<std::string>{}) << "a refused run leaves no output";
 }
 
+// A refusal a setting causes names that setting: a grid too large for the
+// SSRAM names board.grid.dims and the largest that fits, not the objects or
+// the pair buffer; a cell size the board's float32 cannot hold (it would be 0,
+// the fitted grid, while the report recorded the value) is refused naming the
+// setting and the range.
+TEST_F(CliGrid, ARefusalCausedByAGridSettingNamesIt) {
+    const Result large = run(spheres(40, 1) + "-c board.algorithm=grid -c board.grid.dims=256");
+    expect_refusal(large, "cdvp run: -c board.grid.dims: a grid of 256^3 cells needs a count table of 3G^3 = 50331648 "
+                          "words, which with the ");
+    EXPECT_NE(large.err.find(" words of the boxes, large list and pair buffer at 40 objects (--objects) is more than "
+                             "the 3145728 words of SSRAM (6 banks ("),
+              std::string::npos)
+        << large.err;
+    EXPECT_NE(large.err.find("expected at most "), std::string::npos) << large.err;
+    EXPECT_NE(large.err.find(" cells a side, or 0 (fitted); --ignore-capacity runs it anyway\n"), std::string::npos)
+        << large.err;
+    const std::size_t at = large.err.find("expected at most ") + 17;
+    const std::string largest = large.err.substr(at, large.err.find(' ', at) - at);
+    ASSERT_EQ(run(spheres(40, 1) + "-c board.algorithm=grid -c board.grid.dims=" + largest).status, 0)
+        << "the largest it names fits";
+    for (const char* tiny : {"1e-50", "1e-40", "-0"}) {
+        SCOPED_TRACE(tiny);
+        const Result r = run(spheres(40, 1) + "-c board.algorithm=grid -c board.grid.cell_size=" + tiny);
+        if (std::string(tiny) == "-0") {
+            EXPECT_EQ(r.status, 0) << r.err;
+            continue;
+        }
+        expect_refusal(r, "cdvp run: -c board.grid.cell_size: expected 0 or 1.17549e-38 to 1e+30 coordinate units (the "
+                          "board holds it as a float32, whose least normal value is about 1.2e-38), got '" +
+                              std::string(tiny) + "'\n");
+    }
+    write("c.toml", "[board.grid]\ncell_size = 1e-45\n");
+    expect_refusal(run(spheres(40, 1) + "-c board.algorithm=grid --config c.toml"),
+                   "cdvp run: c.toml:2: board.grid.cell_size: expected 0 or 1.17549e-38 to 1e+30");
+    ASSERT_EQ(run(spheres(40, 1) + "-c board.algorithm=grid -c board.grid.cell_size=1e-30").status, 0);
+    EXPECT_EQ(files(), std::vector<std::string>{"c.toml"}) << "a refused run leaves no output";
+}
+
 }  // namespace
 }  // namespace cdvp::test

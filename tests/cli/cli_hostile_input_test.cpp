@@ -124,7 +124,7 @@ TEST_F(Cli, DeeplyNestedPresetsAndConfigFilesAreRefusedNotACrash) {
     expect_refused(run(run_with + "--board limit.json"), "limit.json: name: expected a non-empty string\n");
     const Result config_at_limit = run(run_with + "--config limit.toml");
     expect_refused(config_at_limit, "limit.toml:2: board.board.board.");
-    EXPECT_NE(config_at_limit.err.find(": unknown setting; did you mean '"), std::string::npos) << config_at_limit.err;
+    EXPECT_NE(config_at_limit.err.find(": unknown setting"), std::string::npos) << config_at_limit.err;
     EXPECT_EQ(files(), (std::vector<std::string>{"deep.json", "deep_arrays.json", "dotted.toml", "headers.toml",
                                                  "limit.json", "limit.toml"}));
 }

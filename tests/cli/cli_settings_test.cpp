@@ -232,5 +232,47 @@ TEST_F(Cli, SettingsShowWhatAPresetConfigAndOverridesResolveTo) {
     expect_refusal(run("settings -c board.mm=3"), "cdvp settings: -c board.mm: unknown setting; did you mean 'board.m'?");
 }
 
+// "Did you mean" only for a typo's distance: a name far from every setting
+// gets none, wherever a name is looked up (-c, a config file, a preset, a
+// sweep axis, an option).
+TEST_F(Cli, ANameFarFromEverySettingGetsNoSuggestion) {
+    expect_refusal(run("settings -c device.speed_grade=5"), "cdvp settings: -c device.speed_grade: unknown setting\n");
+    expect_refusal(run("run --scene spheres -c device.speed_grade=5"),
+                   "cdvp run: -c device.speed_grade: unknown setting\n");
+    write("c.toml", "[board]\nwhatever_you_like = 3\n");
+    expect_refusal(run("run --scene spheres --config c.toml"), "cdvp run: c.toml:2: board.whatever_you_like: unknown setting\n");
+    expect_refusal(run("sweep --out o --set speed_grade=1,2 --scene spheres"),
+                   "cdvp sweep: --set speed_grade: no flag of cdvp run or setting has this name (see cdvp run --help, "
+                   "cdvp settings)");
+    expect_refusal(run("run --scene spheres --speed-grade 5"),
+                   "cdvp run: unrecognised option '--speed-grade' (see cdvp run --help)");
+    // A typo still gets its suggestion.
+    expect_refusal(run("settings -c device.block_ram=5"),
+                   "cdvp settings: -c device.block_ram: unknown setting; did you mean 'device.block_rams'?\n");
+}
+
+// cdvp settings makes every check cdvp run makes of the settings alone: the
+// clock against the device's estimate too, refused in the same words.
+TEST_F(Cli, SettingsRefuseAClockTheDeviceCannotReachAsRunDoes) {
+    for (const std::string board : {"adm-xrc-ii", "alveo-u250"}) {
+        for (const std::string algorithm : {"all_pairs", "grid"}) {
+            SCOPED_TRACE(board + " " + algorithm);
+            const std::string layers = "--board " + board + " -c board.algorithm=" + algorithm + " -c board.clock_mhz=900";
+            const Result ran = run("run --scene spheres --frames 1 " + layers);
+            const Result listed = run("settings " + layers);
+            ASSERT_NE(ran.status, 0) << ran.err;
+            EXPECT_EQ(listed.status, ran.status) << listed.err;
+            EXPECT_EQ(listed.out, "");
+            ASSERT_EQ(ran.err.rfind("cdvp run: ", 0), 0u) << ran.err;
+            EXPECT_EQ(listed.err, "cdvp settings: " + ran.err.substr(10));
+            EXPECT_NE(listed.err.find("-c board.clock_mhz: 900.0 MHz is beyond the "), std::string::npos) << listed.err;
+        }
+    }
+    const Result warned = run("settings --board adm-xrc-ii -c board.clock_mhz=500 -c run.ignore_timing=yes");
+    EXPECT_EQ(warned.status, 0) << warned.err;
+    EXPECT_EQ(warned.err.rfind("cdvp settings: warning: -c board.clock_mhz: 500.0 MHz is beyond the ", 0), 0u)
+        << warned.err;
+}
+
 }  // namespace
 }  // namespace cdvp::test

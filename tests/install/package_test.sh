@@ -140,6 +140,23 @@ expect pc_program "board of 1000 boxes, 15 lanes"
 expect pc_program "fcl_tree: 1 pair"
 expect pc_program "ode_hash: 1 pair"
 
+# A public header that moved still builds from its old path, through an
+# installed forwarding header that says where it went; each names a header
+# the prefix has.
+forwarding=$(cd "$source/cmake/moved_headers" && find . -name '*.h' | sed 's|^\./||' | sort)
+[ -n "$forwarding" ] || fail "no forwarding headers in cmake/moved_headers"
+for old in $forwarding; do
+  [ -f "$work/prefix/include/cdvp/$old" ] || fail "the forwarding header $old is not installed"
+  new=$(sed -n 's/^#include "\(.*\)"$/\1/p' "$work/prefix/include/cdvp/$old")
+  [ -f "$work/prefix/include/cdvp/$new" ] || fail "$old forwards to $new, which is not installed"
+  printf '#include "%s"\nint main() { return 0; }\n' "$old" > "$work/moved_header.cpp"
+  # shellcheck disable=SC2046  # pkg-config's words are meant to split
+  g++ -Wall -Wextra -Werror -fsyntax-only $(pkg-config --cflags cdvp) "$work/moved_header.cpp" 2> "$work/moved.log" ||
+    fail "a program including $old did not build: $(head -5 "$work/moved.log")"
+  grep -qF "$old is deprecated: include \"$new\"" "$work/moved.log" || fail "$old builds without its note: $(cat "$work/moved.log")"
+done
+grep -qF 'namespace cdvp' "$work/prefix/include/cdvp/platform/settings/board_preset.h" || fail "platform/settings/board_preset.h"
+
 # Relocatable: the moved prefix's package names its own places.
 mv "$work/prefix" "$work/moved"
 mkdir "$work/probe"
@@ -155,4 +172,4 @@ PROBE
 expect probe "boards: $work/moved/share/cdvp/boards; binary: $work/moved/bin/cdvp; includes: $work/moved/include/cdvp"
 [ "$(PKG_CONFIG_PATH=$work/moved/lib/pkgconfig pkg-config --variable=includedir cdvp)" -ef "$work/moved/include/cdvp" ] ||
   fail "the moved cdvp.pc names $(PKG_CONFIG_PATH=$work/moved/lib/pkgconfig pkg-config --variable=includedir cdvp)"
-echo "examples built and checked against $work/prefix; pkg-config program ran; the moved package configures"
+echo "examples built and checked against $work/prefix; pkg-config program ran; moved headers build from their old paths; the moved package configures"

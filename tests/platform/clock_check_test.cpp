@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "models/common/number_text.h"
 #include "models/common/user_text.h"
 #include "models/resources/timing_model.h"
 #include "platform/settings/board_preset.h"
@@ -163,6 +164,38 @@ TEST(ClockCheck, IgnoreTimingWarnsInsteadAndAnUnknownGradeIsRefused) {
     EXPECT_NE(warning->find("; running it anyway (run.ignore_timing=yes)"), std::string::npos) << *warning;
     EXPECT_EQ(refusal(preset("adm-xrc-ii", {"device.name=XC2V6000-7"})),
               "device.name: speed grade -7 of XC2V6000-7: the xc2v timing has -4, -5 or -6");
+}
+
+// A clock a hair past the estimate reads as past it: the two figures are
+// printed to the decimals that tell them apart, on either board and preset.
+TEST(ClockCheck, TheRefusalsFiguresDifferAsTheValuesDo) {
+    for (const char* board : {"adm-xrc-ii", "adm-xrc-ii-64", "alveo-u250", "pcie-gen3-x8"}) {
+        for (const char* algorithm : {"all_pairs", "grid"}) {
+            SCOPED_TRACE(std::string(board) + " " + algorithm);
+            const SettingValues fitted = preset(board, {std::string("board.algorithm=") + algorithm});
+            if (!has_device_family(fitted.settings())) continue;
+            const double fmax = fit_on_device(fitted.settings(), kBoxes).timing.fmax_mhz();
+            char above[48];
+            std::snprintf(above, sizeof above, "%.17g", fmax + 0.004);
+            const std::string error =
+                refusal(preset(board, {std::string("board.algorithm=") + algorithm,
+                                       std::string("board.clock_mhz=") + above}));
+            const std::size_t beyond = error.find(" MHz is beyond the ");
+            ASSERT_NE(beyond, std::string::npos) << error;
+            const std::size_t start = error.find(": ") + 2;
+            const std::string clock = error.substr(start, beyond - start);
+            const std::size_t from = beyond + 19;
+            const std::string estimate = error.substr(from, error.find(" MHz", from) - from);
+            EXPECT_NE(clock, estimate) << error;
+            EXPECT_GT(std::stod(clock), std::stod(estimate)) << error;
+        }
+    }
+    const auto [a, b] = distinct_figures(96.2, 96.19, 1);
+    EXPECT_EQ(a + " " + b, "96.20 96.19");
+    const auto [c, d] = distinct_figures(500, 96.19, 1);
+    EXPECT_EQ(c + " " + d, "500.0 96.2");
+    const auto [e, f] = distinct_figures(7, 7, 1);
+    EXPECT_EQ(e + " " + f, "7.0 7.0");
 }
 
 }  // namespace

@@ -5,6 +5,11 @@ schema_test.py CDVP SCHEMA_DIR report LEVEL ALGORITHM
     runs `cdvp run` at --fidelity LEVEL on board.algorithm ALGORITHM
     (all_pairs or grid) and validates its report against
     run-report.schema.json;
+schema_test.py CDVP SCHEMA_DIR presets BOARDS_DIR
+    a report of every level (fast, cycle, analytic, auto; rtl where a
+    built-in variant serves) on both boards and every preset in BOARDS_DIR,
+    each validated against run-report.schema.json, its config.fidelity the
+    level asked for and auto's fidelity_choice present;
 schema_test.py CDVP SCHEMA_DIR bullet
     the same for `cdvp bullet --report` (a report with a 'bullet' section);
 schema_test.py CDVP SCHEMA_DIR sweep RECORD
@@ -16,6 +21,7 @@ Each mode also takes the document it validated, removes a required field (or
 sets a wrong format_version) and requires the schema to refuse it, so the
 test fails when the schema stops requiring what the writers promise.
 """
+import concurrent.futures
 import copy
 import csv
 import json
@@ -98,6 +104,47 @@ def report_mode(binary, schema_dir, work, level, algorithm):
     print(f"{what} ({len(report['frames'])} frames) validates; without a required field it does not")
 
 
+PRESET_LEVELS = ["fast", "cycle", "analytic", "auto"]
+
+
+def presets_mode(binary, schema_dir, work, boards_dir):
+    valid = validator(schema_dir, "run-report.schema.json")
+    presets = sorted(name[:-5] for name in os.listdir(boards_dir) if name.endswith(".json"))
+    if not presets:
+        fail(f"no presets in {boards_dir}")
+    runs = [(preset, algorithm, level) for preset in presets for algorithm in ("all_pairs", "grid")
+            for level in PRESET_LEVELS]
+    runs.append(("adm-xrc-ii", "all_pairs", "rtl"))
+
+    def one(preset, algorithm, level):
+        name = f"{preset}.{algorithm}.{level}.json"
+        board = RTL_BOARD[2:] if level == "rtl" else ["--m", "4"]
+        cdvp(binary, ["run", "--board", os.path.join(boards_dir, preset + ".json"), "--scene", "spheres",
+                      "--objects", "200", "--frames", "2", "-q", "--fidelity", level,
+                      "-c", "board.algorithm=" + algorithm, "--report", name] + board, work)
+        return name
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        names = list(pool.map(lambda r: one(*r), runs))
+    for (preset, algorithm, level), name in zip(runs, names):
+        report = read_json(os.path.join(work, name))
+        what = f"the report at --fidelity {level} on {preset} (board.algorithm {algorithm})"
+        check(valid, report, what)
+        if report["config"]["fidelity"] != level:
+            fail(f"{what} records config.fidelity {report['config']['fidelity']!r}")
+        if level == "auto":
+            choice = report.get("fidelity_choice")
+            if choice is None:
+                fail(f"{what} has no fidelity_choice")
+            if choice["analytic_frames"] + choice["fast_frames"] != len(report["frames"]):
+                fail(f"{what}: fidelity_choice counts {choice['analytic_frames']} + {choice['fast_frames']} frames "
+                     f"of {len(report['frames'])}")
+            refused(valid, report, lambda r: r.pop("fidelity_choice"), "an auto report without fidelity_choice")
+        elif "fidelity_choice" in report:
+            fail(f"{what} has a fidelity_choice")
+    print(f"{len(runs)} reports (every level, both boards, {len(presets)} presets) validate")
+
+
 def bullet_mode(binary, schema_dir, work):
     valid = validator(schema_dir, "run-report.schema.json")
     cdvp(binary, ["bullet", "--scene", "boxes", "--objects", "100", "--frames", "3", "--board", "adm-xrc-ii",
@@ -137,10 +184,12 @@ def sweep_mode(binary, schema_dir, work, record):
 def main(argv):
     if len(argv) < 4:
         sys.exit(__doc__)
-    binary, schema_dir, mode = os.path.abspath(argv[1]), argv[2], argv[3]
+    binary, schema_dir, mode = os.path.abspath(argv[1]), os.path.abspath(argv[2]), argv[3]
     with tempfile.TemporaryDirectory() as work:
         if mode == "report" and len(argv) == 6:
             report_mode(binary, schema_dir, work, argv[4], argv[5])
+        elif mode == "presets" and len(argv) == 5:
+            presets_mode(binary, schema_dir, work, os.path.abspath(argv[4]))
         elif mode == "bullet" and len(argv) == 4:
             bullet_mode(binary, schema_dir, work)
         elif mode == "sweep" and len(argv) == 5:

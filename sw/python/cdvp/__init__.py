@@ -20,7 +20,7 @@ from . import _cdvp
 from ._errors import DeviceFault, Error, InputError, InternalError, SystemFailure, error_class, raise_for_outcome
 from ._locate import find_binary, use_installed_boards
 from ._report import PHASES, Baseline, Report, Summary, frames_table
-from ._spread import spread_sweep
+from ._spread import _block_of, spread_sweep
 
 __all__ = ["settings", "presets", "run", "sweep", "find_binary", "Report", "Summary", "Baseline", "PHASES",
            "Error", "InputError", "DeviceFault", "SystemFailure", "InternalError"]
@@ -68,8 +68,10 @@ def run(board=None, scene=None, trace=None, settings=None, pairs=False, **option
     Raises TypeError for a value of the wrong type or an unknown keyword, InputError (status 2)
     for a value cdvp refuses, naming the keyword; DeviceFault (3), SystemFailure (4) or
     InternalError (1) with the run's one-line message."""
+    if not isinstance(pairs, bool):
+        raise TypeError(f"pairs=: expected True or False, got {type(pairs).__name__}")
     keywords = {"board": board, "scene": scene, "trace": trace, **options}
-    report_text, summary_text, pairs_csv = _cdvp.run(keywords, settings, bool(pairs), find_binary())
+    report_text, summary_text, pairs_csv = _cdvp.run(keywords, settings, pairs, find_binary())
     report = json.loads(report_text)
     return Report(config=report["config"], summary=Summary.from_json(json.loads(summary_text)),
                   frames=frames_table(report["frames"], report["config"].get("baselines", [])), raw=report,
@@ -101,9 +103,9 @@ def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=Tru
         raise TypeError(f"cdvp.sweep: progress must be callable as progress(done, total), not {type(progress).__name__}")
     own = {"out": out, "jobs": jobs, "plots": plots, "quiet": quiet,
            **{key: options.pop(key) for key in _SWEEP_OWN if key in options}}
+    if _block_of(block) != 1 and executor is None:
+        raise InputError("cdvp.sweep: block=: cuts the sweep into tasks for an executor=; give one", 2)
     if executor is None:
-        if block != 1:
-            raise InputError("cdvp.sweep: block=: cuts the sweep into tasks for an executor=; give one", 2)
         outcome = _cdvp.sweep(axes, own, options, settings, find_binary(), progress)
         raise_for_outcome(outcome)
     else:

@@ -31,6 +31,9 @@ def test_a_value_beginning_with_dashes_is_a_value():
     ({"baseline": 3}, "baseline=: expected a str or a list of str, got int"),
     ({"settings": ["bus.interrupt_ns", 5000]}, "settings: expected a dict of setting name -> value, got list"),
     ({"settings": {"bus.interrupt_ns": "5000"}}, r"settings\['bus.interrupt_ns'\]: expected a number, got str"),
+    ({"pairs": "no"}, "pairs=: expected True or False, got str"),
+    ({"pairs": 1}, "pairs=: expected True or False, got int"),
+    ({"pairs": None}, "pairs=: expected True or False, got NoneType"),
 ])
 def test_a_value_of_the_wrong_type_is_a_type_error_naming_the_keyword(keywords, message):
     options = {key: value for key, value in SMALL.items() if key not in keywords}
@@ -104,3 +107,43 @@ def test_a_run_for_a_child_is_checked_first_in_the_modules_words():
     assert "ignore_capacity=True runs it anyway" in str(refused.value)
     with pytest.raises(cdvp.InputError, match=r"inject=: .* past the run's last frame 1 \(frames=2\)"):
         cdvp.run(**SMALL, inject="board-error@frame=5")
+
+
+def test_the_modules_own_keywords_are_typed_too(tmp_path):
+    with pytest.raises(TypeError, match="block=: expected an int, got str"):
+        cdvp.sweep({"m": [1, 2]}, tmp_path / "out", block="1", **SMALL)
+    with pytest.raises(TypeError, match="jobs=: expected an int, got str"):
+        cdvp.sweep({"m": [1, 2]}, tmp_path / "out", jobs="2", **SMALL)
+    with pytest.raises(TypeError, match="plots=: expected True or False, got str"):
+        cdvp.sweep({"m": [1, 2]}, tmp_path / "out", plots="no", **SMALL)
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_keyword_with_a_nul_is_named_whole():
+    with pytest.raises(TypeError) as refused:
+        cdvp.run(**SMALL, **{"obj\x00ects": 5})
+    message = str(refused.value)
+    assert "'obj\\x00ects'" in message and message.endswith("any setting goes in settings={NAME: VALUE})"), message
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.run(**SMALL, settings={"scene.obj\x00ects": 5})
+    assert "settings['scene.obj\\x00ects']: no setting has this name" in str(refused.value)
+
+
+def test_a_name_far_from_every_one_gets_no_suggestion():
+    with pytest.raises(TypeError) as refused:
+        cdvp.run(**SMALL, speed_grade=5)
+    assert "nearest" not in str(refused.value), str(refused.value)
+    with pytest.raises(TypeError, match="the nearest is 'objects'"):
+        cdvp.run(**SMALL, objcts=5)
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.run(**SMALL, settings={"device.speed_grade": 5})
+    assert "nearest" not in str(refused.value), str(refused.value)
+
+
+def test_a_cpu_the_run_cannot_pin_to_is_named_by_its_keyword():
+    for fidelity in ("fast", "analytic"):
+        with pytest.raises(cdvp.InputError) as refused:
+            cdvp.run(**SMALL, fidelity=fidelity, quantum_ns=0.0, pin_cpu="1023")
+        message = str(refused.value)
+        assert "pin_cpu=: CPU 1023 is not one this process may run on" in message, message
+        assert "--pin-cpu" not in message, message

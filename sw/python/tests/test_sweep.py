@@ -93,3 +93,22 @@ def test_wrong_types_are_refused_before_any_point_runs(tmp_path):
     with pytest.raises(cdvp.InputError, match="NUL") as refused:
         cdvp.run(board="adm-xrc-ii", scene="spheres\0")
     assert refused.value.status == 2
+
+
+def test_an_out_that_is_no_sweeps_or_another_shard_is_named_by_its_keyword(tmp_path):
+    (tmp_path / "other").mkdir()
+    (tmp_path / "other" / "notes.txt").write_text("x")
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.sweep({"m": [1]}, tmp_path / "other", **POINT_OPTIONS)
+    message = str(refused.value)
+    assert message.startswith("cdvp.sweep: out=: ") and message.endswith("give a new or empty out="), message
+    assert "--" not in message, message
+    cdvp.sweep({"m": [1, 4]}, tmp_path / "out", shard="1/2", **POINT_OPTIONS)
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.sweep({"m": [1, 4]}, tmp_path / "out", shard="2/2", **POINT_OPTIONS)
+    message = str(refused.value)
+    assert "holds shard 1/2 of this sweep, not 2/2; give the same shard=, or a new out=" in message, message
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.sweep({"m": [1, 4]}, tmp_path / "out", shard="1/2", record="compact", **POINT_OPTIONS)
+    message = str(refused.value)
+    assert "(record= full, not compact)" in message and "--" not in message, message

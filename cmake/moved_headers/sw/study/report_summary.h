@@ -1,0 +1,10 @@
+// Deprecated: sw/study/report_summary.h moved to
+// sw/run/report_summary.h. This forwarding header,
+// installed at the old path only, keeps programs that include the old path
+// building; include the new path instead: the old one will be removed in a
+// later release (docs/library.md, The public headers).
+#pragma once
+#if defined(__GNUC__) && !defined(__clang__) && !defined(CDVP_NO_DEPRECATED_HEADER_NOTE)
+#pragma message("sw/study/report_summary.h is deprecated: include \"sw/run/report_summary.h\"")
+#endif
+#include "sw/run/report_summary.h"
