@@ -16,11 +16,11 @@ namespace cdvp {
 
 constexpr const char* kBestSoftware = "best";
 
-// Box pruning's sweep grows as N^(5/3) on a spread scene; from this many
-// boxes on, the hierarchical grid is several times faster on every scene
-// family measured (docs/baselines.md), so box pruning is left out of "best"
-// (keeping the software at 10^6 boxes near a second a frame).
-constexpr std::size_t kPruneCandidateLimit = 100000;
+// Box pruning's sweep grows as N^(5/3) on a spread scene, but it stays the
+// fastest on heavy-tailed sizes up to 100,000 boxes (docs/baselines.md);
+// from this many boxes on it would take seconds a frame, so it is left out
+// of "best" (keeping the software at 10^6 boxes near a second a frame).
+constexpr std::size_t kPruneCandidateLimit = 500000;
 
 // What "best" stands for at `objects` boxes a frame (none: not known yet,
 // every candidate) on `threads` threads: box pruning and the hierarchical

@@ -36,10 +36,10 @@ TEST_F(CliBest, ARunTimesTheCandidatesAndNamesTheFastest) {
     EXPECT_NE(r.out.find("fastest software: " + best + ","), std::string::npos) << r.out;
 }
 
-// From 100,000 boxes a frame box pruning is no candidate.
-TEST_F(CliBest, BoxPruningLeavesTheCandidatesAtAHundredThousandBoxes) {
+// From 500,000 boxes a frame box pruning is no candidate.
+TEST_F(CliBest, BoxPruningLeavesTheCandidatesAtHalfAMillionBoxes) {
     const Result r = run("run --board alveo-u250 -c board.algorithm=grid --fidelity analytic --scene spheres "
-                         "--objects 100000 --frames 1 --warmup 0 --threads 1 --baseline best --report r.json -q");
+                         "--objects 500000 --frames 1 --warmup 0 --threads 1 --baseline best --report r.json -q");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(report_of(dir_ / "r.json")["config"]["baselines"], json({"hgrid"}));
 }
