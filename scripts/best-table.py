@@ -16,7 +16,8 @@ for path in sys.argv[1:]:
 
 
 def ms(ns):
-    return f"{float(ns) / 1e6:.3g}"
+    value = float(ns) / 1e6
+    return f"{value:,.0f}" if value >= 1000 else f"{value:.3g}"
 
 
 def board_of(r):

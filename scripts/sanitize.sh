@@ -33,6 +33,8 @@ run() { echo "+ $*"; "$@"; }
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_stack_use_after_return=0:detect_leaks=1:abort_on_error=1:strict_string_checks=1:check_initialization_order=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 export SYSTEMC_MEMPOOL_DONT_USE=1
+# A library's own leaks, named one by one (tests/sanitize/lsan.supp).
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitize/lsan.supp:print_suppressions=0}"
 
 paper="format=float32,latency=2,fifo=512,buffer=262144,capacity=512"
 grid="m=3,fifo=5,buffer=24,tile_latency=2,capacity=512,algorithm=grid,cell_capacity=9,entries=400"
