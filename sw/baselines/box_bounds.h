@@ -1,6 +1,6 @@
 // What the pruning baselines (hgrid, prune) need to know of a frame's boxes
 // before they place them: which boxes can overlap anything, each box's
-// bounds in order, and the span of the finite coordinates.
+// bounds in order, its extents, the axis to sweep.
 #pragma once
 
 #include <algorithm>
@@ -68,24 +68,6 @@ inline void normalised(const FloatBox& b, float lo[3], float hi[3]) {
 inline float extent(const FloatBox& b, int axis) {
     const float e = std::fabs(b.max[axis] - b.min[axis]);
     return std::isnan(e) ? 0.0f : e;
-}
-
-// The lowest finite coordinate and the span to the highest, per axis, over
-// the valid boxes' bounds (0 and 0 where there is none).
-inline void finite_span(const std::vector<FloatBox>& boxes, const std::vector<uint32_t>& valid, double lo[3],
-                        double span[3]) {
-    float low[3] = {INFINITY, INFINITY, INFINITY}, high[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (const uint32_t i : valid) {
-        for (int axis = 0; axis < 3; ++axis) {
-            for (const float x : {boxes[i].min[axis], boxes[i].max[axis]}) {
-                if (std::isfinite(x)) low[axis] = std::min(low[axis], x), high[axis] = std::max(high[axis], x);
-            }
-        }
-    }
-    for (int axis = 0; axis < 3; ++axis) {
-        lo[axis] = low[axis] <= high[axis] ? double(low[axis]) : 0.0;
-        span[axis] = low[axis] <= high[axis] ? double(high[axis]) - double(low[axis]) : 0.0;
-    }
 }
 
 }  // namespace cdvp

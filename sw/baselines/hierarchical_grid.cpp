@@ -1,6 +1,7 @@
 #include "sw/baselines/hierarchical_grid.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -20,28 +21,22 @@ constexpr std::size_t kTasksPerThread = 32;
 constexpr std::size_t kBoxesPerPart = 4096;
 constexpr std::size_t kMaxParts = 8;
 
-// Sizes each axis's cells by the largest extent among the bulk of the boxes:
-// those within four times the median (a sample of the boxes gives the
-// median). A box past it goes to a coarser level.
-void bulk_extents(const std::vector<FloatBox>& boxes, const std::vector<uint32_t>& valid, std::vector<float>& sample,
-                  double size[3]) {
+// Each axis's bulk: extents up to four times the median (a sample of the
+// boxes gives the median). The largest extent within it sizes level 0's
+// cells; a box past it goes to a coarser level.
+void bulk_limits(const std::vector<FloatBox>& boxes, const std::vector<uint32_t>& valid, std::vector<float>& sample,
+                 float limit[3]) {
     constexpr std::size_t kSample = 4096;
     const std::size_t stride = std::max<std::size_t>(1, valid.size() / kSample);
-    float limit[3] = {0, 0, 0}, bulk[3] = {0, 0, 0};
-    for (int axis = 0; axis < 3 && !valid.empty(); ++axis) {
+    for (int axis = 0; axis < 3; ++axis) {
+        limit[axis] = 0;
+        if (valid.empty()) continue;
         sample.clear();
         for (std::size_t k = 0; k < valid.size(); k += stride) sample.push_back(extent(boxes[valid[k]], axis));
         auto middle = sample.begin() + static_cast<std::ptrdiff_t>(sample.size() / 2);
         std::nth_element(sample.begin(), middle, sample.end());
         limit[axis] = 4.0f * *middle;
     }
-    for (const uint32_t i : valid) {
-        for (int axis = 0; axis < 3; ++axis) {
-            const float e = extent(boxes[i], axis);
-            if (e <= limit[axis] && e > bulk[axis]) bulk[axis] = e;
-        }
-    }
-    for (int axis = 0; axis < 3; ++axis) size[axis] = bulk[axis];
 }
 
 }  // namespace
@@ -63,13 +58,90 @@ HierarchicalGridBroadPhase::HierarchicalGridBroadPhase(unsigned threads, bool mu
       found_(pool_.size()),
       levels_(kMaxLevels) {}
 
+std::size_t HierarchicalGridBroadPhase::parts_for(std::size_t n) const {
+    return std::clamp<std::size_t>(n / kBoxesPerPart, 1, std::min<std::size_t>(pool_.size(), kMaxParts));
+}
+
+// Runs fn(part, first, last) over the parts of [0, n), each part taken by
+// whichever thread asks next: a thread the machine keeps waiting holds up
+// no other.
+template <typename Fn>
+void HierarchicalGridBroadPhase::for_parts(std::size_t n, std::size_t parts, Fn&& fn) {
+    std::atomic<std::size_t> next{0};
+    pool_.run([&](unsigned) {
+        for (std::size_t p = next++; p < parts; p = next++) fn(p, n * p / parts, n * (p + 1) / parts);
+    });
+}
+
+// The boxes with no NaN bound (valid_, in index order), and the lowest
+// finite coordinate and the span to the highest, per axis (0 and 0 where
+// there is none).
+void HierarchicalGridBroadPhase::survey(const std::vector<FloatBox>& boxes, double lo[3], double span[3]) {
+    struct Range {
+        float low[3] = {INFINITY, INFINITY, INFINITY}, high[3] = {-INFINITY, -INFINITY, -INFINITY};
+    };
+    const std::size_t parts = parts_for(boxes.size());
+    std::array<Range, kMaxParts> ranges{};
+    part_valid_.resize(parts);
+    for_parts(boxes.size(), parts, [&](std::size_t p, std::size_t first, std::size_t last) {
+        std::vector<uint32_t>& valid = part_valid_[p];
+        valid.clear();
+        Range& r = ranges[p];
+        for (std::size_t i = first; i < last; ++i) {
+            const FloatBox& b = boxes[i];
+            if (has_nan(b)) continue;
+            valid.push_back(static_cast<uint32_t>(i));
+            for (int axis = 0; axis < 3; ++axis) {
+                for (const float x : {b.min[axis], b.max[axis]}) {
+                    if (std::isfinite(x)) r.low[axis] = std::min(r.low[axis], x), r.high[axis] = std::max(r.high[axis], x);
+                }
+            }
+        }
+    });
+    valid_.clear();
+    Range all;
+    for (std::size_t p = 0; p < parts; ++p) {
+        valid_.insert(valid_.end(), part_valid_[p].begin(), part_valid_[p].end());
+        for (int axis = 0; axis < 3; ++axis) {
+            all.low[axis] = std::min(all.low[axis], ranges[p].low[axis]);
+            all.high[axis] = std::max(all.high[axis], ranges[p].high[axis]);
+        }
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        const bool any = all.low[axis] <= all.high[axis];
+        lo[axis] = any ? double(all.low[axis]) : 0.0;
+        span[axis] = any ? double(all.high[axis]) - double(all.low[axis]) : 0.0;
+    }
+}
+
+// The largest extent, per axis, among the boxes within the bulk's limits.
+void HierarchicalGridBroadPhase::bulk_extents(const std::vector<FloatBox>& boxes, double size[3]) {
+    float limit[3];
+    bulk_limits(boxes, valid_, sample_, limit);
+    const std::size_t parts = parts_for(valid_.size());
+    std::array<std::array<float, 3>, kMaxParts> bulk{};
+    for_parts(valid_.size(), parts, [&](std::size_t p, std::size_t first, std::size_t last) {
+        std::array<float, 3>& most = bulk[p];
+        for (std::size_t k = first; k < last; ++k) {
+            for (int axis = 0; axis < 3; ++axis) {
+                const float e = extent(boxes[valid_[k]], axis);
+                if (e <= limit[axis] && e > most[axis]) most[axis] = e;
+            }
+        }
+    });
+    for (int axis = 0; axis < 3; ++axis) {
+        size[axis] = 0;
+        for (std::size_t p = 0; p < parts; ++p) size[axis] = std::max(size[axis], double(bulk[p][axis]));
+    }
+}
+
 // The grid spans the finite bounds of the boxes; level 0's cells are the
 // bulk's extent, capped so that no level holds more than twice as many cells
 // as boxes (a sparse scene gets coarser cells, not a huge empty array).
 void HierarchicalGridBroadPhase::plan_levels(const std::vector<FloatBox>& boxes) {
     double lo[3], span[3], size[3];
-    finite_span(boxes, valid_, lo, span);
-    bulk_extents(boxes, valid_, sample_, size);
+    survey(boxes, lo, span);
+    bulk_extents(boxes, size);
     const double cap = std::max<double>(64.0, 2.0 * double(valid_.size()));
     const double n_root = std::cbrt(std::max<double>(1.0, double(valid_.size())));
     for (int axis = 0; axis < 3; ++axis) {
@@ -115,35 +187,28 @@ void HierarchicalGridBroadPhase::file_boxes(const std::vector<FloatBox>& boxes) 
     cell_of_.resize(n);
     std::size_t total = 0;  // the cells of every level, one after another
     for (std::size_t l = 0; l < used_; ++l) base_[l] = total, total += levels_[l].cells();
-    const std::size_t parts = std::clamp<std::size_t>(n / kBoxesPerPart, 1, std::min<std::size_t>(pool_.size(), kMaxParts));
+    const std::size_t parts = parts_for(n);
     counts_.resize(parts);
-    const auto part = [&](std::size_t p) { return std::make_pair(n * p / parts, n * (p + 1) / parts); };
-    // Parts go to whichever thread asks next: a thread the machine keeps
-    // waiting holds up no other.
-    std::atomic<std::size_t> next{0};
-    pool_.run([&](unsigned) {
-        for (std::size_t p = next++; p < parts; p = next++) {
-            std::vector<uint32_t>& count = counts_[p];
-            count.assign(total, 0);
-            const auto [first, last] = part(p);
-            for (std::size_t k = first; k < last; ++k) {
-                float lo[3], hi[3];
-                normalised(boxes[valid_[k]], lo, hi);
-                for (std::size_t l = 0; l < used_; ++l) {
-                    const Level& level = levels_[l];
-                    int32_t c[3];
-                    bool fits = true;
-                    for (int axis = 0; axis < 3 && fits; ++axis) {
-                        c[axis] = level.cell(axis, lo[axis]);
-                        fits = level.cell(axis, hi[axis]) - c[axis] <= 1;
-                    }
-                    if (!fits) continue;
-                    level_of_[k] = static_cast<uint8_t>(l);
-                    cell_of_[k] = static_cast<uint32_t>(
-                        base_[l] + (std::size_t(c[2]) * level.dims[1] + c[1]) * level.dims[0] + c[0]);
-                    ++count[cell_of_[k]];
-                    break;
+    for_parts(n, parts, [&](std::size_t p, std::size_t first, std::size_t last) {
+        std::vector<uint32_t>& count = counts_[p];
+        count.assign(total, 0);
+        for (std::size_t k = first; k < last; ++k) {
+            float lo[3], hi[3];
+            normalised(boxes[valid_[k]], lo, hi);
+            for (std::size_t l = 0; l < used_; ++l) {
+                const Level& level = levels_[l];
+                int32_t c[3];
+                bool fits = true;
+                for (int axis = 0; axis < 3 && fits; ++axis) {
+                    c[axis] = level.cell(axis, lo[axis]);
+                    fits = level.cell(axis, hi[axis]) - c[axis] <= 1;
                 }
+                if (!fits) continue;
+                level_of_[k] = static_cast<uint8_t>(l);
+                cell_of_[k] = static_cast<uint32_t>(
+                    base_[l] + (std::size_t(c[2]) * level.dims[1] + c[1]) * level.dims[0] + c[0]);
+                ++count[cell_of_[k]];
+                break;
             }
         }
     });
@@ -160,18 +225,14 @@ void HierarchicalGridBroadPhase::file_boxes(const std::vector<FloatBox>& boxes) 
         level.start[cells] = at;
         level.entries.resize(at);
     }
-    next = 0;
-    pool_.run([&](unsigned) {
-        for (std::size_t p = next++; p < parts; p = next++) {
-            std::vector<uint32_t>& place = counts_[p];
-            const auto [first, last] = part(p);
-            for (std::size_t k = first; k < last; ++k) {
-                const FloatBox& box = boxes[valid_[k]];
-                levels_[level_of_[k]].entries[place[cell_of_[k]]++] = {{box.min[0], box.min[1], box.min[2]},
-                                                                      {box.max[0], box.max[1], box.max[2]},
-                                                                      valid_[k],
-                                                                      0};
-            }
+    for_parts(n, parts, [&](std::size_t p, std::size_t first, std::size_t last) {
+        std::vector<uint32_t>& place = counts_[p];
+        for (std::size_t k = first; k < last; ++k) {
+            const FloatBox& box = boxes[valid_[k]];
+            levels_[level_of_[k]].entries[place[cell_of_[k]]++] = {{box.min[0], box.min[1], box.min[2]},
+                                                                  {box.max[0], box.max[1], box.max[2]},
+                                                                  valid_[k],
+                                                                  0};
         }
     });
 }
@@ -320,7 +381,6 @@ void HierarchicalGridBroadPhase::query(const Level& level, const float lo[3], co
 
 void HierarchicalGridBroadPhase::find_pairs(const std::vector<FloatBox>& boxes, PairList& out) {
     out.clear();
-    valid_boxes(boxes, valid_);
     plan_levels(boxes);
     file_boxes(boxes);
     plan_work();

@@ -70,6 +70,11 @@ public:
     const Level& level(std::size_t k) const { return levels_[k]; }
 
 private:
+    std::size_t parts_for(std::size_t n) const;
+    template <typename Fn>
+    void for_parts(std::size_t n, std::size_t parts, Fn&& fn);
+    void survey(const std::vector<FloatBox>& boxes, double lo[3], double span[3]);
+    void bulk_extents(const std::vector<FloatBox>& boxes, double size[3]);
     void plan_levels(const std::vector<FloatBox>& boxes);
     void file_boxes(const std::vector<FloatBox>& boxes);
     void plan_work();
@@ -81,6 +86,7 @@ private:
     WorkerPool pool_;
     ThreadPairs found_;
     std::vector<uint32_t> valid_;        // the boxes with no NaN bound
+    std::vector<std::vector<uint32_t>> part_valid_;  // a part's of them
     std::vector<uint8_t> level_of_;      // per valid box
     std::vector<uint32_t> cell_of_;      // per valid box: its cell, counted over every level's cells
     std::size_t base_[kMaxLevels] = {};  // a level's first cell in that count
