@@ -1,5 +1,7 @@
 #include "sw/run/baseline_timing.h"
 
+#include "sw/run/best_software.h"
+
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
@@ -50,7 +52,8 @@ BaselineTimer::BaselineTimer(const std::vector<std::string>& names, HostTiming h
         try {
             first_run_.push_back(make_broad_phase(name, options_));
         } catch (const std::invalid_argument& e) {
-            throw InputError(label + ": " + e.what());
+            // "best" never reaches here: the run resolves it (sw/run/best_software.h).
+            throw InputError(label + ": " + e.what() + ", or " + kBestSoftware);
         } catch (const ThreadsUnavailable& e) {
             throw SystemError(options_.threads_from + ": " + e.what());
         }

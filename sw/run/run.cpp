@@ -1,5 +1,6 @@
 #include "sw/run/run.h"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +52,10 @@ unsigned run_baseline_threads(const Settings& settings) {
 BaselineTimer baseline_timer(const RunSpec& spec, const RunSetup& setup, std::optional<std::size_t> objects) {
     const Settings& settings = setup.values.settings();
     const unsigned threads = run_baseline_threads(settings);
+    // Each name is timed once a frame, best's candidates as any other.
+    if (std::count(spec.baselines.begin(), spec.baselines.end(), kBestSoftware) > 1) {
+        throw InputError(spec.settings.names->input("baseline") + ": '" + kBestSoftware + "' given twice");
+    }
     return BaselineTimer(resolve_baselines(spec.baselines, objects, threads), setup.host, settings.run.retime_tries,
                          spec.settings.names->input("baseline"),
                          BaselineOptions{threads, setup.values.where(declared_setting("run.threads"))});

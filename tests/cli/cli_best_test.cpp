@@ -44,6 +44,16 @@ TEST_F(CliBest, BoxPruningLeavesTheCandidatesAtHalfAMillionBoxes) {
     EXPECT_EQ(report_of(dir_ / "r.json")["config"]["baselines"], json({"hgrid"}));
 }
 
+TEST_F(CliBest, BestTwiceOrAnUnknownNameIsRefusedInOneLine) {
+    const Result twice = run("run --scene spheres --objects 20 --frames 2 --baseline best,sap,best");
+    EXPECT_EQ(twice.status, 2);
+    EXPECT_EQ(twice.err, "cdvp run: --baseline: 'best' given twice\n");
+    const Result unknown = run("run --scene spheres --objects 20 --frames 2 --baseline bets");
+    EXPECT_EQ(unknown.status, 2);
+    EXPECT_EQ(unknown.err.rfind("cdvp run: --baseline: unknown baseline 'bets'; expected one of: sap,", 0), 0u) << unknown.err;
+    EXPECT_NE(unknown.err.find(", ode_sap, or best\n"), std::string::npos) << unknown.err;
+}
+
 TEST_F(CliBest, ASweepRowCarriesTheFastestUnderBest) {
     const Result r = run("sweep --board adm-xrc-ii --set objects=200,400 --frames 3 --warmup 1 --baseline best,sap "
                          "--no-plots -q --out s");
