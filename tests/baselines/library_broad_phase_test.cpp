@@ -16,6 +16,7 @@
 #include "sw/baselines/broad_phase.h"
 #include "sw/baselines/brute_force.h"
 #include "sw/baselines/library_broad_phase.h"
+#include "tests/baselines/exact_pairs.h"
 #include "tests/baselines/scenes.h"
 
 namespace cdvp {
@@ -31,27 +32,6 @@ const std::vector<std::string> kLibraryNames = {"fcl_tree", "fcl_sap",  "fcl_int
                                                 "ode_hash", "ode_quadtree", "ode_sap"};
 
 FloatBox box(float x0, float y0, float z0, float x1, float y1, float z1) { return {{x0, y0, z0}, {x1, y1, z1}}; }
-
-std::string first_of(const PairList& pairs) {
-    std::string text;
-    for (std::size_t k = 0; k < pairs.size() && k < 6; ++k) {
-        text += " (" + std::to_string(pairs[k].first) + "," + std::to_string(pairs[k].second) + ")";
-    }
-    return text;
-}
-
-PairList exact_pairs(BroadPhase& phase, const Boxes& boxes, const std::string& what) {
-    PairList got;
-    phase.find_pairs(boxes, got);
-    std::sort(got.begin(), got.end());
-    const PairList want = reference_pairs(boxes);
-    PairList missing, extra;
-    std::set_difference(want.begin(), want.end(), got.begin(), got.end(), std::back_inserter(missing));
-    std::set_difference(got.begin(), got.end(), want.begin(), want.end(), std::back_inserter(extra));
-    EXPECT_TRUE(got == want) << phase.name() << " on " << what << ": " << got.size() << " pairs, " << want.size()
-                             << " expected; missing" << first_of(missing) << "; extra" << first_of(extra);
-    return want;
-}
 
 const LibraryCounts& counts(const BroadPhase& phase) {
     const auto* library = dynamic_cast<const LibraryBroadPhase*>(&phase);
@@ -103,7 +83,7 @@ class HostileBoxes : public ::testing::TestWithParam<std::string> {};
 TEST_P(HostileBoxes, GiveTheExactPairs) {
     auto phase = make_broad_phase(GetParam());
     const Boxes boxes = hostile_scene();
-    const PairList want = exact_pairs(*phase, boxes, "the hostile scene");
+    const PairList want = test::expect_exact(*phase, boxes, "the hostile scene");
     // The scene has what it claims (the reference is the judge of each case).
     EXPECT_TRUE(has(want, kMinusZero, kPlusZero));
     EXPECT_TRUE(has(want, kFltMax, kMaxPoint));
@@ -124,7 +104,7 @@ TEST_P(HostileBoxes, GiveTheExactPairs) {
 TEST_P(HostileBoxes, TurnOrdinaryAndBackAsTheyMove) {
     auto phase = make_broad_phase(GetParam());
     Boxes boxes = hostile_scene();
-    exact_pairs(*phase, boxes, "frame 0");
+    test::expect_exact(*phase, boxes, "frame 0");
     for (int frame = 1; frame <= 4; ++frame) {
         const bool odd = frame % 2 == 1;
         boxes[kNanLow] = odd ? box(1, 1, 1, 2, 2, 2) : box(kNan, 1, 1, 2, 2, 2);
@@ -140,7 +120,7 @@ TEST_P(HostileBoxes, TurnOrdinaryAndBackAsTheyMove) {
                 boxes[i].max[axis] += d;
             }
         }
-        exact_pairs(*phase, boxes, "frame " + std::to_string(frame));
+        test::expect_exact(*phase, boxes, "frame " + std::to_string(frame));
     }
 }
 
@@ -176,18 +156,18 @@ TEST_P(LibraryBaseline, FindsThePairsThroughTheLibraryAndItsUpdate) {
     auto phase = make_broad_phase(GetParam());
     EXPECT_EQ(phase->name(), GetParam());
     const auto frames = test::moving_frames(300, 6, 17);
-    const PairList first = exact_pairs(*phase, frames[0], "frame 0");
+    const PairList first = test::expect_exact(*phase, frames[0], "frame 0");
     ASSERT_GT(first.size(), 50u);
     EXPECT_EQ(counts(*phase).builds, 1u);
     EXPECT_EQ(counts(*phase).updates, 0u);
     EXPECT_EQ(counts(*phase).held, frames[0].size());
     EXPECT_GE(counts(*phase).candidates, first.size());
-    const PairList last = exact_pairs(*phase, frames[5], "frame 5, after 4 more");
+    const PairList last = test::expect_exact(*phase, frames[5], "frame 5, after 4 more");
     EXPECT_NE(first, last) << "the motion should change the pairs";
     EXPECT_EQ(counts(*phase).builds, 1u) << "a move of the same boxes is an update";
     EXPECT_EQ(counts(*phase).updates, 1u);
     EXPECT_GE(counts(*phase).candidates, last.size());
-    exact_pairs(*phase, test::random_boxes(301, 3), "another count");
+    test::expect_exact(*phase, test::random_boxes(301, 3), "another count");
     EXPECT_EQ(counts(*phase).builds, 2u);
 }
 
@@ -210,10 +190,10 @@ INSTANTIATE_TEST_SUITE_P(Libraries, LibraryBaseline, ::testing::ValuesIn(kLibrar
 // infinite geom: more than overlap, and the exact test drops the rest.
 TEST(LibraryBaselines, TheExactTestDropsALibrarysExtraCandidates) {
     auto hash = make_broad_phase("fcl_hash");
-    const PairList want = exact_pairs(*hash, test::random_boxes(700, 5), "random boxes");
+    const PairList want = test::expect_exact(*hash, test::random_boxes(700, 5), "random boxes");
     EXPECT_GT(counts(*hash).candidates, want.size());
     auto sap = make_broad_phase("ode_sap");
-    const PairList infinite = exact_pairs(*sap, test::infinite_scene(), "the infinite scene");
+    const PairList infinite = test::expect_exact(*sap, test::infinite_scene(), "the infinite scene");
     EXPECT_GT(counts(*sap).candidates, infinite.size());
 }
 
@@ -223,21 +203,21 @@ TEST(LibraryBaselines, TheExactTestDropsALibrarysExtraCandidates) {
 TEST(LibraryBaselines, FclSapTakesBoxesThatGrowOrShrinkThroughItsUpdate) {
     auto sap = make_broad_phase("fcl_sap");
     Boxes boxes = test::random_boxes(400, 9);
-    exact_pairs(*sap, boxes, "frame 0");
+    test::expect_exact(*sap, boxes, "frame 0");
     for (FloatBox& b : boxes) {
         b.min[0] += 0.125f;
         b.max[0] += 0.125f;
     }
-    exact_pairs(*sap, boxes, "all moved along x");
+    test::expect_exact(*sap, boxes, "all moved along x");
     EXPECT_EQ(counts(*sap).builds, 1u);
     for (std::size_t i = 0; i < 100; ++i) boxes[i].max[1] += 3;  // grow upwards only
-    exact_pairs(*sap, boxes, "100 boxes grown");
+    test::expect_exact(*sap, boxes, "100 boxes grown");
     for (std::size_t i = 50; i < 150; ++i) {  // shrink, or keep the lower end
         boxes[i].min[2] += 0.125f;
         boxes[i].max[2] -= i % 2 == 0 ? 0.125f : 0.0f;
         boxes[i].max[2] = std::max(boxes[i].max[2], boxes[i].min[2]);
     }
-    exact_pairs(*sap, boxes, "100 boxes shrunk");
+    test::expect_exact(*sap, boxes, "100 boxes shrunk");
     EXPECT_EQ(counts(*sap).builds, 1u);
     EXPECT_EQ(counts(*sap).updates, 3u);
 }
@@ -253,7 +233,7 @@ TEST(LibraryBaselines, OdeHashRefusesMoreBoxesThanItsTestedMatrixIndexes) {
         EXPECT_STREQ(error.what(), "ode_hash: ODE's hash space holds at most 131000 boxes (its tested-pair matrix "
                                    "is indexed by an int); got 131001");
     }
-    exact_pairs(*hash, test::random_boxes(50, 1), "a small scene after");
+    test::expect_exact(*hash, test::random_boxes(50, 1), "a small scene after");
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "sw/baselines/box_pruning.h"
 #include "sw/baselines/brute_force.h"
 #include "sw/baselines/hierarchical_grid.h"
+#include "tests/baselines/exact_pairs.h"
 #include "tests/baselines/scenes.h"
 
 namespace cdvp {
@@ -23,11 +24,6 @@ using test::Boxes;
 constexpr float kUnbounded = std::numeric_limits<float>::infinity();
 constexpr float kNotANumber = std::numeric_limits<float>::quiet_NaN();
 
-void expect_reference(BroadPhase& phase, const Boxes& boxes, const std::string& what) {
-    PairList got;
-    phase.find_pairs(boxes, got);
-    EXPECT_EQ(sorted(got), reference_pairs(boxes)) << phase.name() << " on " << what;
-}
 
 // Debris of edge 1 among a few slabs a hundred times larger, on a 1/8 grid.
 Boxes debris_and_slabs(std::size_t n, uint32_t seed) {
@@ -71,7 +67,7 @@ protected:
 };
 
 TEST_P(Pruning, SizesAHundredTimesApart) {
-    for (const std::size_t n : {2, 60, 3000}) expect_reference(*phase_, debris_and_slabs(n, uint32_t(n)), "debris");
+    for (const std::size_t n : {2, 60, 3000}) test::expect_exact(*phase_, debris_and_slabs(n, uint32_t(n)), "debris");
 }
 
 TEST_P(Pruning, NaNInvertedAndUnboundedBoxes) {
@@ -79,7 +75,7 @@ TEST_P(Pruning, NaNInvertedAndUnboundedBoxes) {
         const Boxes boxes = hostile_boxes(600, seed);
         PairList want = reference_pairs(boxes);
         ASSERT_GT(want.size(), 100u);
-        expect_reference(*phase_, boxes, "hostile boxes, seed " + std::to_string(seed));
+        test::expect_exact(*phase_, boxes, "hostile boxes, seed " + std::to_string(seed));
     }
 }
 
@@ -90,9 +86,9 @@ TEST_P(Pruning, PointsFlatBoxesAndOneCrowdedSpot) {
         points[i] = {{x, y, 0}, {x, y, 0}};
         flat[i] = {{x, y, 0}, {x + 1.5f, y + 0.5f, 0}};
     }
-    expect_reference(*phase_, points, "points");
-    expect_reference(*phase_, flat, "flat boxes");
-    expect_reference(*phase_, same, "identical points");
+    test::expect_exact(*phase_, points, "points");
+    test::expect_exact(*phase_, flat, "flat boxes");
+    test::expect_exact(*phase_, same, "identical points");
 }
 
 INSTANTIATE_TEST_SUITE_P(Baselines, Pruning, ::testing::Values("prune", "prune_mt", "hgrid", "hgrid_mt"),
