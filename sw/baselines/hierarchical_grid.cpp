@@ -84,9 +84,11 @@ void HierarchicalGridBroadPhase::survey(const std::vector<FloatBox>& boxes, doub
     std::array<Range, kMaxParts> ranges{};
     part_valid_.resize(parts);
     for_parts(boxes.size(), parts, [&](std::size_t p, std::size_t first, std::size_t last) {
-        std::vector<uint32_t>& valid = part_valid_[p];
+        // Filled here and handed back: the parts' vectors share cache lines.
+        std::vector<uint32_t> valid;
+        valid.swap(part_valid_[p]);
         valid.clear();
-        Range& r = ranges[p];
+        Range r;  // kept here, not in ranges, whose parts share a cache line
         for (std::size_t i = first; i < last; ++i) {
             const FloatBox& b = boxes[i];
             if (has_nan(b)) continue;
@@ -97,6 +99,8 @@ void HierarchicalGridBroadPhase::survey(const std::vector<FloatBox>& boxes, doub
                 }
             }
         }
+        ranges[p] = r;
+        part_valid_[p].swap(valid);
     });
     valid_.clear();
     Range all;
@@ -121,13 +125,14 @@ void HierarchicalGridBroadPhase::bulk_extents(const std::vector<FloatBox>& boxes
     const std::size_t parts = parts_for(valid_.size());
     std::array<std::array<float, 3>, kMaxParts> bulk{};
     for_parts(valid_.size(), parts, [&](std::size_t p, std::size_t first, std::size_t last) {
-        std::array<float, 3>& most = bulk[p];
+        std::array<float, 3> most{};  // kept here, not in bulk, whose parts share a cache line
         for (std::size_t k = first; k < last; ++k) {
             for (int axis = 0; axis < 3; ++axis) {
                 const float e = extent(boxes[valid_[k]], axis);
                 if (e <= limit[axis] && e > most[axis]) most[axis] = e;
             }
         }
+        bulk[p] = most;
     });
     for (int axis = 0; axis < 3; ++axis) {
         size[axis] = 0;

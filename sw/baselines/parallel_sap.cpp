@@ -61,14 +61,13 @@ void ParallelSapBroadPhase::sort_boxes(const std::vector<FloatBox>& boxes) {
 // each candidate (an inverted box, min above max, overlaps as the reference
 // says it does).
 void ParallelSapBroadPhase::sweep(unsigned thread) {
-    PairList& mine = found_[thread];
+    PairList& mine = found_.list(thread);
     const std::size_t n = index_.size();
     const float* const lo[3] = {lo_[0].data(), lo_[1].data(), lo_[2].data()};
     const float* const hi[3] = {hi_[0].data(), hi_[1].data(), hi_[2].data()};
     while (true) {
         const std::size_t start = next_.fetch_add(kChunk, std::memory_order_relaxed);
         if (start >= n) return;
-        const std::size_t before = mine.size();
         for (std::size_t k = start; k < std::min(start + kChunk, n); ++k) {
             for (std::size_t j = k + 1; j < n && lo[0][j] <= hi[0][k]; ++j) {
                 if (lo[0][k] <= hi[0][j] && lo[1][j] <= hi[1][k] && lo[1][k] <= hi[1][j] && lo[2][j] <= hi[2][k] &&
@@ -79,24 +78,17 @@ void ParallelSapBroadPhase::sweep(unsigned thread) {
         }
         // Past the budget the frame is refused: stop looking, so the pairs
         // held stay near the budget, not the frame's whole count.
-        const uint64_t total = counted_.fetch_add(mine.size() - before, std::memory_order_relaxed) +
-                               (mine.size() - before);
-        if (total > budget_.max_pairs()) return;
+        if (!found_.report(thread, budget_)) return;
     }
 }
 
 void ParallelSapBroadPhase::find_pairs(const std::vector<FloatBox>& boxes, PairList& out) {
     out.clear();
     sort_boxes(boxes);
-    for (PairList& list : found_) list.clear();
+    found_.clear();
     next_.store(0);
-    counted_.store(0);
     pool_.run([this](unsigned thread) { sweep(thread); });
-    std::size_t total = 0;
-    for (const PairList& list : found_) total += list.size();
-    budget_.check(total);
-    out.reserve(total);
-    for (const PairList& list : found_) out.insert(out.end(), list.begin(), list.end());
+    found_.join(out, budget_);
 }
 
 }  // namespace cdvp

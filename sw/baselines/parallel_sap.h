@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "sw/baselines/broad_phase.h"
+#include "sw/baselines/thread_pairs.h"
 #include "sw/baselines/worker_pool.h"
 
 namespace cdvp {
@@ -44,9 +45,8 @@ private:
     int swept_ = -1;               // the axis of the last frame's sort
     std::size_t frame_boxes_ = 0;  // the last frame's box count
     std::vector<float> lo_[3], hi_[3];
-    std::vector<PairList> found_;  // a thread's pairs
+    ThreadPairs found_;
     std::atomic<std::size_t> next_{0};
-    std::atomic<uint64_t> counted_{0};  // pairs found so far, against the budget
 };
 
 }  // namespace cdvp
