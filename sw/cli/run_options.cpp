@@ -77,12 +77,14 @@ po::options_description run_options_description(RunOptions& o) {
     add_board_option(board, o.layers.board_name);
     add_setting_flags(board, {"board", "bus"}, o.layers.flags);
     // The baselines as the registry names them, so help cannot fall behind it.
-    std::string known;
-    for (const std::string& name : broad_phase_names()) known += (known.empty() ? "" : ", ") + name;
-    static const std::string baseline_help =
-        "software broad phases to time on the same frames, comma-separated: " + known +
-        " (a name ending in _mt runs on --threads threads), or best: the candidates an expert would pick for "
-        "the frames' size, each timed, the fastest named in the summary and the report (docs/baselines.md)";
+    static const std::string baseline_help = [] {
+        std::string known;
+        for (const std::string& name : broad_phase_names()) known += (known.empty() ? "" : ", ") + name;
+        return "software broad phases to time on the same frames, comma-separated: " + known +
+               " (a name ending in _mt runs on --threads threads), or best: the candidates an expert would pick "
+               "for the frames' size, each timed, the fastest named in the summary and the report "
+               "(docs/baselines.md)";
+    }();
     po::options_description host("Host, baselines and faults");
     add_setting_flags(host, {"host", "driver", "run"}, o.layers.flags);
     host.add_options()
