@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -243,15 +244,21 @@ TEST_F(StoredTiming, FixedPointLanesAreFasterThanFloat32AndWiderOnesNoFaster) {
     });
 }
 
+// The FIFO counts 2m-1 hits in a tree of adds: its path grows with the lanes,
+// by about their logarithm; synthesis's choices scatter it a few percent
+// from one m to the next (up to 7% on the VU9P), never more than 10%.
 TEST_F(StoredTiming, TheFifoGrowsDeeperAndSlowerWithTheLanes) {
     for_each_grade([&](const std::string& family, uint32_t grade) {
         for (const std::string memory : {"block_ram", "distributed"}) {
-            double fewer = 0;
+            double fewer = 0;  // the slowest with fewer lanes
             for (const uint32_t m : {1u, 2u, 3u, 4u, 6u, 8u, 12u, 16u, 24u, 32u}) {
                 const PathDelay path = table.pair_collector(family, grade, m, memory);
-                EXPECT_GE(path.ns, fewer) << family << " -" << grade << " " << memory << " m = " << m;
-                fewer = path.ns;
+                EXPECT_GE(path.ns, 0.9 * fewer) << family << " -" << grade << " " << memory << " m = " << m;
+                fewer = std::max(fewer, path.ns);
             }
+            EXPECT_GT(table.pair_collector(family, grade, BoardConfig::kMaxM, memory).ns,
+                      2.0 * table.pair_collector(family, grade, 1, memory).ns)
+                << family << " -" << grade << " " << memory;
             const PathDelay one = table.pair_collector(family, grade, 1, memory);
             const PathDelay many = table.pair_collector(family, grade, BoardConfig::kMaxM, memory);
             EXPECT_GT(many.luts + many.wide_muxes, one.luts + one.wide_muxes) << family << " " << memory;
