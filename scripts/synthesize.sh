@@ -98,7 +98,10 @@ piece_design() {
                 distributed) params="-set DISTRIBUTED 1" ;;
                 *) die "the pair collector's format is its memory: block_ram or distributed, not '$format'" ;;
             esac
-            params="$params -set M $m -set AW $address_bits -set DEPTH $fifo_depth" ;;
+            params="$params -set M $m -set AW $address_bits -set DEPTH $fifo_depth"
+            # LATENCY given (2): fed by lanes of compare latency 2 or more, it counts
+            # their hits a cycle ahead (COUNT_AHEAD); else it counts its cycle's.
+            [[ $latency == - ]] || params="$params -set COUNT_AHEAD 1" ;;
         board_control)
             sources="$root/models/control_registers/rtl/board_control.v"
             params="" ;;

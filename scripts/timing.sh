@@ -12,6 +12,7 @@
 #   scripts/timing.sh --row FAMILY PIECE FORMAT M LATENCY
 #                                      the rows of one synthesis, one a speed grade (e.g.
 #                                      xc2v compare_lane float32 - 2, xcup pair_collector block_ram 8 -;
+#                                      the pair FIFO's LATENCY 2: its hits counted a cycle ahead;
 #                                      the grid board's: grid_cell_function FORMAT - -, cell_loader
 #                                      FORMAT - -, home_cell_filter - M -, grid_sequencer float32 8 -)
 #   scripts/timing.sh --check FAMILY PIECE FORMAT M LATENCY
@@ -325,8 +326,10 @@ all_timing_rows() {
         for m in $ms; do
             echo "$family address_generator - $m -"
             echo "$family tile_walker - $m -"
-            echo "$family pair_collector block_ram $m -"
-            echo "$family pair_collector distributed $m -"
+            for latency in - 2; do  # 2: the hits counted a cycle ahead (lanes of latency 2 or more)
+                echo "$family pair_collector block_ram $m $latency"
+                echo "$family pair_collector distributed $m $latency"
+            done
             echo "$family home_cell_filter - $m -"
         done
         for format in float32 fixed8 fixed16 fixed24 fixed32; do  # the synthesis table's; fixedK between: the slower

@@ -93,11 +93,12 @@ PathDelay TimingTable::lane(const std::string& family, uint32_t speed_grade, con
 }
 
 PathDelay TimingTable::by_m(std::string_view family, std::string_view piece, std::string_view format,
-                            uint32_t speed_grade, uint32_t m, const std::string& what) const {
+                            uint32_t speed_grade, uint32_t m, const std::string& what, uint32_t latency) const {
     const Row* below = nullptr;
     const Row* above = nullptr;
     for (const std::size_t k : rows_of(family, piece, format, speed_grade, what)) {
         const Row& row = rows_[k];
+        if (row.latency != latency) continue;
         if (row.m <= m && (below == nullptr || row.m > below->m)) below = &row;
         if (row.m >= m && (above == nullptr || row.m < above->m)) above = &row;
     }
@@ -117,8 +118,10 @@ PathDelay TimingTable::tile_walker(const std::string& family, uint32_t speed_gra
 }
 
 PathDelay TimingTable::pair_collector(const std::string& family, uint32_t speed_grade, uint32_t m,
-                                      const std::string& memory) const {
-    return by_m(family, "pair_collector", memory, speed_grade, m, "pair FIFO (" + memory + ")");
+                                      const std::string& memory, bool counted_ahead) const {
+    return counted_ahead ? by_m(family, "pair_collector", memory, speed_grade, m,
+                                "pair FIFO (" + memory + ", hits counted a cycle ahead)", 2)
+                         : by_m(family, "pair_collector", memory, speed_grade, m, "pair FIFO (" + memory + ")");
 }
 
 PathDelay TimingTable::control(const std::string& family, uint32_t speed_grade) const {
@@ -216,7 +219,11 @@ BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
         const PathDelay generator = table.address_generator(family, grade, board.m);
         timing.pieces.push_back({"address_generator", "address generator", generator});
     }
-    const PathDelay collector = table.pair_collector(family, grade, board.m, fifo_memory_name(board.fifo_memory));
+    // Lanes of compare latency 2 or more give the FIFO their hits' count a
+    // cycle ahead; the grid board's pass through the one-cell filter first.
+    const bool counted_ahead = !board.grid && board.compare_latency >= 2;
+    const PathDelay collector =
+        table.pair_collector(family, grade, board.m, fifo_memory_name(board.fifo_memory), counted_ahead);
     timing.pieces.push_back({"pair_fifo", fifo, collector, false});
     timing.pieces.push_back({"controller", "controller", table.control(family, grade)});
     return timing;

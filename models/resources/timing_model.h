@@ -52,8 +52,11 @@ public:
     PathDelay address_generator(const std::string& family, uint32_t speed_grade, uint32_t m) const;
     PathDelay tile_walker(const std::string& family, uint32_t speed_grade, uint32_t m) const;
     // memory: where the FIFO's entries live, "block_ram" or "distributed".
-    PathDelay pair_collector(const std::string& family, uint32_t speed_grade, uint32_t m,
-                             const std::string& memory) const;
+    // counted_ahead: fed by lanes of compare latency 2 or more, it counts
+    // their hits a cycle ahead (pair_collector.v's COUNT_AHEAD: the rows of
+    // latency 2); else in the cycle they arrive (latency '-').
+    PathDelay pair_collector(const std::string& family, uint32_t speed_grade, uint32_t m, const std::string& memory,
+                             bool counted_ahead) const;
     PathDelay control(const std::string& family, uint32_t speed_grade) const;
     // The grid board's pieces. A fixedK format between two synthesised widths
     // takes the slower of the two neighbours.
@@ -68,15 +71,16 @@ public:
 
 private:
     struct Row : TableRowKey {
-        uint32_t latency = 0;  // compare lanes only
+        uint32_t latency = 0;  // compare lanes; the pair FIFO's 2: its hits counted a cycle ahead
         uint32_t speed_grade = 0;
         PathDelay path;
     };
     using Key = std::tuple<std::string, std::string, std::string, uint32_t>;  // family, piece, format, grade
     const std::vector<std::size_t>& rows_of(std::string_view family, std::string_view piece, std::string_view format,
                                             uint32_t speed_grade, const std::string& what) const;
+    // Of the rows of that latency ('-': 0).
     PathDelay by_m(std::string_view family, std::string_view piece, std::string_view format, uint32_t speed_grade,
-                   uint32_t m, const std::string& what) const;
+                   uint32_t m, const std::string& what, uint32_t latency = 0) const;
     PathDelay by_format(const std::string& family, const std::string& piece, uint32_t speed_grade,
                         const std::string& format, const std::string& what) const;
     std::vector<Row> rows_;

@@ -10,7 +10,7 @@ module tb_compare_lane;
     wire hit;
     integer count, v, e, out;
     compare_lane #(.FLOAT(FLOAT), .WIDTH(WIDTH), .LATENCY(LATENCY)) dut (
-        .clk(clk), .enable(1'b1), .valid_in(1'b1), .box_i(box_i), .box_j(box_j), .hit(hit));
+        .clk(clk), .enable(1'b1), .valid_in(1'b1), .box_i(box_i), .box_j(box_j), .hit(hit), .hit_next());
     initial begin
         if (!$value$plusargs("count=%d", count)) $fatal(1, "+count=N missing");
         $readmemh("vectors.hex", vectors);

@@ -14,6 +14,7 @@ module board_host #(
     parameter FIFO_DISTRIBUTED = 0,
     parameter BUFFER_DEPTH = 512,
     parameter LISTED = 0,            // pair_collector's: 1 when each lane's column index is given
+    parameter COUNT_AHEAD = 0,       // pair_collector's: 1 when lane_hits_next is what lane_hits becomes
     parameter [31:0] ID_VALUE = 32'hCD7B_0003,
     parameter [31:0] FORMAT_VALUE = 0,        // FORMAT: 0 float32, else the fixed-point width
     parameter [31:0] TILE_BOXES_VALUE = 0,    // TILE_BOXES
@@ -49,6 +50,7 @@ module board_host #(
     // the slot leaving the compare stages: 0 bubble, 1 window, 2 end marker
     input  wire [1:0]        leaving,
     input  wire [2*M-2:0]    lane_hits,
+    input  wire [2*M-2:0]    lane_hits_next,    // at the next edge with enable (COUNT_AHEAD)
     input  wire [AW-1:0]     pair_row,
     input  wire [AW-1:0]     pair_first,        // LISTED = 0: lane k pairs with pair_first + k
     input  wire [(2*M-1)*AW-1:0] pair_columns,  // LISTED = 1: lane k's column at k*AW
@@ -150,13 +152,17 @@ module board_host #(
     wire drain_ready = running && !buffer_full;
     wire pause_now = running && fifo_level != 0 && buffer_full;
     wire flow = running && !end_seen && !pause_now;
-    assign pushed_hits = flow && leaving == WINDOW ? lane_hits : {LANES{1'b0}};
+    wire push = flow && leaving == WINDOW;
+    localparam PCW = $clog2(2 * M);
+    wire [PCW-1:0] pushed_count;  // pairs in pushed_hits (the FIFO counts them)
+    assign pushed_hits = push ? lane_hits : {LANES{1'b0}};
     wire take = fifo_level != 0 && drain_ready;
     wire fifo_empties = fifo_level == 0 || (fifo_level == 1 && take);
     assign done_now = running && !pause_now && (end_seen || (enable && leaving == END)) && fifo_empties;
     pair_collector #(.M(M), .AW(AW), .DEPTH(FIFO_DEPTH), .DISTRIBUTED(FIFO_DISTRIBUTED), .DRAIN_FIRST(1),
-                     .LISTED(LISTED)) collector (
-        .clk(clk), .clear(start_go), .hits(pushed_hits), .row(pair_row), .first(pair_first), .columns(pair_columns),
+                     .LISTED(LISTED), .COUNT_AHEAD(COUNT_AHEAD)) collector (
+        .clk(clk), .clear(start_go), .hits(pushed_hits), .hits_next(lane_hits_next), .hits_step(enable),
+        .push(push), .pushed(pushed_count), .row(pair_row), .first(pair_first), .columns(pair_columns),
         .drain_ready(drain_ready), .room(room), .out_valid(out_valid), .out_pair(out_pair), .level(fifo_level));
 
     board_control #(.CW(64), .MODEL_TIMING(1)) control (
@@ -164,12 +170,6 @@ module board_host #(
         .pipeline_empty(done_now), .fifo_room(room && !end_seen), .buffer_full(pause_now),
         .enable(enable), .state(state), .cycles(cycles), .stalls(stalls), .irq(control_irq));
 
-    reg [LANES:0] pushed_count;
-    integer h;
-    always @* begin
-        pushed_count = 0;
-        for (h = 0; h < LANES; h = h + 1) pushed_count = pushed_count + {{LANES{1'b0}}, pushed_hits[h]};
-    end
 
     // Host reads of the pair buffer: pair k at 8k, first index in the low word.
     wire pair_read = re && region == 7;
@@ -196,7 +196,7 @@ module board_host #(
             else if (take) buffered <= buffered + 1'b1;
             if (resume_go) buffer_write_at <= 0;
             else if (out_valid) buffer_write_at <= buffer_write_at + 1'b1;
-            if (enable) total_pairs <= total_pairs + {{(63-LANES){1'b0}}, pushed_count};
+            if (enable) total_pairs <= total_pairs + {{(63-PCW){1'b0}}, pushed_count};
         end
     end
 

@@ -96,6 +96,7 @@ module collision_board_top #(
     wire [AW-1:0] store_index;
     wire [6*32-1:0] store_data;
     wire [LANES-1:0] lane_hits;
+    wire [LANES-1:0] lane_hits_next;
     wire [LANES-1:0] pushed_hits;
     wire out_valid;
     wire [2*AW-1:0] out_pair;
@@ -107,14 +108,14 @@ module collision_board_top #(
     reg [AW-1:0] row_q [0:D-1];
     reg [AW-1:0] first_q [0:D-1];
     board_host #(.M(M), .AW(AW), .FIFO_DEPTH(FIFO_DEPTH), .FIFO_DISTRIBUTED(FIFO_DISTRIBUTED),
-                 .BUFFER_DEPTH(BUFFER_DEPTH), .ID_VALUE(32'hCD7B_0003), .FORMAT_VALUE(FLOAT != 0 ? 0 : WIDTH),
+                 .BUFFER_DEPTH(BUFFER_DEPTH), .COUNT_AHEAD(COMPARE_LATENCY >= 2 ? 1 : 0), .ID_VALUE(32'hCD7B_0003), .FORMAT_VALUE(FLOAT != 0 ? 0 : WIDTH),
                  .TILE_BOXES_VALUE(TILE_BOXES),
                  .TILE_TIMING_VALUE(TILED ? (TILE_LATENCY & 32'hFFFF) | (32'd1 << 16) : 0)) host (
         .clk(clk), .reset(reset), .addr(addr), .wdata(wdata), .we(we), .re(re), .rdata(rdata), .rvalid(rvalid),
         .irq(irq), .offset(offset), .top_register(32'd0), .store_we(store_we), .store_index(store_index),
         .store_data(store_data), .start_go(start_go), .resume_go(resume_go), .enable(enable), .state(state), .cycles(cycles),
         .stalls(stalls), .object_count(object_count), .done_now(done_now), .sweeping(src_sweeping), .leaving(kind_q[D-1]),
-        .lane_hits(lane_hits), .pair_row(row_q[D-1]), .pair_first(first_q[D-1]), .pair_columns({(LANES*AW){1'b0}}),
+        .lane_hits(lane_hits), .lane_hits_next(lane_hits_next), .pair_row(row_q[D-1]), .pair_first(first_q[D-1]), .pair_columns({(LANES*AW){1'b0}}),
         .pushed_hits(pushed_hits), .out_valid(out_valid), .out_pair(out_pair), .fifo_level(fifo_level),
         .buffered(buffered), .total_pairs(total_pairs));
 
@@ -219,14 +220,14 @@ module collision_board_top #(
                     assign read_a = lane_addr[(2*p-1)*AW +: AW];
                     compare_lane #(.FLOAT(FLOAT), .WIDTH(WIDTH), .LATENCY(COMPARE_LATENCY)) lane_a (
                         .clk(clk), .enable(enable), .valid_in(valid_q[2*p-1]),
-                        .box_i(box_i), .box_j(qa), .hit(lane_hits[2*p-1]));
+                        .box_i(box_i), .box_j(qa), .hit(lane_hits[2*p-1]), .hit_next(lane_hits_next[2*p-1]));
                 end
                 coordinate_copy #(.W(WIDTH), .AW(AW)) memory (
                     .clk(clk), .en_a(enable | writing), .we(store_we), .addr_a(writing ? store_index : read_a),
                     .d(store_data), .q_a(qa), .en_b(enable), .addr_b(lane_addr[2*p*AW +: AW]), .q_b(qb));
                 compare_lane #(.FLOAT(FLOAT), .WIDTH(WIDTH), .LATENCY(COMPARE_LATENCY)) lane_b (
                     .clk(clk), .enable(enable), .valid_in(valid_q[2*p]),
-                    .box_i(box_i), .box_j(qb), .hit(lane_hits[2*p]));
+                    .box_i(box_i), .box_j(qb), .hit(lane_hits[2*p]), .hit_next(lane_hits_next[2*p]));
             end
         end else begin : g_tiles
             // Row buffers (port 0), ping and pong; then the column buffers, ping
@@ -250,7 +251,7 @@ module collision_board_top #(
                     assign read_a = columns_local[(2*p-1)*TAW +: TAW];
                     compare_lane #(.FLOAT(FLOAT), .WIDTH(WIDTH), .LATENCY(COMPARE_LATENCY)) lane_a (
                         .clk(clk), .enable(enable), .valid_in(valid_q[2*p-1]),
-                        .box_i(box_i), .box_j(column_buffer_q ? qa1 : qa0), .hit(lane_hits[2*p-1]));
+                        .box_i(box_i), .box_j(column_buffer_q ? qa1 : qa0), .hit(lane_hits[2*p-1]), .hit_next(lane_hits_next[2*p-1]));
                 end
                 coordinate_copy #(.W(WIDTH), .AW(TAW)) ping (
                     .clk(clk), .en_a(enable | land_column[0]), .we({6{land_column[0]}}),
@@ -262,7 +263,7 @@ module collision_board_top #(
                     .en_b(enable), .addr_b(columns_local[2*p*TAW +: TAW]), .q_b(qb1));
                 compare_lane #(.FLOAT(FLOAT), .WIDTH(WIDTH), .LATENCY(COMPARE_LATENCY)) lane_b (
                     .clk(clk), .enable(enable), .valid_in(valid_q[2*p]),
-                    .box_i(box_i), .box_j(column_buffer_q ? qb1 : qb0), .hit(lane_hits[2*p]));
+                    .box_i(box_i), .box_j(column_buffer_q ? qb1 : qb0), .hit(lane_hits[2*p]), .hit_next(lane_hits_next[2*p]));
             end
         end
     endgenerate

@@ -121,7 +121,8 @@ module grid_board_top #(
         .irq(irq), .offset(offset), .top_register(grid_register), .store_we(store_we), .store_index(store_index),
         .store_data(store_data), .start_go(start_go), .resume_go(resume_go), .enable(enable), .state(state),
         .cycles(cycles), .stalls(stalls), .object_count(object_count), .done_now(done_now),
-        .sweeping(src_sweeping), .leaving(kind_q[D-1]), .lane_hits(kept_hits), .pair_row(pair_row),
+        .sweeping(src_sweeping), .leaving(kind_q[D-1]), .lane_hits(kept_hits),
+        .lane_hits_next({LANES{1'b0}}), .pair_row(pair_row),
         .pair_first({AW{1'b0}}), .pair_columns(pair_columns), .pushed_hits(pushed_hits), .out_valid(out_valid),
         .out_pair(out_pair), .fifo_level(fifo_level), .buffered(buffered), .total_pairs(total_pairs));
 
@@ -255,6 +256,9 @@ module grid_board_top #(
     wire [6*WIDTH-1:0] row_box = large_q ? stream_q : row_entry[6*WIDTH-1:0];
     wire [AW-1:0] row_index = large_q ? stream_index_q : row_entry[6*WIDTH +: AW];
     wire [LANES-1:0] lane_hits;
+    // What they become at the next slot: unused, as the one-cell filter
+    // stands between the lanes and the pair FIFO, which counts its own cycle's.
+    wire [LANES-1:0] lane_hits_next;
     wire [LANES*24-1:0] column_first;
     wire [LANES*AW-1:0] column_index;
     generate
@@ -264,7 +268,7 @@ module grid_board_top #(
             assign column_index[k*AW +: AW] = column_entry[6*WIDTH +: AW];
             compare_lane #(.FLOAT(FLOAT), .WIDTH(WIDTH), .LATENCY(COMPARE_LATENCY)) lane (
                 .clk(clk), .enable(enable), .valid_in(valid_q[k]), .box_i(row_box),
-                .box_j(column_entry[6*WIDTH-1:0]), .hit(lane_hits[k]));
+                .box_j(column_entry[6*WIDTH-1:0]), .hit(lane_hits[k]), .hit_next(lane_hits_next[k]));
         end
     endgenerate
 

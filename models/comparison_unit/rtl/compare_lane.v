@@ -16,7 +16,12 @@ module compare_lane #(
     input  wire               valid_in,  // the lane's port holds a box this cycle
     input  wire [6*WIDTH-1:0] box_i,
     input  wire [6*WIDTH-1:0] box_j,
-    output wire               hit
+    output wire               hit,
+    // What hit becomes at the next edge with enable: from registers at
+    // LATENCY 2 and more (the stage before hit), so a count of the lanes'
+    // hits can be made a cycle ahead (the pair FIFO's); at LATENCY 0 it is
+    // hit itself.
+    output wire               hit_next
 );
     wire [5:0] le;
     genvar axis;
@@ -40,6 +45,7 @@ module compare_lane #(
     generate
         if (LATENCY == 0) begin : g_comb
             assign hit = valid_in & (&le);
+            assign hit_next = hit;
         end else begin : g_piped
             reg [6:0] compared;  // stage 1: comparator results and valid
             reg [LATENCY-1:0] anded;  // stage 2 onwards: the AND, delayed
@@ -50,6 +56,13 @@ module compare_lane #(
                 for (s = 1; s < LATENCY; s = s + 1) anded[s] <= anded[s-1];
             end
             assign hit = (LATENCY == 1) ? (compared[6] & (&compared[5:0])) : anded[LATENCY-2];
+            if (LATENCY == 1) begin : g_next_compared
+                assign hit_next = valid_in & (&le);
+            end else if (LATENCY == 2) begin : g_next_anded
+                assign hit_next = compared[6] & (&compared[5:0]);
+            end else begin : g_next_delayed
+                assign hit_next = anded[LATENCY-3];
+            end
         end
     endgenerate
 endmodule

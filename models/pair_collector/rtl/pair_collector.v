@@ -2,19 +2,21 @@
 // the pipeline while the FIFO lacks room for all of a cycle's hits: the
 // model's rule, counted in pairs), and hands one pair a cycle to the pair
 // buffer in row-then-column order. A cycle with hits is stored as one entry,
-// {row, first, hit count, hit mask}; the read side takes the lowest set bit
-// of the head entry's mask each cycle and clears it, and moves to the next
-// entry with its count's last pair. One write and one read a cycle, so the
-// entries fit a simple dual-port memory whatever m is.
-// LISTED = 1 (the grid board, whose lanes read boxes by cell buffer
+// {row, first, hit mask}; the read side passes on the lowest hit of the head
+// entry each cycle and moves to the next entry with its last. One write and
+// one read a cycle, so the entries fit a simple dual-port memory whatever m
+// is. LISTED = 1 (the grid board, whose lanes read boxes by cell buffer
 // position): an entry keeps every lane's column index instead of the first,
-// {row, columns, hit count, hit mask}, and a pair leaves as {min, max} of the
-// row and its lane's column.
-// Written for its clock as well as the model's cycles (which it keeps): no
-// path runs through every lane in turn (the hits counted by a tree of adds,
-// the lowest hit isolated on the carry chain, its lane an OR of one-hot
-// bits), the free places kept beside the level so room is one compare, and
-// every count's next value made both ways and chosen by the write.
+// {row, columns, hit mask}, and a pair leaves as {min, max} of the row and
+// its lane's column.
+// Written for its clock as well as the model's cycles (which it keeps): the
+// head entry is held in registers with its next pair found a cycle ahead
+// (the memory reads the entry after it), no path runs through every lane in
+// turn (hits counted by a tree of adds, the lowest isolated on the carry
+// chain, its lane an OR of one-hot bits), the free places are kept beside
+// the level so room is one compare, every count's next value is made both
+// ways for the write to choose, and with COUNT_AHEAD the hits are counted a
+// cycle before they arrive (docs/resources.md, "What the pieces reach").
 module pair_collector #(
     parameter M = 8,
     parameter AW = 9,
@@ -22,11 +24,19 @@ module pair_collector #(
     parameter DISTRIBUTED = 0, // 1: entries in LUTs (distributed RAM), 0: in block RAM
     parameter DRAIN_FIRST = 0, // 1: the pair leaving this cycle frees its place for this
                                // cycle's hits (the C++ model drains before it pushes)
-    parameter LISTED = 0       // 1: each lane's column given (columns), pairs as {min, max}
+    parameter LISTED = 0,      // 1: each lane's column given (columns), pairs as {min, max}
+    parameter COUNT_AHEAD = 0  // 1: the hits counted a cycle ahead, from hits_next (lanes of
+                               // compare latency 2 or more), so room waits on no count
 ) (
     input  wire            clk,
     input  wire            clear,
-    input  wire [2*M-2:0]  hits,
+    input  wire [2*M-2:0]  hits,         // this cycle's hits, none unless push
+    // COUNT_AHEAD: what the lanes' hits become at the next hits_step edge,
+    // and whether this cycle's are pushed (hits is zero otherwise).
+    input  wire [2*M-2:0]  hits_next,
+    input  wire            hits_step,
+    input  wire            push,
+    output wire [$clog2(2*M)-1:0] pushed,  // pairs in this cycle's hits (at most 2M-1)
     input  wire [AW-1:0]   row,
     input  wire [AW-1:0]   first,
     input  wire [(2*M-1)*AW-1:0] columns,  // LISTED: lane k's column at k*AW
@@ -40,32 +50,37 @@ module pair_collector #(
     localparam PW = DEPTH > 1 ? $clog2(DEPTH) : 1;  // a one-pair FIFO (m = 1) still has an address bit
     localparam CW = $clog2(DEPTH + 1);
     localparam LW = LANES > 1 ? $clog2(LANES) : 1;
-    // An entry: row, first or columns, its hits' count (from the write side's
-    // room check, so the read side knows its last pair without scanning the
-    // mask; with one lane an entry is one pair), hit mask.
-    localparam NB = LANES > 1 ? LANES + LW + 1 : LANES;  // where the first or columns begin
-    localparam EW = LISTED ? AW + LANES * AW + NB : 2 * AW + NB;
+    localparam EW = LISTED ? AW + LANES * AW + LANES : 2 * AW + LANES;  // entry: row, first or columns, mask
 
-    reg [PW-1:0] write_at, read_at;
+    reg [PW-1:0] write_at;
+    reg [PW-1:0] read_after, read_later;  // the head's next two addresses (wrapped)
     reg [CW-1:0] pairs;        // pairs held: the model's FIFO level
     reg [CW-1:0] held;         // entries held
-    wire [EW-1:0] head;        // entries[read_at], read synchronously
-    reg [LANES-1:0] consumed;  // the head's hits already passed on
-    reg [LW:0] passed;         // how many: the head's last pair is its count's
-    reg [PW-1:0] read_after;   // read_at's successor, wrapped
 
     reg [CW-1:0] free;         // DEPTH - pairs, kept beside it: room is one compare
     // Pairs in this cycle's hits: a balanced tree of adds (a chain through
-    // every lane was the longest path once the read side was flattened).
-    reg [LW:0] taken;
+    // every lane was the longest path once the read side was flattened), over
+    // this cycle's hits or, COUNT_AHEAD, over the next and registered with them.
+    wire [LW:0] taken;
+    reg [LW:0] hit_count;
     reg [LW:0] sums [0:LANES-1];
     integer k, w;
     always @* begin
-        for (k = 0; k < LANES; k = k + 1) sums[k] = {{LW{1'b0}}, hits[k]};
+        for (k = 0; k < LANES; k = k + 1) sums[k] = {{LW{1'b0}}, COUNT_AHEAD != 0 ? hits_next[k] : hits[k]};
         for (w = 1; w < LANES; w = w * 2)
             for (k = 0; k + w < LANES; k = k + 2 * w) sums[k] = sums[k] + sums[k + w];
-        taken = sums[0];
+        hit_count = sums[0];
     end
+    generate
+        if (COUNT_AHEAD != 0) begin : g_ahead
+            reg [LW:0] counted_ahead;  // the lanes' hits' count, a register beside theirs
+            always @(posedge clk) if (hits_step) counted_ahead <= hit_count;
+            assign taken = push ? counted_ahead : {(LW+1){1'b0}};
+        end else begin : g_now
+            assign taken = hit_count;
+        end
+    endgenerate
+    assign pushed = taken[$clog2(2*M)-1:0];
     wire take;
     // The compare's operands at one width (each extended by a bit at least).
     localparam XW = (CW > LW + 1 ? CW : LW + 1) + 1;
@@ -87,33 +102,40 @@ module pair_collector #(
     wire [CW-1:0] held_written = held + 1'b1 - advance, held_kept = held - advance;
     wire [EW-1:0] entry;
 
-    // The lowest hit of the head entry not yet passed on: isolated with the
-    // carry chain (x & -x), and its lane number an OR of the one-hot bits
-    // (each number bit a balanced OR), not a priority chain through every
-    // lane, which was the FIFO's longest path (docs/resources.md).
-    wire [LANES-1:0] left = held != 0 ? head[LANES-1:0] & ~consumed : 0;
-    wire [LANES-1:0] bit_taken = left & (~left + 1'b1);
-    reg [LW-1:0] lane;
-    integer l;
-    always @* begin
-        lane = 0;
-        for (l = 0; l < LANES; l = l + 1) lane = lane | ({LW{bit_taken[l]}} & l[LW-1:0]);
-    end
+    // The head entry lives in registers, with its hits not yet passed on and
+    // the lowest of them (one-hot and its lane) found when they change, a
+    // cycle ahead of its use; the memory meanwhile reads the entry after it.
+    // So a pair leaves from registers, and nothing runs from the memory's
+    // output through the lanes' search into its address (the FIFO's longest
+    // path as first written). The lowest hit is isolated on the carry chain
+    // (x & -x) and its lane is an OR of the one-hot bits.
+    reg [EW-1:0] head;               // the head entry as written
+    reg [LANES-1:0] left;            // its hits not yet passed on
+    reg [LANES-1:0] bit_taken;       // the lowest of them, one-hot
+    reg [LW-1:0] lane;               // its lane
+    reg last;                        // it is the only one left: the entry leaves with it
+    wire [EW-1:0] after_head;        // entries[read_after]: the next head
     // A held head has a hit left (an entry holds one at least and leaves
     // with its last), so neither needs the mask.
     assign take = held != 0 && drain_ready;
-    wire [NB-1:0] counted;  // this cycle's hits and, with more than one lane, their count
-    generate
-        if (LANES > 1) begin : g_counted
-            assign advance = take && passed + 1'b1 == head[LANES +: LW + 1];
-            assign counted = {taken, hits};
-        end else begin : g_single
-            assign advance = take;
-            assign counted = hits;
-        end
-    endgenerate
+    assign advance = take && last;
+    wire load_written = write && (held == 0 || (held == 1 && advance));  // the entry written is the next head
+    wire load_after = advance && held != 1;                              // the one after the head is
+    // The next hits left, lowest and last from each source at once, chosen
+    // at the end: whether the write is the next head waits on room, and
+    // room on the count.
+    wire [LANES-1:0] mask_written = hits, mask_after = after_head[LANES-1:0], mask_kept = left & ~bit_taken;
+    wire [LANES-1:0] bit_written, bit_after, bit_kept;
+    wire [LW-1:0] lane_written, lane_after, lane_kept;
+    wire last_written, last_after, last_kept;
+    lowest_hit #(.LANES(LANES), .LW(LW)) lowest_written (
+        .mask(mask_written), .one_hot(bit_written), .lane(lane_written), .only(last_written));
+    lowest_hit #(.LANES(LANES), .LW(LW)) lowest_after (
+        .mask(mask_after), .one_hot(bit_after), .lane(lane_after), .only(last_after));
+    lowest_hit #(.LANES(LANES), .LW(LW)) lowest_kept (
+        .mask(mask_kept), .one_hot(bit_kept), .lane(lane_kept), .only(last_kept));
     assign level = pairs;
-    wire [PW-1:0] read_next = advance ? read_after : read_at;
+    wire [PW-1:0] read_from = advance ? read_later : read_after;  // the memory's read: after the next head
 
     // The head's pair for `lane`: its row and column.
     wire [AW-1:0] head_row = head[EW-1 -: AW];
@@ -121,48 +143,84 @@ module pair_collector #(
     wire [2*AW-1:0] head_pair;
     generate
         if (LISTED) begin : g_listed
-            assign entry = {row, columns, counted};
+            assign entry = {row, columns, hits};
             // The taken lane's column: an AND-OR over the one-hot bit, as flat as the lane number.
             reg [AW-1:0] column_taken;
             integer c;
             always @* begin
                 column_taken = 0;
-                for (c = 0; c < LANES; c = c + 1) column_taken = column_taken | ({AW{bit_taken[c]}} & head[NB + c * AW +: AW]);
+                for (c = 0; c < LANES; c = c + 1) column_taken = column_taken | ({AW{bit_taken[c]}} & head[LANES + c * AW +: AW]);
             end
             assign head_column = column_taken;
             assign head_pair = head_row < head_column ? {head_row, head_column} : {head_column, head_row};
         end else begin : g_consecutive
-            assign entry = {row, first, counted};
-            assign head_column = head[NB +: AW] + lane;
+            assign entry = {row, first, hits};
+            assign head_column = head[LANES +: AW] + lane;
             assign head_pair = {head_row, head_column};
         end
     endgenerate
 
     pair_fifo_memory #(.W(EW), .DEPTH(DEPTH), .AW(PW), .DISTRIBUTED(DISTRIBUTED)) entries (
-        .clk(clk), .write(write), .write_at(write_at), .data(entry), .read_at(read_next), .q(head));
+        .clk(clk), .write(write), .write_at(write_at), .data(entry), .read_at(read_from), .q(after_head));
 
     always @(posedge clk) begin
         out_valid <= take;
         if (take) out_pair <= head_pair;
+        if (load_written || load_after) head <= load_written ? entry : after_head;
+        if (load_written) begin
+            left <= mask_written;
+            bit_taken <= bit_written;
+            lane <= lane_written;
+            last <= last_written;
+        end else if (load_after) begin
+            left <= mask_after;
+            bit_taken <= bit_after;
+            lane <= lane_after;
+            last <= last_after;
+        end else if (take) begin
+            left <= mask_kept;
+            bit_taken <= bit_kept;
+            lane <= lane_kept;
+            last <= last_kept;
+        end
         if (clear) begin
             write_at <= 0;
-            read_at <= 0;
             read_after <= DEPTH > 1 ? 1 : 0;
-            passed <= 0;
+            read_later <= DEPTH > 2 ? 2 : DEPTH > 1 ? 0 : 0;
             pairs <= 0;
             free <= DEPTH;
             held <= 0;
-            consumed <= 0;
         end else begin
             if (write) write_at <= write_at + 1 == DEPTH ? 0 : write_at + 1;
-            read_at <= read_next;
-            if (advance) read_after <= read_after + 1 == DEPTH ? 0 : read_after + 1;
-            passed <= advance ? 0 : passed + take;
+            if (advance) begin
+                read_after <= read_later;
+                read_later <= read_later + 1 == DEPTH ? 0 : read_later + 1;
+            end
             pairs <= write ? pairs_written : pairs_kept;
             free <= write ? free_written : free_kept;
             held <= write ? held_written : held_kept;
-            consumed <= advance ? 0 : take ? consumed | bit_taken : consumed;
         end
+    end
+endmodule
+
+// The lowest set bit of a mask (isolated on the carry chain, x & -x), its
+// lane (an OR of the one-hot bits: each lane-number bit a balanced OR), and
+// whether it is the only one.
+module lowest_hit #(
+    parameter LANES = 15,
+    parameter LW = 4
+) (
+    input  wire [LANES-1:0] mask,
+    output wire [LANES-1:0] one_hot,
+    output reg  [LW-1:0]    lane,
+    output wire             only
+);
+    assign one_hot = mask & (~mask + 1'b1);
+    assign only = (mask & ~one_hot) == 0;
+    integer l;
+    always @* begin
+        lane = 0;
+        for (l = 0; l < LANES; l = l + 1) lane = lane | ({LW{one_hot[l]}} & l[LW-1:0]);
     end
 endmodule
 
