@@ -119,9 +119,8 @@ PathDelay TimingTable::tile_walker(const std::string& family, uint32_t speed_gra
 
 PathDelay TimingTable::pair_collector(const std::string& family, uint32_t speed_grade, uint32_t m,
                                       const std::string& memory, bool counted_ahead) const {
-    return counted_ahead ? by_m(family, "pair_collector", memory, speed_grade, m,
-                                "pair FIFO (" + memory + ", hits counted a cycle ahead)", 2)
-                         : by_m(family, "pair_collector", memory, speed_grade, m, "pair FIFO (" + memory + ")");
+    const std::string what = "pair FIFO (" + memory + (counted_ahead ? ", hits counted a cycle ahead)" : ")");
+    return by_m(family, "pair_collector", memory, speed_grade, m, what, counted_ahead ? 2 : 0);
 }
 
 PathDelay TimingTable::control(const std::string& family, uint32_t speed_grade) const {

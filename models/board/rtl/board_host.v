@@ -170,7 +170,6 @@ module board_host #(
         .pipeline_empty(done_now), .fifo_room(room && !end_seen), .buffer_full(pause_now),
         .enable(enable), .state(state), .cycles(cycles), .stalls(stalls), .irq(control_irq));
 
-
     // Host reads of the pair buffer: pair k at 8k, first index in the low word.
     wire pair_read = re && region == 7;
     wire [2*AW-1:0] pair_word;

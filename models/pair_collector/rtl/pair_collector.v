@@ -186,7 +186,7 @@ module pair_collector #(
         if (clear) begin
             write_at <= 0;
             read_after <= DEPTH > 1 ? 1 : 0;
-            read_later <= DEPTH > 2 ? 2 : DEPTH > 1 ? 0 : 0;
+            read_later <= DEPTH > 2 ? 2 : 0;
             pairs <= 0;
             free <= DEPTH;
             held <= 0;
