@@ -27,6 +27,7 @@ configurations=(
   "-GM=24 -GCOMPARE_LATENCY=2 -GBUFFER_DEPTH=262144"
   "-GM=2 -GAW=10 -GTILE_BOXES=64"
   "-GM=3 -GTILE_BOXES=32 -GTILE_LATENCY=0 -GCOMPARE_LATENCY=1 -GFLOAT=0 -GWIDTH=12"
+  "-GM=8 -GAW=4 -GTILE_BOXES=1 -GTILE_LATENCY=3"  # tiles of one box: every diagonal block empty
 )
 status=0
 for g in "${configurations[@]}"; do

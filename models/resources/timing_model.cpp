@@ -213,7 +213,7 @@ BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
         timing.pieces.push_back({"one_cell_filter", "one-cell filter in front of the pair FIFO",
                                  table.home_cell_filter(family, grade, board.m), false});
     } else if (board.tiled) {
-        timing.pieces.push_back({"tile_walker", "tile walker", table.tile_walker(family, grade, board.m), false});
+        timing.pieces.push_back({"tile_walker", "tile walker", table.tile_walker(family, grade, board.m)});
     } else {
         const PathDelay generator = table.address_generator(family, grade, board.m);
         timing.pieces.push_back({"address_generator", "address generator", generator});

@@ -96,10 +96,9 @@ struct PieceTiming {
     std::string piece;  // "float32 comparison lane at compare latency 2", "pair FIFO in block RAM", ...
     PathDelay path;
     // Whether the board's clock is held to this piece. The pair FIFO's
-    // bookkeeping and the tile walker are written as one combinational step a
-    // cycle, to match the C++ model cycle for cycle, not to meet a clock (the
-    // paper's board drained its FIFO at its clock): their paths are reported,
-    // not held to (docs/resources.md). So are the grid board's cell-function
+    // bookkeeping, rewritten for the paper's clock, does not yet reach every
+    // present-day clock at every m: its path is reported, not held to
+    // (docs/resources.md). So are the grid board's cell-function
     // unit (its adder one of the model's four stages), one-cell filter
     // (combinational in front of the pair FIFO) and binning sequencer (its
     // setup divider and bounds adders one step a slot; docs/grid_board.md).

@@ -602,6 +602,55 @@ TEST(BoardTopRtl, TiledFixed12WithoutSsramLatencyMatchesTheModel) {
     run_top_scene(scene, 106, true, true);
 }
 
+TEST(BoardTopRtl, TilesOfOneAndTwoBoxesMatchTheModel) {
+    // One-box tiles: every diagonal block but the last is empty and left in
+    // the slot it is entered; two-box tiles: every diagonal block one window.
+    for (const uint32_t tile : {1u, 2u}) {
+        TopScene scene;
+        scene.board = {2, 6, 0, 2, 6, 32, tile, 2};
+        scene.sweeps = {37, 2, 3};
+        scene.side = 6;
+        run_top_scene(scene, 107 + tile, false, false);
+    }
+}
+
+// The tile walker rebuilt for the clock against the walker as first written
+// (tests/rtl/tile_walker_reference.v), clock for clock, under random slot
+// patterns, on every object count up to three tiles and random ones to 255:
+// lanes from one to 63, tiles from two boxes to 64, SSRAM latencies 0 to 8.
+TEST(TileWalkerRtl, SlotForSlotTheWalkerAsFirstWritten) {
+    struct Shape {
+        uint32_t m, tile, latency;
+    };
+    for (const Shape& shape : std::vector<Shape>{{1, 3, 3}, {2, 2, 1}, {2, 5, 2}, {3, 8, 0}, {8, 16, 2},
+                                                 {4, 64, 8}, {24, 64, 2}, {32, 4, 1}}) {
+        uint32_t address_bits = 1;
+        while ((1u << address_bits) < shape.tile) ++address_bits;
+        const Simulation sim;
+        const std::vector<std::string> lines =
+            sim.run("tb_tile_walker", {"models/board/rtl/tile_walker.v", "tests/rtl/tile_walker_reference.v"},
+                    {{"M", std::to_string(shape.m)},
+                     {"AW", "8"},
+                     {"T", std::to_string(shape.tile)},
+                     {"TAW", std::to_string(address_bits)},
+                     {"LAT", std::to_string(shape.latency)}},
+                    "+seed=" + std::to_string(shape.m * 100 + shape.tile) +
+                        " +max=" + std::to_string(std::min(3 * shape.tile + 3, 40u)) + " +extra=4");
+        const std::string what = "m=" + std::to_string(shape.m) + " T=" + std::to_string(shape.tile) +
+                                 " LAT=" + std::to_string(shape.latency);
+        ASSERT_FALSE(lines.empty()) << what;
+        unsigned long windows = 0, lands = 0, reads = 0, mismatches = 1;
+        ASSERT_EQ(std::sscanf(lines.back().c_str(), "windows %lu lands %lu reads %lu mismatches %lu", &windows,
+                              &lands, &reads, &mismatches),
+                  4)
+            << what << ": " << lines.back();
+        EXPECT_EQ(mismatches, 0u) << what << ": " << lines.front();
+        EXPECT_GT(windows, 1000u) << what;
+        EXPECT_GT(lands, 100u) << what;
+        EXPECT_EQ(lands, reads) << what;  // every word read lands in a tile buffer
+    }
+}
+
 // Refused commands set ERROR with the model's cause and the sweep goes on;
 // ABORT clears them.
 TEST(BoardTopRtl, ErrorCausesAndAbortMatchTheModel) {
