@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "models/common/user_text.h"
+#include "platform/settings/board_preset.h"
 #include "platform/settings/settings.h"
 #include "sw/baselines/broad_phase.h"
 #include "sw/bullet/scenes.h"
@@ -32,11 +33,14 @@ void add_setting_flags(po::options_description& group, const std::vector<std::st
 }
 
 void add_board_option(po::options_description& group, std::string& board_name) {
-    group.add_options()
-        ("board", po::value(&board_name)->value_name("NAME"),
-         "board preset (adm-xrc-ii, adm-xrc-ii-64, pcie-gen3-x8) from $CDVP_BOARDS, else share/cdvp/boards of the "
-         "installed prefix, else the source tree's platform/boards; or a .json path; "
-         "without it: the board alone on an ideal, untimed bus");
+    // The presets as found where they are looked for, so the list is never behind them.
+    std::string names;
+    for (const std::string& name : board_preset_names()) names += (names.empty() ? "" : ", ") + name;
+    const std::string help = "board preset" + (names.empty() ? "" : " (" + names + ")") +
+                             " from $CDVP_BOARDS, else share/cdvp/boards of the installed prefix, else the source "
+                             "tree's platform/boards; or a .json path; without it: the board alone on an ideal, "
+                             "untimed bus";
+    group.add_options()("board", po::value(&board_name)->value_name("NAME"), help.c_str());
 }
 
 po::options_description settings_options(SettingLayersText& layers) {

@@ -92,6 +92,29 @@ TEST_F(Cli, DocsCarryEveryCommandsHelpVerbatim) {
     }
 }
 
+// The presets --board lists are the ones it finds: none is left out of the help.
+TEST_F(Cli, RunHelpListsEveryPreset) {
+    const Result help = run("run --help");
+    ASSERT_EQ(help.status, 0);
+    std::string flat;  // the help with its wrapping undone
+    for (const char c : help.out) {
+        if (c == '\n' || c == ' ') {
+            if (!flat.empty() && flat.back() != ' ') flat += ' ';
+        } else {
+            flat += c;
+        }
+    }
+    int presets = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(CDVP_SOURCE_DIR "/platform/boards")) {
+        if (entry.path().extension() != ".json") continue;
+        ++presets;
+        const std::string name = entry.path().stem().string();
+        EXPECT_TRUE(flat.find(name + ",") != std::string::npos || flat.find(name + ")") != std::string::npos)
+            << name << " not in: " << flat.substr(0, 2000);
+    }
+    EXPECT_GE(presets, 4);
+}
+
 // Every help fits a terminal of 80 columns and no line ends in spaces.
 TEST_F(Cli, EveryHelpFitsEightyColumnsWithoutTrailingSpaces) {
     for (const char* command : {"", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record", "calibrate", "rtl-variants"}) {
