@@ -30,6 +30,7 @@ namespace fs = std::filesystem;
 
 // The shards' common manifest, checked: one sweep, one N, each shard once.
 Manifest shards_manifest(const std::vector<std::string>& shards) {
+    if (shards.empty()) throw InputError("no shard to merge: give at least one sweep directory");
     std::vector<Manifest> manifests;
     std::set<std::string> seen;
     for (const std::string& dir : shards) {

@@ -12,7 +12,7 @@ namespace cdvp {
 
 struct MergeSpec {
     std::string out;                  // new, empty, or a merge of the same sweep (its rows are kept)
-    std::vector<std::string> shards;  // directories of `cdvp sweep --shard K/N` runs of one sweep and one N
+    std::vector<std::string> shards;  // directories of `cdvp sweep --shard K/N` runs of one sweep and one N (at least one)
     bool quiet = false;               // no notes on stderr
     bool plots = true;                // false: the data files without the figures
     std::string program = "cdvp merge";

@@ -17,7 +17,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "models/common/user_text.h"
 #include "sw/study/sweep_csv.h"
+#include "sw/study/sweep_merge.h"
 #include "sw/study/sweep_table.h"
 #include "tests/cli/cli_support.h"
 
@@ -172,6 +174,19 @@ TEST_F(CliSweepState, AFailedMergeLeavesOutAsItWas) {
     ASSERT_EQ(merged.status, 0) << merged.err;
     EXPECT_NE(merged.out.find("4 of 4 points"), std::string::npos) << merged.out;
     EXPECT_EQ(leftovers_of(dir_), std::vector<std::string>{}) << "no staging directory left";
+}
+
+TEST_F(CliSweepState, TheMergeOfNoShardIsRefusedAndLeavesNothing) {
+    MergeSpec spec;
+    spec.out = (dir_ / "merged").string();
+    spec.quiet = true;
+    try {
+        merge_sweeps(spec);
+        ADD_FAILURE() << "a merge of no shard was not refused";
+    } catch (const InputError& refused) {
+        EXPECT_STREQ(refused.what(), "no shard to merge: give at least one sweep directory");
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "merged"));
 }
 
 TEST_F(CliSweepState, TracesOfOneNameGetIdsOfTheirOwnAndEachRowItsOwnReport) {
