@@ -25,10 +25,41 @@ namespace cdvp {
 
 namespace {
 
-std::string type_name(py::handle value) { return py::str(py::type::handle_of(value).attr("__name__")); }
+// A Python str as UTF-8 with Python's error handler `errors` for a lone
+// surrogate (a name made from bytes that are no UTF-8).
+std::string encoded(py::handle text, const char* errors) {
+    PyObject* bytes = PyUnicode_AsEncodedString(text.ptr(), "utf-8", errors);
+    if (bytes == nullptr) throw py::error_already_set();
+    return py::reinterpret_steal<py::bytes>(bytes);
+}
+
+// ... for a message: a lone surrogate as its escape (\udcff).
+std::string utf8(py::handle text) { return encoded(text, "backslashreplace"); }
+
+std::string type_name(py::handle value) { return utf8(py::type::handle_of(value).attr("__name__")); }
+
+// A name the user gave (a keyword, a setting's, an axis's) for a message, as
+// Python shows it: quoted, a NUL or another control character escaped
+// ('obj\x00ects'), never cut short.
+std::string quoted(py::handle name) { return utf8(py::repr(name)); }
 
 [[noreturn]] void wrong_type(const std::string& label, const std::string& expected, py::handle value) {
     throw py::type_error(label + ": expected " + expected + ", got " + type_name(value));
+}
+
+// The name to look up: a str, as UTF-8 (a lone surrogate kept as its three
+// bytes, so that such a name matches none and is refused by its quoted form).
+std::string key_of(py::handle name, const std::string& label, const std::string& names) {
+    if (!py::isinstance<py::str>(name)) wrong_type(label, names + " as str", name);
+    return encoded(name, "surrogatepass");
+}
+
+// True or False: Python's bool, or numpy's, which is no int (though it has
+// __index__ and __float__) and is refused where a number is expected.
+bool is_boolean(py::handle value) {
+    if (py::isinstance<py::bool_>(value)) return true;
+    const py::dict modules = py::module_::import("sys").attr("modules");
+    return modules.contains("numpy") && py::isinstance(value, modules["numpy"].attr("bool_"));
 }
 
 std::string without_nul(std::string text, const std::string& label) {
@@ -62,37 +93,55 @@ std::vector<std::string> texts_of(py::handle value, const std::string& label) {
     return texts;
 }
 
-bool yes_no(const Setting& s) {
-    return s.type == SettingType::kChoice && s.choices.size() == 2 &&
-           std::set<std::string>(s.choices.begin(), s.choices.end()) == std::set<std::string>{"no", "yes"};
+// An int, or anything with __index__ (numpy.int64), but no bool.
+py::int_ int_of(py::handle value, const std::string& label) {
+    if (is_boolean(value) || !PyIndex_Check(value.ptr())) wrong_type(label, "an int", value);
+    PyObject* number = PyNumber_Index(value.ptr());
+    if (number == nullptr) throw py::error_already_set();
+    return py::reinterpret_steal<py::int_>(number);
 }
 
 SettingValue count_value(const Setting& s, py::handle value, const std::string& label) {
-    if (py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr())) wrong_type(label, "an int", value);
-    const py::int_ number = py::reinterpret_steal<py::int_>(PyNumber_Index(value.ptr()));
-    if (!number) throw py::error_already_set();
+    const py::int_ number = int_of(value, label);
     const unsigned long long count = PyLong_AsUnsignedLongLong(number.ptr());
     if (PyErr_Occurred() != nullptr) {  // below 0 or above 2^64 - 1
         PyErr_Clear();
-        const std::string shown = py::str(static_cast<py::handle>(number));
-        return s.from_number(number < py::int_(0) ? -1.0 : HUGE_VAL, shown);
+        return s.from_number(number < py::int_(0) ? -1.0 : HUGE_VAL, utf8(py::str(static_cast<py::handle>(number))));
     }
     return s.from_count(count);
 }
 
 SettingValue real_value(const Setting& s, py::handle value, const std::string& label) {
-    if (py::isinstance<py::bool_>(value) ||
+    if (is_boolean(value) ||
         !(PyFloat_Check(value.ptr()) || PyIndex_Check(value.ptr()) || py::hasattr(value, "__float__"))) {
         wrong_type(label, "a number", value);
     }
     const double number = PyFloat_AsDouble(value.ptr());
     if (PyErr_Occurred() != nullptr) throw py::error_already_set();
-    return s.from_number(number, py::str(value));
+    return s.from_number(number, utf8(py::str(value)));
 }
 
-// A setting's value from Python: an int for a count, an int or float for a
-// number, a str for a choice (True or False for yes or no), a str or path
-// for a text.
+SettingValue choice_value(const Setting& s, py::handle value, const std::string& label) {
+    if (is_yes_no(s)) {
+        if (!py::isinstance<py::bool_>(value)) wrong_type(label, "True or False", value);
+        return s.from_string(value.cast<bool>() ? "yes" : "no");
+    }
+    return s.from_string(text_of(value, label));
+}
+
+// A text: a file's name (a flag's FILE) as a path; a number (a flag's N,
+// run.pin_cpu) as a str or an int; any other a str.
+SettingValue text_value(const Setting& s, py::handle value, const std::string& label) {
+    if (s.value_name == "FILE") return s.from_string(path_of(value, label));
+    if (s.value_name == "N" && !is_boolean(value) && PyIndex_Check(value.ptr())) {
+        return s.from_string(utf8(py::str(value)));
+    }
+    if (!py::isinstance<py::str>(value)) wrong_type(label, s.value_name == "N" ? "a str or an int" : "a str", value);
+    return s.from_string(text_of(value, label));
+}
+
+// A setting's value from Python, of its type and no other (docs/python.md:
+// keywords are typed values).
 SettingValue typed_value(const Setting& s, py::handle value, const std::string& label) {
     try {
         switch (s.type) {
@@ -101,12 +150,9 @@ SettingValue typed_value(const Setting& s, py::handle value, const std::string& 
             case SettingType::kReal:
                 return real_value(s, value, label);
             case SettingType::kChoice:
-                if (yes_no(s) && py::isinstance<py::bool_>(value)) return s.from_string(value.cast<bool>() ? "yes" : "no");
-                if (!py::isinstance<py::str>(value)) wrong_type(label, yes_no(s) ? "True, False or a str" : "a str", value);
-                return s.from_string(text_of(value, label));
+                return choice_value(s, value, label);
             case SettingType::kText:
-                if (PyIndex_Check(value.ptr()) && !py::isinstance<py::bool_>(value)) return s.from_string(py::str(value));
-                return s.from_string(path_of(value, label));
+                return text_value(s, value, label);
         }
     } catch (const std::invalid_argument& e) {
         throw InputError(label + ": " + e.what());
@@ -120,13 +166,23 @@ Assignment given(const Setting& s, py::handle value, const std::string& label) {
 
 std::string keyword_label(const std::string& key) { return key + "="; }
 
+// The keywords of the settings that have one (m, objects, quantum_ns, ...).
+std::vector<std::string> setting_keywords() {
+    std::vector<std::string> keywords;
+    for (const Setting& setting : settings_table()) {
+        if (!setting.flag.empty()) keywords.push_back(keyword_of(setting));
+    }
+    return keywords;
+}
+
 void set_frames(RunSpec& spec, FrameInput frames) {
     if (spec.frames) throw InputError("scene= and trace=: give one of them (the run's frames come from it)");
     spec.frames = std::move(frames);
 }
 
 // One of cdvp.run's keywords: an input that is no setting, or a setting's.
-void set_keyword(RunSpec& spec, const std::string& key, py::handle value, const std::string& function) {
+void set_keyword(RunSpec& spec, py::handle name, py::handle value, const std::string& function) {
+    const std::string key = key_of(name, function, "keywords");
     const std::string label = keyword_label(key);
     if (key == "board") {
         spec.settings.board = path_of(value, label);
@@ -149,11 +205,9 @@ void set_keyword(RunSpec& spec, const std::string& key, py::handle value, const 
         spec.settings.given.push_back(given(*s, value, label));
     } else {
         std::vector<std::string> keywords{"board", "config", "scene", "trace", "baseline", "inject", "software_timings"};
-        for (const Setting& setting : settings_table()) {
-            if (!setting.flag.empty()) keywords.push_back(keyword_of(setting));
-        }
+        for (const std::string& keyword : setting_keywords()) keywords.push_back(keyword);
         const std::optional<std::string> nearest = nearest_name(key, keywords);
-        throw py::type_error(function + "() got an unexpected keyword argument '" + printable(key) + "' (" +
+        throw py::type_error(function + "() got an unexpected keyword argument " + quoted(name) + " (" +
                              (nearest ? "the nearest is '" + *nearest + "'; " : "") +
                              "any setting goes in settings={NAME: VALUE})");
     }
@@ -163,9 +217,8 @@ void set_settings(RunSpec& spec, py::handle settings) {
     if (settings.is_none()) return;
     if (!py::isinstance<py::dict>(settings)) wrong_type("settings", "a dict of setting name -> value", settings);
     for (const auto& [name, value] : py::reinterpret_borrow<py::dict>(settings)) {
-        if (!py::isinstance<py::str>(name)) wrong_type("settings", "setting names as str", name);
-        const std::string key = name.cast<std::string>();
-        const std::string label = "settings['" + printable(key) + "']";
+        const std::string key = key_of(name, "settings", "setting names");
+        const std::string label = "settings[" + quoted(name) + "]";
         const Setting* s = find_setting(key);
         if (s == nullptr) {
             const std::optional<std::string> nearest = nearest_name(key, setting_names());
@@ -185,9 +238,7 @@ Axis axis_of(const std::string& name, py::handle values, const std::string& labe
     const bool input = name == "board" || name == "trace" || name == "scene" || name == "config";
     if (s == nullptr && !input) {
         std::vector<std::string> names = setting_names();
-        for (const Setting& setting : settings_table()) {
-            if (!setting.flag.empty()) names.push_back(keyword_of(setting));
-        }
+        for (const std::string& keyword : setting_keywords()) names.push_back(keyword);
         const std::optional<std::string> nearest = nearest_name(name, names);
         throw InputError(label + ": no setting or input has this name" +
                          (nearest ? "; the nearest is '" + *nearest + "'" : "") + " (cdvp.settings() lists the settings)");
@@ -237,13 +288,12 @@ bool flag_of(const py::dict& own, const char* key, bool otherwise) {
 }
 
 unsigned jobs_of(py::handle value) {
-    if (py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr())) wrong_type("jobs=", "an int", value);
-    const long long jobs = value.cast<long long>();
-    if (jobs < 1 || jobs > kMaxJobs) {
+    const py::int_ jobs = int_of(value, "jobs=");
+    if (jobs < py::int_(1) || jobs > py::int_(kMaxJobs)) {
         throw InputError("jobs=: expected a whole number from 1 to " + std::to_string(kMaxJobs) + ", got " +
-                         std::to_string(jobs));
+                         utf8(py::str(static_cast<py::handle>(jobs))));
     }
-    return static_cast<unsigned>(jobs);
+    return jobs.cast<unsigned>();
 }
 
 void read_own(const py::dict& own, SweepSpec& spec) {
@@ -282,7 +332,7 @@ RunSpec run_spec_of(const py::dict& keywords, const py::handle& settings, const 
     spec.settings.names = python_names();
     set_settings(spec, settings);
     for (const auto& [name, value] : keywords) {
-        if (!value.is_none()) set_keyword(spec, name.cast<std::string>(), value, function);
+        if (!value.is_none()) set_keyword(spec, name, value, function);
     }
     return spec;
 }
@@ -293,24 +343,23 @@ SweepSpec sweep_spec_of(const py::dict& axes, const py::dict& own, const py::dic
     spec.program = "cdvp.sweep";
     read_own(own, spec);
     std::set<std::string> axis_keys;
-    const auto add_axis = [&](Axis axis) {
+    const auto add_axis = [&](const std::string& key, py::handle values, const std::string& label) {
+        Axis axis = axis_of(key, values, label);
         if (!axis_keys.insert(axis.key).second) {
-            throw InputError("axes['" + printable(axis.name) + "']: " + axis.key + " is an axis already; give it once");
+            throw InputError(label + ": " + axis.key + " is an axis already; give it once");
         }
         spec.axes.push_back(std::move(axis));
     };
     for (const auto& [name, values] : axes) {
-        if (!py::isinstance<py::str>(name)) wrong_type("axes", "axis names as str", name);
-        const std::string key = name.cast<std::string>();
-        add_axis(axis_of(key, values, "axes['" + printable(key) + "']"));
+        add_axis(key_of(name, "axes", "axis names"), values, "axes[" + quoted(name) + "]");
     }
     // board, scene, trace and fidelity are axes of the sweep, as on the command line.
     py::dict point_keywords;
     for (const auto& [name, value] : keywords) {
-        const std::string key = name.cast<std::string>();
+        const std::string key = key_of(name, "cdvp.sweep", "keywords");
         if (value.is_none()) continue;
         if (key == "board" || key == "scene" || key == "trace" || key == "fidelity") {
-            add_axis(axis_of(key, is_list(value) ? value : py::make_tuple(value), keyword_label(key)));
+            add_axis(key, is_list(value) ? value : py::make_tuple(value), keyword_label(key));
         } else {
             point_keywords[name] = value;
         }

@@ -254,7 +254,12 @@ PYBIND11_MODULE(_cdvp, module) {
             if (thrown) std::rethrow_exception(thrown);
         } catch (const cdvp::Refusal& refusal) {
             const py::object error_class = py::module_::import("cdvp._errors").attr("error_class")(refusal.status);
-            PyErr_SetObject(error_class.ptr(), py::make_tuple(refusal.message, refusal.status).ptr());
+            // A name of no UTF-8 in the message (a file's, a value's) by its escapes (\xe9), never a UnicodeDecodeError.
+            const std::string& text = refusal.message;
+            PyObject* message = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "backslashreplace");
+            if (message == nullptr) return;  // no memory: that error stays raised
+            const py::tuple arguments = py::make_tuple(py::reinterpret_steal<py::str>(message), refusal.status);
+            PyErr_SetObject(error_class.ptr(), arguments.ptr());
         }
     });
     module.def("presets_json", &cdvp::presets_json, "Every board preset: name, description, path, values.");

@@ -1,6 +1,7 @@
 #include "sw/python/python_names.h"
 
 #include <algorithm>
+#include <set>
 
 #include "platform/settings/settings.h"
 
@@ -10,8 +11,9 @@ namespace {
 
 std::string indexed(const Setting& setting) { return "settings['" + setting.name + "']"; }
 
-// A value as Python spells it: numbers bare, words quoted.
+// A value as Python spells it: numbers bare, yes and no as True and False, words quoted.
 std::string python_value(const Setting& setting, const std::string& value) {
+    if (is_yes_no(setting)) return value == "yes" ? "True" : "False";
     const bool number = setting.type == SettingType::kCount || setting.type == SettingType::kReal;
     return number ? value : "'" + value + "'";
 }
@@ -32,6 +34,11 @@ const Setting* setting_of_keyword(const std::string& keyword) {
     return nullptr;
 }
 
+bool is_yes_no(const Setting& setting) {
+    return setting.type == SettingType::kChoice && setting.choices.size() == 2 &&
+           std::set<std::string>(setting.choices.begin(), setting.choices.end()) == std::set<std::string>{"no", "yes"};
+}
+
 std::string PythonNames::given(const Setting& setting) const {
     return setting.flag.empty() ? indexed(setting) : keyword_of(setting) + "=";
 }
@@ -45,7 +52,6 @@ std::string PythonNames::overridden_value(const Setting& setting, const std::str
 }
 std::string PythonNames::setting_to(const Setting& setting, const std::string& value) const {
     if (setting.flag.empty()) return "settings={'" + setting.name + "': " + python_value(setting, value) + "}";
-    if (setting.value_name.empty() && value == "yes") return keyword_of(setting) + "=True";  // a switch
     return keyword_of(setting) + "=" + python_value(setting, value);
 }
 std::string PythonNames::given_origin(const Setting& setting) const {

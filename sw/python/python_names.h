@@ -31,5 +31,7 @@ std::shared_ptr<const SettingNames> python_names();
 std::string keyword_of(const Setting& setting);
 // The setting a keyword sets, or null.
 const Setting* setting_of_keyword(const std::string& keyword);
+// A choice of "no" or "yes" (run.ignore_capacity, run.lockstep): False or True in Python.
+bool is_yes_no(const Setting& setting);
 
 }  // namespace cdvp

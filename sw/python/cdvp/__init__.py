@@ -98,9 +98,11 @@ def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=Tru
     DataFrame.attrs["outcome"], its "run_now" the points this call ran). Raises as run() does;
     KeyboardInterrupt when Ctrl-C stops it."""
     if not isinstance(axes, dict):
-        raise TypeError(f"cdvp.sweep: axes must be a dict of name -> values, not {type(axes).__name__}")
+        raise TypeError(f"axes: expected a dict of name -> values, got {type(axes).__name__}")
+    if not isinstance(out, (str, bytes, os.PathLike)):
+        raise TypeError(f"out=: expected a str, bytes or os.PathLike, got {type(out).__name__}")
     if progress is not None and not callable(progress):
-        raise TypeError(f"cdvp.sweep: progress must be callable as progress(done, total), not {type(progress).__name__}")
+        raise TypeError(f"progress=: expected a callable, progress(done, total), got {type(progress).__name__}")
     own = {"out": out, "jobs": jobs, "plots": plots, "quiet": quiet,
            **{key: options.pop(key) for key in _SWEEP_OWN if key in options}}
     if _block_of(block) != 1 and executor is None:

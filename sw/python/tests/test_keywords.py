@@ -1,5 +1,6 @@
 """Keyword arguments as typed values: types, values that look like options, file names, empty tables."""
 
+import concurrent.futures
 import os
 import pathlib
 import shutil
@@ -34,6 +35,19 @@ def test_a_value_beginning_with_dashes_is_a_value():
     ({"pairs": "no"}, "pairs=: expected True or False, got str"),
     ({"pairs": 1}, "pairs=: expected True or False, got int"),
     ({"pairs": None}, "pairs=: expected True or False, got NoneType"),
+    # numpy's bool is no int, though it has __index__ and __float__
+    ({"objects": np.bool_(True)}, "objects=: expected an int, got bool_"),
+    ({"quantum_ns": np.bool_(False)}, "quantum_ns=: expected a number, got bool_"),
+    # a yes/no setting is a bool, not its command line's word or a number
+    ({"ignore_capacity": "yes"}, "ignore_capacity=: expected True or False, got str"),
+    ({"ignore_capacity": 1}, "ignore_capacity=: expected True or False, got int"),
+    ({"settings": {"run.lockstep": "no"}}, r"settings\['run.lockstep'\]: expected True or False, got str"),
+    # a text is a str; a file's name also bytes or a path; a CPU's number also an int
+    ({"format": 5}, "format=: expected a str, got int"),
+    ({"format": b"float32"}, "format=: expected a str, got bytes"),
+    ({"host_profile": 5}, "host_profile=: expected a str, bytes or os.PathLike, got int"),
+    ({"pin_cpu": 1.0}, "pin_cpu=: expected a str or an int, got float"),
+    ({"pin_cpu": True}, "pin_cpu=: expected a str or an int, got bool"),
 ])
 def test_a_value_of_the_wrong_type_is_a_type_error_naming_the_keyword(keywords, message):
     options = {key: value for key, value in SMALL.items() if key not in keywords}
@@ -109,24 +123,60 @@ def test_a_run_for_a_child_is_checked_first_in_the_modules_words():
         cdvp.run(**SMALL, inject="board-error@frame=5")
 
 
-def test_the_modules_own_keywords_are_typed_too(tmp_path):
-    with pytest.raises(TypeError, match="block=: expected an int, got str"):
-        cdvp.sweep({"m": [1, 2]}, tmp_path / "out", block="1", **SMALL)
-    with pytest.raises(TypeError, match="jobs=: expected an int, got str"):
-        cdvp.sweep({"m": [1, 2]}, tmp_path / "out", jobs="2", **SMALL)
-    with pytest.raises(TypeError, match="plots=: expected True or False, got str"):
-        cdvp.sweep({"m": [1, 2]}, tmp_path / "out", plots="no", **SMALL)
+@pytest.mark.parametrize("keywords, message", [
+    ({"block": "1"}, "block=: expected an int, got str"),
+    ({"jobs": "2"}, "jobs=: expected an int, got str"),
+    ({"jobs": np.bool_(True)}, "jobs=: expected an int, got bool_"),
+    ({"plots": "no"}, "plots=: expected True or False, got str"),
+    ({"quiet": 0}, "quiet=: expected True or False, got int"),
+    ({"rerun_invalid": "yes"}, "rerun_invalid=: expected True or False, got str"),
+    ({"shard": 1}, "shard=: expected a str, got int"),
+    ({"record": b"compact"}, "record=: expected a str, got bytes"),
+    ({"software_timings": 3}, "software_timings=: expected a str, bytes or os.PathLike, got int"),
+    ({"out": 5}, "out=: expected a str, bytes or os.PathLike, got int"),
+    ({"out": 5, "executor": concurrent.futures.ThreadPoolExecutor(1)},
+     "out=: expected a str, bytes or os.PathLike, got int"),
+])
+def test_the_modules_own_keywords_are_typed_too(tmp_path, keywords, message):
+    with pytest.raises(TypeError, match=f"^{message}$"):
+        cdvp.sweep({"m": [1, 2]}, **{"out": tmp_path / "out", **SMALL, **keywords})
     assert not (tmp_path / "out").exists()
 
 
-def test_a_keyword_with_a_nul_is_named_whole():
-    with pytest.raises(TypeError) as refused:
-        cdvp.run(**SMALL, **{"obj\x00ects": 5})
-    message = str(refused.value)
-    assert "'obj\\x00ects'" in message and message.endswith("any setting goes in settings={NAME: VALUE})"), message
+def test_a_count_of_jobs_too_large_for_any_integer_type_is_refused_as_a_value(tmp_path):
     with pytest.raises(cdvp.InputError) as refused:
-        cdvp.run(**SMALL, settings={"scene.obj\x00ects": 5})
-    assert "settings['scene.obj\\x00ects']: no setting has this name" in str(refused.value)
+        cdvp.sweep({"m": [1, 2]}, tmp_path / "out", jobs=2**71, **SMALL)
+    assert str(refused.value) == f"cdvp.sweep: jobs=: expected a whole number from 1 to 24, got {2**71}"
+
+
+@pytest.mark.parametrize("name, shown", [("obj\x00ects", r"'obj\x00ects'"), ("obj\udcffects", r"'obj\udcffects'"),
+                                         ("\x1b[31mm", r"'\x1b[31mm'"), ("it's", "\"it's\"")])
+def test_a_name_is_shown_escaped_and_whole(tmp_path, name, shown):
+    # A NUL, a control character or a lone surrogate (a name of bytes that are no UTF-8) never cuts the message short.
+    with pytest.raises(TypeError) as refused:
+        cdvp.run(**SMALL, **{name: 5})
+    assert str(refused.value).startswith(f"cdvp.run() got an unexpected keyword argument {shown} ("), str(refused.value)
+    assert str(refused.value).endswith("any setting goes in settings={NAME: VALUE})"), str(refused.value)
+    with pytest.raises(TypeError) as refused:
+        cdvp.sweep({"m": [1]}, tmp_path / "out", **SMALL, **{name: 5})
+    assert f"cdvp.sweep() got an unexpected keyword argument {shown} (" in str(refused.value), str(refused.value)
+    for refusal in (lambda: cdvp.run(**SMALL, settings={"scene." + name: 5}),
+                    lambda: cdvp.sweep({"m": [1]}, tmp_path / "out", **SMALL, settings={"scene." + name: 5})):
+        with pytest.raises(cdvp.InputError) as refused:
+            refusal()
+        message = str(refused.value)
+        assert f": settings[{repr('scene.' + name)}]: no setting has this name" in message, message
+        assert message.endswith("(cdvp.settings() lists them)"), message
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.sweep({name: [1]}, tmp_path / "out", **SMALL)
+    assert f"cdvp.sweep: axes[{shown}]: no setting or input has this name" in str(refused.value), str(refused.value)
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_value_of_no_utf8_is_shown_by_its_escapes():
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.run(**{**SMALL, "scene": "sph\udcffres"})
+    assert str(refused.value).endswith(r"got 'sph\xffres'"), str(refused.value)
 
 
 def test_a_name_far_from_every_one_gets_no_suggestion():
@@ -140,10 +190,11 @@ def test_a_name_far_from_every_one_gets_no_suggestion():
     assert "nearest" not in str(refused.value), str(refused.value)
 
 
-def test_a_cpu_the_run_cannot_pin_to_is_named_by_its_keyword():
+@pytest.mark.parametrize("cpu", ["1023", 1023, np.int64(1023)])
+def test_a_cpu_the_run_cannot_pin_to_is_named_by_its_keyword(cpu):
     for fidelity in ("fast", "analytic"):
         with pytest.raises(cdvp.InputError) as refused:
-            cdvp.run(**SMALL, fidelity=fidelity, quantum_ns=0.0, pin_cpu="1023")
+            cdvp.run(**SMALL, fidelity=fidelity, quantum_ns=0.0, pin_cpu=cpu)
         message = str(refused.value)
         assert "pin_cpu=: CPU 1023 is not one this process may run on" in message, message
         assert "--pin-cpu" not in message, message

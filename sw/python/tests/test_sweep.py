@@ -85,9 +85,9 @@ def test_an_exception_in_progress_is_raised_after_the_sweep(tmp_path):
 
 
 def test_wrong_types_are_refused_before_any_point_runs(tmp_path):
-    with pytest.raises(TypeError, match="axes must be a dict"):
+    with pytest.raises(TypeError, match="^axes: expected a dict of name -> values, got str$"):
         cdvp.sweep("m", tmp_path / "a")
-    with pytest.raises(TypeError, match="progress must be callable"):
+    with pytest.raises(TypeError, match=r"^progress=: expected a callable, progress\(done, total\), got int$"):
         cdvp.sweep({"m": [1]}, tmp_path / "b", board="adm-xrc-ii", scene="spheres", progress=5)
     assert not (tmp_path / "b").exists()
     with pytest.raises(cdvp.InputError, match="NUL") as refused:
