@@ -19,6 +19,7 @@
 #include <csignal>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -35,7 +36,11 @@
 #include "sw/study/child_runs.h"
 #include "sw/study/study_run.h"
 #include "sw/study/sweep.h"
+#include "sw/study/sweep_grid.h"
+#include "sw/study/sweep_manifest.h"
 #include "sw/study/sweep_merge.h"
+#include "sw/study/sweep_state.h"
+#include "sw/study/sweep_table.h"
 
 namespace py = pybind11;
 
@@ -243,6 +248,22 @@ int merge_tasks(const std::string& out, const std::vector<std::string>& tasks, b
     });
 }
 
+// The point indices a task's directory holds (none: no sweep there), every
+// row checked against its grid, shard and report as a merge checks it: what
+// the client counts a task by, whatever the task returned.
+std::vector<std::size_t> task_rows(const std::string& dir) {
+    return as_call("cdvp.sweep", [&] {
+        std::vector<std::size_t> indices;
+        const std::optional<Manifest> manifest = read_manifest(manifest_path(dir));
+        if (!manifest) return indices;
+        const Grid grid(manifest->axes);
+        SweepTable table(grid);
+        read_table(dir, grid, manifest->shard, table, false, manifest->record);
+        table.for_each([&](std::size_t index, const RowView&) { indices.push_back(index); });
+        return indices;
+    });
+}
+
 }  // namespace
 
 }  // namespace cdvp
@@ -273,4 +294,6 @@ PYBIND11_MODULE(_cdvp, module) {
                py::arg("settings"), "A sweep's out made ready for tasks, checked as a resume: points, held, began_now.");
     module.def("merge", &cdvp::merge_tasks, py::arg("out"), py::arg("tasks"), py::arg("plots"), py::arg("quiet"),
                "The tasks' directories merged into out in one transaction: 0, or 1 when gnuplot failed.");
+    module.def("task_rows", &cdvp::task_rows, py::arg("directory"),
+               "The point indices a task's directory holds, every row checked as a merge checks it.");
 }

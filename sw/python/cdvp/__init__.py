@@ -122,7 +122,10 @@ def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=Tru
 def _gathered_outcome(spread, table, out):
     """A spread sweep's outcome counted from its merged table, refused as a
     whole when every point was refused (as one sweep is: nothing is left of
-    an out it began)."""
+    an out it began); a table short of the grid is an InternalError."""
+    if len(table) != spread["points"]:
+        raise InternalError(f"cdvp.sweep: {os.fsdecode(os.fspath(out))}/sweep.csv holds {len(table)} rows of the "
+                            f"grid's {spread['points']} after the tasks were merged; call again to run the rest", 1)
     statuses = table["status"].value_counts()
     if len(table) > 0 and statuses.get("refused", 0) == len(table):
         if spread["began_now"]:

@@ -123,9 +123,47 @@ class _Progress:
             raise self._failure
 
 
+def _submitted(executor, *args):
+    """run_task(*args) submitted to executor, whose submit must give a
+    concurrent.futures.Future (Dask's executor's does)."""
+    future = executor.submit(run_task, *args)
+    if not isinstance(future, concurrent.futures.Future):
+        raise TypeError(f"executor=: submit() returned {type(future).__name__}, not a concurrent.futures.Future")
+    return future
+
+
+def _task_failed(name, what):
+    return InternalError(f"cdvp.sweep: {name} {what}; the points it recorded stay: call again to run the rest", 1)
+
+
+def _task_ran(future, task, tasks, out, wanted):
+    """The points task K-of-N ran now, once it is checked: the executor is
+    not trusted, so its result must be run_task's (rows, run now) and the
+    task's directory must hold a checked row for every point it was given
+    (wanted). Raises an Error naming the task otherwise."""
+    name = f"task {task}-of-{tasks}"
+    try:
+        result = future.result()
+    except Error:
+        raise
+    except Exception as error:  # a worker lost for good, a pool broken
+        raise _task_failed(name, f"failed: {type(error).__name__}: {error}") from error
+    if not (isinstance(result, (tuple, list)) and len(result) == 2 and all(type(count) is int for count in result)):
+        raise _task_failed(name, f"returned {type(result).__name__} where a task returns its (rows, run now)")
+    rows, ran = result
+    directory = _task_dir(out, task, tasks)
+    held = set(_cdvp.task_rows(os.fsencode(directory)))
+    if not wanted <= held or rows != len(held) or not 0 <= ran <= rows:
+        raise _task_failed(name, f"returned ({rows}, {ran}) as its (rows, run now), but {directory} holds "
+                                 f"{len(wanted & held)} of its {len(wanted)} points (its worker could not see out=, "
+                                 "or the executor did not run it)")
+    return ran
+
+
 def spread_sweep(axes, own, keywords, settings, executor, block, progress):
     """Runs the sweep's points on executor in tasks of block points and
-    merges them into own["out"]; returns the outcome as cdvp.sweep's."""
+    merges them into own["out"]; returns the outcome as cdvp.sweep's. Every
+    task is checked when it ends (_task_ran): the counts are of rows written."""
     if own.get("shard") is not None:
         raise InputError("cdvp.sweep: shard=: an executor= runs the whole sweep, cut into tasks of block= points; "
                          "give shard= or executor=, not both", 2)
@@ -139,36 +177,34 @@ def spread_sweep(axes, own, keywords, settings, executor, block, progress):
     tasks_dir = os.path.join(out, TASKS)
     _check_tasks_dir(tasks_dir, tasks)
     shard_points = {task: range(task - 1, points, tasks) for task in range(1, tasks + 1)}
-    todo = [task for task, indices in shard_points.items() if not all(i in held for i in indices)]
+    wanted = {task: set(indices) - held for task, indices in shard_points.items()}  # what each task is to run
+    todo = [task for task, missing in wanted.items() if missing]
     done, run_now = len(held), 0
     if todo:
         os.makedirs(tasks_dir, exist_ok=True)
     told = _Progress(progress)
     told(done, points)
     if todo:
-        futures = {executor.submit(run_task, axes, own, keywords, settings, out, task, tasks,
-                                   sorted(held.intersection(shard_points[task]))): task for task in todo}
-        failure = None
+        futures, failures = {}, {}
         try:
+            for task in todo:
+                futures[_submitted(executor, axes, own, keywords, settings, out, task, tasks,
+                                   sorted(held.intersection(shard_points[task])))] = task
             for future in concurrent.futures.as_completed(futures):
+                task = futures[future]
                 try:
-                    rows, ran = future.result()
+                    ran = _task_ran(future, task, tasks, out, wanted[task])
                 except Error as error:
-                    failure = failure or error
+                    failures[task] = error
                     continue
-                except Exception as error:  # a worker lost for good, a pool broken
-                    failure = failure or InternalError(
-                        f"cdvp.sweep: task {futures[future]}-of-{tasks} failed: {type(error).__name__}: {error}; "
-                        "the points it recorded stay: call again to run the rest", 1)
-                    continue
-                done, run_now = done + rows, run_now + ran
+                done, run_now = done + len(wanted[task]), run_now + ran
                 told(done, points)
         except BaseException:
             for future in futures:
                 future.cancel()
             raise
-        if failure is not None:
-            raise failure  # every other task has ended, its rows kept
+        if failures:
+            raise failures[min(failures)]  # every other task has ended, its rows kept
         ran_dirs = [_task_dir(out, task, tasks) for task in shard_points
                     if os.path.exists(os.path.join(_task_dir(out, task, tasks), "sweep.json"))]
         status = _cdvp.merge(os.fsencode(out), [os.fsencode(d) for d in ran_dirs], own["plots"], own["quiet"])

@@ -132,3 +132,74 @@ def test_an_exception_in_progress_is_raised_after_the_tasks_are_merged(tmp_path)
             cdvp.sweep(GRID, tmp_path, executor=threads, block=3, progress=fail, **POINTS)
         again = cdvp.sweep(GRID, tmp_path, executor=threads, block=3, **POINTS)
     assert len(again) == 6 and again.attrs["outcome"]["run_now"] == 0
+
+
+# Executors are not trusted: fakes of concurrent.futures' shape whose futures
+# lie, checked against what the tasks left in out.
+FOUR = {"m": [1, 4], "objects": [20, 40]}
+LIGHT = {"board": "adm-xrc-ii", "scene": "spheres", "frames": 2, "plots": False}
+
+
+class Claiming(concurrent.futures.Executor):
+    """Runs no task: each future is already done with `result`."""
+
+    def __init__(self, result):
+        self.result = result
+
+    def submit(self, fn, *args, **kwargs):
+        future = concurrent.futures.Future()
+        future.set_result(self.result)
+        return future
+
+
+class EveryOtherTask(concurrent.futures.Executor):
+    """Runs the 1st, 3rd, ... task; the others claim a row run without running
+    (a worker that cannot see out)."""
+
+    def __init__(self):
+        self.submitted = 0
+
+    def submit(self, fn, *args, **kwargs):
+        self.submitted += 1
+        future = concurrent.futures.Future()
+        future.set_result(fn(*args, **kwargs) if self.submitted % 2 else (1, 1))
+        return future
+
+
+@pytest.mark.parametrize("result, message", [
+    (None, "task 1-of-4 returned NoneType where a task returns its (rows, run now)"),
+    ("ab", "task 1-of-4 returned str where a task returns its (rows, run now)"),
+    ((True, True), "task 1-of-4 returned tuple where a task returns its (rows, run now)"),
+    (object(), "task 1-of-4 returned object where a task returns its (rows, run now)"),
+    ((1, 1), "task 1-of-4 returned (1, 1) as its (rows, run now), but {out}/tasks/1-of-4 holds 0 of its 1 points"),
+    ((10**30, -5), "task 1-of-4 returned (1000000000000000000000000000000, -5) as its (rows, run now), but "),
+])
+def test_a_task_that_claims_success_without_its_rows_is_an_error_naming_it(tmp_path, result, message):
+    out = tmp_path / "out"
+    with pytest.raises(cdvp.InternalError) as failed:
+        cdvp.sweep(FOUR, out, executor=Claiming(result), **LIGHT)
+    assert message.format(out=out) in str(failed.value), str(failed.value)
+    assert str(failed.value).endswith("the points it recorded stay: call again to run the rest")
+    assert failed.value.status == 1 and "\n" not in str(failed.value)
+    assert (out / "sweep.csv").read_text().count("\n") == 1  # nothing merged: the header alone
+
+
+def test_tasks_that_never_wrote_their_rows_fail_the_sweep_and_a_rerun_completes_it(tmp_path):
+    out = tmp_path / "out"
+    with pytest.raises(cdvp.InternalError, match=r"task 2-of-4 returned \(1, 1\) as its \(rows, run now\), but "
+                                                 r".*/tasks/2-of-4 holds 0 of its 1 points \(its worker could not see"):
+        cdvp.sweep(FOUR, out, executor=EveryOtherTask(), **LIGHT)
+    with concurrent.futures.ThreadPoolExecutor(2) as threads:
+        table = cdvp.sweep(FOUR, out, executor=threads, **LIGHT)
+    outcome = table.attrs["outcome"]
+    # The rows the two tasks that ran kept stay; the other two run now.
+    assert (len(table), outcome["points"], outcome["ok"], outcome["run_now"], outcome["tasks"]) == (4, 4, 4, 2, 4)
+
+
+def test_an_executor_whose_submit_gives_no_future_is_refused(tmp_path):
+    class NoFutures(concurrent.futures.Executor):
+        def submit(self, fn, *args, **kwargs):
+            return (1, 1)
+
+    with pytest.raises(TypeError, match=r"^executor=: submit\(\) returned tuple, not a concurrent.futures.Future$"):
+        cdvp.sweep(FOUR, tmp_path / "out", executor=NoFutures(), **LIGHT)
