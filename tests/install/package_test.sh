@@ -156,6 +156,26 @@ for old in $forwarding; do
   grep -qF "$old is deprecated: include \"$new\"" "$work/moved.log" || fail "$old builds without its note: $(cat "$work/moved.log")"
 done
 grep -qF 'namespace cdvp' "$work/prefix/include/cdvp/platform/settings/board_preset.h" || fail "platform/settings/board_preset.h"
+# A forwarding header never stands where the tree has a real one (installed
+# after the tree's headers, it would replace it).
+for old in $forwarding; do
+  [ ! -e "$source/$old" ] || fail "cmake/moved_headers/$old would replace the tree's own $old"
+done
+# docs/library.md says what is public: every header its tables there name
+# (the public ones, and the old paths of those that moved) is in the prefix,
+# and its table of moved headers is cmake/moved_headers, pair for pair.
+public_tables=$(sed -n '/^## The public headers/,/^## Embedding/p' "$source/docs/library.md" | grep '^|')
+named=$(grep -o '`[A-Za-z0-9_/]*\.h`' <<< "$public_tables" | tr -d '`' | sort -u)
+[ -n "$named" ] || fail "docs/library.md names no public header"
+for header in $named; do
+  [ -f "$work/prefix/include/cdvp/$header" ] || fail "docs/library.md names $header as public, and the prefix has no $header"
+done
+documented=$(sed -n 's/^| `\([^`]*\.h\)` | `\([^`]*\.h\)` |$/\1 -> \2/p' <<< "$public_tables" | sort)
+installed=$(for old in $forwarding; do
+  echo "$old -> $(sed -n 's/^#include "\(.*\)"$/\1/p' "$work/prefix/include/cdvp/$old")"
+done | sort)
+[ "$documented" = "$installed" ] ||
+  fail "docs/library.md's moved headers ($documented) are not the forwarding headers installed ($installed)"
 
 # Relocatable: the moved prefix's package names its own places.
 mv "$work/prefix" "$work/moved"
@@ -172,4 +192,4 @@ PROBE
 expect probe "boards: $work/moved/share/cdvp/boards; binary: $work/moved/bin/cdvp; includes: $work/moved/include/cdvp"
 [ "$(PKG_CONFIG_PATH=$work/moved/lib/pkgconfig pkg-config --variable=includedir cdvp)" -ef "$work/moved/include/cdvp" ] ||
   fail "the moved cdvp.pc names $(PKG_CONFIG_PATH=$work/moved/lib/pkgconfig pkg-config --variable=includedir cdvp)"
-echo "examples built and checked against $work/prefix; pkg-config program ran; moved headers build from their old paths; the moved package configures"
+echo "examples built and checked against $work/prefix; pkg-config program ran; moved headers build from their old paths with their note, as docs/library.md lists them; the moved package configures"
