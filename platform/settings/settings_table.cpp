@@ -236,11 +236,12 @@ std::vector<Setting> board_settings() {
                    "boxes a tile when SSRAM serves; 0: the largest whose buffers fit the device's block RAMs",
                    "0: as large as the device allows (fewer tiles, fewer loads)"),
              "tile-boxes", "T"),
-        choice<BoardAlgorithm>("board.algorithm", member(&S::board, &B::algorithm),
-                               "what computes a sweep: all_pairs (the seed's board: every pair through the "
-                               "2m-1 lanes) or grid (boxes binned into a uniform grid's cell lists in SSRAM, the "
-                               "lanes run inside each cell; docs/grid_board.md)",
-                               "all_pairs: the paper's board"),
+        flag(choice<BoardAlgorithm>("board.algorithm", member(&S::board, &B::algorithm),
+                                    "what computes a sweep: all_pairs (the seed's board: every pair through the "
+                                    "2m-1 lanes) or grid (boxes binned into a uniform grid's cell lists in SSRAM, "
+                                    "the lanes run inside each cell; docs/grid_board.md)",
+                                    "all_pairs: the paper's board"),
+             "algorithm", "all_pairs|grid"),
         count("board.grid.dims", "cells a side", 0, GridConfig::kMaxDims, member(&S::board, &B::grid, &G::dims),
               "grid board: cells a side (dims^3 cells); 0: at each START the largest g with 16 g^3 <= N, about "
               "sixteen boxes a cell",

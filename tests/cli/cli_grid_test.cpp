@@ -60,6 +60,20 @@ TEST_F(CliGrid, FixedPointGridBoardsKeepTheirFormatsPairs) {
     EXPECT_EQ(slurp(dir_ / "grid.csv"), slurp(dir_ / "all.csv"));
 }
 
+// --algorithm grid is board.algorithm's flag: the same run as -c board.algorithm=grid, and the
+// report says where the setting came from.
+TEST_F(CliGrid, TheAlgorithmFlagChoosesTheGridBoard) {
+    ASSERT_EQ(run(spheres(2000, 1) + "-c board.algorithm=grid --pairs-out c.csv --report c.json").status, 0);
+    const Result r = run(spheres(2000, 1) + "--algorithm grid --pairs-out flag.csv --report flag.json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(dir_ / "flag.csv"), slurp(dir_ / "c.csv"));
+    const json setting = report("flag.json")["config"]["settings"]["board.algorithm"];
+    EXPECT_EQ(setting["value"], "grid");
+    EXPECT_EQ(setting["origin"], "flag --algorithm");
+    EXPECT_EQ(report("flag.json")["frames"][0]["compute_cycles"], report("c.json")["frames"][0]["compute_cycles"]);
+    expect_refusal(run(spheres(20, 1) + "--algorithm tree"), "cdvp run: --algorithm: ");
+}
+
 // The clocked grid board's waveforms show its sequencer's passes.
 TEST_F(CliGrid, WaveformsShowTheSequencer) {
     ASSERT_EQ(run("run --scene spheres --objects 60 --frames 1 --quiet --m 2 -c board.algorithm=grid --vcd w.vcd").status,

@@ -86,3 +86,13 @@ def test_an_injected_fault_is_a_device_fault_and_the_session_goes_on(cli):
 def test_the_report_path_is_the_modules_own():
     with pytest.raises(cdvp.InputError, match="report=: the module's own"):
         cdvp.run(**SMALL, report="x.json")
+
+
+def test_the_grid_board_is_a_keyword_as_it_is_a_flag():
+    grid = cdvp.run(**SMALL, algorithm="grid")
+    setting = grid.raw["config"]["settings"]["board.algorithm"]
+    assert setting == {"value": "grid", "origin": "flag --algorithm"}
+    same = cdvp.run(**SMALL, settings={"board.algorithm": "grid"})
+    assert grid.summary.pairs == same.summary.pairs
+    assert grid.raw["frames"][0]["compute_cycles"] == same.raw["frames"][0]["compute_cycles"]
+    assert cdvp.run(**SMALL).raw["config"]["settings"]["board.algorithm"]["value"] == "all_pairs"
