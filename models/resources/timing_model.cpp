@@ -205,11 +205,11 @@ BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
         // sequencer's setup divider and bounds adders one step a slot, and the
         // one-cell filter sits between the lanes' hit registers and the pair
         // FIFO with no register of its own (it lengthens the FIFO's path).
-        timing.pieces.push_back({"cell_function", board.format + " cell-function unit as written",
+        timing.pieces.push_back({"cell_function", board.format + " cell-function unit",
                                  table.cell_function(family, grade, board.format), false});
         timing.pieces.push_back({"cell_loader", board.format + " cell loader",
                                  table.cell_loader(family, grade, board.format)});
-        timing.pieces.push_back({"sequencer", "binning sequencer as written", table.grid_sequencer(family, grade), false});
+        timing.pieces.push_back({"sequencer", "binning sequencer", table.grid_sequencer(family, grade), false});
         timing.pieces.push_back({"one_cell_filter", "one-cell filter in front of the pair FIFO",
                                  table.home_cell_filter(family, grade, board.m), false});
     } else if (board.tiled) {
@@ -223,7 +223,9 @@ BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
     const bool counted_ahead = !board.grid && board.compare_latency >= 2;
     const PathDelay collector =
         table.pair_collector(family, grade, board.m, fifo_memory_name(board.fifo_memory), counted_ahead);
-    timing.pieces.push_back({"pair_fifo", fifo, collector, false});
+    // The seed's board holds its clock to the FIFO; the grid board's FIFO is
+    // reported with the one-cell filter that lengthens its path.
+    timing.pieces.push_back({"pair_fifo", fifo, collector, !board.grid});
     timing.pieces.push_back({"controller", "controller", table.control(family, grade)});
     return timing;
 }

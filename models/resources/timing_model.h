@@ -95,13 +95,12 @@ struct PieceTiming {
     std::string key;
     std::string piece;  // "float32 comparison lane at compare latency 2", "pair FIFO in block RAM", ...
     PathDelay path;
-    // Whether the board's clock is held to this piece. The pair FIFO's
-    // bookkeeping, rewritten for the paper's clock, does not yet reach every
-    // present-day clock at every m: its path is reported, not held to
-    // (docs/resources.md). So are the grid board's cell-function
-    // unit (its adder one of the model's four stages), one-cell filter
-    // (combinational in front of the pair FIFO) and binning sequencer (its
-    // setup divider and bounds adders one step a slot; docs/grid_board.md).
+    // Whether the board's clock is held to this piece. The grid board's
+    // cell-function unit (its adder one of the model's four stages), one-cell
+    // filter (combinational in front of the pair FIFO, so the FIFO with it)
+    // and binning sequencer (its setup divider and bounds adders one step a
+    // slot) are written to the model's slots, not to a clock: their paths are
+    // reported, not held to (docs/grid_board.md).
     bool holds_clock = true;
 };
 struct BoardTiming {

@@ -128,38 +128,41 @@ TEST(TimingTable, NamesWhatIsMissing) {
     EXPECT_TRUE(table.speed_grades("xcup").empty());
 }
 
-TEST(BoardTiming, TheSlowestPieceTheClockIsHeldToSetsTheFmax) {
+TEST(BoardTiming, TheSlowestPieceSetsTheFmax) {
     const TimingTable table = small_timing_table();
     TimedBoard board{"xc2v", 4, "float32", 3, 2, FifoMemory::kBlockRam, false};
     BoardTiming timing = board_timing(table, board);
     ASSERT_EQ(timing.pieces.size(), 4u);
-    // The lane (9 ns) limits; the pair FIFO (10.5 ns, its hits counted a
-    // cycle ahead at compare latency 2) is reported as the RTL is written.
-    EXPECT_EQ(timing.limiting().piece, "float32 comparison lane at compare latency 2");
-    EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 9.0);
-    EXPECT_EQ(timing.slowest().piece, "pair FIFO in block RAM");
-    EXPECT_DOUBLE_EQ(timing.slowest().path.ns, 10.5);
-    EXPECT_FALSE(timing.slowest().holds_clock);
+    // The pair FIFO (10.5 ns, its hits counted a cycle ahead at compare
+    // latency 2) limits, above the lane (9 ns): every piece holds the clock.
+    for (const PieceTiming& piece : timing.pieces) EXPECT_TRUE(piece.holds_clock) << piece.piece;
+    EXPECT_EQ(timing.limiting().piece, "pair FIFO in block RAM");
+    EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 10.5);
+    EXPECT_EQ(&timing.slowest(), &timing.limiting());
     board.fifo_memory = FifoMemory::kDistributed;
-    EXPECT_EQ(board_timing(table, board).slowest().piece, "pair FIFO in LUTs");
-    EXPECT_DOUBLE_EQ(board_timing(table, board).slowest().path.ns, 13.5);
+    EXPECT_EQ(board_timing(table, board).limiting().piece, "pair FIFO in LUTs");
+    EXPECT_DOUBLE_EQ(board_timing(table, board).limiting().path.ns, 13.5);
     // At compare latency 0 the lane takes 12 ns, and the FIFO counts the
-    // hits in their cycle (14 ns); with fixed16 lanes the address generator
-    // (7 ns at m = 3) limits instead.
+    // hits in their cycle (14 ns).
     board.compare_latency = 0;
-    EXPECT_DOUBLE_EQ(board_timing(table, board).limiting().path.ns, 12.0);
-    EXPECT_DOUBLE_EQ(board_timing(table, board).slowest().path.ns, 14.0);
+    EXPECT_DOUBLE_EQ(board_timing(table, board).limiting().path.ns, 14.0);
+    board.fifo_memory = FifoMemory::kBlockRam;
+    EXPECT_DOUBLE_EQ(board_timing(table, board).limiting().path.ns, 12.0);  // the lane, above the FIFO's 11
     board.compare_latency = 2;
-    board.format = "fixed16";
-    EXPECT_EQ(board_timing(table, board).limiting().piece, "address generator");
     // Boxes in SSRAM tiles: the tile walker instead of the address generator,
-    // held to the clock like it: at 6.5 ns it is above the fixed16 lane (6 ns).
+    // held to the clock like it.
     board.tiled = true;
     timing = board_timing(table, board);
     EXPECT_EQ(timing.pieces[1].piece, "tile walker");
     EXPECT_TRUE(timing.pieces[1].holds_clock);
+    EXPECT_DOUBLE_EQ(timing.pieces[1].path.ns, 6.5);
+    // Where the walker is the slowest (21 ns against the FIFO's 10), it sets
+    // the Fmax; untiled, the address generator (20 ns) does.
+    timing = board_timing(grid_timing_table(6.0), board);
     EXPECT_EQ(timing.limiting().piece, "tile walker");
-    EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 6.5);
+    EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 21.0);
+    board.tiled = false;
+    EXPECT_EQ(board_timing(grid_timing_table(6.0), board).limiting().piece, "address generator");
 }
 
 TEST(BoardTiming, AGridBoardIsHeldToItsCellLoaderNotToTheSeedsAddressPieces) {
@@ -171,8 +174,8 @@ TEST(BoardTiming, AGridBoardIsHeldToItsCellLoaderNotToTheSeedsAddressPieces) {
                                               "one_cell_filter (reported)", "pair_fifo (reported)", "controller"}));
     // The lane (9 ns) limits; the sequencer as written (40 ns) is the slowest of all.
     EXPECT_EQ(timing.limiting().piece, "float32 comparison lane at compare latency 2");
-    EXPECT_EQ(timing.slowest().piece, "binning sequencer as written");
-    EXPECT_EQ(timing.pieces[1].piece, "float32 cell-function unit as written");
+    EXPECT_EQ(timing.slowest().piece, "binning sequencer");
+    EXPECT_EQ(timing.pieces[1].piece, "float32 cell-function unit");
     EXPECT_DOUBLE_EQ(timing.pieces[1].path.ns, 30.0);
     // A slower loader (12 ns) limits the grid board; the address generator (20 ns) and tile
     // walker (21 ns), which it has not, would have limited it before it.
@@ -272,7 +275,9 @@ TEST_F(StoredTiming, FixedPointLanesAreFasterThanFloat32AndWiderOnesNoFaster) {
 // The FIFO counts 2m-1 hits in a tree of adds and finds the lowest on a
 // carry chain: its path grows with the lanes, about as their logarithm;
 // synthesis's choices scatter it a few percent from one m to the next (up to
-// 7% on the VU9P), never more than 10%.
+// 7% on the VU9P), never more than 10%. From 1 lane to 63 it grows by a third
+// at least (1.48 times on the VU9P, where the memory's clock-to-out, the same
+// at every m, is much of the path).
 TEST_F(StoredTiming, TheFifoGrowsDeeperAndSlowerWithTheLanes) {
     for_each_grade([&](const std::string& family, uint32_t grade) {
         for (const std::string memory : {"block_ram", "distributed"}) {
@@ -287,7 +292,7 @@ TEST_F(StoredTiming, TheFifoGrowsDeeperAndSlowerWithTheLanes) {
                 }
                 const PathDelay one = table.pair_collector(family, grade, 1, memory, ahead);
                 const PathDelay many = table.pair_collector(family, grade, BoardConfig::kMaxM, memory, ahead);
-                EXPECT_GT(many.ns, 1.5 * one.ns) << what;
+                EXPECT_GT(many.ns, 1.33 * one.ns) << what;
                 EXPECT_GT(many.luts + many.carry_cells + many.wide_muxes, one.luts + one.carry_cells + one.wide_muxes)
                     << what;
             }

@@ -147,7 +147,9 @@ module board_host #(
     // Pair FIFO and pair buffer.
     reg [BAW-1:0] buffer_write_at;
     localparam [BAW:0] BUFFER_FULL = BUFFER_DEPTH[BAW:0];
-    wire buffer_full = buffered == BUFFER_FULL;
+    // Full kept beside the count, so the pause (and with it the pipeline's
+    // enable) waits on no compare.
+    reg buffer_full;
     wire room;
     wire drain_ready = running && !buffer_full;
     wire pause_now = running && fifo_level != 0 && buffer_full;
@@ -180,6 +182,7 @@ module board_host #(
     always @(posedge clk) begin
         if (reset) begin
             buffered <= 0;
+            buffer_full <= 0;
             total_pairs <= 0;
         end
         if (cmd_abort) begin
@@ -189,10 +192,16 @@ module board_host #(
             buffered <= 0;
             buffer_write_at <= 0;
             total_pairs <= 0;
+            buffer_full <= 0;
         end else begin
             if (enable && leaving == END) end_seen <= 1;
-            if (resume_go) buffered <= 0;
-            else if (take) buffered <= buffered + 1'b1;
+            if (resume_go) begin
+                buffered <= 0;
+                buffer_full <= 0;
+            end else if (take) begin
+                buffered <= buffered + 1'b1;
+                buffer_full <= buffered == BUFFER_FULL - 1'b1;
+            end
             if (resume_go) buffer_write_at <= 0;
             else if (out_valid) buffer_write_at <= buffer_write_at + 1'b1;
             if (enable) total_pairs <= total_pairs + {{(63-PCW){1'b0}}, pushed_count};

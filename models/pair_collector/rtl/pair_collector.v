@@ -61,7 +61,7 @@ module pair_collector #(
     // Pairs in this cycle's hits: a balanced tree of adds (a chain through
     // every lane was the longest path once the read side was flattened), over
     // this cycle's hits or, COUNT_AHEAD, over the next and registered with them.
-    wire [LW:0] taken;
+    wire [LW:0] taken, offered;  // offered: taken before the push gates it (COUNT_AHEAD)
     reg [LW:0] hit_count;
     reg [LW:0] sums [0:LANES-1];
     integer k, w;
@@ -75,8 +75,10 @@ module pair_collector #(
         if (COUNT_AHEAD != 0) begin : g_ahead
             reg [LW:0] counted_ahead;  // the lanes' hits' count, a register beside theirs
             always @(posedge clk) if (hits_step) counted_ahead <= hit_count;
+            assign offered = counted_ahead;
             assign taken = push ? counted_ahead : {(LW+1){1'b0}};
         end else begin : g_now
+            assign offered = hit_count;
             assign taken = hit_count;
         end
     endgenerate
@@ -84,16 +86,14 @@ module pair_collector #(
     wire take;
     // The compare's operands at one width (each extended by a bit at least).
     localparam XW = (CW > LW + 1 ? CW : LW + 1) + 1;
-    wire [XW-1:0] taken_x = {{(XW-LW-1){1'b0}}, taken};
+    wire [XW-1:0] offered_x = {{(XW-LW-1){1'b0}}, offered};
     wire [XW-1:0] free_x = {{(XW-CW){1'b0}}, free};
-    // Room counts the pair leaving this cycle when DRAIN_FIRST is set.
-    generate
-        if (DRAIN_FIRST) begin : g_drain_first
-            assign room = taken_x <= free_x + {{(XW-1){1'b0}}, take};
-        end else begin : g_push_first
-            assign room = taken_x <= free_x;
-        end
-    endgenerate
+    // Room counts the pair leaving this cycle when DRAIN_FIRST is set: both
+    // ways compared from registers (counted ahead), the take chooses at the
+    // end, and no push needs none.
+    wire fits = offered_x <= free_x;
+    wire fits_taking = offered_x <= free_x + 1'b1;
+    assign room = (COUNT_AHEAD != 0 && !push) || (DRAIN_FIRST != 0 && take ? fits_taking : fits);
     wire write = room && (|hits);
     // The next level either way, chosen by write at the end of the path.
     wire [CW-1:0] pairs_written = pairs + taken - take, pairs_kept = pairs - take;
@@ -115,6 +115,12 @@ module pair_collector #(
     reg [LW-1:0] lane;               // its lane
     reg last;                        // it is the only one left: the entry leaves with it
     wire [EW-1:0] after_head;        // entries[read_after]: the next head
+    // Each entry is stored with its lowest hit's lane and whether that hit is
+    // its only one, found as it is written: the entry after the head comes
+    // out of the memory with them, and nothing runs from the memory's output
+    // through a search of its lanes (the longest path at large m, once the
+    // memory's clock-to-out is in it).
+    wire [LW-1:0] lane_after_stored;
     // A held head has a hit left (an entry holds one at least and leaves
     // with its last), so neither needs the mask.
     assign take = held != 0 && drain_ready;
@@ -130,8 +136,13 @@ module pair_collector #(
     wire last_written, last_after, last_kept;
     lowest_hit #(.LANES(LANES), .LW(LW)) lowest_written (
         .mask(mask_written), .one_hot(bit_written), .lane(lane_written), .only(last_written));
-    lowest_hit #(.LANES(LANES), .LW(LW)) lowest_after (
-        .mask(mask_after), .one_hot(bit_after), .lane(lane_after), .only(last_after));
+    assign lane_after = lane_after_stored;
+    genvar d;
+    generate
+        for (d = 0; d < LANES; d = d + 1) begin : g_after_bit
+            assign bit_after[d] = lane_after_stored == d;
+        end
+    endgenerate
     lowest_hit #(.LANES(LANES), .LW(LW)) lowest_kept (
         .mask(mask_kept), .one_hot(bit_kept), .lane(lane_kept), .only(last_kept));
     assign level = pairs;
@@ -160,8 +171,19 @@ module pair_collector #(
         end
     endgenerate
 
-    pair_fifo_memory #(.W(EW), .DEPTH(DEPTH), .AW(PW), .DISTRIBUTED(DISTRIBUTED)) entries (
-        .clk(clk), .write(write), .write_at(write_at), .data(entry), .read_at(read_from), .q(after_head));
+    generate
+        if (LANES > 1) begin : g_stored_lowest
+            pair_fifo_memory #(.W(EW + LW + 1), .DEPTH(DEPTH), .AW(PW), .DISTRIBUTED(DISTRIBUTED)) entries (
+                .clk(clk), .write(write), .write_at(write_at), .data({entry, lane_written, last_written}),
+                .read_at(read_from), .q({after_head, lane_after_stored, last_after}));
+        end else begin : g_one_lane
+            // One lane: an entry's one hit is lane 0's, and the last.
+            pair_fifo_memory #(.W(EW), .DEPTH(DEPTH), .AW(PW), .DISTRIBUTED(DISTRIBUTED)) entries (
+                .clk(clk), .write(write), .write_at(write_at), .data(entry), .read_at(read_from), .q(after_head));
+            assign lane_after_stored = 0;
+            assign last_after = 1;
+        end
+    endgenerate
 
     always @(posedge clk) begin
         out_valid <= take;
