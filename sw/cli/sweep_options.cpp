@@ -13,6 +13,7 @@
 #include "sw/cli/flag_names.h"
 #include "sw/cli/forwarded_options.h"
 #include "sw/cli/run_options.h"
+#include "sw/study/sweep_grid.h"
 #include "sw/study/sweep_inputs.h"
 #include "sw/study/sweep_state.h"
 
@@ -121,21 +122,18 @@ void resolve_axis(Axis& axis, const std::string& label, const std::set<std::stri
     if (const Setting* s = setting_of(axis.name)) {
         axis.key = s->name;
         axis.flag = s->value_name.empty() ? std::string() : s->flag;  // a switch's value goes through -c
-        std::vector<std::pair<std::string, std::string>> seen;  // canonical text, as given
+        std::vector<std::string> canonical;  // each value as the setting reads it
+        canonical.reserve(axis.values.size());
         for (const std::string& value : axis.values) {
-            std::string canonical;
             try {
-                canonical = to_text(s->parse_text(value));
+                canonical.push_back(to_text(s->parse_text(value)));
             } catch (const std::invalid_argument& e) {
                 throw InputError(label + ": " + e.what());
             }
-            for (const auto& [other, given] : seen) {
-                if (other == canonical) {
-                    throw InputError(label + ": '" + excerpt(value) + "' is the same value as '" + excerpt(given) +
-                                     "'; give each value once");
-                }
-            }
-            seen.emplace_back(canonical, value);
+        }
+        if (const auto repeat = first_repeat(canonical)) {
+            throw InputError(label + ": '" + excerpt(axis.values[repeat->first]) + "' is the same value as '" +
+                             excerpt(axis.values[repeat->second]) + "'; give each value once");
         }
         return;
     }
@@ -156,16 +154,15 @@ void resolve_axis(Axis& axis, const std::string& label, const std::set<std::stri
 // --jobs, --shard and --record.
 void read_own_options(const ParsedCommandLine& line, const std::set<std::string>& run_flags, SweepSpec& o) {
     bool software_timings_given = false;
+    std::vector<std::string> labels;  // each axis's, for resolve_axis
     for (const po::option& option : line.own) {
         const std::string& key = option.string_key;
         if (is_axis_option(key)) {
-            Axis axis{key, expand_list(option.value.at(0), "--" + key, false)};
-            resolve_axis(axis, "--" + key, run_flags);
-            o.axes.push_back(axis);
+            o.axes.push_back(Axis{key, expand_list(option.value.at(0), "--" + key, false)});
+            labels.push_back("--" + key);
         } else if (key == "set") {
-            Axis axis = parse_set(option.value.at(0));
-            resolve_axis(axis, "--set " + axis.name, run_flags);
-            o.axes.push_back(axis);
+            o.axes.push_back(parse_set(option.value.at(0)));
+            labels.push_back("--set " + o.axes.back().name);
         } else if (key == "out") {
             o.out_dir = option.value.at(0);
             if (o.out_dir.empty()) throw InputError("--out: expected a directory, got ''");
@@ -186,6 +183,10 @@ void read_own_options(const ParsedCommandLine& line, const std::set<std::string>
         }
     }
     if (!software_timings_given && !o.out_dir.empty()) o.software_timings = software_timings_dir(o.out_dir);
+    // The grid's size from the axes' lengths, before any value is read by its
+    // setting or file: a grid too big to run is refused at once.
+    check_grid_size(o.axes);
+    for (std::size_t a = 0; a < o.axes.size(); ++a) resolve_axis(o.axes[a], labels[a], run_flags);
 }
 
 // The options of cdvp run every point takes: none the sweep sets itself,

@@ -15,6 +15,7 @@
 #include "platform/settings/settings.h"
 #include "sw/python/python_names.h"
 #include "sw/run/run_arguments.h"
+#include "sw/study/sweep_grid.h"
 #include "sw/study/sweep_inputs.h"
 #include "sw/study/sweep_manifest.h"
 #include "sw/study/sweep_state.h"
@@ -265,13 +266,9 @@ Axis axis_of(const std::string& name, py::handle values, const std::string& labe
         wrong_type(label, "a list of values or a list's text (\"50:800:x2\")", values);
     }
     if (axis.values.empty()) throw InputError(label + ": expected at least one value");
-    for (std::size_t k = 0; k < canonical.size(); ++k) {
-        for (std::size_t j = 0; j < k; ++j) {
-            if (canonical[j] == canonical[k]) {
-                throw InputError(label + ": '" + excerpt(axis.values[k]) + "' is the same value as '" +
-                                 excerpt(axis.values[j]) + "'; give each value once");
-            }
-        }
+    if (const auto repeat = first_repeat(canonical)) {
+        throw InputError(label + ": '" + excerpt(axis.values[repeat->first]) + "' is the same value as '" +
+                         excerpt(axis.values[repeat->second]) + "'; give each value once");
     }
     for (const std::string& value : axis.values) {
         if (axis.key == "board") load_board_preset(value, label);

@@ -2,7 +2,8 @@
 
 #include <cstring>
 #include <map>
-#include <set>
+#include <string_view>
+#include <unordered_map>
 
 #include "models/common/user_text.h"
 #include "sw/output/digest.h"
@@ -84,11 +85,28 @@ std::vector<std::string> expand_list(const std::string& list, const std::string&
             start = comma + 1;
         }
     }
-    std::set<std::string> seen;
-    for (const std::string& value : values) {
-        if (!seen.insert(value).second) refuse(label, list, "'" + excerpt(value) + "' is given twice");
+    if (const auto repeat = first_repeat(values)) {
+        refuse(label, list, "'" + excerpt(values[repeat->first]) + "' is given twice");
     }
     return values;
+}
+
+std::optional<std::pair<std::size_t, std::size_t>> first_repeat(const std::vector<std::string>& keys) {
+    std::unordered_map<std::string_view, std::size_t> seen;  // a key -> its first place
+    seen.reserve(keys.size());
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const auto [earlier, fresh] = seen.emplace(keys[k], k);
+        if (!fresh) return std::make_pair(k, earlier->second);
+    }
+    return std::nullopt;
+}
+
+void check_grid_size(const std::vector<Axis>& axes) {
+    long double points = 1;
+    for (const Axis& axis : axes) points *= static_cast<long double>(axis.values.size());
+    if (points > static_cast<long double>(Grid::kMaxPoints)) {
+        throw InputError("the grid has " + count_text(points) + " points, more than " + std::to_string(Grid::kMaxPoints));
+    }
 }
 
 Axis parse_set(const std::string& text) {
@@ -137,11 +155,9 @@ Grid::Grid(std::vector<Axis> axes) : axes_(std::move(axes)) {
                              "; give it once");
         }
         if (axis.values.empty()) throw InputError(excerpt(axis.name) + ": an axis without values");
-        if (size_ > kMaxPoints / axis.values.size()) {
-            long double points = 1;
-            for (const Axis& each : axes_) points *= static_cast<long double>(each.values.size());
-            throw InputError("the grid has " + count_text(points) + " points, more than " + std::to_string(kMaxPoints));
-        }
+    }
+    check_grid_size(axes_);
+    for (const Axis& axis : axes_) {
         size_ *= axis.values.size();
         fragments_.push_back(axis_fragments(axis.values));
     }

@@ -6,7 +6,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cdvp {
@@ -42,6 +44,12 @@ std::vector<std::string> expand_range(const std::string& list, const std::string
 // double holds it exactly (below 1e19), else to 3 significant digits.
 std::string count_text(long double count);
 
+// The first of `keys` that an earlier one equals, as {its place, the earlier
+// one's}; nothing when all differ. One pass through a hash set, so a list's
+// cost grows as N: every repeated-value check of an axis (as written, or as
+// its setting reads it) goes through here.
+std::optional<std::pair<std::size_t, std::size_t>> first_repeat(const std::vector<std::string>& keys);
+
 // "NAME=LIST" of --set into an axis; the same errors, and a missing '=' or a
 // name that is not a flag or setting name ([a-z0-9_.-], starting with a
 // letter).
@@ -75,6 +83,12 @@ struct Point {
 // file name with room for a temporary's suffix.
 constexpr std::size_t kMaxFragmentBytes = 40;
 constexpr std::size_t kMaxIdBytes = 200;
+
+// Refuses axes of more than Grid::kMaxPoints points together, with their
+// count ("the grid has 3200000 points, more than 1000000"): from the axes'
+// sizes alone, so that a sweep checks it before any work a value or a point
+// costs.
+void check_grid_size(const std::vector<Axis>& axes);
 
 class Grid {
 public:

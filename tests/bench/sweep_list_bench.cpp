@@ -1,6 +1,6 @@
 // What a sweep's list costs before any point runs: a comma list of N values
-// whose last repeats an earlier one (refused, found by an ordered set in
-// O(N log N)), and a range of N whole values stepped in integers. Run with
+// whose last repeats an earlier one (refused, found by a hash set in one
+// pass: first_repeat), and a range of N whole values stepped in integers. Run with
 // --benchmark_repetitions=5 --benchmark_report_aggregates_only=true for
 // medians; the time per value should stay flat as N grows a hundredfold.
 #include <benchmark/benchmark.h>

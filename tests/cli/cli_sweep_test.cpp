@@ -145,6 +145,10 @@ TEST_F(Cli, SweepRefusesBadAxesAndOptionsBeforeAnyPointRuns) {
                                              "the nearest is 'objects'"},
         {"sweep --set bus.interupt_ns=1,2 --out res", "cdvp sweep: --set bus.interupt_ns: no flag of cdvp run or "
                                                       "setting has this name; the nearest is 'bus.interrupt_ns'"},
+        // The grid's size before any value is read by its setting (m=0 would be
+        // refused by it): no work a value or a point costs comes first.
+        {"sweep --set seed=1:100000:+1 --set m=0:31:+1 --out res",
+         "cdvp sweep: the grid has 3200000 points, more than 1000000\n"},
     };
     for (const auto& [args, start] : cases) {
         expect_refusal(run(args), start, args);

@@ -243,6 +243,37 @@ TEST(SweepGrid, AGridPastAMillionPointsIsRefusedWithItsCount) {
     EXPECT_EQ(Grid(std::vector<Axis>{axis("seed", "1:100000:+1"), axis("m", "1:10:+1")}).size(), 1000000u);
 }
 
+// The size is known from the axes' lengths alone, so a sweep refuses a grid
+// too big before it reads any value by its setting (sw/cli/sweep_options.cpp).
+TEST(SweepGrid, ItsSizeIsCheckedFromTheAxesLengthsAlone) {
+    std::vector<Axis> axes{{"seed", Values(100000, "x")}, {"m", Values(32, "y")}};
+    try {
+        check_grid_size(axes);
+        ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "the grid has 3200000 points, more than 1000000");
+    }
+    axes[1].values.resize(10);
+    EXPECT_NO_THROW(check_grid_size(axes)) << "a million points exactly";
+}
+
+// Every repeated-value check of an axis goes through first_repeat: a million
+// values in one pass (a pairwise check would compare 5e11 pairs, hours; the
+// suite's timeout for this executable is minutes).
+TEST(SweepList, ARepeatIsFoundInOnePassOverAMillionValues) {
+    constexpr std::size_t kValues = 1000000;
+    Values keys;
+    keys.reserve(kValues + 1);
+    for (std::size_t k = 0; k < kValues; ++k) keys.push_back(std::to_string(k * 7919));
+    EXPECT_EQ(first_repeat(keys), std::nullopt);
+    keys.push_back(keys[123456]);
+    const auto repeat = first_repeat(keys);
+    ASSERT_TRUE(repeat.has_value());
+    EXPECT_EQ(repeat->first, kValues) << "the later of the two";
+    EXPECT_EQ(repeat->second, 123456u) << "the earlier one it repeats";
+    EXPECT_EQ(first_repeat(Values{"a", "b", "a", "b"}), std::make_optional(std::make_pair(std::size_t{2}, std::size_t{0})));
+}
+
 // A report as cdvp run writes it: four frames, the first a warm-up, and the
 // summary over the other three in the report's own schema.
 nlohmann::json report(double board_ns, double sap_ns) {
