@@ -6,9 +6,18 @@
 // only a name with nothing behind it is "no such file".
 #pragma once
 
+#include <cstddef>
+#include <functional>
+#include <optional>
 #include <string>
 
 namespace cdvp {
+
+// A file's path in a message: printable and whole, so that the file's name
+// and the line and field after it are never cut away (a path the system
+// opened is at most PATH_MAX, 4096 bytes). A longer one, which no file has,
+// keeps its first and last kExcerptBytes around "... (N bytes) ...".
+std::string path_text(const std::string& path);
 
 // "Too many levels of symbolic links (ELOOP)"; for 0: "not a regular file".
 std::string errno_reason(int error);
@@ -34,5 +43,25 @@ InputPresence input_presence(const std::string& path);
 // there (a directory: "Is a directory (EISDIR)"); 'path' as the message
 // shows it is given by 'shown' when not empty.
 void require_regular_file(const std::string& path, const std::string& shown = {});
+
+// One way to read an input file whole, for every file cdvp reads back (a
+// preset, a config file, a host profile, a shared software timing, a model
+// cache's stamp): opened without blocking (O_NONBLOCK, so a FIFO or a device
+// never holds the open) and checked on that descriptor to be a regular file
+// ("PATH: cannot open: not a regular file; expected WHAT": a link to
+// /dev/zero, a FIFO, a directory), refused when larger than max_bytes before
+// a byte is read ("PATH: larger than N bytes; not WHAT") or when it grows
+// past them as it is read, and read to its end. Each block goes to `take`.
+// Returns false, reading nothing, when there is no file and `absent_ok`;
+// every other failure is an InputError naming the path (path_text).
+struct InputFile {
+    std::string path;
+    std::string what;  // "a board preset", "a software timing cdvp wrote"
+    std::size_t max_bytes = 0;
+    bool absent_ok = false;
+};
+bool read_input_blocks(const InputFile& file, const std::function<void(const char*, std::size_t)>& take);
+// The whole text; nothing only when there is no file and `absent_ok`.
+std::optional<std::string> read_input_file(const InputFile& file);
 
 }  // namespace cdvp

@@ -1,12 +1,5 @@
 #include "platform/settings/preset_json.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-
 #include <algorithm>
 #include <optional>
 #include <set>
@@ -183,36 +176,7 @@ json parse_preset(const std::string& path, const std::string& text, const std::s
 std::string read_small_file(const std::string& path, const std::string& what) {
     if (const std::string* pinned = PinnedFiles::find(path)) return *pinned;
     constexpr std::size_t kMaxBytes = 1 << 20;  // a hand-written file; anything bigger is not one
-    // One descriptor for the check and the read (a sweep reads its preset at every point).
-    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0) refuse_input(path, errno);
-    struct Closer {
-        int fd;
-        ~Closer() { close(fd); }
-    } closer{fd};
-    struct stat status {};
-    if (fstat(fd, &status) != 0) refuse_input(path, errno);
-    if (!S_ISREG(status.st_mode)) refuse_input(path, S_ISDIR(status.st_mode) ? EISDIR : 0);
-    if (static_cast<std::size_t>(status.st_size) > kMaxBytes) {
-        throw InputError(path + ": larger than " + std::to_string(kMaxBytes) + " bytes; not " + what);
-    }
-    std::string text(static_cast<std::size_t>(status.st_size), '\0');
-    std::size_t got = 0;
-    for (;;) {  // to the end, which may come before or after the size seen (a file being written)
-        if (got == text.size()) {
-            if (text.size() > kMaxBytes) {
-                throw InputError(path + ": larger than " + std::to_string(kMaxBytes) + " bytes; not " + what);
-            }
-            text.resize(text.size() + 4096);
-        }
-        const ssize_t n = read(fd, &text[got], text.size() - got);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) throw InputError(path + ": cannot read: " + errno_reason(errno));
-        if (n == 0) break;
-        got += static_cast<std::size_t>(n);
-    }
-    text.resize(got);
-    return text;
+    return *read_input_file({path, what, kMaxBytes});
 }
 
 }  // namespace cdvp

@@ -198,7 +198,7 @@ TEST_F(PresetFile, OnlyASmallRegularFileIsAPreset) {
         load_board_preset(fifo);
         ADD_FAILURE() << "a named pipe was read as a preset";
     } catch (const InputError& e) {
-        EXPECT_EQ(fifo + ": cannot open: not a regular file", std::string(e.what()));
+        EXPECT_EQ(fifo + ": cannot open: not a regular file; expected a board preset", std::string(e.what()));
     }
     std::remove(fifo.c_str());
 }
