@@ -9,6 +9,7 @@
 #include <cstring>
 #include <string>
 
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
 
 namespace cdvp {
@@ -27,7 +28,7 @@ bool still_named(int fd, const std::string& path) {
 DirectoryLock::DirectoryLock(const std::string& dir, const std::string& label) : path_(dir + "/" + kFileName) {
     for (;;) {
         fd_ = open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-        if (fd_ < 0) throw_os_error(label + ": " + excerpt(path_) + ": cannot create the lock", errno);
+        if (fd_ < 0) throw_os_error(label + ": " + path_text(path_) + ": cannot create the lock", errno);
         if (flock(fd_, LOCK_EX | LOCK_NB) == 0) {
             if (still_named(fd_, path_)) break;
             close(fd_);  // its holder removed it as we took it: take the new one
@@ -38,10 +39,10 @@ DirectoryLock::DirectoryLock(const std::string& dir, const std::string& label) :
         const ssize_t got = pread(fd_, holder, sizeof holder - 1, 0);
         close(fd_);
         fd_ = -1;
-        if (error != EWOULDBLOCK) throw_os_error(label + ": " + excerpt(path_) + ": cannot lock", error);
+        if (error != EWOULDBLOCK) throw_os_error(label + ": " + path_text(path_) + ": cannot lock", error);
         std::string pid = got > 0 ? std::string(holder, static_cast<std::size_t>(got)) : std::string();
         pid = pid.substr(0, pid.find_first_not_of("0123456789"));
-        throw InputError(label + ": " + excerpt(dir) + " is in use by another cdvp sweep or merge" +
+        throw InputError(label + ": " + path_text(dir) + " is in use by another cdvp sweep or merge" +
                          (pid.empty() ? std::string() : " (pid " + pid + ")") +
                          "; wait for it to end, or give another directory");
     }
@@ -52,7 +53,7 @@ DirectoryLock::DirectoryLock(const std::string& dir, const std::string& label) :
         unlink(path_.c_str());
         close(fd_);
         fd_ = -1;
-        throw_os_error(label + ": " + excerpt(path_) + ": cannot write", error);
+        throw_os_error(label + ": " + path_text(path_) + ": cannot write", error);
     }
 }
 
@@ -70,7 +71,7 @@ namespace {
 const std::string& made_directory(CreatedDirectories& made, const std::string& dir) {
     struct stat status {};
     if (stat(dir.c_str(), &status) == 0 && !S_ISDIR(status.st_mode)) {
-        throw InputError("--out: " + excerpt(dir) + ": expected a directory");
+        throw InputError("--out: " + path_text(dir) + ": expected a directory");
     }
     made.create(dir);
     return dir;

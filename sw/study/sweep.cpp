@@ -113,7 +113,7 @@ void remove_stale_temporaries(const std::string& dir) {
 // (--out, out=).
 void check_out_dir(const std::string& out, const std::optional<Manifest>& existing, const Manifest& wanted,
                    const SettingNames& names) {
-    const std::string dir = excerpt(out), out_name = names.input("out");
+    const std::string dir = path_text(out), out_name = names.input("out");
     if (existing) {
         if (const std::optional<SweepDifference> other = difference(*existing, wanted, &names)) {
             if (other->input_changed) {

@@ -25,7 +25,7 @@ using nlohmann::json;
 constexpr std::size_t kMaxManifestBytes = std::size_t{256} << 20;
 
 json parse_manifest_text(const std::string& text, const std::string& path) {
-    const std::string label = excerpt(path);
+    const std::string label = path_text(path);
     check_json_nesting(label, text, "a sweep manifest");  // before the parser builds anything deep
     if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
         throw InputError(text_position(label, text, nul) + ": a NUL byte; expected the manifest cdvp sweep writes");
@@ -74,7 +74,7 @@ public:
         return value;
     }
     [[noreturn]] void refuse(const std::string& field, const std::string& why) const {
-        throw InputError(excerpt(path_) + ": field '" + excerpt(field) + "': " + why +
+        throw InputError(path_text(path_) + ": field '" + excerpt(field) + "': " + why +
                          "; expected the manifest cdvp sweep writes");
     }
 
@@ -138,11 +138,11 @@ std::optional<Manifest> read_manifest(const std::string& path) {
     struct stat status {};
     if (lstat(path.c_str(), &status) != 0) {
         if (errno == ENOENT) return std::nullopt;
-        throw InputError(excerpt(path) + ": cannot read: " + errno_reason(errno));
+        throw InputError(path_text(path) + ": cannot read: " + errno_reason(errno));
     }
-    if (!S_ISREG(status.st_mode)) throw InputError(excerpt(path) + ": expected a regular file (a sweep's manifest)");
+    if (!S_ISREG(status.st_mode)) throw InputError(path_text(path) + ": expected a regular file (a sweep's manifest)");
     if (static_cast<uint64_t>(status.st_size) > kMaxManifestBytes) {
-        throw InputError(excerpt(path) + ": " + std::to_string(status.st_size) + " bytes; expected the manifest cdvp "
+        throw InputError(path_text(path) + ": " + std::to_string(status.st_size) + " bytes; expected the manifest cdvp "
                          "sweep writes (at most " + std::to_string(kMaxManifestBytes) + ")");
     }
     const json document = parse_manifest_text(slurp(path), path);
@@ -193,8 +193,8 @@ std::optional<Manifest> read_manifest(const std::string& path) {
         }
     } catch (const InputError& e) {
         const std::string message = e.what();
-        if (message.rfind(excerpt(path) + ":", 0) == 0) throw;
-        throw InputError(excerpt(path) + ": " + message);
+        if (message.rfind(path_text(path) + ":", 0) == 0) throw;
+        throw InputError(path_text(path) + ": " + message);
     }
     return manifest;
 }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
 #include "sw/study/child_runs.h"
 #include "sw/study/directory_lock.h"
@@ -35,20 +36,20 @@ Manifest shards_manifest(const std::vector<std::string>& shards) {
     std::set<std::string> seen;
     for (const std::string& dir : shards) {
         std::optional<Manifest> m = read_manifest(manifest_path(dir));
-        if (!m) throw InputError(excerpt(dir) + ": not a sweep directory (no sweep.json)");
+        if (!m) throw InputError(path_text(dir) + ": not a sweep directory (no sweep.json)");
         if (!manifests.empty()) {
             if (const std::optional<SweepDifference> other = difference(manifests[0], *m)) {
-                throw InputError(excerpt(dir) + ": a shard of another sweep than " + excerpt(shards[0]) + " (" +
+                throw InputError(path_text(dir) + ": a shard of another sweep than " + path_text(shards[0]) + " (" +
                                  other->what + ")");
             }
             if (m->shard.count != manifests[0].shard.count) {
-                throw InputError(excerpt(dir) + ": shard " + m->shard.text() + " of a sweep cut in " +
-                                 std::to_string(manifests[0].shard.count) + " by " + excerpt(shards[0]) +
+                throw InputError(path_text(dir) + ": shard " + m->shard.text() + " of a sweep cut in " +
+                                 std::to_string(manifests[0].shard.count) + " by " + path_text(shards[0]) +
                                  "; give shards of one --shard K/N");
             }
         }
         if (!seen.insert(m->shard.text()).second) {
-            throw InputError(excerpt(dir) + ": shard " + m->shard.text() + " is given twice");
+            throw InputError(path_text(dir) + ": shard " + m->shard.text() + " is given twice");
         }
         manifests.push_back(std::move(*m));
     }
@@ -62,20 +63,20 @@ Manifest shards_manifest(const std::vector<std::string>& shards) {
 void place_report(const std::string& from, const std::string& to) {
     if (link(from.c_str(), to.c_str()) == 0) return;
     const std::optional<std::string> text = read_whole_file(from);
-    if (!text) throw_os_error(excerpt(from) + ": cannot read", errno);
+    if (!text) throw_os_error(path_text(from) + ": cannot read", errno);
     const int fd = open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (fd < 0) throw_os_error("--out: " + excerpt(to) + ": cannot write", errno);
+    if (fd < 0) throw_os_error("--out: " + path_text(to) + ": cannot write", errno);
     for (std::size_t done = 0; done < text->size();) {
         const ssize_t put = write(fd, text->data() + done, text->size() - done);
         if (put < 0 && errno == EINTR) continue;
         if (put < 0) {
             const int error = errno;
             close(fd);
-            throw_os_error("--out: " + excerpt(to) + ": cannot write", error);
+            throw_os_error("--out: " + path_text(to) + ": cannot write", error);
         }
         done += static_cast<std::size_t>(put);
     }
-    if (close(fd) != 0) throw_os_error("--out: " + excerpt(to) + ": cannot write", errno);
+    if (close(fd) != 0) throw_os_error("--out: " + path_text(to) + ": cannot write", errno);
 }
 
 // The staging directory beside OUT, removed with all it holds unless it was
@@ -87,9 +88,9 @@ public:
         path_ = (target.parent_path() / ("." + target.filename().string() + ".merge-" + std::to_string(getpid()))).string();
         std::error_code error;
         fs::remove_all(path_, error);
-        if (mkdir(path_.c_str(), 0755) != 0) throw_os_error("--out: " + excerpt(path_) + ": cannot create", errno);
+        if (mkdir(path_.c_str(), 0755) != 0) throw_os_error("--out: " + path_text(path_) + ": cannot create", errno);
         if (mkdir(points_dir(path_).c_str(), 0755) != 0) {
-            throw_os_error("--out: " + excerpt(points_dir(path_)) + ": cannot create", errno);
+            throw_os_error("--out: " + path_text(points_dir(path_)) + ": cannot create", errno);
         }
     }
     ~Staging() {
@@ -127,7 +128,7 @@ MergeOutcome merge_sweeps(const MergeSpec& o) {
     const std::optional<Manifest> existing = read_manifest(manifest_path(o.out));
     if (existing ? difference(*existing, merged).has_value() || !existing->shard.whole()
                  : !directory_contents(o.out).empty()) {
-        throw InputError("--out: " + excerpt(o.out) + ": expected a new or empty directory, or a merge of the same sweep");
+        throw InputError("--out: " + path_text(o.out) + ": expected a new or empty directory, or a merge of the same sweep");
     }
 
     const Staging staging(o.out);
@@ -137,13 +138,13 @@ MergeOutcome merge_sweeps(const MergeSpec& o) {
         SweepTable rows(grid);
         // Every row checked, or refused naming file, line and field.
         if (read_table(dir, grid, shard, rows, false, merged.record).torn) {
-            throw InputError(excerpt(table_path(dir)) + ": its last row is cut short (its sweep was stopped while "
+            throw InputError(path_text(table_path(dir)) + ": its last row is cut short (its sweep was stopped while "
                              "writing it): run that sweep again to complete it, then merge");
         }
         rows.for_each([&](std::size_t index, const RowView& row) {
             if (table.has(index)) {
                 if (row.get(kChecksumColumn) == table.row(index).get(kChecksumColumn)) return;  // merged before
-                throw InputError(excerpt(dir) + ": point " + std::to_string(index) + " is also in " + excerpt(from[index]) +
+                throw InputError(path_text(dir) + ": point " + std::to_string(index) + " is also in " + path_text(from[index]) +
                                  ", with other results; give each shard once");
             }
             from[index] = dir;

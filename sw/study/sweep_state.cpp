@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
 #include "sw/study/child_runs.h"
 #include "sw/output/digest.h"
@@ -79,10 +80,10 @@ public:
             const std::string path = report_path(dir_, point);
             struct stat status_of {};
             if (lstat(path.c_str(), &status_of) == 0 && !S_ISREG(status_of.st_mode)) {
-                return "the point's report " + excerpt(path) + " is not a regular file";
+                return "the point's report " + path_text(path) + " is not a regular file";
             }
             const std::optional<FileDigest> digest = digest_file(path);
-            if (!digest) return "the point's report " + excerpt(path) + " cannot be read: " + std::strerror(errno);
+            if (!digest) return "the point's report " + path_text(path) + " cannot be read: " + std::strerror(errno);
             report = digest->sha256;
         }
         if (value(row, kChecksumColumn) != row_checksum(row, report ? &*report : nullptr)) {
@@ -138,7 +139,7 @@ std::vector<std::string> directory_contents(const std::string& dir) {
 TableRead read_table(const std::string& dir, const Grid& grid, const Shard& shard, SweepTable& table,
                      bool keep_going, RecordMode record) {
     const std::string path = table_path(dir);
-    const std::string label = excerpt(path);
+    const std::string label = path_text(path);
     TableRead result;
     if (!exists(path)) return result;
     struct stat status {};
@@ -211,7 +212,7 @@ TableFile::TableFile(std::string path, const SweepTable& table, bool rewrite_fir
     }
     header_columns_ = table.columns().size();
     fd_ = open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-    if (fd_ < 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
+    if (fd_ < 0) throw_os_error("--out: " + path_text(path_) + ": cannot write", errno);
 }
 
 TableFile::~TableFile() {
@@ -233,7 +234,7 @@ void TableFile::rewrite(const SweepTable& table) {
     header_columns_ = table.columns().size();
     in_order_ = true;
     fd_ = open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-    if (fd_ < 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
+    if (fd_ < 0) throw_os_error("--out: " + path_text(path_) + ": cannot write", errno);
 }
 
 void TableFile::append(const SweepTable& table, std::size_t index, bool sync_now) {
@@ -257,7 +258,7 @@ void TableFile::write_pending() {
     for (std::size_t done = 0; done < pending_.size();) {
         const ssize_t put = write(fd_, pending_.data() + done, pending_.size() - done);
         if (put < 0 && errno == EINTR) continue;
-        if (put < 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
+        if (put < 0) throw_os_error("--out: " + path_text(path_) + ": cannot write", errno);
         done += static_cast<std::size_t>(put);
     }
     pending_.clear();
@@ -265,7 +266,7 @@ void TableFile::write_pending() {
 
 void TableFile::sync() {
     write_pending();
-    if (fdatasync(fd_) != 0) throw_os_error("--out: " + excerpt(path_) + ": cannot write", errno);
+    if (fdatasync(fd_) != 0) throw_os_error("--out: " + path_text(path_) + ": cannot write", errno);
 }
 
 void TableFile::finish(const SweepTable& table) {

@@ -43,15 +43,17 @@ void write_file(const std::string& path, const std::string& text) { std::ofstrea
 // A directory holding a sweep of three points: 0 ok, 1 refused, 2 ok.
 class SweepDir : public ::testing::Test {
 protected:
-    SweepDir() : grid_(std::vector<Axis>{{"m", {"1", "2", "4"}}}) {
-        fs::create_directory(points_dir(dir()));
+    SweepDir() : grid_(std::vector<Axis>{{"m", {"1", "2", "4"}}}) { fill(dir()); }
+    // Writes the sweep into 'out'.
+    void fill(const std::string& out) const {
+        fs::create_directories(points_dir(out));
         SweepTable table(grid_);
         for (std::size_t k : {0, 2}) {
-            write_file(report_path(dir(), grid_.point(k)), kReport);
+            write_file(report_path(out, grid_.point(k)), kReport);
             table.add(k, report_row(grid_, grid_.point(k), kReport, 0.5));
         }
         table.add(1, failed_row(grid_, grid_.point(1), PointStatus::kRefused, "m does not fit", 0.1));
-        write_file(table_path(dir()), table.csv());
+        write_file(table_path(out), table.csv());
     }
     std::string dir() const { return temp_.path().string(); }
     std::string csv() const { return slurp(table_path(dir())); }
@@ -62,11 +64,11 @@ protected:
         ASSERT_NE(at, std::string::npos) << from;
         write_file(table_path(dir()), text.replace(at, from.size(), to));
     }
-    // read_table's refusal, or "" when it accepted the file.
-    std::string refusal(const Shard& shard = Shard{}) {
+    // read_table's refusal of the sweep in 'out', or "" when it accepted the file.
+    std::string refusal(const Shard& shard = Shard{}, const std::string& out = {}) {
         SweepTable table(grid_);
         try {
-            read_table(dir(), grid_, shard, table, false);
+            read_table(out.empty() ? dir() : out, grid_, shard, table, false);
         } catch (const InputError& e) {
             return e.what();
         }
@@ -176,6 +178,24 @@ TEST_F(SweepDir, ALastRowCutShortIsLeftOutToRunAgain) {
     EXPECT_TRUE(read.rewrite);
     EXPECT_EQ(table.size(), 2u);
     EXPECT_FALSE(table.has(2));
+}
+
+// However long the --out path, a refusal names the whole file, then the line
+// and the field: the file's name is what tells which of the sweep's files it is.
+TEST_F(SweepDir, ARefusalUnderALongPathNamesTheWholeFileLineAndField) {
+    const std::string out = dir() + "/" + std::string(120, 'd') + "/results-of-the-long-sweep";
+    fill(out);
+    std::string text = slurp(table_path(out));
+    const std::size_t checksum = text.find(",ok,,", text.find("m-1,0,")) + 5;
+    text[checksum] = text[checksum] == '0' ? '1' : '0';
+    write_file(table_path(out), text);
+    EXPECT_EQ(refusal(Shard{}, out), table_path(out) + ":2: field 'checksum': does not match the row and its report "
+                                                       "(changed since the sweep wrote them)");
+    fs::remove(report_path(out, grid_.point(2)));
+    fs::create_symlink("/dev/zero", report_path(out, grid_.point(2)));
+    write_file(table_path(out), slurp(table_path(dir())));
+    EXPECT_EQ(refusal(Shard{}, out),
+              table_path(out) + ":4: the point's report " + report_path(out, grid_.point(2)) + " is not a regular file");
 }
 
 TEST_F(SweepDir, AReportOrTableThatIsNoRegularFileIsRefusedUnread) {
