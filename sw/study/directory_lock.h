@@ -17,7 +17,10 @@ class DirectoryLock {
 public:
     static constexpr const char* kFileName = "sweep.lock";
     // Locks DIR (which must exist). Throws InputError naming 'label', the
-    // directory and the holder's pid when another process holds it.
+    // directory, the lock file and the holder's pid when another process
+    // holds it; a holder that has the lock but has not yet written its pid
+    // (two started at the same instant) is waited for up to a second, then
+    // said to be one ("its pid not yet written").
     DirectoryLock(const std::string& dir, const std::string& label);
     // Removes the lock file, then lets the lock go.
     ~DirectoryLock();

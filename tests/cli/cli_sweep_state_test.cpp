@@ -219,7 +219,7 @@ TEST_F(CliSweepState, ASecondSweepIntoOneDirectoryIsRefusedNamingTheFirst) {
     int status = 0;
     waitpid(first, &status, 0);
     expect_refusal(second, "cdvp sweep: --out: res is in use by another cdvp sweep or merge (pid " +
-                               std::to_string(first) + ")");
+                               std::to_string(first) + ", holding res/sweep.lock)");
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 0);
     EXPECT_EQ(rows("res").size(), 7u) << "the first sweep's rows, all of them";
