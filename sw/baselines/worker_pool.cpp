@@ -1,22 +1,46 @@
 #include "sw/baselines/worker_pool.h"
 
 #include <algorithm>
+#include <new>
 #include <string>
 #include <system_error>
 
 namespace cdvp {
 
+namespace {
+
+// Why a thread could not be made, in the system's words where it gave some.
+std::string reason_of(const std::exception_ptr& failure) {
+    try {
+        std::rethrow_exception(failure);
+    } catch (const std::system_error& e) {
+        return e.code().message();
+    } catch (const std::bad_alloc&) {
+        return "out of memory";
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+    }
+    return "an unknown failure";
+}
+
+}  // namespace
+
 WorkerPool::WorkerPool(unsigned threads) {
     const unsigned workers = std::max(threads, 1u) - 1;
-    workers_.reserve(workers);
     try {
+        workers_.reserve(workers);
         for (unsigned t = 0; t < workers; ++t) workers_.emplace_back([this, t] { work(t); });
-    } catch (const std::system_error& e) {
-        // The members outlive the started workers only if they are joined here.
+    } catch (...) {
+        // Whatever failed (a thread the system refused, memory for its state
+        // run out), the started workers are stopped and joined before
+        // anything else: the members they wait on go with this constructor,
+        // and a condition variable destroyed under its waiters never returns.
         const std::size_t started = workers_.size() + 1;  // with the caller's
         stop();
         throw ThreadsUnavailable(std::to_string(workers + 1) + " threads asked; the system started " +
-                                 std::to_string(started) + " (" + e.code().message() + "); expected fewer");
+                                 std::to_string(started) + " (" + reason_of(std::current_exception()) +
+                                 "); expected fewer");
     }
 }
 

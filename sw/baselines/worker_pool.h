@@ -28,9 +28,10 @@ class WorkerPool {
 public:
     // threads in all, the caller of run() one of them (so threads - 1 are
     // started); at least one. A pool runs on all of them or is not made:
-    // when the system refuses a thread, those already started are stopped
-    // and joined and ThreadsUnavailable is thrown (a baseline timed on fewer
-    // threads than it names would be silently wrong).
+    // when a thread cannot be made (the system refuses it, or the memory for
+    // its state runs out), those already started are stopped and joined and
+    // ThreadsUnavailable is thrown (a baseline timed on fewer threads than it
+    // names would be silently wrong).
     explicit WorkerPool(unsigned threads);
     ~WorkerPool();
     WorkerPool(const WorkerPool&) = delete;

@@ -149,6 +149,10 @@ TEST_F(Cli, ThreadsTheSystemWillNotStartAreRefusedNamingThreads) {
     }
     const Result fewer = run(args + "sap_mt --threads 4", limited);
     EXPECT_EQ(fewer.status, 0) << fewer.err;
+    // The case found from outside: the default board and 2,000 spheres.
+    const Result spheres = run("run --scene spheres --objects 2000 -q --baseline sap_mt --threads 1024", limited);
+    EXPECT_EQ(spheres.status, 4) << spheres.err;
+    EXPECT_EQ(spheres.err.rfind("cdvp run: --threads: 1024 threads asked; the system started ", 0), 0u) << spheres.err;
 }
 
 }  // namespace
