@@ -14,10 +14,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
 
+#include "models/common/input_path.h"
 #include "models/common/user_directories.h"
 #include "models/common/user_text.h"
 #include "models/rtl_engine/rtl_model_compile.h"
@@ -32,15 +34,6 @@ constexpr const char* kModel = "model.so";
 constexpr const char* kStamp = "stamp.txt";
 constexpr std::size_t kKeyDigits = 16;
 
-std::optional<std::string> read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return std::nullopt;
-    return text.str();
-}
-
 std::string sha256_hex(const std::string& bytes) {
     unsigned char digest[EVP_MAX_MD_SIZE];
     unsigned int size = 0;
@@ -53,11 +46,32 @@ std::string sha256_hex(const std::string& bytes) {
     return hex;
 }
 
-// "bytes sha256" of a file, or nothing when it cannot be read.
-std::optional<std::string> file_digest(const std::string& path) {
-    const std::optional<std::string> bytes = read_file(path);
-    if (!bytes) return std::nullopt;
-    return std::to_string(bytes->size()) + " " + sha256_hex(*bytes);
+// What the cache reads back, each through the one reader of input files: a
+// stamp is a few lines; an object, a kit file, some MiB.
+constexpr std::size_t kMaxStampBytes = 64 << 10;
+constexpr std::size_t kMaxFileBytes = std::size_t{1} << 30;
+
+// "bytes sha256" of a file, or nothing when there is none; InputError naming
+// it when it is no regular file or is larger than max_bytes.
+std::optional<std::string> file_digest(const std::string& path, const std::string& what,
+                                       std::size_t max_bytes = kMaxFileBytes) {
+    const std::unique_ptr<EVP_MD_CTX, void (*)(EVP_MD_CTX*)> context(EVP_MD_CTX_new(), EVP_MD_CTX_free);
+    if (!context || EVP_DigestInit_ex(context.get(), EVP_sha256(), nullptr) != 1) {
+        throw std::runtime_error("OpenSSL: SHA-256 failed");
+    }
+    uint64_t bytes = 0;
+    const bool there = read_input_blocks({path, what, max_bytes, true}, [&](const char* data, std::size_t size) {
+        if (EVP_DigestUpdate(context.get(), data, size) != 1) throw std::runtime_error("OpenSSL: SHA-256 failed");
+        bytes += size;
+    });
+    if (!there) return std::nullopt;
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int size = 0;
+    if (EVP_DigestFinal_ex(context.get(), digest, &size) != 1) throw std::runtime_error("OpenSSL: SHA-256 failed");
+    static const char kHex[] = "0123456789abcdef";
+    std::string hex;
+    for (unsigned int k = 0; k < size; ++k) hex += {kHex[digest[k] >> 4], kHex[digest[k] & 15]};
+    return std::to_string(bytes) + " " + hex;
 }
 
 std::string join(const std::vector<std::string>& words) {
@@ -154,7 +168,15 @@ RtlBoardMaker open_entry(const std::string& entry, const std::string& key, std::
     std::error_code ec;
     if (!fs::exists(entry, ec)) return nullptr;
     check_private(entry);
-    const std::optional<std::string> stamp = read_file(entry + "/" + kStamp);
+    std::optional<std::string> stamp, digest;
+    const std::string model = entry + "/" + kModel;
+    try {  // a stamp or object that is a FIFO, a device or huge: refused unread, as one others could write
+        stamp = read_input_file({entry + "/" + kStamp, "the stamp cdvp wrote", kMaxStampBytes, true});
+        if (stamp && stamp_value(*stamp, "key") == key) digest = file_digest(model, "the model cdvp compiled");
+    } catch (const InputError& e) {
+        throw InputError("fidelity rtl: the RTL model cache's " + std::string(e.what()) +
+                         " (remove the entry to compile it again)");
+    }
     if (!stamp) {
         damage = "no " + std::string(kStamp);
         return nullptr;
@@ -163,8 +185,6 @@ RtlBoardMaker open_entry(const std::string& entry, const std::string& key, std::
         damage = std::string(kStamp) + " names another key";
         return nullptr;
     }
-    const std::string model = entry + "/" + kModel;
-    const std::optional<std::string> digest = file_digest(model);
     if (!digest || *digest != stamp_value(*stamp, kModel)) {
         damage = std::string(kModel) + (digest ? " differs from its stamp" : " is missing");
         return nullptr;
@@ -226,7 +246,7 @@ void build_entry(const RtlVariant& variant, const RtlToolchain& tools, const Rtl
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     remove_tree(partial + "/verilated");  // sources and objects: the shared object holds all of it
-    const std::optional<std::string> digest = file_digest(partial + "/" + kModel);
+    const std::optional<std::string> digest = file_digest(partial + "/" + kModel, "the model Verilator's build made");
     if (!digest) throw std::runtime_error("Verilator's build left no " + std::string(kModel) + " in " + partial);
     std::ofstream(partial + "/key.txt", std::ios::binary) << key_text;
     std::ostringstream stamp;
@@ -269,7 +289,11 @@ std::string rtl_model_key_text(const RtlVariant& variant, const RtlBuild& build,
          << build.flags << "\nverilator_arguments " << join(build.verilator_arguments) << "\nmake_options "
          << join(rtl_model_make_options()) << '\n';
     for (const std::string& file : kit.files()) {
-        const std::optional<std::string> digest = file_digest(kit.path(file));
+        std::optional<std::string> digest;
+        try {
+            digest = file_digest(kit.path(file), "an RTL source");
+        } catch (const InputError&) {
+        }
         if (!digest) {
             throw InputError("fidelity rtl: " + printable(kit.path(file)) +
                              ": cannot read the RTL sources a model is compiled from (cmake --install puts them in "

@@ -308,36 +308,48 @@ std::string sha256_of(const std::string& bytes) {
     return hex;
 }
 
-// dlopen runs an entry's code: an entry others can write to (or that is not
-// the user's) is refused in one line naming it, not loaded and not compiled
-// over. A stamped entry whose object does not load stands in for a compiled
-// one (a private one goes on to be compiled again: the notice says so).
-TEST(RtlModelCacheEntry, AGroupWritableEntryIsRefused) {
-    const fs::path cache = fs::temp_directory_path() / ("cdvp-rtl-private-" + std::to_string(getpid()));
-    fs::remove_all(cache);
-    const RtlBuild build = rtl_build();
-    const RtlKit kit = rtl_kit_at(CDVP_SOURCE_DIR);
-    const RtlVariant variant;
-    const std::string key = sha256_of(rtl_model_key_text(variant, build, kit));
-    const fs::path entry = cache / (variant.name() + "-" + key.substr(0, 16));
-    fs::create_directories(entry);
-    const std::string object = "not a shared object";
-    std::ofstream(entry / "model.so", std::ios::binary) << object;
-    std::ofstream(entry / "stamp.txt", std::ios::binary)
-        << "key " << key << "\nmodel.so " << object.size() << ' ' << sha256_of(object) << '\n';
-    RtlModelCache loader(cache.string(), build, kit, [](const std::string& line) {
-        throw std::runtime_error("would compile: " + line);
-    });
-    const auto outcome = [&]() -> std::string {
+// An entry of the default variant in a cache of its own: a stamp naming its
+// key and an object that is no shared object, standing in for a compiled one
+// (a private one goes on to be compiled again: the notice says so).
+class RtlModelCacheEntry : public ::testing::Test {
+protected:
+    void SetUp() override {
+        fs::remove_all(cache_);
+        const std::string key = sha256_of(rtl_model_key_text(variant_, build_, kit_));
+        entry_ = cache_ / (variant_.name() + "-" + key.substr(0, 16));
+        fs::create_directories(entry_);
+        const std::string object = "not a shared object";
+        std::ofstream(entry_ / "model.so", std::ios::binary) << object;
+        std::ofstream(entry_ / "stamp.txt", std::ios::binary)
+            << "key " << key << "\nmodel.so " << object.size() << ' ' << sha256_of(object) << '\n';
+    }
+    void TearDown() override { fs::remove_all(cache_); }
+    // "loaded", "refused: LINE" or what the notice or another error said.
+    std::string outcome() {
+        RtlModelCache loader(cache_.string(), build_, kit_, [](const std::string& line) {
+            throw std::runtime_error("would compile: " + line);
+        });
         try {
-            loader.load(variant);
+            loader.load(variant_);
             return "loaded";
         } catch (const InputError& e) {
             return std::string("refused: ") + e.what();
         } catch (const std::exception& e) {
             return e.what();
         }
-    };
+    }
+    const fs::path cache_ = fs::temp_directory_path() / ("cdvp-rtl-private-" + std::to_string(getpid()));
+    const RtlBuild build_ = rtl_build();
+    const RtlKit kit_ = rtl_kit_at(CDVP_SOURCE_DIR);
+    const RtlVariant variant_;
+    fs::path entry_;
+};
+
+// dlopen runs an entry's code: an entry others can write to (or that is not
+// the user's) is refused in one line naming it, not loaded and not compiled
+// over.
+TEST_F(RtlModelCacheEntry, AGroupWritableEntryIsRefused) {
+    const fs::path& entry = entry_;
     for (const fs::path& path : {entry, entry / "model.so", entry / "stamp.txt"}) {
         for (const auto perms : {fs::perms::group_write, fs::perms::others_write}) {
             ASSERT_EQ(chmod(entry.c_str(), 0755), 0);
@@ -355,12 +367,37 @@ TEST(RtlModelCacheEntry, AGroupWritableEntryIsRefused) {
     ASSERT_EQ(chmod((entry / "stamp.txt").c_str(), 0644), 0);
     EXPECT_EQ(outcome().rfind("would compile: ", 0), 0u) << "a private entry is looked at";
     // A symbolic link to an object elsewhere is not followed.
-    fs::rename(entry / "model.so", cache / "elsewhere.so");
-    fs::create_symlink(cache / "elsewhere.so", entry / "model.so");
+    fs::rename(entry / "model.so", cache_ / "elsewhere.so");
+    fs::create_symlink(cache_ / "elsewhere.so", entry / "model.so");
     EXPECT_EQ(outcome(), "refused: fidelity rtl: the RTL model cache's " + (entry / "model.so").string() +
                              " is a symbolic link (expected your own, writable only by you; remove the entry to "
                              "compile it again)");
-    fs::remove_all(cache);
+}
+
+// A stamp or object of the user's own that is a FIFO (which would hold the
+// open, or the read, forever) or a stamp larger than any cdvp writes (read
+// without limit, as /dev/zero would be) is refused unread in one line naming
+// it; the alarm fails a test that hangs.
+TEST_F(RtlModelCacheEntry, AStampOrObjectThatIsNoRegularFileOrTooBigIsRefusedUnread) {
+    alarm(60);
+    const std::string stamp = slurp(entry_ / "stamp.txt");
+    fs::remove(entry_ / "stamp.txt");
+    ASSERT_EQ(mkfifo((entry_ / "stamp.txt").c_str(), 0600), 0);
+    EXPECT_EQ(outcome(), "refused: fidelity rtl: the RTL model cache's " + (entry_ / "stamp.txt").string() +
+                             ": cannot open: not a regular file; expected the stamp cdvp wrote (remove the entry to "
+                             "compile it again)");
+    fs::remove(entry_ / "stamp.txt");
+    std::ofstream(entry_ / "stamp.txt", std::ios::binary) << stamp << std::string(1 << 20, '#');
+    EXPECT_EQ(outcome(), "refused: fidelity rtl: the RTL model cache's " + (entry_ / "stamp.txt").string() +
+                             ": larger than 65536 bytes; not the stamp cdvp wrote (remove the entry to compile it "
+                             "again)");
+    std::ofstream(entry_ / "stamp.txt", std::ios::binary) << stamp;
+    fs::remove(entry_ / "model.so");
+    ASSERT_EQ(mkfifo((entry_ / "model.so").c_str(), 0600), 0);
+    EXPECT_EQ(outcome(), "refused: fidelity rtl: the RTL model cache's " + (entry_ / "model.so").string() +
+                             ": cannot open: not a regular file; expected the model cdvp compiled (remove the entry "
+                             "to compile it again)");
+    alarm(0);
 }
 
 }  // namespace
