@@ -4,6 +4,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/run/best_software.h"
+#include "sw/run/json_fields.h"
 
 namespace cdvp {
 
@@ -85,20 +86,33 @@ nlohmann::json to_json(const TimingQuality& q) {
 }
 
 TimingQuality timing_quality_from_json(const nlohmann::json& json, const std::string& where) {
-    if (!json.is_object()) throw InputError(where + ": timing_quality is not an object (expected a report of cdvp run)");
-    const Reader r(json, where + ": timing_quality");
+    if (!json.is_object()) throw InputError(where + ": expected an object (a timing quality cdvp wrote)");
+    const auto field = [&](const std::string& key) -> const nlohmann::json& { return json_field(json, key); };
+    const auto count = [&](const std::string& key) { return json_count<uint64_t>(field(key), where + "." + key); };
+    const auto loads = [&](const std::string& key) {
+        const nlohmann::json& value = field(key);
+        if (!value.is_array() || value.size() != 3) {
+            throw InputError(where + "." + key + ": expected the 1, 5 and 15 minute load averages, got " +
+                             json_found(value));
+        }
+        std::array<double, 3> out{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            out[k] = json_amount(value[k], where + "." + key + "[" + std::to_string(k) + "]", "a load average");
+        }
+        return out;
+    };
     TimingQuality q;
-    q.frames_timed = r.get<uint64_t>("frames_timed");
-    q.frames_disturbed = r.get<uint64_t>("frames_disturbed");
-    q.frames_retimed = r.get<uint64_t>("frames_retimed");
-    q.frames_slowed = r.get<uint64_t>("frames_slowed");
-    q.probe_ns = r.get<double>("probe_native_ns");
-    q.tries = r.get<uint64_t>("tries");
-    q.never_clean = r.get<uint64_t>("never_clean");
-    q.runs = r.get<uint32_t>("runs");
-    q.repeat_spread = r.get<double>("repeat_spread");
-    q.load_start = r.get<std::array<double, 3>>("load_average_start");
-    q.load_end = r.get<std::array<double, 3>>("load_average_end");
+    q.frames_timed = count("frames_timed");
+    q.frames_disturbed = count("frames_disturbed");
+    q.frames_retimed = count("frames_retimed");
+    q.frames_slowed = count("frames_slowed");
+    q.probe_ns = json_time_ns(field("probe_native_ns"), where + ".probe_native_ns");
+    q.tries = count("tries");
+    q.never_clean = count("never_clean");
+    q.runs = json_count<uint32_t>(field("runs"), where + ".runs", 1);
+    q.repeat_spread = json_amount(field("repeat_spread"), where + ".repeat_spread", "a spread");
+    q.load_start = loads("load_average_start");
+    q.load_end = loads("load_average_end");
     return q;
 }
 
@@ -183,7 +197,8 @@ ReportSummary summary_from_json(const nlohmann::json& json, const std::string& s
         // Reports from before CPU time was the estimator have no wall time beside it, nor a quality.
         if (b.json().contains("mean_wall_native_ns")) out.wall_native_ns = b.spread("wall_native_ns");
         if (b.json().contains("timing_quality")) {
-            out.quality = timing_quality_from_json(b.json()["timing_quality"], source + ": summary: baselines: " + name);
+            out.quality = timing_quality_from_json(b.json()["timing_quality"],
+                                                   source + ": summary: baselines: " + name + ": timing_quality");
         }
         if (b.json().contains("timing")) out.timing = b.get<std::string>("timing");
         // Reports from before energy was modelled have none.
@@ -205,7 +220,9 @@ ReportSummary summary_from_json(const nlohmann::json& json, const std::string& s
     } else if (const std::optional<std::string> fastest = fastest_baseline(s)) {
         s.best_software = *fastest;
     }
-    if (json.contains("timing_quality")) s.timing_quality = timing_quality_from_json(json["timing_quality"], source + ": summary");
+    if (json.contains("timing_quality")) {
+        s.timing_quality = timing_quality_from_json(json["timing_quality"], source + ": summary: timing_quality");
+    }
     if (json.contains("retime_tries")) s.retime_tries = r.get<uint32_t>("retime_tries");
     if (json.contains("mean_energy_j")) {
         s.mean_energy.static_j = r.get<double>("mean_energy_static_j");

@@ -73,7 +73,11 @@ struct ReportSummary {
 
 nlohmann::json to_json(const ReportSummary& summary);
 nlohmann::json to_json(const TimingQuality& quality);
-// Throws InputError naming `where` and the first key missing or mistyped.
+// `where` names the timing quality itself ("t.json: baselines.sap.timing_quality");
+// throws InputError "WHERE.KEY: expected ..., got ..." for the first key
+// missing or out of its range (sw/run/json_fields.h): counts whole and
+// fitting their type, runs at least 1, the probe's time finite from 0 to
+// kMaxTimeNs, the spread and the loads finite and not negative.
 TimingQuality timing_quality_from_json(const nlohmann::json& json, const std::string& where);
 // Throws InputError naming `source` and the first key missing or mistyped.
 ReportSummary summary_from_json(const nlohmann::json& summary, const std::string& source);

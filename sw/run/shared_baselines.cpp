@@ -71,10 +71,13 @@ nlohmann::json software_workload(const std::string& scene, FrameSource& source, 
 
 SharedBaselines::SharedBaselines(std::string dir, nlohmann::json workload, const std::vector<std::string>& baselines,
                                  uint32_t runs, std::size_t frames)
-    : dir_(std::move(dir)), workload_(std::move(workload)), key_(software_timing_key(workload_)) {
+    : dir_(std::move(dir)),
+      workload_(std::move(workload)),
+      key_(software_timing_key(workload_)),
+      max_bytes_(software_timing_max_bytes(runs, frames, baselines.size())) {
     const std::string path = software_timing_path(dir_, key_);
     std::string sha256;
-    timing_ = read_software_timing(path, workload_, sha256);
+    timing_ = read_software_timing(path, workload_, sha256, max_bytes_);
     if (!timing_) return;
     const std::set<std::string> wanted(baselines.begin(), baselines.end());
     std::set<std::string> there;
@@ -82,7 +85,7 @@ SharedBaselines::SharedBaselines(std::string dir, nlohmann::json workload, const
     if (there != wanted) throw InputError(path + ": baselines: expected this run's, " + excerpt(nlohmann::json(baselines).dump()));
     for (const auto& [name, b] : timing_->baselines) {
         if (b.cpu_ns.size() != runs || b.cpu_ns.front().size() != frames) {
-            throw InputError(path + ": baselines." + name + ".cpu_ns: expected " + std::to_string(runs) + " runs of " +
+            throw InputError(path + ": baselines." + name + ".cpu_native_ns: expected " + std::to_string(runs) + " runs of " +
                              std::to_string(frames) + " frames, this run's");
         }
     }
@@ -140,7 +143,7 @@ void SharedBaselines::publish(RunTotals& totals, uint32_t retime_tries) {
     }
     // Another point of the workload was first: its timing is the one.
     std::string sha256;
-    timing_ = read_software_timing(software_timing_path(dir_, key_), workload_, sha256);
+    timing_ = read_software_timing(software_timing_path(dir_, key_), workload_, sha256, max_bytes_);
     if (!timing_) throw InputError(software_timing_path(dir_, key_) + ": added by another run, then gone");
     id_ = software_timing_id(key_, sha256);
     totals.clear_baselines();

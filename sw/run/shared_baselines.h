@@ -56,6 +56,7 @@ private:
     std::string dir_;
     nlohmann::json workload_;
     std::string key_, id_;
+    std::size_t max_bytes_;  // the largest timing file of this run's shape (software_timing_max_bytes)
     std::optional<SoftwareTiming> timing_;
 };
 

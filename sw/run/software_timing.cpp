@@ -11,10 +11,11 @@
 
 #include <sys/stat.h>
 
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
-#include "sw/run/machine_info.h"
-#include "sw/output/text_file.h"
 #include "sw/output/digest.h"
+#include "sw/run/json_fields.h"
+#include "sw/run/machine_info.h"
 #include "sw/run/report_summary.h"
 
 namespace cdvp {
@@ -30,17 +31,15 @@ constexpr int kFormatVersion = 1;
     throw InputError(path + ": " + field + ": " + why);
 }
 
-// A list of runs of frame times, each run as many frames as the first.
+// A list of runs of frame times, each run as many frames as the first, each
+// time finite from 0 to kMaxTimeNs.
 std::vector<std::vector<double>> runs_of(const json& value, const std::string& path, const std::string& field) {
     if (!value.is_array() || value.empty()) refuse(path, field, "expected a list of runs, each a list of frame times");
     std::vector<std::vector<double>> runs;
     for (const json& run : value) {
         if (!run.is_array()) refuse(path, field, "expected a list of runs, each a list of frame times");
         std::vector<double>& times = runs.emplace_back();
-        for (const json& t : run) {
-            if (!t.is_number() || !(t.get<double>() >= 0)) refuse(path, field, "expected times of 0 ns or more");
-            times.push_back(t.get<double>());
-        }
+        for (const json& t : run) times.push_back(json_time_ns(t, path + ": " + field));
         if (times.size() != runs.front().size()) refuse(path, field, "expected as many frames in every run");
     }
     return runs;
@@ -71,35 +70,44 @@ std::string software_timing_text(const SoftwareTiming& t) {
     return document.dump(1) + '\n';
 }
 
-std::optional<SoftwareTiming> read_software_timing(const std::string& path, const json& workload, std::string& sha256) {
-    const std::optional<std::string> text = read_whole_file(path);
-    if (!text) {
-        if (errno == ENOENT) return std::nullopt;
-        throw_os_error(path + ": cannot read the software timing", errno);
-    }
+std::size_t software_timing_max_bytes(std::size_t runs, std::size_t frames, std::size_t baselines) {
+    // The workload and each baseline's quality, then each time of dump(1): a
+    // line of its indentation, up to 24 characters of a double and ",\n".
+    constexpr long double kFixedBytes = 1 << 20, kBaselineBytes = 4096, kTimeBytes = 40;
+    const long double bytes =
+        kFixedBytes + static_cast<long double>(baselines) *
+                          (kBaselineBytes + 2 * kTimeBytes * static_cast<long double>(runs) * static_cast<long double>(frames));
+    return bytes < kMaxSoftwareTimingBytes ? static_cast<std::size_t>(bytes) : kMaxSoftwareTimingBytes;
+}
+
+std::optional<std::string> read_software_timing_text(const std::string& path, std::size_t max_bytes) {
+    return read_input_file({path, "a software timing cdvp wrote", max_bytes, true});
+}
+
+std::optional<SoftwareTiming> read_software_timing(const std::string& path, const json& workload, std::string& sha256,
+                                                   std::size_t max_bytes) {
+    const std::optional<std::string> text = read_software_timing_text(path, max_bytes);
+    if (!text) return std::nullopt;
     json document;
     try {
         document = json::parse(*text);
     } catch (const json::parse_error& e) {
         refuse(path, "(the file)", std::string("not JSON (") + e.what() + "); expected a software timing cdvp wrote");
     }
-    if (!document.is_object() || document.value("format", "") != kFormat) {
+    if (!document.is_object() || json_field(document, "format") != kFormat) {
         refuse(path, "format", std::string("expected \"") + kFormat + "\"");
     }
-    if (document.value("format_version", 0) != kFormatVersion) {
+    if (json_field(document, "format_version") != kFormatVersion) {
         refuse(path, "format_version", "expected " + std::to_string(kFormatVersion));
     }
-    if (!document.contains("workload") || document["workload"] != workload) {
-        refuse(path, "workload", "another workload's timing than this run's (" + excerpt(document.value("workload", json()).dump()) +
+    if (json_field(document, "workload") != workload) {
+        refuse(path, "workload", "another workload's timing than this run's (" + json_found(json_field(document, "workload")) +
                                      "); expected " + excerpt(workload.dump()));
     }
     SoftwareTiming t;
     t.workload = workload;
-    t.created = document.value("created", "");
-    if (!document.contains("retime_tries") || !document["retime_tries"].is_number_unsigned()) {
-        refuse(path, "retime_tries", "expected a count");
-    }
-    t.retime_tries = document["retime_tries"].get<uint32_t>();
+    if (json_field(document, "created").is_string()) t.created = document["created"].get<std::string>();
+    t.retime_tries = json_count<uint32_t>(json_field(document, "retime_tries"), path + ": retime_tries");
     if (!document.contains("baselines") || !document["baselines"].is_object()) refuse(path, "baselines", "expected an object");
     for (const auto& [name, b] : document["baselines"].items()) {
         const std::string field = "baselines." + name;
@@ -110,7 +118,7 @@ std::optional<SoftwareTiming> read_software_timing(const std::string& path, cons
         if (out.wall_ns.size() != out.cpu_ns.size() || out.wall_ns.front().size() != out.cpu_ns.front().size()) {
             refuse(path, field + ".wall_native_ns", "expected the runs and frames of cpu_native_ns");
         }
-        out.quality = timing_quality_from_json(b.value("timing_quality", json()), path + ": " + field);
+        out.quality = timing_quality_from_json(json_field(b, "timing_quality"), path + ": " + field + ".timing_quality");
     }
     sha256 = sha256_hex(*text);
     return t;

@@ -11,6 +11,7 @@
 // one (docs/timing.md).
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <string>
@@ -44,11 +45,26 @@ std::string software_timing_id(const std::string& key, const std::string& file_s
 // The file's text (nlohmann's dump(1) and a line end).
 std::string software_timing_text(const SoftwareTiming& timing);
 
+// The largest timing file read: 1 GiB (what a resume or a merge reads of
+// one); the largest of `runs` runs of `frames` frames of `baselines`
+// baselines, what cdvp writes of them with room to spare.
+constexpr std::size_t kMaxSoftwareTimingBytes = std::size_t{1} << 30;
+std::size_t software_timing_max_bytes(std::size_t runs, std::size_t frames, std::size_t baselines);
+
+// The text of the timing file at `path`, read as every input file is
+// (read_input_file: a regular file, refused unread when it is a FIFO or a
+// device or larger than `max_bytes`); nothing when there is no file.
+std::optional<std::string> read_software_timing_text(const std::string& path,
+                                                     std::size_t max_bytes = kMaxSoftwareTimingBytes);
+
 // The timing at `path` for `workload`, with its file's SHA-256 in `sha256`;
 // nothing when there is no file. Throws InputError "PATH: FIELD: what was
-// expected" for a file that is damaged or of another workload.
+// expected, got what" for a file that is no regular file, larger than
+// `max_bytes`, damaged, out of range (every time finite from 0 to
+// kMaxTimeNs, every count fitting its type: sw/run/json_fields.h) or of
+// another workload.
 std::optional<SoftwareTiming> read_software_timing(const std::string& path, const nlohmann::json& workload,
-                                                   std::string& sha256);
+                                                   std::string& sha256, std::size_t max_bytes = kMaxSoftwareTimingBytes);
 
 // Adds `timing` to DIR under its key unless a timing is there already: the
 // file's SHA-256 when this one was added, nothing when another was first

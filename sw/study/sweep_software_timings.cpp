@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <map>
 
+#include "models/common/input_path.h"
 #include "models/common/user_text.h"
 #include "sw/output/digest.h"
-#include "sw/output/text_file.h"
 #include "sw/run/software_timing.h"
 #include "sw/study/sweep_table.h"
 
@@ -27,7 +27,7 @@ namespace {
 
 // DIR/KEY@SHA.json is there and is that file: a merge kept it.
 bool kept_beside(const std::string& dir, const std::string& id) {
-    const std::optional<std::string> text = read_whole_file(dir + "/" + id + ".json");
+    const std::optional<std::string> text = read_software_timing_text(dir + "/" + id + ".json");
     return text && sha256_hex(*text).substr(0, 8) == id.substr(id.find('@') + 1);
 }
 
@@ -64,17 +64,17 @@ std::vector<std::string> merge_software_timings(const std::string& from, const s
         throw_os_error("--out: " + into + ": cannot create", errno);
     }
     for (const std::filesystem::path& file : files) {
-        const std::optional<std::string> text = read_whole_file(file.string());
-        if (!text) throw_os_error(file.string() + ": cannot read", errno);
+        const std::optional<std::string> text = read_software_timing_text(file.string());
+        if (!text) throw InputError(path_text(file.string()) + ": gone while the merge read it");
         const std::string name = file.filename().string();
         const std::string key = name.substr(0, name.find_first_of("@."));
         const std::string sha = sha256_hex(*text);
-        const std::optional<std::string> there = read_whole_file(software_timing_path(into, key));
+        const std::optional<std::string> there = read_software_timing_text(software_timing_path(into, key));
         if (!there) {
             write_new_file(software_timing_path(into, key), *text);
         } else if (sha256_hex(*there) != sha) {
             const std::string id = software_timing_id(key, sha);
-            if (!read_whole_file(into + "/" + id + ".json")) write_new_file(into + "/" + id + ".json", *text);
+            if (!read_software_timing_text(into + "/" + id + ".json")) write_new_file(into + "/" + id + ".json", *text);
             notes.push_back("workload " + key + " was timed by more than one shard: the rows of " + from +
                             "'s timing name " + id + " (kept beside " + key + ".json); give the shards one "
                             "--software-timings DIR to share one timing");
@@ -101,7 +101,7 @@ std::optional<std::string> check_software_timings(const std::string& dir, const 
             const std::string path = software_timing_path(dir, key);
             auto known = sha_of.find(key);
             if (known == sha_of.end()) {
-                const std::optional<std::string> text = read_whole_file(path);
+                const std::optional<std::string> text = read_software_timing_text(path);
                 known = sha_of.emplace(key, text ? sha256_hex(*text).substr(0, 8) : "").first;
             }
             if (known->second != id.substr(at + 1) && !kept_beside(dir, id)) {

@@ -5,6 +5,10 @@
 // and every point of it divides by that timing; a resume refuses a timing its
 // rows used that changed; cdvp calibrate repeats to a spread, says when it
 // could not get there, and runs on a poor profile say so.
+#include <sys/stat.h>
+
+#include <functional>
+
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_support.h"
@@ -145,6 +149,56 @@ TEST_F(CliTimingQuality, ShardsGivenOneTimingsDirectoryShareItAndTheirMergeEqual
     std::set<std::string> ids;
     for (const auto& row : sweep_rows(slurp(dir_ / "m" / "sweep.csv"), false)) ids.insert(row.at("soa_timing_id"));
     EXPECT_EQ(ids.size(), 1u) << "both shards divided by one timing";
+}
+
+// A shared timing is an input file like any other: one out of range (a time
+// of 1e308 ns, a count of -5) or that is no regular file (a FIFO held the run
+// forever, a link to /dev/zero was read without limit) is refused in one line
+// naming the file, field and range, exit 2, and the run writes nothing. The
+// timeout fails a run that hangs.
+TEST_F(CliTimingQuality, ASharedTimingOutOfRangeOrNoRegularFileIsRefusedAndNothingIsWritten) {
+    const std::string share = "run --board adm-xrc-ii --scene spheres --objects 20 --frames 4 --baseline sap -q "
+                              "--software-timings shared ";
+    fs::create_directory(dir_ / "shared");
+    ASSERT_EQ(run(share + "--m 1").status, 0);
+    std::vector<std::string> timings;
+    for (const auto& entry : fs::directory_iterator(dir_ / "shared")) timings.push_back(entry.path().filename().string());
+    ASSERT_EQ(timings.size(), 1u);
+    const std::string name = "shared/" + timings[0];
+    const json good = json::parse(slurp(dir_ / name));
+    const auto refused = [&](const std::string& start) {
+        const Result r = run(share + "--m 2 --report r.json --pairs-out p.csv", "timeout 60");
+        expect_refusal(r, "cdvp run: " + name + start);
+        EXPECT_FALSE(fs::exists(dir_ / "r.json")) << start;
+        EXPECT_FALSE(fs::exists(dir_ / "p.csv")) << start;
+    };
+    const std::vector<std::pair<std::function<void(json&)>, std::string>> edits{
+        {[](json& j) { j["baselines"]["sap"]["cpu_native_ns"][0][3] = 1e308; },
+         ": baselines.sap.cpu_native_ns: expected a time from 0 to 1e+15 ns, got 1e+308\n"},
+        {[](json& j) { j["baselines"]["sap"]["wall_native_ns"][0][3] = 1e308; },
+         ": baselines.sap.wall_native_ns: expected a time from 0 to 1e+15 ns, got 1e+308\n"},
+        {[](json& j) { j["baselines"]["sap"]["timing_quality"]["frames_timed"] = -5; },
+         ": baselines.sap.timing_quality.frames_timed: expected a count from 0 to 18446744073709551615, got -5\n"},
+    };
+    for (const auto& [edit, start] : edits) {
+        json bad = good;
+        edit(bad);
+        write(name, bad.dump(1));
+        refused(start);
+    }
+    fs::remove(dir_ / name);
+    ASSERT_EQ(mkfifo((dir_ / name).c_str(), 0600), 0);
+    refused(": cannot open: not a regular file; expected a software timing cdvp wrote\n");
+    fs::remove(dir_ / name);
+    fs::create_symlink("/dev/zero", dir_ / name);
+    refused(": cannot open: not a regular file; expected a software timing cdvp wrote\n");
+    // A sweep's points refuse it alike, and the sweep leaves nothing.
+    const Result sweep = run("sweep --board adm-xrc-ii --scene spheres --set m=2,4 --objects 20 --frames 4 --baseline sap "
+                             "-q --no-plots --software-timings shared --out s",
+                             "timeout 60");
+    expect_refusal(sweep, "cdvp sweep: every point was refused; the first, ");
+    EXPECT_NE(sweep.err.find(name + ": cannot open: not a regular file"), std::string::npos) << sweep.err;
+    EXPECT_FALSE(fs::exists(dir_ / "s"));
 }
 
 TEST_F(CliTimingQuality, CalibrateSaysWhenItsRunsCouldNotAgreeAndARunOnThatProfileSaysSo) {

@@ -6,10 +6,12 @@
 // times moved within their recorded spread.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "models/common/user_text.h"
 #include "sw/study/child_runs.h"
@@ -100,12 +102,89 @@ TEST_F(SoftwareTimingDir, ADamagedOrForeignTimingIsRefusedNamingFileAndField) {
     EXPECT_EQ(refusal([](json& j) { j["baselines"]["sap"]["cpu_native_ns"][1] = {1, 2}; }),
               file + ": baselines.sap.cpu_native_ns: expected as many frames in every run");
     EXPECT_EQ(refusal([](json& j) { j["baselines"]["sap"]["cpu_native_ns"][0][1] = -1; }),
-              file + ": baselines.sap.cpu_native_ns: expected times of 0 ns or more");
+              file + ": baselines.sap.cpu_native_ns: expected a time from 0 to 1e+15 ns, got -1");
     EXPECT_EQ(refusal([](json& j) { j["baselines"]["sap"]["timing_quality"].erase("never_clean"); }),
-              file + ": baselines.sap: timing_quality: no never_clean (expected a report of cdvp run)");
+              file + ": baselines.sap.timing_quality.never_clean: expected a count from 0 to 18446744073709551615, "
+                     "got nothing");
+    EXPECT_EQ(refusal([](json& j) { j["format_version"] = "1"; }), file + ": format_version: expected 1")
+        << "a string where a number belongs is refused, not a JSON library's error";
     std::ofstream(file) << "{";
     std::string sha;
     EXPECT_THROW(read_software_timing(file, timing(90).workload, sha), InputError);
+}
+
+// Every number is checked against what it means before it is used: a time
+// of 1e308 ns made the host time inf (an internal error) or the report's mean
+// null (exit 0); a count of -5 became 18446744073709551611 in the report.
+TEST_F(SoftwareTimingDir, ANumberOutsideWhatItMeansIsRefusedNamingFileFieldAndRange) {
+    const std::string file = path(timing(90));
+    const std::string sap = file + ": baselines.sap.";
+    const std::vector<std::pair<std::function<void(json&)>, std::string>> cases{
+        {[](json& j) { j["baselines"]["sap"]["cpu_native_ns"][0][2] = 1e308; },
+         sap + "cpu_native_ns: expected a time from 0 to 1e+15 ns, got 1e+308"},
+        {[](json& j) { j["baselines"]["sap"]["wall_native_ns"][1][0] = 1e308; },
+         sap + "wall_native_ns: expected a time from 0 to 1e+15 ns, got 1e+308"},
+        {[](json& j) { j["baselines"]["sap"]["wall_native_ns"][1][0] = "7"; },
+         sap + "wall_native_ns: expected a time from 0 to 1e+15 ns, got \"7\""},
+        {[](json& j) { j["baselines"]["sap"]["timing_quality"]["frames_timed"] = -5; },
+         sap + "timing_quality.frames_timed: expected a count from 0 to 18446744073709551615, got -5"},
+        {[](json& j) { j["baselines"]["sap"]["timing_quality"]["tries"] = 2.5; },
+         sap + "timing_quality.tries: expected a count from 0 to 18446744073709551615, got 2.5"},
+        {[](json& j) { j["baselines"]["sap"]["timing_quality"]["runs"] = 0; },
+         sap + "timing_quality.runs: expected a count from 1 to 4294967295, got 0"},
+        {[](json& j) { j["baselines"]["sap"]["timing_quality"]["probe_native_ns"] = 1e300; },
+         sap + "timing_quality.probe_native_ns: expected a time from 0 to 1e+15 ns, got 1e+300"},
+        {[](json& j) { j["baselines"]["sap"]["timing_quality"]["repeat_spread"] = -0.5; },
+         sap + "timing_quality.repeat_spread: expected a spread of 0 or more, got -0.5"},
+        {[](json& j) { j["baselines"]["sap"]["timing_quality"]["load_average_end"] = {0.5, -1, 0}; },
+         sap + "timing_quality.load_average_end[1]: expected a load average of 0 or more, got -1"},
+        {[](json& j) { j["baselines"]["sap"]["timing_quality"]["load_average_end"] = {0.5}; },
+         sap + "timing_quality.load_average_end: expected the 1, 5 and 15 minute load averages, got [0.5]"},
+        {[](json& j) { j["retime_tries"] = 1099511627776; },
+         file + ": retime_tries: expected a count from 0 to 4294967295, got 1099511627776"},
+    };
+    for (const auto& [change, why] : cases) EXPECT_EQ(refusal(change), why);
+}
+
+// A timing file is read as every input file is: a FIFO (which held a resume
+// forever), a link to /dev/zero (read without limit) or a file larger than a
+// timing of its shape is refused unread, naming it; the alarm fails a test
+// that hangs.
+TEST_F(SoftwareTimingDir, ATimingThatIsNoRegularFileOrTooBigIsRefusedUnread) {
+    alarm(60);
+    const SoftwareTiming t = timing(90);
+    const std::string file = path(t);
+    std::string sha;
+    ASSERT_EQ(mkfifo(file.c_str(), 0600), 0);
+    try {
+        read_software_timing(file, t.workload, sha);
+        ADD_FAILURE() << "a FIFO was read";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), file + ": cannot open: not a regular file; expected a software timing cdvp wrote");
+    }
+    // A resume's check of the timings its rows used reads them the same way.
+    const Grid grid(std::vector<Axis>{{"m", {"1"}}});
+    SweepTable table(grid);
+    PointRow row = failed_row(grid, grid.point(0), PointStatus::kOk, "", 0.1);
+    row.values["sap_timing_id"] = software_timing_id(software_timing_key(t.workload), std::string(64, 'a'));
+    table.add(0, row);
+    EXPECT_THROW(check_software_timings(dir_, table), InputError);
+    fs::remove(file);
+    fs::create_symlink("/dev/zero", file);
+    EXPECT_THROW(read_software_timing(file, t.workload, sha), InputError);
+    fs::remove(file);
+    std::ofstream(file) << software_timing_text(t) << std::string(4096, ' ');
+    const std::size_t bound = software_timing_text(t).size() + 100;
+    try {
+        read_software_timing(file, t.workload, sha, bound);
+        ADD_FAILURE() << "a file past its bound was read";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  file + ": larger than " + std::to_string(bound) + " bytes; not a software timing cdvp wrote");
+    }
+    EXPECT_GT(software_timing_max_bytes(2, 3, 1), software_timing_text(t).size()) << "what cdvp writes fits";
+    EXPECT_EQ(software_timing_max_bytes(1000, 1000000000, 8), kMaxSoftwareTimingBytes);
+    alarm(0);
 }
 
 TEST_F(SoftwareTimingDir, AResumeFindsATimingItsRowsUsedThatChangedOrWentAway) {
