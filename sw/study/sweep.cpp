@@ -54,8 +54,13 @@ public:
             const bool regular = stat(path.c_str(), &before) == 0 && S_ISREG(before.st_mode);
             if (regular && input.option != "--trace" && before.st_size <= kMaxPinnedBytes) {
                 // Read once: the digest covers exactly the text the points in this process read.
-                std::optional<std::string> text = read_whole_file(path);
-                if (!text) throw InputError(input.option + ": " + excerpt(input.value) + ": cannot read: " + errno_reason(errno));
+                // Read as every input file is: one swapped for a FIFO since the stat is refused, not waited on.
+                std::optional<std::string> text;
+                try {
+                    text = read_input_file({path, "a file the sweep's points read", std::size_t{kMaxPinnedBytes}});
+                } catch (const InputError& e) {
+                    throw InputError(input.option + ": " + e.what());
+                }
                 digests_.push_back(digest_text(input.option, input.value, path, *text));
                 if (facts) digests_.back().facts = facts(input, *text);
                 pins_.pin(path, std::move(*text));

@@ -145,7 +145,9 @@ std::optional<Manifest> read_manifest(const std::string& path) {
         throw InputError(path_text(path) + ": " + std::to_string(status.st_size) + " bytes; expected the manifest cdvp "
                          "sweep writes (at most " + std::to_string(kMaxManifestBytes) + ")");
     }
-    const json document = parse_manifest_text(slurp(path), path);
+    // Read as every input file is: a name swapped for a FIFO since the check above is refused, not waited on.
+    const json document =
+        parse_manifest_text(*read_input_file({path, "the manifest cdvp sweep writes", kMaxManifestBytes}), path);
     const Fields fields(path);
     if (!document.is_object()) fields.refuse("(top level)", "expected an object");
     const std::string format = fields.text(document, "format");
