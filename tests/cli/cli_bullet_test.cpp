@@ -83,13 +83,13 @@ TEST_F(Bullet, EverySettingsFlagIsAcceptedWithItsOriginAndABadValueRefused) {
         ++tried;
     }
     // board (m, format, clock-mhz, compare-latency, fifo-depth, drain-rate,
-    // pair-buffer, box-banks at its default, memory, tile-boxes), scene (objects, frames, seed), host
+    // pair-buffer, box-banks at its default, memory, tile-boxes, algorithm), scene (objects, frames, seed), host
     // (host-factor, host-profile) and run (transfer, wait, fidelity,
     // quantum-ns, max-error, warmup, repeat, retime-tries, pin-cpu, ignore-capacity, ignore-timing, lockstep,
     // max-memory, max-pairs),
     // the driver's communication (upload, pair-format, interrupts) and the
     // spheres scene's moving share (its default only: Bullet's scenes refuse another).
-    EXPECT_EQ(tried, 34u) << "the flags bullet shares with run";
+    EXPECT_EQ(tried, 35u) << "the flags bullet shares with run";
 }
 
 TEST_F(Bullet, LayersPresetThenConfigThenOverridesThenFlagsAsRunDoes) {
