@@ -9,9 +9,27 @@ import pandas as pd
 PHASES = ("upload", "start", "compute", "irq", "readback", "driver", "total")
 
 
+# The board's energy figures of a summary, as the report names them (docs/energy.md).
+ENERGY_FIGURES = ("mean_energy_j", "mean_energy_static_j", "mean_energy_dynamic_j", "mean_energy_bus_j",
+                  "mean_energy_host_j", "mean_energy_per_pair_j", "host_package_w")
+# A baseline's, on the modelled host; native_energy_j only where RAPL was read.
+BASELINE_ENERGY_FIGURES = ("energy_j", "energy_per_pair_j", "energy_ratio", "native_energy_j")
+
+
+def _energy_stated(summary):
+    """Whether the run's board and host state any power (as `cdvp run` prints an energy line):
+    a report of none, or of before energy was modelled, has no energy figures."""
+    return summary.get("mean_energy_j", 0) > 0 or summary.get("host_package_w", 0) > 0
+
+
 @dataclass
 class Baseline:
-    """One software baseline's time a frame on the modelled host, and the board's speedup over it."""
+    """One software baseline's time a frame on the modelled host, and the board's speedup over it.
+
+    Energy, None when the run states no power: energy_j (J a frame on the modelled host, its
+    stated host.package_w times mean_host_ns), energy_per_pair_j (J a pair), energy_ratio (its
+    energy over the board's; above 1 the board takes less), native_energy_j (J a frame of this
+    machine's package, measured by RAPL; None where it could not be read)."""
 
     mean_host_ns: float
     p50_host_ns: float
@@ -20,11 +38,29 @@ class Baseline:
     mean_native_ns: float
     host_factor: float
     speedup: float
+    energy_j: float = None
+    energy_per_pair_j: float = None
+    energy_ratio: float = None
+    native_energy_j: float = None
+
+    @classmethod
+    def from_json(cls, baseline, stated):
+        times = {key: baseline[key] for key in cls.__dataclass_fields__ if key not in BASELINE_ENERGY_FIGURES}
+        energy = {key: baseline.get(key) for key in BASELINE_ENERGY_FIGURES} if stated else {}
+        return cls(**times, **energy)
 
 
 @dataclass
 class Summary:
-    """The report's summary: means over the frames after the warm-up (simulated time unless _native)."""
+    """The report's summary: means over the frames after the warm-up (simulated time unless _native).
+
+    The board's energy a frame, means over the same frames (docs/energy.md), each None when the
+    run states no power (no --board): mean_energy_j (J a frame: the four parts' sum),
+    mean_energy_static_j (J: the device's quiescent power over the frame's time),
+    mean_energy_dynamic_j (J: its logic, block RAM and I/O switching), mean_energy_bus_j (J: the
+    bus while it moves the frame's data), mean_energy_host_j (J: the host's package through the
+    frame), mean_energy_per_pair_j (J a pair found) and host_package_w (W: the host's stated
+    package power behind the host part and each baseline's energy)."""
 
     frames: int
     warmup_frames: int
@@ -37,11 +73,19 @@ class Summary:
     baselines: dict       # name -> Baseline
     extra_pairs: int      # against the float32 reference (a fixed-point format's)
     best_software: str = ""  # the baseline with the least mean frame time ("": none timed)
+    mean_energy_j: float = None
+    mean_energy_static_j: float = None
+    mean_energy_dynamic_j: float = None
+    mean_energy_bus_j: float = None
+    mean_energy_host_j: float = None
+    mean_energy_per_pair_j: float = None
+    host_package_w: float = None
 
     @classmethod
     def from_json(cls, summary):
-        baselines = {name: Baseline(**{key: b[key] for key in Baseline.__dataclass_fields__})
-                     for name, b in summary["baselines"].items()}
+        stated = _energy_stated(summary)
+        baselines = {name: Baseline.from_json(b, stated) for name, b in summary["baselines"].items()}
+        energy = {key: summary[key] for key in ENERGY_FIGURES} if stated else {}
         return cls(frames=summary["frames"], warmup_frames=summary["warmup_frames"],
                    frames_in_means=summary["frames_in_means"], too_few_frames=summary["too_few_frames"],
                    pairs=summary["pairs"],
@@ -49,7 +93,7 @@ class Summary:
                    total_ns={stat: summary[f"{stat}_total_ns"] for stat in ("mean", "p50", "p99", "max")},
                    mean_sim_wall_native_ns=summary["mean_sim_wall_native_ns"],
                    baselines=baselines, extra_pairs=summary["extra_pairs"],
-                   best_software=summary.get("best_software", ""))
+                   best_software=summary.get("best_software", ""), **energy)
 
 
 @dataclass

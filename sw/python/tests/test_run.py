@@ -96,3 +96,24 @@ def test_the_grid_board_is_a_keyword_as_it_is_a_flag():
     assert grid.summary.pairs == same.summary.pairs
     assert grid.raw["frames"][0]["compute_cycles"] == same.raw["frames"][0]["compute_cycles"]
     assert cdvp.run(**SMALL).raw["config"]["settings"]["board.algorithm"]["value"] == "all_pairs"
+
+
+ENERGY = ("mean_energy_j", "mean_energy_static_j", "mean_energy_dynamic_j", "mean_energy_bus_j",
+          "mean_energy_host_j", "mean_energy_per_pair_j", "host_package_w")
+BASELINE_ENERGY = ("energy_j", "energy_per_pair_j", "energy_ratio")
+
+
+def test_the_summarys_energy_is_the_reports_and_none_where_no_power_is_stated():
+    board = cdvp.run(**SMALL, baseline="sap")
+    raw = board.raw["summary"]
+    assert {key: getattr(board.summary, key) for key in ENERGY} == {key: raw[key] for key in ENERGY}
+    assert board.summary.mean_energy_j > 0 and board.summary.host_package_w > 0
+    sap, raw_sap = board.summary.baselines["sap"], raw["baselines"]["sap"]
+    assert {key: getattr(sap, key) for key in BASELINE_ENERGY} == {key: raw_sap[key] for key in BASELINE_ENERGY}
+    assert sap.energy_j > 0
+    assert sap.native_energy_j == raw_sap.get("native_energy_j"), "measured by RAPL, or None"
+    # No --board: the report's energy is all 0, no power being stated; the summary has none.
+    bare = cdvp.run(**{**SMALL, "board": None}, baseline="sap")
+    assert bare.raw["summary"]["mean_energy_j"] == 0 and bare.raw["summary"]["host_package_w"] == 0
+    assert [getattr(bare.summary, key) for key in ENERGY] == [None] * len(ENERGY)
+    assert [getattr(bare.summary.baselines["sap"], key) for key in BASELINE_ENERGY] == [None] * len(BASELINE_ENERGY)
