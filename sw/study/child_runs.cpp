@@ -15,7 +15,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -106,27 +105,5 @@ std::string TraceSpool::restore_names(std::string message) const {
     for (std::size_t at; (at = message.find(path_)) != std::string::npos;) message.replace(at, path_.size(), original_);
     return message;
 }
-
-void CreatedDirectories::create(const std::string& path, const std::string& label) {
-    namespace fs = std::filesystem;
-    std::vector<fs::path> missing;
-    for (fs::path p = fs::absolute(path); !p.empty() && !fs::exists(p); p = p.parent_path()) {
-        missing.push_back(p);
-        if (p == p.parent_path()) break;
-    }
-    for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-        std::error_code error;
-        if (!fs::create_directory(*it, error) && error) {
-            throw InputError(label + ": " + excerpt(path) + ": cannot create: " + error.message());
-        }
-        made_.push_back(it->string());
-    }
-}
-
-CreatedDirectories::~CreatedDirectories() {
-    std::error_code ignored;
-    for (auto it = made_.rbegin(); it != made_.rend(); ++it) std::filesystem::remove(*it, ignored);
-}
-
 
 }  // namespace cdvp

@@ -1,9 +1,10 @@
 // What the commands that drive `cdvp run` as child processes share (`cdvp
 // fidelity`, `cdvp sweep`, `cdvp merge`), beside the child processes
-// themselves (sw/output/child_process.h) and whole text files
-// (sw/output/text_file.h): scratch files removed on every way out, a trace
-// from a pipe spooled once, forwarded options found by name, directories made
-// for --out, and gnuplot.
+// themselves (sw/output/child_process.h), whole text files
+// (sw/output/text_file.h) and the directories made for --out
+// (sw/output/created_directories.h): scratch files removed on every way out,
+// a trace from a pipe spooled once, forwarded options found by name, and
+// gnuplot.
 #pragma once
 
 #include <sys/types.h>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "sw/output/child_process.h"
+#include "sw/output/created_directories.h"
 #include "sw/output/text_file.h"
 
 namespace cdvp {
@@ -82,20 +84,5 @@ private:
     std::string original_, path_;
     std::unique_ptr<InputSpool> copy_;
 };
-
-// The directories made for --out (as mkdir -p), removed again unless kept
-// (they are empty then: the outputs' temporaries have gone first).
-class CreatedDirectories {
-public:
-    // 'label' names the path in messages ("--out").
-    void create(const std::string& path, const std::string& label = "--out");
-    bool made_any() const { return !made_.empty(); }
-    void keep() { made_.clear(); }
-    ~CreatedDirectories();
-
-private:
-    std::vector<std::string> made_;
-};
-
 
 }  // namespace cdvp

@@ -97,12 +97,8 @@ DirectoryLock::~DirectoryLock() {
 
 namespace {
 
-// Refuses a file, then makes the directory (as mkdir -p): the path to lock.
+// Makes the directory (as mkdir -p; a file is refused): the path to lock.
 const std::string& made_directory(CreatedDirectories& made, const std::string& dir) {
-    struct stat status {};
-    if (stat(dir.c_str(), &status) == 0 && !S_ISDIR(status.st_mode)) {
-        throw InputError("--out: " + path_text(dir) + ": expected a directory");
-    }
     made.create(dir);
     return dir;
 }
