@@ -96,8 +96,8 @@ po::options_description run_options_description(RunOptions& o) {
         ("software-timings", po::value(&o.software_timings)->value_name("DIR"),
          "share the baselines' timing through DIR (cdvp sweep gives every point OUT/software): a timing of this "
          "run's workload there (scene and its settings or the trace's frames, baselines, repeats, warm-up, this "
-         "CPU and host profile) is taken, and nothing is timed; else the run times them and adds its timing "
-         "(docs/timing.md)")
+         "CPU and host profile) is taken, and nothing is timed; else the run times them and adds its timing, "
+         "DIR made as mkdir -p if missing (docs/timing.md)")
         ("inject", po::value(&o.inject)->value_name("KIND@frame=N[,n=K]"),
          "inject a bus or board fault into frame N (repeatable): target-abort, master-abort, retry, disconnect, "
          "lost-irq, dma-hang, board-error (docs/faults.md)");

@@ -155,7 +155,7 @@ RunOutcome run_frames_of(const RunSpec& spec, RunObserver& observer, const RunCo
         if (spec.software_timings->empty()) {
             throw InputError(names.input("software-timings") + ": expected a directory, got ''");
         }
-        shared.emplace(*spec.software_timings,
+        shared.emplace(*spec.software_timings, names.input("software-timings"),
                        software_workload(scene_name(spec), *source, setup.values, setup.baselines.names(), setup.host),
                        setup.baselines.names(), setup.values.settings().run.repeat, source->frame_count());
     }

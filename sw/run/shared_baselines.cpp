@@ -69,12 +69,13 @@ nlohmann::json software_workload(const std::string& scene, FrameSource& source, 
     return workload;
 }
 
-SharedBaselines::SharedBaselines(std::string dir, nlohmann::json workload, const std::vector<std::string>& baselines,
-                                 uint32_t runs, std::size_t frames)
+SharedBaselines::SharedBaselines(std::string dir, const std::string& label, nlohmann::json workload,
+                                 const std::vector<std::string>& baselines, uint32_t runs, std::size_t frames)
     : dir_(std::move(dir)),
       workload_(std::move(workload)),
       key_(software_timing_key(workload_)),
       max_bytes_(software_timing_max_bytes(runs, frames, baselines.size())) {
+    made_.create(dir_, label);
     const std::string path = software_timing_path(dir_, key_);
     std::string sha256;
     timing_ = read_software_timing(path, workload_, sha256, max_bytes_);
@@ -136,8 +137,10 @@ void SharedBaselines::publish(RunTotals& totals, uint32_t retime_tries) {
         b.wall_ns = totals.baseline_wall_samples(name).run_values();
         b.quality = quality;
     }
-    if (const std::optional<std::string> sha256 = publish_software_timing(dir_, own)) {
-        id_ = software_timing_id(key_, *sha256);
+    const std::optional<std::string> added = publish_software_timing(dir_, own);
+    made_.keep();  // it holds a timing now, this run's or another's
+    if (added) {
+        id_ = software_timing_id(key_, *added);
         totals.set_timing_id(id_);
         return;
     }

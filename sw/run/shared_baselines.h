@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sw/output/created_directories.h"
 #include "sw/run/frame_source.h"
 #include "sw/run/host_factor.h"
 #include "sw/run/run_report.h"
@@ -31,11 +32,13 @@ nlohmann::json software_workload(const std::string& scene, FrameSource& source, 
 
 class SharedBaselines {
 public:
-    // Reads DIR's timing of `workload` if there is one, checked against the
-    // run: `baselines` with `runs` runs of `frames` frames each. Throws
-    // InputError naming the file for one that does not fit.
-    SharedBaselines(std::string dir, nlohmann::json workload, const std::vector<std::string>& baselines,
-                    uint32_t runs, std::size_t frames);
+    // Makes DIR as mkdir -p (removed again unless a timing is added to it),
+    // then reads its timing of `workload` if there is one, checked against
+    // the run: `baselines` with `runs` runs of `frames` frames each. Throws
+    // InputError naming `label` and DIR when DIR is no directory and cannot
+    // be made one, or naming the file for a timing that does not fit.
+    SharedBaselines(std::string dir, const std::string& label, nlohmann::json workload,
+                    const std::vector<std::string>& baselines, uint32_t runs, std::size_t frames);
 
     // A timing was there: the run times nothing and reports this one.
     bool loaded() const { return timing_.has_value(); }
@@ -43,9 +46,9 @@ public:
     std::map<std::string, BaselineTime> frame(std::size_t index, const HostTiming& host) const;
     // The loaded timing's later runs and quality into `totals` (its first run came with the frames).
     void complete(RunTotals& totals) const;
-    // After the run timed its own: adds it to DIR; when another run added
-    // one first, `totals` takes that one instead. Throws SystemError or
-    // InputError when DIR cannot be written.
+    // After the run timed its own: adds it to DIR (which stays, made or
+    // not); when another run added one first, `totals` takes that one
+    // instead. Throws SystemError or InputError when DIR cannot be written.
     void publish(RunTotals& totals, uint32_t retime_tries);
     // What the rows name: KEY@SHA.
     const std::string& id() const { return id_; }
@@ -53,6 +56,7 @@ public:
 private:
     void take(RunTotals& totals, bool with_first_run) const;
 
+    CreatedDirectories made_;  // DIR and its parents, when this run made them
     std::string dir_;
     nlohmann::json workload_;
     std::string key_, id_;

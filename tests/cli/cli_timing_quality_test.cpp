@@ -201,6 +201,36 @@ TEST_F(CliTimingQuality, ASharedTimingOutOfRangeOrNoRegularFileIsRefusedAndNothi
     EXPECT_FALSE(fs::exists(dir_ / "s"));
 }
 
+// A run makes its --software-timings directory as a sweep does (mkdir -p)
+// and adds its timing there; one that names a file or cannot be made is
+// refused in one line naming it, exit 2, and nothing is written; a run that
+// fails after making it leaves none of the directories it made.
+TEST_F(CliTimingQuality, ARunMakesItsSoftwareTimingsDirectoryOrRefusesNamingIt) {
+    const std::string share = "run --board adm-xrc-ii --scene spheres --objects 20 --frames 3 --baseline sap -q "
+                              "--report r.json --software-timings ";
+    const auto timings = [this](const std::string& dir) {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_ / dir)) names.push_back(entry.path().filename().string());
+        return names;
+    };
+    const Result made = run(share + "new/timings");
+    ASSERT_EQ(made.status, 0) << made.err;
+    const std::vector<std::string> added = timings("new/timings");
+    ASSERT_EQ(added.size(), 1u);
+    EXPECT_EQ(fs::path(added[0]).extension(), ".json");
+    ASSERT_EQ(run(share + "new/timings/").status, 0);
+    EXPECT_EQ(timings("new/timings"), added) << "the second run takes the first one's timing";
+    fs::remove(dir_ / "r.json");
+    write("file", "not a directory\n");
+    expect_refusal(run(share + "file"), "cdvp run: --software-timings: file: expected a directory\n");
+    expect_refusal(run(share + "file/timings"), "cdvp run: --software-timings: file/timings: cannot create: ");
+    EXPECT_FALSE(fs::exists(dir_ / "r.json")) << "a refused run writes nothing";
+    const Result fault = run(share + "gone/timings --inject board-error@frame=1");
+    EXPECT_EQ(fault.status, 3) << fault.err;
+    EXPECT_FALSE(fs::exists(dir_ / "gone")) << "made for the run, removed with it";
+    EXPECT_FALSE(fs::exists(dir_ / "r.json"));
+}
+
 TEST_F(CliTimingQuality, CalibrateSaysWhenItsRunsCouldNotAgreeAndARunOnThatProfileSaysSo) {
     const Result strict = run("calibrate --repeat 2 --max-spread 0.1 --time-limit 1 --strict --out strict.json");
     if (strict.status == 0) GTEST_SKIP() << "this machine got within 0.1%: " << strict.out;
