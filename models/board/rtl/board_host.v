@@ -110,17 +110,23 @@ module board_host #(
     wire delta_write = we && region == 9;
     wire delta_complete = delta_write && !busy && delta_filled == 6;
     wire delta_in_range = (delta_words[0] >> AW) == 0;
+    // The write reaches the box store a cycle after the bus's: the address
+    // decode and the busy check end in registers, not in the memories'
+    // address and enable (the whole board's longest path when they did).
+    // The store is not read back by the host, and a START on the next bus
+    // cycle starts the sweep at that edge, so its first read comes after.
     integer c;
-    always @* begin
-        store_we = 0;
-        store_index = word_index[AW-1:0];
-        store_data = {6{wdata}};
-        if (coordinate_write && !busy) store_we[coordinate] = 1'b1;
+    always @(posedge clk) begin
+        store_we <= 0;
+        store_index <= word_index[AW-1:0];
+        store_data <= {6{wdata}};
+        if (coordinate_write && !busy) store_we[coordinate] <= 1'b1;
         if (delta_complete && delta_in_range) begin
-            store_we = 6'b111111;
-            store_index = delta_words[0][AW-1:0];
-            for (c = 0; c < 5; c = c + 1) store_data[c*32 +: 32] = delta_words[c + 1];
+            store_we <= 6'b111111;
+            store_index <= delta_words[0][AW-1:0];
+            for (c = 0; c < 5; c = c + 1) store_data[c*32 +: 32] <= delta_words[c + 1];
         end
+        if (reset) store_we <= 0;
     end
 
     // Error causes, as BoardCore raises them (the last one written wins).
