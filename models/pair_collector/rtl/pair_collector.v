@@ -120,7 +120,6 @@ module pair_collector #(
     // out of the memory with them, and nothing runs from the memory's output
     // through a search of its lanes (the longest path at large m, once the
     // memory's clock-to-out is in it).
-    wire [LW-1:0] lane_after_stored;
     // A held head has a hit left (an entry holds one at least and leaves
     // with its last), so neither needs the mask.
     assign take = held != 0 && drain_ready;
@@ -136,11 +135,10 @@ module pair_collector #(
     wire last_written, last_after, last_kept;
     lowest_hit #(.LANES(LANES), .LW(LW)) lowest_written (
         .mask(mask_written), .one_hot(bit_written), .lane(lane_written), .only(last_written));
-    assign lane_after = lane_after_stored;
     genvar d;
     generate
         for (d = 0; d < LANES; d = d + 1) begin : g_after_bit
-            assign bit_after[d] = lane_after_stored == d;
+            assign bit_after[d] = lane_after == d;
         end
     endgenerate
     lowest_hit #(.LANES(LANES), .LW(LW)) lowest_kept (
@@ -175,12 +173,12 @@ module pair_collector #(
         if (LANES > 1) begin : g_stored_lowest
             pair_fifo_memory #(.W(EW + LW + 1), .DEPTH(DEPTH), .AW(PW), .DISTRIBUTED(DISTRIBUTED)) entries (
                 .clk(clk), .write(write), .write_at(write_at), .data({entry, lane_written, last_written}),
-                .read_at(read_from), .q({after_head, lane_after_stored, last_after}));
+                .read_at(read_from), .q({after_head, lane_after, last_after}));
         end else begin : g_one_lane
             // One lane: an entry's one hit is lane 0's, and the last.
             pair_fifo_memory #(.W(EW), .DEPTH(DEPTH), .AW(PW), .DISTRIBUTED(DISTRIBUTED)) entries (
                 .clk(clk), .write(write), .write_at(write_at), .data(entry), .read_at(read_from), .q(after_head));
-            assign lane_after_stored = 0;
+            assign lane_after = 0;
             assign last_after = 1;
         end
     endgenerate
