@@ -8,25 +8,8 @@
 namespace cdvp {
 
 GridSearch::GridSearch(const BoardConfig& config, PairBudget budget)
-    : config_((config.validate(), config)), slots_(config.grid_slots()), budget_(budget) {
+    : config_((config.validate(), config)), slots_(config.grid_slots()), budget_(budget), finder_(config.format, budget) {
     for (uint32_t k = 0; k < lane_slot_.size(); ++k) lane_slot_[k] = k / slots_.lanes;
-}
-
-void GridSearch::Tile::resize(uint32_t n) {
-    if (index.size() >= n) return;
-    for (auto& column : key) column.resize(n);
-    index.resize(n);
-}
-
-void GridSearch::Tile::take(uint32_t at, const Box& b) {
-    for (uint32_t c = 0; c < kCoordinates; ++c) key[c][at] = b.key[c];
-    index[at] = b.index;
-}
-
-bool GridSearch::Tile::hit(const Box& row, uint32_t b) const {
-    const uint32_t* r = row.key;
-    return (r[kMinX] <= key[kMaxX][b]) & (key[kMinX][b] <= r[kMaxX]) & (r[kMinY] <= key[kMaxY][b]) &
-           (key[kMinY][b] <= r[kMaxY]) & (r[kMinZ] <= key[kMaxZ][b]) & (key[kMinZ][b] <= r[kMaxZ]);
 }
 
 uint64_t GridSearch::run(uint32_t objects, const CoordinateWords& words, PairList& pairs,
@@ -38,7 +21,7 @@ uint64_t GridSearch::run(uint32_t objects, const CoordinateWords& words, PairLis
     if (objects < 2) return 0;  // no sweep, as on the seed's board
     const uint64_t placed = bin(objects, words);
     const uint64_t cells_end = sweep_cells(placed, pairs, slots);
-    stats_.slots = sweep_large(cells_end, objects, pairs, slots);
+    stats_.slots = sweep_large(cells_end, objects, words, pairs, slots);
     return stats_.slots;
 }
 
@@ -272,38 +255,6 @@ uint64_t GridSearch::sweep_cells(uint64_t begin, PairList& pairs, std::vector<ui
         sweep_cell(cell, blocks.add(cell.count), pairs, slots);
     }
     return blocks.end();
-}
-
-uint64_t GridSearch::sweep_large(uint64_t begin, uint32_t objects, PairList& pairs, std::vector<uint64_t>& slots) {
-    const auto large = static_cast<uint32_t>(large_.size());
-    const uint32_t capacity = config_.grid.cell_capacity;
-    const uint32_t lanes = slots_.lanes;
-    uint64_t at = begin;
-    for (uint32_t tile_begin = 0; tile_begin < large; tile_begin += capacity) {
-        const uint32_t n = std::min(large - tile_begin, capacity);
-        tile_.resize(n);
-        for (uint32_t p = 0; p < n; ++p) tile_.take(p, boxes_[large_[tile_begin + p]]);
-        at += slots_.tile_lead(n);
-        uint32_t rank = 0;  // large boxes before j
-        for (uint32_t j = 0; j < objects; ++j) {
-            const Box& row = boxes_[j];
-            uint32_t first = n;  // no columns
-            if (row.kind == Kind::kBinned) {
-                first = 0;
-            } else if (row.kind == Kind::kLarge) {
-                // Only the tile's boxes after j: each pair of large boxes once.
-                const uint32_t after = ++rank;
-                first = after <= tile_begin ? 0 : std::min(after - tile_begin, n);
-            }
-            for (uint32_t p = first; p < n; ++p) {
-                if (!tile_.hit(row, p)) continue;
-                const uint32_t l = tile_.index[p];
-                add(pairs, slots, {std::min(j, l), std::max(j, l)}, at + (p - first) / lanes);
-            }
-            at += slots_.stream_box(n - first);
-        }
-    }
-    return at;
 }
 
 }  // namespace cdvp

@@ -29,6 +29,15 @@ public:
     // slot (every slot of the sweep; 0 below two boxes).
     uint64_t run(uint32_t objects, const CoordinateWords& words, PairList& pairs, std::vector<uint64_t>& slots);
     const GridSweepStats& stats() const { return stats_; }
+
+    // Up to this many large boxes, each box is streamed past every large
+    // tile as the board does (N x L lane tests); above, the pairs with a
+    // large box are found by the all-pairs search (O(N + pairs), as the
+    // all-pairs board's fast engine costs) and placed in closed form. The
+    // same pairs, order and slots either way.
+    static constexpr uint32_t kStreamedLargeBoxes = 64;
+    // For tests: search above `large` large boxes instead.
+    void set_searched_above(uint32_t large) { streamed_large_boxes_ = large; }
     // The most a sweep of `objects` boxes keeps, in either grid engine, for
     // the memory estimate before a run: the count words and busy-cell list
     // a cell; a box's cells and kind, its keys by index and its copy in
@@ -37,8 +46,10 @@ public:
     static uint64_t scratch_bytes(const GridConfig& grid, uint64_t objects) {
         if (objects < 2) return 0;
         return grid.cells_for(objects) * (sizeof(CellWords) + 2 * sizeof(BusyCell)) +
-               objects * (sizeof(Binned) + 2 * sizeof(Box) + grid.max_span * 2 * sizeof(uint32_t) + 2 * sizeof(uint32_t));
+               objects * (sizeof(Binned) + 2 * sizeof(Box) + grid.max_span * 2 * sizeof(uint32_t) + 4 * sizeof(uint32_t));
     }
+    // The large sweep's search, a pair found: the pair, and its place in the board's order.
+    static constexpr uint64_t scratch_bytes_per_pair() { return sizeof(IndexPair) + sizeof(LargeHit); }
 
 private:
     enum class Kind : uint8_t { kBinned, kLarge, kExcluded };
@@ -62,6 +73,14 @@ private:
     struct CellWords {
         uint32_t first = 0;
         uint32_t boxes = 0;
+    };
+    // A pair of the large sweep, where the board compares it: the large tile,
+    // the streamed box (the row) and its column in the tile.
+    struct LargeHit {
+        uint32_t tile, row, column;
+        friend bool operator<(const LargeHit& a, const LargeHit& b) {
+            return a.tile != b.tile ? a.tile < b.tile : a.row != b.row ? a.row < b.row : a.column < b.column;
+        }
     };
     // A large tile, gathered: keys by coordinate and indices.
     struct Tile {
@@ -92,8 +111,16 @@ private:
     void add_small_cell(uint32_t n, uint64_t row_start, PairList& pairs, std::vector<uint64_t>& slots);
     // The busy cells from slot `begin` on; the slot after the last one's last compare.
     uint64_t sweep_cells(uint64_t begin, PairList& pairs, std::vector<uint64_t>& slots);
-    // The large tiles from slot `begin` on; the slot after the last stream.
-    uint64_t sweep_large(uint64_t begin, uint32_t objects, PairList& pairs, std::vector<uint64_t>& slots);
+    // The large tiles from slot `begin` on; the slot after the last stream
+    // (grid_large_sweep.cpp): streamed, or searched.
+    uint64_t sweep_large(uint64_t begin, uint32_t objects, const CoordinateWords& words, PairList& pairs,
+                         std::vector<uint64_t>& slots);
+    uint64_t stream_large(uint64_t begin, uint32_t objects, PairList& pairs, std::vector<uint64_t>& slots);
+    uint64_t search_large(uint64_t begin, uint32_t objects, const CoordinateWords& words, PairList& pairs,
+                          std::vector<uint64_t>& slots);
+    // Where a row's first compare falls in a tile's stream: the slots of the
+    // rows before it (TileStream, grid_large_sweep.cpp).
+    struct TileStream;
     void add(PairList& pairs, std::vector<uint64_t>& slots, IndexPair pair, uint64_t slot) const {
         budget_.push(pairs, pair);
         slots.push_back(slot);
@@ -135,6 +162,13 @@ private:
     SmallCell small_{};
     std::array<uint32_t, 64> lane_slot_{};  // k / lanes: the slot of a row's k-th next column
     Tile tile_;
+    // The large sweep's search: every pair, those with a large box, and the
+    // binned and excluded boxes before each index.
+    PairFinder finder_;
+    PairList found_;
+    std::vector<LargeHit> large_hits_;
+    std::vector<uint32_t> binned_before_, excluded_before_;
+    uint32_t streamed_large_boxes_ = kStreamedLargeBoxes;
     GridSweepStats stats_;
 };
 

@@ -105,6 +105,7 @@ uint64_t bytes_per_pair(const BudgetShape& shape) {
     const uint64_t search = PairFinder::scratch_bytes_per_pair();
     if (!shape.clocked) {
         bytes += search + (shape.board.tiles.tiled() ? kPair : 0);  // a tiled board's order by block
+        if (shape.board.grid_board()) bytes += GridSearch::scratch_bytes_per_pair();  // the large sweep's search
         bytes += kCheckpointBytes / SweepTimeline::kCheckpointEvery;  // the timeline's checkpoints
     }
     if (!shape.board.format.is_float()) bytes += search + 3 * kPair;

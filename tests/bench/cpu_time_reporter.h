@@ -8,6 +8,7 @@
 #include <benchmark/benchmark.h>
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,12 @@ public:
     void ReportRuns(const std::vector<Run>& runs) override {
         ConsoleReporter::ReportRuns(runs);
         for (const Run& run : runs) {
-            if (run.run_type == Run::RT_Iteration && run.iterations > 0) {
-                cpu_s_[run.benchmark_name()] = run.cpu_accumulated_time / static_cast<double>(run.iterations);
+            if (run.run_type == Run::RT_Iteration && run.iterations > 0 && !medians_.count(run.run_name.str())) {
+                cpu_s_[run.run_name.str()] = run.cpu_accumulated_time / static_cast<double>(run.iterations);
+            } else if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
+                // Over repetitions the median, also when only aggregates are reported.
+                cpu_s_[run.run_name.str()] = run.GetAdjustedCPUTime() / benchmark::GetTimeUnitMultiplier(run.time_unit);
+                medians_.insert(run.run_name.str());
             }
         }
     }
@@ -34,6 +39,7 @@ public:
 
 private:
     std::map<std::string, double> cpu_s_;
+    std::set<std::string> medians_;
 };
 
 }  // namespace cdvp::bench

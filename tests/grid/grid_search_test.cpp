@@ -171,11 +171,52 @@ TEST(GridSearch, PairsComeInTheBoardsOrder) {
     EXPECT_GT(runs, 0u);
 }
 
+// The large sweep streamed as the board runs it and searched in closed
+// form: the same pairs in the same order, each in the same slot, whatever
+// makes boxes large (overflowing cells or entries, spanning, inverted).
+TEST(GridSearch, LargeSweepSearchedAsStreamed) {
+    std::mt19937 rng(11);
+    struct Case {
+        const char* what;
+        testing::WordScene scene;
+        uint32_t m, capacity, dims, span;
+        uint64_t entries;
+    };
+    auto special = testing::random_scene(1500, 12.0f, 3.0f, rng);
+    testing::sprinkle_special_values(special, 0.3, rng);
+    const std::vector<Case> cases = {
+        {"cells overflow", testing::random_scene(3000, 14.0f, 2.5f, rng), 3, 6, 0, 8, 1ull << 20},
+        {"entries overflow", testing::random_scene(3000, 30.0f, 4.0f, rng), 8, 512, 0, 8, 700},
+        {"one cell", testing::overlapping_scene(1300, rng), 4, 100, 1, 8, 1ull << 20},
+        {"spanning", testing::random_scene(2000, 40.0f, 9.0f, rng), 1, 512, 40, 1, 1ull << 20},
+        {"special values", special, 3, 5, 0, 8, 1ull << 20},
+        {"tiles of two", testing::clustered_scene(800, 3, rng), 2, 2, 0, 8, 1ull << 20},
+    };
+    for (const Case& c : cases) {
+        BoardConfig config = grid_board(c.m);
+        config.grid.cell_capacity = c.capacity;
+        config.grid.dims = c.dims;
+        config.grid.max_span = c.span;
+        config.grid.entry_capacity = c.entries;
+        GridSearch streamed(config), searched(config);
+        streamed.set_searched_above(~0u);
+        searched.set_searched_above(0);
+        PairList streamed_pairs, searched_pairs;
+        std::vector<uint64_t> streamed_slots, searched_slots;
+        const uint64_t end = streamed.run(c.scene.size(), c.scene.view(), streamed_pairs, streamed_slots);
+        EXPECT_EQ(end, searched.run(c.scene.size(), c.scene.view(), searched_pairs, searched_slots)) << c.what;
+        EXPECT_GT(streamed.stats().large_boxes, GridSearch::kStreamedLargeBoxes) << c.what;
+        EXPECT_EQ(streamed.stats(), searched.stats()) << c.what;
+        EXPECT_EQ(streamed_pairs, searched_pairs) << c.what;
+        EXPECT_EQ(streamed_slots, searched_slots) << c.what;
+    }
+}
+
 // The pair budget: a sweep of exactly the budget's pairs finds them all; one
 // pair fewer stops at the first pair past it (cells and large tiles alike).
 TEST(GridSearch, StopsAtTheFirstPairPastItsBudget) {
     std::mt19937 rng(10);
-    for (uint32_t capacity : {512u, 6u}) {  // the cells alone, and overflow into the large sweep
+    for (uint32_t capacity : {512u, 6u, 24u}) {  // the cells alone; overflow into the large sweep, searched and streamed
         const auto scene = testing::random_scene(2000, 14.0f, 2.5f, rng);
         BoardConfig config = grid_board();
         config.grid.cell_capacity = capacity;
