@@ -27,7 +27,7 @@ if(CDVP_HELP2MAN)
   add_custom_command(
     OUTPUT ${cdvp_man_page}
     COMMAND ${CMAKE_COMMAND} -DCDVP=$<TARGET_FILE:cdvp> -DHELP2MAN=${CDVP_HELP2MAN} -DOUT=${cdvp_man_page}
-            -P ${CMAKE_SOURCE_DIR}/cmake/man_page.cmake
+            -DBOARDS=${CMAKE_SOURCE_DIR}/platform/boards -P ${CMAKE_SOURCE_DIR}/cmake/man_page.cmake
     DEPENDS cdvp ${CMAKE_SOURCE_DIR}/cmake/man_page.cmake
     COMMENT "Generating the cdvp man page from --help")
   add_custom_target(cdvp_man_page ALL DEPENDS ${cdvp_man_page})

@@ -1,4 +1,4 @@
-# cmake -DCDVP=binary -DHELP2MAN=help2man -DOUT=cdvp.1 -P man_page.cmake
+# cmake -DCDVP=binary -DHELP2MAN=help2man -DOUT=cdvp.1 -DBOARDS=platform/boards -P man_page.cmake
 # Writes cdvp.1 with help2man from `cdvp --help` and `--version`, adding a
 # section with `cdvp CMD --help` for every command that `cdvp --help` lists,
 # and the environment and files the binary uses.
@@ -39,6 +39,20 @@ foreach(row IN LISTS rows)
   string(TOUPPER "${command}" title)
   string(APPEND include_text "[OPTIONS OF ${title}]\n${block}\n")
 endforeach()
+
+# The presets, from the boards directory itself.
+file(GLOB preset_files "${BOARDS}/*.json")
+if(NOT preset_files)
+  message(FATAL_ERROR "no board presets in '${BOARDS}'")
+endif()
+set(presets "")
+foreach(file IN LISTS preset_files)
+  get_filename_component(name "${file}" NAME_WE)
+  list(APPEND presets "${name}")
+endforeach()
+list(SORT presets)
+list(JOIN presets ", " preset_list)
+string(REPLACE "-" "\\-" preset_list "${preset_list}")
 
 string(APPEND include_text [=[
 [EXAMPLES]
@@ -82,7 +96,11 @@ default memory budget (\fB\-\-max\-memory\fR 0) is 1/J of half the memory.
 [FILES]
 .TP
 .I PREFIX/share/cdvp/boards/*.json
-The board presets: adm\-xrc\-ii, adm\-xrc\-ii\-64, pcie\-gen3\-x8.
+The board presets: @PRESET_LIST@.
+.TP
+.I $XDG_CACHE_HOME/cdvp/speed\-probe.json
+(else \fI~/.cache/cdvp/speed\-probe.json\fR) The fastest this CPU model has run the speed probe in
+earlier runs: without a host profile, software timings are held to it (docs/timing.md).
 .TP
 .I PREFIX/share/cdvp/rtl
 The board's Verilog and what \fB\-\-fidelity rtl\fR compiles a variant from.
@@ -100,6 +118,7 @@ the README and docs/ in \fIPREFIX/share/doc/cdvp\fR (docs/tutorial.md, docs/cli.
 docs/sweep.md, docs/settings.md, docs/timing.md).
 ]=])
 
+string(REPLACE "@PRESET_LIST@" "${preset_list}" include_text "${include_text}")
 get_filename_component(include_file "${OUT}.include" ABSOLUTE)
 file(WRITE "${include_file}" "${include_text}")
 execute_process(

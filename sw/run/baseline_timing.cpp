@@ -8,6 +8,7 @@
 
 #include "models/common/user_text.h"
 #include "sw/baselines/worker_pool.h"
+#include "sw/run/machine_speed.h"
 #include "sw/scene/conversion.h"
 
 namespace cdvp {
@@ -96,7 +97,7 @@ double BaselineTimer::mark_slowed(uint64_t warmup) {
             for (std::size_t k = first; k < run.size(); ++k) all.push_back(run[k]);
         }
     }
-    probe_reference_ns_ = host_.probe_reference_ns > 0 ? host_.probe_reference_ns : fast_probe_ns(all);
+    probe_reference_ns_ = probe_reference_ns(host_.probe_reference_ns, all);
     const double limit = probe_reference_ns_ * (1 + kProbeTolerance);
     for (std::size_t b = 0; b < names_.size(); ++b) {
         for (std::size_t run = 0; run < probes_[b].size(); ++run) {

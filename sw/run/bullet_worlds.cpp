@@ -14,6 +14,7 @@
 #include "sw/bullet/scenes.h"
 #include "sw/run/bullet_report.h"
 #include "sw/run/machine_info.h"
+#include "sw/run/machine_speed.h"
 #include "sw/run/run_checks.h"
 #include "sw/run/run_frames.h"
 #include "sw/timing/speed_probe.h"
@@ -142,7 +143,7 @@ private:
         for (const std::vector<double>& run : probes_) {
             all.insert(all.end(), run.begin() + static_cast<std::ptrdiff_t>(first), run.end());
         }
-        quality.probe_ns = probe_reference_ns > 0 ? probe_reference_ns : fast_probe_ns(all);
+        quality.probe_ns = cdvp::probe_reference_ns(probe_reference_ns, all);
         const double limit = quality.probe_ns * (1 + kProbeTolerance);
         for (std::size_t run = 0; run < disturbed_.size(); ++run) {
             for (std::size_t k = first; k < frames_; ++k) {

@@ -50,11 +50,19 @@ protected:
         // Runs look for a host profile in the user's config directory: each
         // test gets an empty one of its own, so none finds the developer's.
         ::setenv("XDG_CONFIG_HOME", (dir_ / ".config").c_str(), 1);
+        // And a cache of its own beside it (the machine's remembered speed
+        // starts empty), outside the directory whose files tests list.
+        cache_ = dir_.string() + ".cache";
+        fs::remove_all(cache_);
+        ::setenv("XDG_CACHE_HOME", cache_.c_str(), 1);
 #ifdef CDVP_TEST_RTL_CACHE
         ::setenv("CDVP_RTL_CACHE", CDVP_TEST_RTL_CACHE, 0);  // a test's own CDVP_RTL_CACHE=... still wins
 #endif
     }
-    void TearDown() override { fs::remove_all(dir_); }
+    void TearDown() override {
+        fs::remove_all(dir_);
+        fs::remove_all(cache_);
+    }
 
     // Runs `cdvp ARGS` (a shell command line) in the test's directory, with
     // 'environment' ("NAME=value ...") set.
@@ -82,6 +90,7 @@ protected:
     static std::string preset(const std::string& name) { return CDVP_SOURCE_DIR "/platform/boards/" + name + ".json"; }
 
     fs::path dir_;
+    fs::path cache_;  // $XDG_CACHE_HOME of the runs
 };
 
 // Bad input refused: status 2 and one line on stderr that starts with 'start'.

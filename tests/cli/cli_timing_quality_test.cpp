@@ -75,6 +75,39 @@ TEST_F(CliTimingQuality, AFrameOnASlowedCpuIsTimedAgainAndNeverCleanIsLoud) {
     EXPECT_EQ(read_json("n.json")["summary"]["timing_quality"]["never_clean"], 8);
 }
 
+// Without a host profile a run's frames are held to the fastest this CPU
+// model has shown, kept between runs in the user's cache: a run slow from
+// its first probe to its last is not held to its own slow speed. A damaged
+// record is written anew, one of another CPU model ignored.
+TEST_F(CliTimingQuality, ARunSlowThroughoutIsHeldToTheSpeedTheMachineShowedBefore) {
+    const Result first = run(kRun + "--report r.json -q");
+    ASSERT_EQ(first.status, 0) << first.err;
+    const fs::path kept = cache_ / "cdvp/speed-probe.json";
+    ASSERT_TRUE(fs::exists(kept));
+    json record = report_of(kept);
+    EXPECT_DOUBLE_EQ(record["probe_native_ns"].get<double>(),
+                     read_json("r.json")["summary"]["timing_quality"]["probe_native_ns"].get<double>())
+        << "the first run is held to its own speed, and keeps it";
+    record["probe_native_ns"] = 1;  // a speed no probe reaches: as if this run were slowed throughout
+    std::ofstream(kept) << record.dump();
+    const Result slowed = run(kRun + "--retime-tries 1 --report s.json -q");
+    ASSERT_EQ(slowed.status, 0) << slowed.err;
+    const json report = read_json("s.json");
+    const json& q = report["summary"]["timing_quality"];
+    EXPECT_EQ(q["verdict"], "disturbed");
+    EXPECT_EQ(q["never_clean"], 8);
+    EXPECT_DOUBLE_EQ(q["probe_native_ns"].get<double>(), 1);
+    EXPECT_DOUBLE_EQ(report_of(kept)["probe_native_ns"].get<double>(), 1) << "a slower run keeps the faster speed";
+    for (const std::string& other : {std::string("{\"cpu_model\": \"another CPU\", \"probe_native_ns\": 1}"),
+                                     std::string("not json"), std::string(100000, 'x')}) {
+        std::ofstream(kept) << other;
+        const Result r = run(kRun + "--retime-tries 0 --report o.json -q");
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_GT(read_json("o.json")["summary"]["timing_quality"]["probe_native_ns"].get<double>(), 1) << other.substr(0, 40);
+        EXPECT_NE(report_of(kept)["probe_native_ns"].get<double>(), 1) << "written anew: " << other.substr(0, 40);
+    }
+}
+
 TEST_F(CliTimingQuality, ReTimingFindsTheSamePairsAndKeepsTheFiguresTheReportsFramesGive) {
     // --warmup 0: the first frame (allocation, first insertion) is timed again too.
     const Result r = run(kRun + "--warmup 0 --repeat 2 --report r.json -q");

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # man_section_test.sh CDVP MAN_PAGE COMMAND
 # man_section_test.sh CDVP MAN_PAGE commands TESTED...
+# man_section_test.sh CDVP MAN_PAGE presets BOARDS_DIR
 # The man page's section for COMMAND ("OPTIONS OF COMMAND"), rendered as plain
 # text, must equal `cdvp COMMAND --help` line for line. "commands" checks
 # instead that the page has a section for every command `cdvp --help` lists
 # and for no other, and that TESTED (the commands with a test of their own)
-# are those same commands.
+# are those same commands. "presets" checks that FILES names every preset.
 set -euo pipefail
 cdvp=$1 page=$2 command=$3
 shift 3
@@ -26,6 +27,15 @@ if [ "$command" = commands ]; then
   [ "$(sort <<< "$listed")" = "$(printf '%s\n' "$@" | sort)" ] ||
     fail "the commands with a test ($*) are not those cdvp --help lists ($(echo $listed)): tests/CMakeLists.txt"
   echo "man page: a section for each of $(echo $listed)"
+  exit 0
+fi
+if [ "$command" = presets ]; then
+  # FILES names every preset the boards directory ($1) holds.
+  for preset in "$1"/*.json; do
+    name=$(basename "$preset" .json)
+    grep -q "presets:.*\b$name\b" <<< "$text" || fail "FILES does not name the preset $name ($preset)"
+  done
+  echo "man page: every preset of $1 named"
   exit 0
 fi
 title=$(tr a-z A-Z <<< "$command")
