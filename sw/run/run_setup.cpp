@@ -29,6 +29,22 @@ SettingValue checked_given(const Assignment& given, const SettingNames& names) {
     }
 }
 
+// The grid's settings set nothing on the all-pairs board: one the user gave
+// (a preset may carry them for either board) is refused, as a bus's setting
+// on another bus is, so that a run or a sweep axis never changes nothing in silence.
+void refuse_grid_settings_on_all_pairs(const SettingValues& values) {
+    if (values.settings().board.grid_board()) return;
+    const Setting& algorithm = *find_setting("board.algorithm");
+    for (const Setting* s : values.effective()) {
+        if (s->name.rfind("board.grid.", 0) != 0) continue;
+        const SettingOrigin::Kind kind = values.origin(*s).kind;
+        if (kind == SettingOrigin::Kind::kDefault || kind == SettingOrigin::Kind::kPreset) continue;
+        throw InputError(values.where(*s) + ": a setting of the grid board; the board is all_pairs (" +
+                         (values.is_default(algorithm) ? std::string("the default") : values.where(algorithm)) +
+                         "): give " + values.names().setting_to(algorithm, "grid"));
+    }
+}
+
 }  // namespace
 
 SettingValues layered_settings(const SettingLayers& layers, const std::string& scene, std::string& board_name) {
@@ -52,6 +68,7 @@ SettingValues layered_settings(const SettingLayers& layers, const std::string& s
     std::vector<Assignment> given = layers.given;
     for (Assignment& a : given) a.value = checked_given(a, names);
     values.apply(given);
+    refuse_grid_settings_on_all_pairs(values);
     return values;
 }
 

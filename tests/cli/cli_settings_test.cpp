@@ -158,6 +158,24 @@ TEST_F(CliSettings, ABusKeyOfTheOtherBusTypeIsRefusedNamingTheBus) {
     EXPECT_EQ(run(small() + "-c bus.type=pcie -c bus.lanes=4").status, 0);
 }
 
+// The grid's settings change nothing on the all-pairs board: given there
+// (a flag, -c, a config file, a sweep axis, settings), they are refused.
+TEST_F(CliSettings, AGridSettingOnTheAllPairsBoardIsRefusedNamingTheAlgorithm) {
+    const std::string refused = ": a setting of the grid board; the board is all_pairs (the default): give --algorithm grid\n";
+    expect_refusal(run(small() + "-c board.grid.dims=8"), "cdvp run: -c board.grid.dims" + refused);
+    expect_refusal(run("settings -c board.grid.cell_capacity=64"), "cdvp settings: -c board.grid.cell_capacity" + refused);
+    write("c.toml", "[board.grid]\nmax_span = 4\n");
+    expect_refusal(run(small() + "--config c.toml"), "cdvp run: c.toml:2: board.grid.max_span" + refused);
+    expect_refusal(run(small() + "--algorithm all_pairs -c board.grid.dims=8"),
+                   "cdvp run: -c board.grid.dims: a setting of the grid board; the board is all_pairs (--algorithm)");
+    const Result sweep = run("sweep --scene spheres --set board.grid.dims=4,8 --set objects=60 --frames 2 "
+                             "--fidelity analytic --out s -q");
+    EXPECT_EQ(sweep.status, 2) << sweep.err;
+    EXPECT_NE(sweep.err.find("-c board.grid.dims: a setting of the grid board"), std::string::npos) << sweep.err;
+    EXPECT_EQ(files(), std::vector<std::string>{"c.toml"}) << "the refused sweep leaves no OUT";
+    EXPECT_EQ(run(small() + "--algorithm grid -c board.grid.dims=8").status, 0);
+}
+
 TEST_F(CliSettings, SettingsJsonListsEverySettingAndEveryPresetKey) {
     const Result r = run("settings --json");
     ASSERT_EQ(r.status, 0) << r.err;
