@@ -58,7 +58,7 @@ std::string frames_described(const RunTotals& totals, const TimingFigures& figur
 
 // One line: whether the software's timing held still, and if not, which
 // baselines and how (the load at its end as the summary is printed).
-void print_timing_quality(std::ostream& out, const RunTotals& totals) {
+void print_timing_quality(std::ostream& out, const RunDescription& run, const RunTotals& totals) {
     const std::map<std::string, TimingQuality>& quality = totals.timing_quality();
     if (quality.empty()) return;
     TimingQuality all;
@@ -74,6 +74,9 @@ void print_timing_quality(std::ostream& out, const RunTotals& totals) {
         << "): " << all.describe(totals.retime_tries());
     if (!disturbed.empty()) out << "; " << disturbed << "'s speedup may not hold (docs/timing.md)";
     out << '\n';
+    const bool pinned = run.settings != nullptr && run.settings->settings().run.pinned_cpu().has_value();
+    const std::string advice = all.advice(totals.retime_tries(), pinned, read_machine_info().cores_online);
+    if (!advice.empty()) out << "  " << advice << '\n';
 }
 
 // The board's energy a frame by part and a pair, and each baseline's on
@@ -157,7 +160,7 @@ void print_timing(std::ostream& out, const RunDescription& run, const RunTotals&
             out << line;
         }
         print_fastest(out, totals.summary(run.host_timing));
-        print_timing_quality(out, totals);
+        print_timing_quality(out, run, totals);
     }
     if (board.too_few_frames()) {
         out << "note: these figures rest on " << frames_text(board.frames_per_run) << ", fewer than " << kMinMeasuredFrames

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "models/common/user_text.h"
+#include "sw/run/machine_info.h"
 
 namespace cdvp {
 
@@ -103,9 +104,10 @@ void BulletTimes::replace_software(std::size_t run, std::size_t frame, double br
     }
 }
 
-void BulletTimes::set_quality(const TimingQuality& quality, uint32_t tries) {
+void BulletTimes::set_quality(const TimingQuality& quality, uint32_t tries, bool pinned) {
     quality_ = quality;
     tries_ = tries;
+    pinned_ = pinned;
 }
 
 TimingFigures BulletTimes::figures(double BulletFrame::*time) const {
@@ -184,6 +186,8 @@ std::string BulletTimes::table(BroadphaseKind software, const std::string& host,
     out << "software world's timing (thread CPU time): " << quality_.describe(tries_);
     if (!quality_.clean()) out << "; the gains may not hold (docs/timing.md)";
     out << '\n';
+    const std::string advice = quality_.advice(tries_, pinned_, read_machine_info().cores_online);
+    if (!advice.empty()) out << "  " << advice << '\n';
     return out.str();
 }
 

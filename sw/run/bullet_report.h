@@ -53,8 +53,9 @@ public:
     void add_software(double broadphase_host_ns, double step_host_ns);
     // A software frame timed again (a disturbed one): frame `frame` of run `run`, from 0.
     void replace_software(std::size_t run, std::size_t frame, double broadphase_host_ns, double step_host_ns);
-    // What the software world's timing can be trusted for, and the tries it had.
-    void set_quality(const TimingQuality& quality, uint32_t tries);
+    // What the software world's timing can be trusted for, the tries it
+    // had, and whether it ran pinned to a CPU.
+    void set_quality(const TimingQuality& quality, uint32_t tries, bool pinned);
     const TimingQuality& quality() const { return quality_; }
 
     const std::vector<BulletFrame>& frames() const { return frames_; }
@@ -78,6 +79,7 @@ private:
     std::vector<BulletFrame> frames_;
     TimingQuality quality_;
     uint32_t tries_ = 0;
+    bool pinned_ = false;
 };
 
 }  // namespace cdvp

@@ -96,7 +96,7 @@ public:
 
     // After the frames: the software world's later runs (--repeat) from the
     // scene's start, and every disturbed step timed again; the native seconds it took.
-    double finish_software(uint32_t runs, uint32_t tries, double probe_reference_ns) {
+    double finish_software(uint32_t runs, uint32_t tries, double probe_reference_ns, bool pinned) {
         double seconds = software_s_;
         // The later runs step a fresh software world from the same start: the
         // board's times are simulated, the same every run.
@@ -121,7 +121,7 @@ public:
         seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - retime_start).count();
         quality.load_start = load_start_;
         quality.load_end = load_average();
-        times_.set_quality(quality, tries);
+        times_.set_quality(quality, tries, pinned);
         return seconds;
     }
 
@@ -223,7 +223,8 @@ public:
 
     nlohmann::json sections(RunWallTimes& wall) override {
         const RunSettings& run = setup_.values.settings().run;
-        wall.baselines_s += source_.finish_software(run.repeat, run.retime_tries, setup_.host.probe_reference_ns);
+        wall.baselines_s += source_.finish_software(run.repeat, run.retime_tries, setup_.host.probe_reference_ns,
+                                                    run.pinned_cpu().has_value());
         nlohmann::json sections = ForwardingObserver::sections(wall);
         sections["bullet"] = source_.times().section(source_.spec(), source_.software());
         return sections;

@@ -41,6 +41,31 @@ std::string TimingQuality::describe(uint32_t max_tries) const {
     return out + (clean() ? " (" + parts + ")" : ": " + parts);
 }
 
+std::string TimingQuality::advice(uint32_t max_tries, bool pinned, uint32_t cpus) const {
+    if (clean()) return {};
+    std::string out;
+    const auto add = [&out](const std::string& part) { out += (out.empty() ? "" : ", ") + part; };
+    char text[160];
+    // Another task on the CPUs, or a slowed CPU: only a quieter machine helps.
+    if (cpus > 0 && load_end[0] >= 0.5 * cpus) {
+        std::snprintf(text, sizeof text, "a quieter machine (load %.2f on %u CPU%s)", load_end[0], cpus, cpus == 1 ? "" : "s");
+        add(text);
+    } else if (frames_slowed > 0) {
+        add("a quieter machine (a neighbour or a lowered clock slowed the CPU)");
+    }
+    // Frames moved or pre-empted, not only slowed: a CPU of its own.
+    if (!pinned && frames_disturbed > frames_slowed) add("--pin-cpu N");
+    if (never_clean > 0) {
+        std::snprintf(text, sizeof text, "--retime-tries %u", std::max(2 * max_tries, 6u));
+        add(text);
+    }
+    if (runs > 1 && repeat_spread > kMaxRepeatSpread) {
+        std::snprintf(text, sizeof text, "--repeat %u (the median run counts)", std::max(runs + 2, 5u));
+        add(text);
+    }
+    return out.empty() ? std::string() : "to time it clean: " + out;
+}
+
 TimingQuality& TimingQuality::operator+=(const TimingQuality& other) {
     frames_timed += other.frames_timed;
     frames_disturbed += other.frames_disturbed;

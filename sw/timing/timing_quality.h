@@ -42,6 +42,10 @@ struct TimingQuality {
     // "clean (3 of 84 frames re-timed, load 0.10 to 0.20)" or
     // "disturbed: 2 of 84 frames never came clean after 3 tries, repeats 7.1% apart (over 5%), load 2.80 to 3.10"
     std::string describe(uint32_t max_tries) const;
+    // For a disturbed timing, what would time it clean, in one line
+    // ("to time it clean: a quieter machine (load 12.07 on 2 CPUs), --pin-cpu N, --retime-tries 6");
+    // empty for a clean one. `pinned`: the run was pinned to a CPU; `cpus`: the CPUs the system runs.
+    std::string advice(uint32_t max_tries, bool pinned, uint32_t cpus) const;
     // Two timings side by side (baselines of one run): counts add up, the
     // spread is the worse, the loads the first's.
     TimingQuality& operator+=(const TimingQuality& other);

@@ -61,7 +61,9 @@ TEST_F(CliTimingQuality, AFrameOnASlowedCpuIsTimedAgainAndNeverCleanIsLoud) {
     EXPECT_NE(r.out.find("software timing (thread CPU time): disturbed: 8 of 8 frames never came clean after 2 tries"),
               std::string::npos)
         << r.out;
-    EXPECT_NE(r.out.find("; sap, soa's speedup may not hold (docs/timing.md)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("; sap, soa's speedup may not hold (docs/timing.md)\n  to time it clean: "), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("--retime-tries 6\n"), std::string::npos) << r.out;
     const json j = read_json("r.json");
     const json& q = j["summary"]["timing_quality"];
     EXPECT_EQ(q["verdict"], "disturbed");

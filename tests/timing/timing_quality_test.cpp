@@ -50,6 +50,31 @@ TEST(TimingQuality, TwoBaselinesAddTheirCountsAndKeepTheWorseSpread) {
     EXPECT_DOUBLE_EQ(a.load_start[0], 0.5) << "the first's loads";
 }
 
+// A disturbed timing says in one line what would time it clean, by cause;
+// a clean one says nothing.
+TEST(TimingQuality, ADisturbedTimingSaysWhatWouldHelp) {
+    TimingQuality q;
+    q.frames_timed = 40;
+    EXPECT_EQ(q.advice(3, false, 2), "");
+    q.frames_disturbed = 6;
+    q.frames_slowed = 2;
+    q.never_clean = 3;
+    q.load_end = {3.5, 2, 1};
+    EXPECT_EQ(q.advice(3, false, 2),
+              "to time it clean: a quieter machine (load 3.50 on 2 CPUs), --pin-cpu N, --retime-tries 6");
+    q.load_end = {0.2, 0, 0};
+    EXPECT_EQ(q.advice(4, true, 8),
+              "to time it clean: a quieter machine (a neighbour or a lowered clock slowed the CPU), --retime-tries 8")
+        << "pinned: no --pin-cpu; a quiet load: the slowed CPU said";
+    q.frames_slowed = 6;  // every disturbed frame slowed: pinning would not help
+    EXPECT_EQ(q.advice(3, false, 8).find("--pin-cpu"), std::string::npos);
+    TimingQuality spread;
+    spread.frames_timed = 40;
+    spread.runs = 3;
+    spread.repeat_spread = 0.2;
+    EXPECT_EQ(spread.advice(3, true, 8), "to time it clean: --repeat 5 (the median run counts)");
+}
+
 TEST(RepeatSpread, IsMaxOverMinMinusOne) {
     EXPECT_DOUBLE_EQ(repeat_spread_of({}), 0);
     EXPECT_DOUBLE_EQ(repeat_spread_of({5}), 0);
