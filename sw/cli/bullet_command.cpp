@@ -99,7 +99,7 @@ int bullet_command(int argc, char** argv) {
     const po::options_description options = bullet_options(o);
     return run_command_line("cdvp bullet", argc, argv, kBulletUsage, options, [&](const po::variables_map& vm) {
         const RunSpec spec = bullet_spec(o, vm, argc, argv);
-        CommandObserver observer("cdvp bullet", false);
+        CommandObserver observer("cdvp bullet", ProgressMode::kNone);
         return command_status("cdvp bullet", run(spec, observer));
     });
 }

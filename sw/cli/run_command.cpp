@@ -71,10 +71,12 @@ int run_command(int argc, char** argv) {
     }
     return exit_status_of("cdvp run", [&] {
         RunSpec spec;
+        ProgressMode progress = ProgressMode::kNone;
         try {
             RunOptions o;
             const po::variables_map vm = parse_run_options(argc, argv, o);
             spec = run_spec_of(o, vm);
+            progress = o.quiet ? ProgressMode::kNone : progress_mode(o.progress, "--progress");
         } catch (po::error& e) {
             RunOptions unused;
             const po::options_description options = run_options_description(unused);
@@ -82,7 +84,7 @@ int run_command(int argc, char** argv) {
             return kExitBadInput;
         }
         spec.command_line = report_command_line(argc, argv);
-        CommandObserver observer("cdvp run", spec.outputs.summary);
+        CommandObserver observer("cdvp run", progress);
         return command_status("cdvp run", run(spec, observer));
     });
 }

@@ -110,7 +110,10 @@ po::options_description run_options_description(RunOptions& o) {
          "JSON report: every setting with where it came from, and per-frame cycles");
     add_wave_options(output, o.vcd, o.vcd_frames, o.vcd_format);
     output.add_options()
-        ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors")
+        ("progress", po::value(&o.progress)->value_name("auto|lines|none")->default_value("auto"),
+         "the frames' progress on stderr: auto (a line kept in place, on a terminal only), lines (a line "
+         "about every second with the time left, for logs, scripts and notebooks that capture stderr) or none")
+        ("quiet,q", po::bool_switch(&o.quiet), "print nothing but errors (no progress either)")
         ("help,h", po::bool_switch(&o.help), "show this help");
     po::options_description all(
         "Usage: cdvp run (--trace FILE | --scene NAME [--objects N] [--frames F] [--seed S]) [options]\n\n"

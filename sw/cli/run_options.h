@@ -33,6 +33,7 @@ struct RunOptions {
     std::string pairs_out, report, vcd;
     std::string vcd_frames;  // A:B
     std::string vcd_format = "vcd";
+    std::string progress = "auto";  // --progress: auto, lines or none (sw/cli/command_observer.h)
     bool quiet = false;
     bool help = false;
 };

@@ -115,6 +115,24 @@ TEST_F(Cli, RunHelpListsEveryPreset) {
     EXPECT_GE(presets, 4);
 }
 
+// Progress where stderr is captured: none by default (auto shows it on a
+// terminal only), a line a second and the last frame's with --progress
+// lines, none with -q whatever --progress says.
+TEST_F(Cli, ProgressLinesForWhateverCapturesStderr) {
+    const std::string run_small = "run --scene spheres --objects 40 --frames 12 --fidelity analytic ";
+    const Result quiet_default = run(run_small);
+    ASSERT_EQ(quiet_default.status, 0) << quiet_default.err;
+    EXPECT_EQ(quiet_default.err.find("frame "), std::string::npos) << quiet_default.err;
+    const Result lines = run(run_small + "--progress lines");
+    ASSERT_EQ(lines.status, 0) << lines.err;
+    EXPECT_EQ(lines.err.find('\r'), std::string::npos) << "lines, not a line kept in place";
+    EXPECT_NE(lines.err.find("cdvp run: frame 12/12 (100%), "), std::string::npos) << lines.err;
+    EXPECT_EQ(run(run_small + "--progress lines -q").err, "");
+    EXPECT_EQ(run(run_small + "--progress none").err.find("frame "), std::string::npos);
+    expect_refusal(run(run_small + "--progress sometimes"),
+                   "cdvp run: --progress: expected auto, lines or none, got 'sometimes'\n");
+}
+
 // Every help fits a terminal of 80 columns and no line ends in spaces.
 TEST_F(Cli, EveryHelpFitsEightyColumnsWithoutTrailingSpaces) {
     for (const char* command : {"", "run", "fidelity", "settings", "sweep", "merge", "bullet", "record", "calibrate", "rtl-variants"}) {
