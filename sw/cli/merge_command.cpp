@@ -12,6 +12,7 @@
 #include "sw/cli/run_command.h"
 #include "sw/cli/run_options.h"
 #include "sw/cli/sweep_command.h"
+#include "sw/study/sweep_figures.h"
 #include "sw/study/sweep_merge.h"
 #include "sw/study/sweep_state.h"
 
@@ -74,7 +75,8 @@ int run_merge_command(MergeSpec o) {
     const MergeOutcome outcome = merge_sweeps(o);
     if (outcome.status == 0 && !o.quiet) {
         std::cout << "cdvp merge: " << outcome.points << " of " << outcome.grid << " points in " << table_path(o.out)
-                  << " from " << o.shards.size() << " shards\n";
+                  << " from " << o.shards.size() << " shards\n"
+                  << answer_printout(o.out, outcome.answer);
     }
     return outcome.status;
 }

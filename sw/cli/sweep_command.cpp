@@ -21,6 +21,7 @@
 #include "sw/cli/sweep_options.h"
 #include "sw/cli/sweep_progress.h"
 #include "sw/study/sweep.h"
+#include "sw/study/sweep_figures.h"
 #include "sw/study/sweep_state.h"
 
 namespace cdvp {
@@ -84,7 +85,10 @@ int run_sweep_command(SweepSpec spec) {
     SweepProgress progress(!spec.quiet && isatty(STDERR_FILENO));
     const SweepOutcome outcome = run_sweep(spec, &progress);
     const bool recorded = outcome.status == 0 || !outcome.first_failure.empty();
-    if (recorded && sweep_stop_signal() == 0 && !spec.quiet) print_summary(spec.out_dir, outcome);
+    if (recorded && sweep_stop_signal() == 0 && !spec.quiet) {
+        print_summary(spec.out_dir, outcome);
+        std::cout << answer_printout(spec.out_dir, outcome.answer);
+    }
     if (!outcome.first_failure.empty() && outcome.status == kExitInternal) {
         std::cerr << spec.program << ": " << outcome.failed << (outcome.failed == 1 ? " point" : " points")
                   << " failed inside cdvp (internal error, a cdvp bug), recorded with the reason; the first, "

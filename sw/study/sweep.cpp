@@ -285,8 +285,10 @@ SweepOutcome run_sweep(const SweepSpec& given, SweepObserver* observer) {
         throw InputError("every point was refused; the first, " + first_reason);
     }
     made.keep();
-    const int status = write_figures(o.out_dir, grid, table, o.program, o.quiet, o.plots);
+    std::string answer;
+    const int status = write_figures(o.out_dir, grid, table, o.program, o.quiet, o.plots, &answer);
     outcome = outcome_of(table, todo.size());
+    outcome.answer = answer;
     outcome.status = status != 0 ? status : outcome.failed > 0 ? kExitInternal : 0;
     return outcome;
 }

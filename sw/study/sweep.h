@@ -94,6 +94,9 @@ struct SweepOutcome {
     std::size_t ok = 0, refused = 0, faulted = 0, failed = 0;
     std::size_t run_now = 0;    // points this call ran
     std::string first_failure;  // "POINT: reason" of the first failed row, if any
+    // The answer's short form (answer.md's table, a line a scene and N, and
+    // the crossovers), once answer.md and answer.csv are written; empty when not.
+    std::string answer;
 };
 
 // Runs the sweep. Throws InputError (bad OUT, another sweep's OUT, a changed

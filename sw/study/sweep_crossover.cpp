@@ -8,27 +8,30 @@
 
 namespace cdvp::sweep_figures {
 
-namespace {
-
-// The smallest N at which the board wins, and how it was found.
-struct Crossover {
-    double n = 0;
-    const char* how = "none";  // interpolated, measured (the smallest N already wins), none
-    std::vector<double> rests_on;  // the N whose speedups it was taken from
-};
-Crossover crossover(const std::vector<std::pair<double, double>>& speedups) {
-    for (std::size_t k = 0; k < speedups.size(); ++k) {
-        const auto [n1, s1] = speedups[k];
+Crossover crossover(const std::vector<std::pair<double, double>>& ratios, bool log_ratio) {
+    for (std::size_t k = 0; k < ratios.size(); ++k) {
+        const auto [n1, s1] = ratios[k];
         if (s1 < 1) continue;
         if (k == 0) return {n1, "measured", {n1}};
-        const auto [n0, s0] = speedups[k - 1];
-        const double t = (1 - s0) / (s1 - s0);
+        const auto [n0, s0] = ratios[k - 1];
+        const double t = log_ratio ? -std::log(s0) / (std::log(s1) - std::log(s0)) : (1 - s0) / (s1 - s0);
         return {std::exp(std::log(n0) + t * (std::log(n1) - std::log(n0))), "interpolated", {n0, n1}};
     }
     Crossover none;
-    for (const auto& [n, s] : speedups) none.rests_on.push_back(n);
+    for (const auto& [n, s] : ratios) none.rests_on.push_back(n);
     return none;
 }
+
+Crossover lasting_crossover(const std::vector<std::pair<double, double>>& ratios) {
+    std::size_t last_below = 0;
+    for (std::size_t k = 0; k < ratios.size(); ++k) {
+        if (ratios[k].second < 1) last_below = k;
+    }
+    // From the last N below 1 on, the first that reaches 1 is the next.
+    return crossover({ratios.begin() + static_cast<std::ptrdiff_t>(last_below), ratios.end()}, true);
+}
+
+namespace {
 
 // Whether any of the points a crossover rests on took its software timing
 // disturbed: such a crossover is never written as plainly measured.

@@ -11,7 +11,7 @@
 namespace cdvp {
 
 int write_figures(const std::string& dir, const Grid& grid, const SweepTable& table, const std::string& program,
-                  bool quiet, bool draw) {
+                  bool quiet, bool draw, std::string* answer) {
     FigurePlan plan = plan_figures(grid, table);
     if (!quiet && draw) {
         for (const std::string& note : plan.notes) std::cerr << program << ": " << printable(note) << '\n';
@@ -44,7 +44,14 @@ int write_figures(const std::string& dir, const Grid& grid, const SweepTable& ta
         return 1;
     }
     if (const std::optional<OutputFailure> failure = files.try_commit()) failure->raise();
+    if (answer != nullptr) *answer = plan.answer;
     return 0;
+}
+
+std::string answer_printout(const std::string& dir, const std::string& short_form) {
+    if (short_form.empty()) return "";
+    return "the answer (" + printable(dir + "/answer.md") +
+           "): at each N, the fastest board configuration against the fastest software\n" + short_form;
 }
 
 }  // namespace cdvp

@@ -167,8 +167,10 @@ MergeOutcome merge_sweeps(const MergeSpec& o) {
     }
     commit_text_file(manifest_path(staging.path()), merged.to_json().dump(2) + "\n", "--out");
     commit_text_file(table_path(staging.path()), table.csv(), "--out");
-    MergeOutcome outcome{0, table.size(), grid.size()};
-    if ((outcome.status = write_figures(staging.path(), grid, table, o.program, o.quiet, o.plots)) != 0) return outcome;
+    MergeOutcome outcome{0, table.size(), grid.size(), {}};
+    if ((outcome.status = write_figures(staging.path(), grid, table, o.program, o.quiet, o.plots, &outcome.answer)) != 0) {
+        return outcome;
+    }
     swap_into_place(staging.path(), o.out);
     made.keep();
     return outcome;

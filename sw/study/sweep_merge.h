@@ -22,6 +22,7 @@ struct MergeOutcome {
     int status = 0;           // 0, or 1 when gnuplot failed (OUT left as it was)
     std::size_t points = 0;   // rows merged
     std::size_t grid = 0;     // points in the grid
+    std::string answer;       // the merged sweep's answer in short (SweepOutcome::answer)
 };
 
 // Every row is checked against the grid, its shard and its report first; a row

@@ -29,13 +29,6 @@ double frame_ns(const Sample& s) {
     return frame;
 }
 
-// The frame's time with a unit a reader takes in at once: "83.1 us", "2.27 ms", "1.61 s".
-std::string frame_time_words(double ns) {
-    if (ns >= 1e9) return short_number(ns / 1e9) + " s";
-    if (ns >= 1e6) return short_number(ns / 1e6) + " ms";
-    return short_number(ns / 1e3) + " us";
-}
-
 Figure phase_figure(const std::string& board, std::vector<const Sample*> bars) {
     // By variant, then m, then N: the bars of one variant and m side by side.
     std::stable_sort(bars.begin(), bars.end(), [](const Sample* a, const Sample* b) {
@@ -90,6 +83,12 @@ Figure phase_figure(const std::string& board, std::vector<const Sample*> bars) {
 }
 
 }  // namespace
+
+std::string frame_time_words(double ns) {
+    if (ns >= 1e9) return short_number(ns / 1e9) + " s";
+    if (ns >= 1e6) return short_number(ns / 1e6) + " ms";
+    return short_number(ns / 1e3) + " us";
+}
 
 void add_phase_figures(const Samples& samples, FigurePlan& plan) {
     for (const std::string& board : samples.boards) {

@@ -63,12 +63,6 @@ std::string file_part(std::string s) {
 
 std::string num(double v) { return number_text(v); }
 
-}  // namespace sweep_figures
-
-namespace {
-
-using namespace sweep_figures;
-
 // The extremes of every y over the series.
 std::pair<double, double> y_extent(const std::vector<PlotSeries>& all) {
     double low = INFINITY, high = -INFINITY;
@@ -81,7 +75,7 @@ std::pair<double, double> y_extent(const std::vector<PlotSeries>& all) {
     return {low, high};
 }
 
-// N on a log axis that just holds the board's points, ticked at the swept values.
+// N on a log axis that just holds the points, ticked at the swept values.
 PlotAxis n_axis(const std::vector<const Sample*>& points) {
     PlotAxis axis;
     axis.label = "N (objects)";
@@ -96,7 +90,7 @@ PlotAxis n_axis(const std::vector<const Sample*>& points) {
 }
 
 // A log y axis over the series, padded, with ticks a reader can read off.
-PlotAxis log_y_axis(const std::string& label, const std::vector<PlotSeries>& all, double include = NAN) {
+PlotAxis log_y_axis(const std::string& label, const std::vector<PlotSeries>& all, double include) {
     PlotAxis axis;
     axis.label = label;
     axis.log = true;
@@ -106,6 +100,12 @@ PlotAxis log_y_axis(const std::string& label, const std::vector<PlotSeries>& all
     axis.ticks = log_ticks(axis.min, axis.max);
     return axis;
 }
+
+}  // namespace sweep_figures
+
+namespace {
+
+using namespace sweep_figures;
 
 // Each baseline's time at each N: the median over the board's points there
 // (every point times the same software on the same frames; a median keeps
@@ -216,6 +216,7 @@ struct PlotAxes {
     const Axis* board = nullptr;
     const Axis* n = nullptr;
     const Axis* m = nullptr;
+    const Axis* scene = nullptr;  // --scene or --trace
     std::vector<const Axis*> variants;
     std::vector<std::string> variant_names;
     // Each variant value's place in its axis, for lines in grid order.
@@ -227,6 +228,7 @@ PlotAxes plot_axes(const Grid& grid) {
     axes.board = grid.find("board");
     axes.n = grid.find("scene.objects") ? grid.find("scene.objects") : grid.find("objects");
     axes.m = grid.find("board.m") ? grid.find("board.m") : grid.find("m");
+    axes.scene = grid.find("scene") ? grid.find("scene") : grid.find("trace");
     for (const Axis& axis : grid.axes()) {
         if (&axis == axes.board || &axis == axes.n || &axis == axes.m || axis.values.size() < 2) continue;
         axes.variants.push_back(&axis);
@@ -247,6 +249,11 @@ Samples collect_samples(const PlotAxes& axes, const SweepTable& table) {
         s.m = number(row, axes.m ? axes.m->name : "config.m");
         s.n = number(row, axes.n ? axes.n->name : "median_objects");
         s.row = row;
+        // A row's source reads "spheres objects=100 seed=1": the scene is its first word.
+        const std::string source = text(row, "config.source");
+        s.scene = axes.scene ? text(row, axes.scene->name) : source.substr(0, source.find(' '));
+        s.algorithm = text(row, "config.settings.board.algorithm.value");
+        s.format = text(row, "config.format");
         for (std::size_t v = 0; v < axes.variants.size(); ++v) {
             const Axis* axis = axes.variants[v];
             const std::string value = text(row, axis->name);
@@ -257,6 +264,13 @@ Samples collect_samples(const PlotAxes& axes, const SweepTable& table) {
             s.variant += (s.variant.empty() ? "" : " ") + axis->name + "=" + value;
             s.variant_order += order;
             s.variant_values.push_back(value);
+            if (axis->key == "board.algorithm") {
+                s.algorithm = value;
+            } else if (axis->key == "board.format") {
+                s.format = value;
+            } else if (axis != axes.scene) {
+                s.setup += (s.setup.empty() ? "" : " ") + axis->name + "=" + value;
+            }
         }
         if (std::find(samples.boards.begin(), samples.boards.end(), s.board) == samples.boards.end()) {
             samples.boards.push_back(s.board);
@@ -287,6 +301,7 @@ FigurePlan plan_figures(const Grid& grid, const SweepTable& table) {
     }
     add_phase_figures(samples, plan);
     add_fit_figures(samples, variant_names, plan);
+    add_answer(samples, baselines, plan);
     if (n_axis == nullptr) {
         plan.notes.push_back("no plots against N (time, speedup, crossover): objects (or scene.objects) is not an axis of this sweep");
         return plan;

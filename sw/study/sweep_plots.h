@@ -16,6 +16,7 @@ namespace cdvp {
 struct FigurePlan {
     std::vector<Figure> figures;     // the pictures and the data files (crossover.csv, fit.csv)
     std::vector<std::string> notes;  // plots skipped or narrowed, and why (one line each)
+    std::string answer;              // the answer's short form (sw/study/sweep_answer.h), lines ending in '\n'
 };
 
 // The figures the table's ok rows support. N is the axis "objects", m the

@@ -3,6 +3,7 @@
 // and the words their titles take from the rows (engine, frames, host).
 #pragma once
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <utility>
@@ -27,6 +28,11 @@ struct Sample {
     std::string variant_order;  // the variant's values' places in their axes, for grid order
     std::size_t variant_place = 0;  // its place among the sweep's variants
     std::size_t m_place = 0;        // m's place among the sweep's values of m
+    // The scene or trace the point ran (the axis's value, else the row's
+    // source's first word; empty when the row names none); the board's
+    // algorithm and number format (from the axes, else the row's settings;
+    // empty when neither says); and the variant's other axes ("clock_mhz=250").
+    std::string scene, algorithm, format, setup;
     RowView row;
 };
 
@@ -55,6 +61,34 @@ Series series(const Samples& samples, const std::string& board, const std::strin
 // the same in every figure of the sweep.
 std::vector<PlotSeries> board_series(const Series& lines, const Samples& samples);
 
+// The smallest N at which a ratio (a speedup, an energy ratio) reaches 1,
+// and how it was found: interpolated in log N between the measured N around
+// it (the ratio itself, or with 'log_ratio' its logarithm: a power law
+// between the two, the straight line a log-log figure draws), measured (the
+// smallest N already reaches it: the crossover is at or below it), or none.
+struct Crossover {
+    double n = 0;
+    const char* how = "none";
+    std::vector<double> rests_on;  // the N whose ratios it was taken from
+};
+// The first N at which the ratio reaches 1; `ratios` as (N, ratio), sorted by N.
+Crossover crossover(const std::vector<std::pair<double, double>>& ratios, bool log_ratio = false);
+// The smallest N from which the ratio stays at 1 or above through the largest
+// N: the crossover after the last N below 1 (none when that is the largest),
+// interpolated in log ratio, so that it sits where the lines of a log-log
+// figure of the two times cross.
+Crossover lasting_crossover(const std::vector<std::pair<double, double>>& ratios);
+
+// A frame's time with a unit a reader takes in at once: "83.1 us", "2.27 ms", "1.61 s".
+std::string frame_time_words(double ns);
+
+// The extremes of every y over the series.
+std::pair<double, double> y_extent(const std::vector<PlotSeries>& all);
+// N on a log axis that just holds the points, ticked at the swept values.
+PlotAxis n_axis(const std::vector<const Sample*>& points);
+// A log y axis over the series (and `include`, unless NaN), padded, with ticks a reader can read off.
+PlotAxis log_y_axis(const std::string& label, const std::vector<PlotSeries>& all, double include = NAN);
+
 double number(const RowView& row, const std::string& column);  // NaN when absent
 std::string text(const RowView& row, const std::string& column);
 std::string file_part(std::string s);  // file-name safe, as point ids are
@@ -82,5 +116,8 @@ void add_phase_figures(const Samples& samples, FigurePlan& plan);
 // crossover.csv and, per baseline the board beats, crossover N against m.
 void add_crossovers(const Samples& samples, const std::vector<std::string>& variant_axes,
                     const std::vector<std::string>& baselines, FigurePlan& plan);
+// The sweep's answer (sw/study/sweep_answer.h): answer.csv, answer.md, the
+// figures of time and energy against N, and the short form for the terminal.
+void add_answer(const Samples& samples, const std::vector<std::string>& baselines, FigurePlan& plan);
 
 }  // namespace cdvp::sweep_figures
