@@ -22,7 +22,7 @@ from ._locate import find_binary, use_installed_boards
 from ._report import PHASES, Baseline, Report, Summary, frames_table
 from ._spread import _block_of, spread_sweep
 
-__all__ = ["settings", "presets", "run", "sweep", "find_binary", "Report", "Summary", "Baseline", "PHASES",
+__all__ = ["settings", "presets", "run", "sweep", "answer", "find_binary", "Report", "Summary", "Baseline", "PHASES",
            "Error", "InputError", "DeviceFault", "SystemFailure", "InternalError"]
 
 use_installed_boards()
@@ -95,8 +95,8 @@ def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=Tru
     executor: a concurrent.futures.Executor or a dask.distributed.Client: the points run there in
     tasks of block points (each task jobs points at once), merged into out when all have ended.
     Resumable: the same call into the same out runs only the points not done yet (outcome in
-    DataFrame.attrs["outcome"], its "run_now" the points this call ran). Raises as run() does;
-    KeyboardInterrupt when Ctrl-C stops it."""
+    DataFrame.attrs["outcome"], its "run_now" the points this call ran; attrs["out"] the directory,
+    which answer() reads). Raises as run() does; KeyboardInterrupt when Ctrl-C stops it."""
     if not isinstance(axes, dict):
         raise TypeError(f"axes: expected a dict of name -> values, got {type(axes).__name__}")
     if not isinstance(out, (str, bytes, os.PathLike)):
@@ -116,7 +116,43 @@ def sweep(axes, out, jobs=1, progress=None, settings=None, plots=True, quiet=Tru
     if executor is not None:
         outcome = _gathered_outcome(outcome, table, out)
     table.attrs["outcome"] = outcome
+    table.attrs["out"] = os.fsdecode(os.fspath(out))
     return table
+
+
+def answer(sweep):
+    """The sweep's answer as a DataFrame: its answer.csv, as the sweep wrote it (docs/sweep.md,
+    "The answer"), one row a scene and N: the fastest board configuration there (configuration,
+    board, algorithm, m, format, point), its board_frame_ns and board_energy_j, the fastest software
+    on its host and the speedup and energy_ratio against it (with the ratio's band), what bounds
+    the frame, the clock, and the scene's crossovers on time and on energy.
+
+    sweep: the sweep's directory (str, bytes or os.PathLike), or the DataFrame sweep() returned.
+    Raises TypeError for anything else, InputError (status 2) when the directory holds no answer."""
+    if isinstance(sweep, pd.DataFrame):
+        if "out" not in sweep.attrs:
+            raise InputError("cdvp.answer: this DataFrame is not one cdvp.sweep() returned (no attrs['out']); "
+                             "give the sweep's directory", 2)
+        out = sweep.attrs["out"]
+    elif isinstance(sweep, (str, bytes, os.PathLike)):
+        out = os.fsdecode(os.fspath(sweep))
+    else:
+        raise TypeError(f"sweep: expected a sweep's directory or the DataFrame cdvp.sweep() returned, "
+                        f"got {type(sweep).__name__}")
+    path = os.path.join(out, "answer.csv")
+    if not os.path.isfile(path):
+        raise InputError(f"cdvp.answer: {path}: no such file: not a sweep's directory, a sweep that has not ended, "
+                         "or one whose points timed no frame", 2)
+    return pd.read_csv(path, dtype={"scene": str, "configuration": str, "board": str, "algorithm": str,
+                                    "format": str, "point": str, "software": str}, keep_default_na=False,
+                       na_values={column: [""] for column in _ANSWER_NUMBERS})
+
+
+# answer.csv's numeric columns: an empty field is NaN (a text field stays "").
+_ANSWER_NUMBERS = ("objects", "m", "board_frame_ns", "board_energy_j", "software_frame_ns", "software_energy_j",
+                   "speedup", "energy_ratio", "energy_ratio_low", "energy_ratio_high", "bus_share", "memory_share",
+                   "compute_share", "host_share", "clock_mhz", "fmax_mhz", "time_crossover_n",
+                   "energy_crossover_n", "energy_crossover_early_n", "energy_crossover_late_n")
 
 
 def _gathered_outcome(spread, table, out):
