@@ -81,6 +81,9 @@ std::string answer_markdown(const std::vector<SceneAnswer>& answers, const std::
 std::string answer_summary(const std::vector<SceneAnswer>& answers);
 // "N ~ 142 (interpolated)", "N <= 100 (the sweep's smallest)", "no N of the sweep".
 std::string crossover_words(const Crossover& c);
+// Where the energy crossover falls with the power bands at either end:
+// "from N ~ 120 to N ~ 400 across the power band".
+std::string energy_band_words(const SceneAnswer& answer);
 // "1.23 mJ", "456 uJ", "2.1 J"
 std::string energy_words(double joules);
 

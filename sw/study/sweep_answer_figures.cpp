@@ -40,13 +40,7 @@ PlotSeries crossover_mark(const SceneAnswer& answer, const Quantity& q, const Pl
     mark.style = mark_style();
     const std::string n_words = crossover_words(c.at);
     mark.title = "board " + q.winning + " from " + n_words + " on";
-    if (q.file == "answer-energy") {
-        const Crossover &early = answer.energy_early.at, &late = answer.energy_late.at;
-        if (early.n > 0) {
-            mark.title += "; " + short_number(early.n) + " to " + (late.n > 0 ? short_number(late.n) : "beyond") +
-                          " across the power band";
-        }
-    }
+    if (q.file == "answer-energy") mark.title += " (" + energy_band_words(answer) + ")";
     mark.points.push_back({c.at.n, y.min});
     mark.points.push_back({c.at.n, y.max, (std::string(c.at.how) == "measured" ? "<= " : "~ ") + short_number(c.at.n)});
     return mark;

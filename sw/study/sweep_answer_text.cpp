@@ -40,12 +40,9 @@ std::string trust_words(const AnswerCrossover& c) {
     return words + ", the board's clock not stated";
 }
 
-// The N at the band's two ends: "N ~ 120 to 400 across the power band", or what is known of them.
-std::string band_words(const SceneAnswer& answer) {
-    const Crossover &early = answer.energy_early.at, &late = answer.energy_late.at;
-    if (early.n == 0) return "from no N of the sweep on anywhere in the power band";
-    return "from N ~ " + short_number(early.n) +
-           (late.n > 0 ? " to " + short_number(late.n) : " to beyond the sweep's largest N") + " across the power band";
+// "N ~ 120", "N <= 50"
+std::string n_words(const Crossover& c) {
+    return (std::string(c.how) == "measured" ? "N <= " : "N ~ ") + short_number(c.n);
 }
 
 // "faster from N ~ 142 (interpolated)", "faster nowhere from an N of the sweep on"
@@ -60,7 +57,7 @@ std::string time_sentence(const SceneAnswer& answer) {
 }
 
 std::string energy_sentence(const SceneAnswer& answer) {
-    return "It takes " + from_words("less energy a frame", answer.energy.at) + " (" + band_words(answer) +
+    return "It takes " + from_words("less energy a frame", answer.energy.at) + " (" + energy_band_words(answer) +
            ": the board's own power x" + short_number(kBoardPowerBand.low) + " to x" + short_number(kBoardPowerBand.high) +
            ", the host's x" + short_number(kHostPowerBand.low) + " to x" + short_number(kHostPowerBand.high) +
            ", docs/energy.md).";
@@ -111,8 +108,14 @@ std::string clock_sentence(const SceneAnswer& answer) {
 
 std::string crossover_words(const Crossover& c) {
     if (c.n == 0) return "no N of the sweep";
-    if (std::string(c.how) == "measured") return "N <= " + short_number(c.n) + " (the sweep's smallest)";
-    return "N ~ " + short_number(c.n) + " (interpolated)";
+    return n_words(c) + (std::string(c.how) == "measured" ? " (the sweep's smallest)" : " (interpolated)");
+}
+
+std::string energy_band_words(const SceneAnswer& answer) {
+    const Crossover &early = answer.energy_early.at, &late = answer.energy_late.at;
+    if (early.n == 0) return "from no N of the sweep on anywhere in the power band";
+    return "from " + n_words(early) + (late.n > 0 ? " to " + n_words(late) : " to beyond the sweep's largest N") +
+           " across the power band";
 }
 
 std::string energy_words(double joules) {
@@ -203,7 +206,7 @@ std::string answer_summary(const std::vector<SceneAnswer>& answers) {
         if (!timed_software(answer)) continue;
         out += "  " + scene_name(answer) + ": " + from_words("faster", answer.time.at) +
                (answer.time.at.n > 0 ? " (" + trust_words(answer.time) + ")" : "") + "; " +
-               from_words("less energy", answer.energy.at) + " (" + band_words(answer) + ")\n";
+               from_words("less energy", answer.energy.at) + " (" + energy_band_words(answer) + ")\n";
     }
     return out;
 }
