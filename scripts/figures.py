@@ -132,6 +132,14 @@ def grid(work):
     return out, os.path.join(out, "sweep.csv")
 
 
+def answer(work):
+    # docs/exploring.md, "A question answered in one command".
+    out = sweep(work, "u250", ["--board", "alveo-u250", "--set", "algorithm=all_pairs,grid", "--set", "m=2,8,32",
+                               "--set", "format=float32,fixed16", "--set", "objects=100,500,2000,20000",
+                               "--frames", "10", "--baseline", "sap,dbvt"])
+    return out, os.path.join(out, "sweep.csv")
+
+
 def exact(path):
     with open(path, encoding="utf-8") as f:
         return f.read()
@@ -158,6 +166,8 @@ FIGURES = [
     Figure("grid", False, {f"time-{board}.png": f"docs/answers/grid-time-{board}.png"
                            for board in ("adm-xrc-ii", "pcie-gen3-x8")},
            "docs/answers/grid-time.csv", grid, columns(BOARD_TIME_COLUMNS)),
+    Figure("answer", False, {"answer-time.png": "docs/answer-time.png", "answer-energy.png": "docs/answer-energy.png"},
+           "docs/answer-u250.csv", answer, columns(BOARD_TIME_COLUMNS)),
 ]
 
 
