@@ -71,19 +71,19 @@ Figure answer_figure(const Samples& samples, const SceneAnswer& answer, const Qu
         line.title += at + ")";
         for (const Sample& s : samples.all) {
             const double y = number(s.row, q.row_column);
-            if (!same_configuration(s, *winners[k]) || std::isnan(y)) continue;
+            if (!same_configuration(s, *winners[k]) || !(y > 0)) continue;  // a log axis: none at 0
             line.points.push_back({s.n, y});
             points.push_back(&s);
         }
         std::sort(line.points.begin(), line.points.end(),
                   [](const SeriesPoint& a, const SeriesPoint& b) { return a.x < b.x; });
-        figure.series.push_back(line);
+        if (!line.points.empty()) figure.series.push_back(line);
     }
     PlotSeries software;
     software.style = baseline_style(0);
     std::vector<std::string> names;
     for (const AnswerPoint& a : answer.points) {
-        if (a.software.empty() || std::isnan(a.*q.software)) continue;
+        if (a.software.empty() || !(a.*q.software > 0)) continue;
         software.points.push_back({a.n, a.*q.software});
         if (std::find(names.begin(), names.end(), a.software) == names.end()) names.push_back(a.software);
     }
@@ -122,8 +122,9 @@ std::vector<Figure> answer_figures(const Samples& samples, const std::vector<Sce
     std::vector<Figure> figures;
     for (const SceneAnswer& answer : answers) {
         for (const Quantity& q : quantities) {
-            const bool drawn = std::any_of(samples.all.begin(), samples.all.end(), [&](const Sample& s) {
-                return s.scene == answer.scene && !std::isnan(number(s.row, q.row_column));
+            // None without a value above 0 (no energy without a board's power figures, say).
+            const bool drawn = std::any_of(answer.points.begin(), answer.points.end(), [&](const AnswerPoint& a) {
+                return number(a.board->row, q.row_column) > 0;
             });
             if (drawn) figures.push_back(answer_figure(samples, answer, q, answers.size() > 1));
         }

@@ -131,7 +131,7 @@ TEST_F(CliSweepState, ADamagedRowAManifestGoneOrDamagedAndAChangedInputAreRefuse
     fs::remove(dir_ / "res" / "sweep.json");
     // Another grid would adopt the old rows: refused.
     expect_refusal(run("sweep --board adm-xrc-ii --set m=4,8 --set objects=20,40 --out res -q"),
-                   "cdvp sweep: --out: res holds fit.csv and 5 more but no sweep.json");
+                   "cdvp sweep: --out: res holds answer-energy.png and 9 more but no sweep.json");
     write("res/sweep.json", manifest);
     Rows table = rows("res");
     table[1].pop_back();

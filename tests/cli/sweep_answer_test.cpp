@@ -187,6 +187,19 @@ TEST(SweepAnswer, ItsFiguresDrawEachWinningConfigurationOnceTheSoftwareAndTheCro
     EXPECT_LT(longest * 7, static_cast<std::size_t>(time.width)) << time.title;
 }
 
+TEST(SweepAnswer, NoEnergyFigureWithoutEnergyOnALogAxisThatCannotHoldZero) {
+    SweepTable table = answer_table(kGrid);
+    table.for_each([&](std::size_t index, const RowView&) {
+        PointRow row = table.point_row(index);
+        row.values["mean_energy_j"] = "0";  // no --board: no power figures
+        table.add(index, row);
+    });
+    const FigurePlan plan = plan_figures(kGrid, table);
+    EXPECT_EQ(planned_file(plan, "answer-time.png").template_name, "answer");
+    for (const Figure& f : plan.figures) EXPECT_NE(f.file, "answer-energy.png") << "a figure gnuplot would refuse";
+    EXPECT_EQ(answer_rows(plan).size(), 4u) << "the answer is written all the same";
+}
+
 TEST(SweepAnswer, ItsShortFormHasALineAnNAndOneForTheCrossovers) {
     const FigurePlan plan = plan_figures(kGrid, answer_table(kGrid));
     std::vector<std::string> lines;
