@@ -105,9 +105,14 @@ Figure answer_figure(const Samples& samples, const SceneAnswer& answer, const Qu
     figure.y = log_y_axis(q.what + " a frame (" + unit + ")", figure.series);
     const AnswerCrossover& c = answer.*q.crossover;
     if (c.at.n > 0) figure.series.push_back(crossover_mark(answer, q, figure.y));
-    figure.title = q.what + " a frame against N" + (answer.scene.empty() ? "" : " on " + answer.scene) +
-                   ": the fastest board configurations and the fastest software (answer.md)\n" +
-                   (c.at.n > 0 || names.empty() ? "" : "the board is not " + q.winning + " from any N of the sweep on\n") +
+    const std::string on = answer.scene.empty() ? "" : " on " + answer.scene;
+    if (names.empty()) {
+        figure.title = q.what + " a frame against N" + on + ": the fastest board configurations (answer.md)\n" +
+                       "no software timed (no --baseline)\n" + board_words(points) + "; " + run_words(points);
+        return figure;
+    }
+    figure.title = q.what + " a frame against N" + on + ": the fastest board configurations and the fastest software (answer.md)\n" +
+                   (c.at.n > 0 ? "" : "the board is not " + q.winning + " from any N of the sweep on\n") +
                    board_words(points) + "; " + run_words(points) + "\n" + software_words(points, names);
     return figure;
 }

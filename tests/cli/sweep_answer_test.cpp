@@ -31,7 +31,8 @@ double dbvt_ns(double n) { return 100000 + 100 * n; }
 // A value as sweep.csv holds it, to 10 significant digits.
 std::string exact(double v) { return number_text(v); }
 
-SweepTable answer_table(const Grid& grid) {
+// The rows; without 'software', as a sweep without --baseline has them.
+SweepTable answer_table(const Grid& grid, bool software = true) {
     SweepTable table(grid);
     for (std::size_t k = 0; k < grid.size(); ++k) {
         PointRow row = failed_row(grid, grid.point(k), PointStatus::kOk, "", 0.5);
@@ -55,6 +56,7 @@ SweepTable answer_table(const Grid& grid) {
         r["mean_energy_j"] = exact(host_j + own_j);
         r["mean_energy_host_j"] = exact(host_j);
         for (const auto& [name, ns] : {std::pair{"sap", sap_ns(n)}, std::pair{"dbvt", dbvt_ns(n)}}) {
+            if (!software) break;
             const std::string b = name;
             r[b + "_mean_host_ns"] = exact(ns);
             r[b + "_speedup"] = exact(ns / board);
@@ -198,6 +200,19 @@ TEST(SweepAnswer, NoEnergyFigureWithoutEnergyOnALogAxisThatCannotHoldZero) {
     EXPECT_EQ(planned_file(plan, "answer-time.png").template_name, "answer");
     for (const Figure& f : plan.figures) EXPECT_NE(f.file, "answer-energy.png") << "a figure gnuplot would refuse";
     EXPECT_EQ(answer_rows(plan).size(), 4u) << "the answer is written all the same";
+}
+
+TEST(SweepAnswer, WithoutSoftwareItNamesTheFastestBoardAndSaysThereIsNothingToHoldItTo) {
+    const FigurePlan plan = plan_figures(kGrid, answer_table(kGrid, false));
+    const auto rows = answer_rows(plan);
+    ASSERT_EQ(rows.size(), 4u);
+    EXPECT_EQ(rows[3][2], "alveo-u250 all_pairs m=8 float32");
+    EXPECT_EQ(rows[3][10], "") << "no software";
+    EXPECT_NE(planned_file(plan, "answer.md").data.find("No software was timed (no --baseline)"), std::string::npos);
+    const Figure& time = planned_file(plan, "answer-time.png");
+    EXPECT_EQ(time.series.size(), 2u) << "the two configurations, no software and no crossover";
+    EXPECT_NE(time.title.find("no software timed (no --baseline)"), std::string::npos) << time.title;
+    EXPECT_EQ(time.title.find("software on the modelled host"), std::string::npos) << time.title;
 }
 
 TEST(SweepAnswer, ItsShortFormHasALineAnNAndOneForTheCrossovers) {
