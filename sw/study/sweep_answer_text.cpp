@@ -32,7 +32,7 @@ std::string cell(std::string text) {
     return text.empty() ? "-" : text;
 }
 
-// "software timing clean, every clock met" / "software timing disturbed, a clock beyond its Fmax"
+// "software timing clean, the board's clock met"
 std::string trust_words(const AnswerCrossover& c) {
     std::string words = "software timing " + c.software_timing;
     if (c.clock_met == "yes") return words + ", the board's clock met";
@@ -45,7 +45,7 @@ std::string n_words(const Crossover& c) {
     return (std::string(c.how) == "measured" ? "N <= " : "N ~ ") + short_number(c.n);
 }
 
-// "faster from N ~ 142 (interpolated)", "faster nowhere from an N of the sweep on"
+// "faster from N ~ 142 (interpolated) on", "faster from no N of the sweep on"
 std::string from_words(const std::string& winning, const Crossover& c) {
     return c.n == 0 ? winning + " from no N of the sweep on" : winning + " from " + crossover_words(c) + " on";
 }
@@ -85,23 +85,27 @@ std::string largest_sentence(const AnswerPoint& a) {
     return words + ".";
 }
 
-// The N whose software timing was disturbed, and what would help.
-std::string disturbed_sentence(const SceneAnswer& answer) {
+// The N of the scene's answers that `has`: "500, 2000"; empty for none.
+template <class Has>
+std::string ns_where(const SceneAnswer& answer, Has has) {
     std::string ns;
     for (const AnswerPoint& a : answer.points) {
-        if (a.software_timing == "disturbed") ns += (ns.empty() ? "" : ", ") + num(a.n);
+        if (has(a)) ns += (ns.empty() ? "" : ", ") + num(a.n);
     }
-    if (ns.empty()) return "";
-    return " The software's timing was disturbed at N = " + ns +
-           " (docs/timing.md): a quieter machine, --pin-cpu or more --repeat would firm it up.";
+    return ns;
+}
+
+// The N whose software timing was disturbed, and what would help.
+std::string disturbed_sentence(const SceneAnswer& answer) {
+    const std::string ns = ns_where(answer, [](const AnswerPoint& a) { return a.software_timing == "disturbed"; });
+    return ns.empty() ? "" : " The software's timing was disturbed at N = " + ns +
+                                 " (docs/timing.md): a quieter machine, --pin-cpu or more --repeat would firm it up.";
 }
 
 std::string clock_sentence(const SceneAnswer& answer) {
-    std::string ns;
-    for (const AnswerPoint& a : answer.points) {
-        if (a.clock_met == "no") ns += (ns.empty() ? "" : ", ") + num(a.n);
-    }
-    return ns.empty() ? "" : " At N = " + ns + " the fastest configuration's clock is beyond what its design reaches (its times are optimistic).";
+    const std::string ns = ns_where(answer, [](const AnswerPoint& a) { return a.clock_met == "no"; });
+    return ns.empty() ? "" : " At N = " + ns + " the fastest configuration's clock is beyond what its design " +
+                                 "reaches (its times are optimistic).";
 }
 
 }  // namespace
