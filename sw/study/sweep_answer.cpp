@@ -98,7 +98,7 @@ template <class Ratio>
 AnswerCrossover crossover_of(const std::vector<AnswerPoint>& points, Ratio ratio) {
     std::vector<std::pair<double, double>> ratios;
     for (const AnswerPoint& a : points) {
-        if (!std::isnan(ratio(a))) ratios.push_back({a.n, ratio(a)});
+        if (ratio(a) > 0) ratios.push_back({a.n, ratio(a)});  // interpolated in its logarithm
     }
     AnswerCrossover c;
     c.at = lasting_crossover(ratios);
