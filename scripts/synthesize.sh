@@ -175,6 +175,32 @@ board_params() {
         "-set FIFO_DISTRIBUTED ${BOARD_FIFO_DISTRIBUTED:-0}"
 }
 
+# The grid board's Verilog files (grid_board_top and every piece): the seed's
+# host side and lanes with the grid blocks.
+grid_board_sources() {
+    echo "$root/models/board/rtl/grid_board_top.v $root/models/board/rtl/board_host.v $root/models/board/rtl/board_ram.v" \
+        "$root/models/comparison_unit/rtl/float_le.v $root/models/comparison_unit/rtl/compare_lane.v" \
+        "$root/models/pair_collector/rtl/pair_collector.v $root/models/control_registers/rtl/board_control.v" \
+        "$root/models/grid_clocked_engine/rtl/grid_sequencer.v $root/models/cell_memory/rtl/grid_cell_memory.v" \
+        "$root/models/cell_memory/rtl/cell_loader.v $root/models/cell_memory/rtl/cell_buffer.v" \
+        "$root/models/grid_binning/rtl/grid_cell_function.v $root/models/grid_binning/rtl/grid_float_add.v" \
+        "$root/models/grid_binning/rtl/grid_code_float.v $root/models/grid_binning/rtl/grid_float_divide.v" \
+        "$root/models/grid_schedule/rtl/home_cell_filter.v"
+}
+
+# The grid board's chparam arguments: M FORMAT, with board_params' memories
+# and compare latency (its pair FIFO is always in block RAM), the SSRAM's read
+# latency from BOARD_SSRAM_LATENCY (default 2: the paper's board) and the
+# grid as the settings build it by default (automatic dims and cell size, 512
+# boxes a cell, 8 cells a box, 4,096 cell entries).
+grid_board_params() {
+    local format
+    format=$(format_params "$2")
+    echo "$format -set M $1 -set AW ${BOARD_ADDRESS_BITS:-9} -set FIFO_DEPTH $fifo_depth" \
+        "-set BUFFER_DEPTH ${BOARD_BUFFER_DEPTH:-512} -set COMPARE_LATENCY ${BOARD_COMPARE_LATENCY:-2}" \
+        "-set LAT ${BOARD_SSRAM_LATENCY:-2}"
+}
+
 # The whole board: FAMILY M FORMAT.
 board_row() {
     local family=$1 m=$2 format=${3:-float32} params sources

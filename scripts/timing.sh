@@ -19,11 +19,24 @@
 #                                      re-derives those rows and compares them with the stored ones
 #   scripts/timing.sh --path FAMILY PIECE FORMAT M LATENCY GRADE
 #                                      sta's report of the critical path, to read
-#   scripts/timing.sh --board FAMILY GRADE M [FORMAT]
-#                                      the whole board (collision_board_top, with scripts/synthesize.sh
-#                                      --board's parameters and BOARD_* knobs) as one design: its longest path,
-#                                      across the pieces' boundaries (minutes at large m; a
-#                                      cross-check, not part of the table)
+#   scripts/timing.sh --board [BOARD] FAMILY GRADE M [FORMAT]
+#                                      the whole board as one design, sta's report of its longest
+#                                      path, across the pieces' boundaries (minutes at large m).
+#                                      BOARD all_pairs (default: collision_board_top, with
+#                                      scripts/synthesize.sh --board's parameters and BOARD_* knobs)
+#                                      or grid (grid_board_top: synthesize.sh's grid_board_params,
+#                                      BOARD_SSRAM_LATENCY its SSRAM's read latency, default 2)
+#   scripts/timing.sh --board-row BOARD FAMILY M [FORMAT]
+#                                      the whole board's rows of the whole-board table, one a speed
+#                                      grade (models/resources/whole_board_timing.csv: the clock's
+#                                      check beside the pieces'); keyed by its compare latency
+#                                      (BOARD_COMPARE_LATENCY), pair FIFO memory
+#                                      (BOARD_FIFO_DISTRIBUTED) and address bits (BOARD_ADDRESS_BITS)
+#   scripts/timing.sh --board-check BOARD FAMILY M [FORMAT]
+#                                      re-derives those rows and compares them with the stored ones
+#   scripts/timing.sh --board-table    every row of the whole-board table, in parallel (GNU parallel,
+#                                      SYNTH_JOBS at a time); CSV on stdout (tens of minutes a row at
+#                                      large m)
 #
 # Needs yosys (Debian: yosys 0.23) and, for the full table, GNU parallel.
 set -euo pipefail
@@ -38,6 +51,7 @@ timing_stored="$root/models/resources/timing.csv"
 arcs="$root/models/resources/timing_arcs.txt"
 delays="$root/models/resources/delays.csv"
 timing_header="family,piece,format,m,latency,speed_grade,path_ns,luts,carry_cells,wide_muxes,from,to"
+whole_board_stored="$root/models/resources/whole_board_timing.csv"
 latencies="0 1 2"   # compare stages; more only delay the AND (compare_lane.v)
 
 # Ports that meet a block RAM on the board (their other ports meet registers).
@@ -340,17 +354,91 @@ all_timing_rows() {
     done
 }
 
-# The whole board as one design: FAMILY GRADE M [FORMAT], its ports behind
-# registers (the host bus and SSRAM interfaces).
+# The whole board's design: BOARD M FORMAT sets 'top', 'sources' and 'params'.
+board_design() {
+    case $1 in
+        all_pairs) top=collision_board_top; sources=$(board_sources); params=$(board_params "$2" "$3") ;;
+        grid) top=grid_board_top; sources=$(grid_board_sources); params=$(grid_board_params "$2" "$3") ;;
+        *) die "the board is all_pairs or grid, not '$1'" ;;
+    esac
+}
+
+# The whole board as one design, synthesised into DIR: BOARD FAMILY M FORMAT,
+# its ports behind registers (the host bus and SSRAM interfaces).
+prepare_board() {
+    local dir=$1 board=$2 family=$3 m=$4 format=$5 top sources params
+    board_design "$board" "$m" "$format"
+    prepare "$dir" "$family" "$top" "$sources" "$params" "" ""
+}
+
+# sta's report of the whole board's longest path: [BOARD] FAMILY GRADE M [FORMAT].
 board_timing() {
-    local family=$1 grade=$2 m=$3 format=${4:-float32} dir params sources
-    params=$(board_params "$m" "$format")
-    sources=$(board_sources)
+    local board=all_pairs dir
+    [[ $1 == all_pairs || $1 == grid ]] && { board=$1; shift; }
+    [[ $# -eq 3 || $# -eq 4 ]] || die "--board needs [BOARD] FAMILY GRADE M [FORMAT]"
     dir=$(mktemp -d)
     # shellcheck disable=SC2064
     trap "rm -rf '$dir'" RETURN
-    prepare "$dir" "$family" collision_board_top "$sources" "$params" "" ""
-    analyse "$dir" "$family" "$grade" constants | sed -n '/^Latest arrival/,/^Arrival histogram/p' | sed '$d'
+    prepare_board "$dir" "$board" "$1" "$3" "${4:-float32}"
+    analyse "$dir" "$1" "$2" constants | sed -n '/^Latest arrival/,/^Arrival histogram/p' | sed '$d'
+}
+
+# The whole board's rows: BOARD FAMILY M [FORMAT], one a speed grade, in the
+# whole-board table's columns. The pair buffer is the table's (512 pairs on
+# chip: its rows say nothing of another).
+board_rows() {
+    local board=$1 family=$2 m=$3 format=${4:-float32} dir grade fields fifo=block_ram
+    [[ ${BOARD_BUFFER_DEPTH:-512} == 512 ]] || die "the whole-board table's rows have a pair buffer of 512 pairs, not BOARD_BUFFER_DEPTH=$BOARD_BUFFER_DEPTH"
+    if [[ ${BOARD_FIFO_DISTRIBUTED:-0} != 0 ]]; then
+        [[ $board == all_pairs ]] || die "the grid board's pair FIFO is in block RAM (BOARD_FIFO_DISTRIBUTED=$BOARD_FIFO_DISTRIBUTED)"
+        fifo=distributed
+    fi
+    dir=$(mktemp -d)
+    # shellcheck disable=SC2064
+    trap "rm -rf '$dir'" RETURN
+    prepare_board "$dir" "$board" "$family" "$m" "$format"
+    for grade in $(speed_grades "$family"); do
+        fields=$(analyse "$dir" "$family" "$grade" constants | path_fields)
+        echo "$family,$board,$format,$m,${BOARD_COMPARE_LATENCY:-2},$fifo,${BOARD_ADDRESS_BITS:-9},$grade,$fields"
+    done
+}
+
+# The whole-board table's syntheses: BOARD FAMILY M FORMAT FIFO_DISTRIBUTED.
+# float32 and fixed16 at m = 1 and the presets' default m = 8, and at the
+# largest m that fits 500 boxes (cdvp run's fit line): on the paper's
+# XC2V6000 24 in float32, its pair FIFO in LUTs (the boxes take every block
+# RAM), and 32 in fixed16; 32 on the UltraScale+ presets.
+all_board_rows() {
+    local format family
+    for format in float32 fixed16; do
+        for family in $families; do
+            echo "all_pairs $family 1 $format 0"
+            echo "all_pairs $family 8 $format 0"
+        done
+    done
+    echo "all_pairs xc2v 24 float32 1"
+    echo "all_pairs xc2v 32 fixed16 0"
+    echo "all_pairs xcup 32 float32 0"
+    echo "all_pairs xcup 32 fixed16 0"
+}
+
+# One whole-board synthesis's rows: BOARD FAMILY M FORMAT FIFO_DISTRIBUTED.
+board_rows_with_fifo() {
+    BOARD_FIFO_DISTRIBUTED=$5 board_rows "$1" "$2" "$3" "$4"
+}
+
+# Re-derived rows FRESH against the rows of STORED starting with KEY: printed
+# when the same, else both shown and exit 1.
+same_as_stored() {
+    local key=$1 stored=$2 fresh=$3 kept
+    kept=$(grep -F "$key," "$stored") || die "$stored: no rows for $key"
+    if [[ $fresh != "$kept" ]]; then
+        echo "timing.sh: $key differs from $stored" >&2
+        echo "  stored:" >&2; sed 's/^/    /' <<<"$kept" >&2
+        echo "  derived:" >&2; sed 's/^/    /' <<<"$fresh" >&2
+        exit 1
+    fi
+    echo "$fresh"
 }
 
 [[ ${BASH_SOURCE[0]} == "$0" ]] || return 0
@@ -363,18 +451,26 @@ case "${1:-}" in
         dir=$(mktemp -d); trap 'rm -rf "$dir"' EXIT
         prepare "$dir" "$1" "$2" "$sources" "$params" "$(from_ram_ports "$2")" "$(to_ram_ports "$2")" "$black_boxes"
         analyse "$dir" "$1" "$6" "$constants" | sed -n '/^Latest arrival/,/^Arrival histogram/p' | sed '$d' ;;
-    --board) shift; [[ $# -eq 3 || $# -eq 4 ]] || die "--board needs FAMILY GRADE M [FORMAT]"; board_timing "$@" ;;
+    --board) shift; board_timing "$@" ;;
+    --board-row) shift; [[ $# -eq 3 || $# -eq 4 ]] || die "--board-row needs BOARD FAMILY M [FORMAT]"; board_rows "$@" ;;
+    --board-check)
+        shift; [[ $# -eq 3 || $# -eq 4 ]] || die "--board-check needs BOARD FAMILY M [FORMAT]"
+        fresh=$(board_rows "$@")
+        same_as_stored "$(cut -d, -f1-7 <<<"$fresh" | head -n 1)" "$whole_board_stored" "$fresh" ;;
     --check)
         shift; [[ $# -eq 5 ]] || die "--check needs FAMILY PIECE FORMAT M LATENCY"
         fresh=$(timing_rows "$@")
-        kept=$(grep -F "$1,$2,$3,$4,$5," "$timing_stored") || die "$timing_stored: no rows for $1,$2,$3,$4,$5"
-        if [[ $fresh != "$kept" ]]; then
-            echo "timing.sh: $1,$2,$3,$4,$5 differs from $timing_stored" >&2
-            echo "  stored:" >&2; sed 's/^/    /' <<<"$kept" >&2
-            echo "  derived:" >&2; sed 's/^/    /' <<<"$fresh" >&2
-            exit 1
-        fi
-        echo "$fresh" ;;
+        same_as_stored "$1,$2,$3,$4,$5" "$timing_stored" "$fresh" ;;
+    --board-table)
+        TIMING_CELLS_DIR=$(mktemp -d)
+        trap 'rm -rf "$TIMING_CELLS_DIR"' EXIT
+        for family in $families; do family_cells "$family" "$TIMING_CELLS_DIR/$family.v"; done
+        export -f board_rows_with_fifo board_rows prepare_board board_design board_sources board_params grid_board_sources \
+            grid_board_params format_params prepare analyse path_fields harness strip_parameters timing_cells \
+            family_cells delay_flags speed_grades die
+        export root fifo_depth arcs delays TIMING_CELLS_DIR
+        head -n 1 "$whole_board_stored"
+        all_board_rows | parallel --keep-order --jobs "${SYNTH_JOBS:-100%}" --colsep ' ' board_rows_with_fifo {1} {2} {3} {4} {5} ;;
     "")
         TIMING_CELLS_DIR=$(mktemp -d)
         trap 'rm -rf "$TIMING_CELLS_DIR"' EXIT
