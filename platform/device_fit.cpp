@@ -15,6 +15,7 @@
 
 #include "models/common/number_text.h"
 #include "models/common/user_text.h"
+#include "models/resources/whole_board_timing.h"
 #include "platform/memory_plan.h"
 
 namespace cdvp {
@@ -91,6 +92,13 @@ std::string with_unit(double value, int decimals, const char* unit) {
 std::string megahertz(double mhz) { return with_unit(mhz, 1, "MHz"); }
 std::string nanoseconds(double ns) { return with_unit(ns, 2, "ns"); }
 
+// The bits a box index takes on a board of `capacity` boxes (at least 1).
+uint32_t address_bits_for(uint64_t capacity) {
+    uint32_t bits = 1;
+    while (bits < 64 && (uint64_t{1} << bits) < capacity) ++bits;
+    return bits;
+}
+
 BoardTiming timing_of(const Settings& settings, uint64_t capacity, uint32_t grade, FifoMemory fifo_memory) {
     const BoardConfig board = planned_board(settings, capacity);
     TimedBoard timed;
@@ -100,9 +108,10 @@ BoardTiming timing_of(const Settings& settings, uint64_t capacity, uint32_t grad
     timed.m = board.m;
     timed.compare_latency = board.compare.latency_cycles;
     timed.fifo_memory = fifo_memory;
+    timed.address_bits = address_bits_for(capacity);
     timed.tiled = board.tiles.tiled();
     timed.grid = board.grid_board();
-    return board_timing(TimingTable::stored(), timed);
+    return board_timing(TimingTable::stored(), WholeBoardTable::stored(), timed);
 }
 
 }  // namespace
@@ -152,9 +161,10 @@ std::optional<std::string> check_clock(const SettingValues& values, uint64_t cap
     } catch (const std::invalid_argument& e) {
         throw InputError(values.where(*find_setting("device.name")) + ": " + e.what());
     }
-    // The pieces the clock is held to need no resource costs: where the FIFO
-    // lives only picks its own row, which is reported, not held to.
-    const BoardTiming timing = timing_of(settings, capacity, grade.grade, FifoMemory::kBlockRam);
+    // Where the pair FIFO lives (block RAM, or LUTs when the boxes leave it
+    // none) picks its row and the whole board's: the fit's costs decide it.
+    const DeviceFit fit = fit_on_device(settings, capacity);
+    const BoardTiming& timing = fit.timing;
     const double clock = settings.board.clock_mhz, fmax = timing.fmax_mhz();
     if (clock <= fmax) return std::nullopt;
     const PieceTiming& limit = timing.limiting();
@@ -167,32 +177,43 @@ std::optional<std::string> check_clock(const SettingValues& values, uint64_t cap
                              name_of(settings.device.family) + ")";
     const std::string ignore = values.names().setting_to(*find_setting("run.ignore_timing"), "yes");
     if (!settings.run.ignore_timing) throw InputError(line + "; " + ignore + " runs it anyway");
-    return "warning: " + line + "; running it anyway (" + ignore + ")";
+    return line + "; running it anyway (" + ignore + ")";
 }
 
 nlohmann::json timing_json(const DeviceFit& fit) {
+    const BoardTiming& timing = fit.timing;
     nlohmann::json pieces = nlohmann::json::object();
-    for (const PieceTiming& piece : fit.timing.pieces) {
-        const PathDelay& p = piece.path;
-        pieces[piece.key] = {{"piece", piece.piece},
-                             {"holds_clock", piece.holds_clock},
-                             {"path_ns", p.ns},
-                             {"fmax_mhz", p.fmax_mhz()},
-                             {"luts", p.luts},
-                             {"carry_cells", p.carry_cells},
-                             {"wide_muxes", p.wide_muxes},
-                             {"from", p.from},
-                             {"to", p.to}};
+    nlohmann::json awaiting = nlohmann::json::array();
+    for (const auto* list : {&timing.pieces, &timing.awaiting_pipelining}) {
+        for (const PieceTiming& piece : *list) {
+            const PathDelay& p = piece.path;
+            pieces[piece.key] = {{"piece", piece.piece},
+                                 {"path_ns", p.ns},
+                                 {"fmax_mhz", p.fmax_mhz()},
+                                 {"luts", p.luts},
+                                 {"carry_cells", p.carry_cells},
+                                 {"wide_muxes", p.wide_muxes},
+                                 {"from", p.from},
+                                 {"to", p.to}};
+            if (list == &timing.awaiting_pipelining) awaiting.push_back(piece.key);
+        }
     }
-    return {{"speed_grade", fit.speed_grade.grade},
-            {"speed_grade_from", fit.speed_grade.named ? "device name" : "the family's slowest (not in the name)"},
-            {"fmax_mhz", fit.timing.fmax_mhz()},
-            {"limited_by", fit.timing.limiting().piece},
-            {"as_written_fmax_mhz", fit.timing.slowest().path.fmax_mhz()},
-            {"as_written_limited_by", fit.timing.slowest().piece},
-            {"clock_mhz", fit.clock_mhz},
-            {"meets_clock", fit.clock_mhz <= fit.timing.fmax_mhz()},
-            {"pieces", pieces}};
+    nlohmann::json json = {
+        {"speed_grade", fit.speed_grade.grade},
+        {"speed_grade_from", fit.speed_grade.named ? "device name" : "the family's slowest (not in the name)"},
+        {"fmax_mhz", timing.fmax_mhz()},
+        {"limited_by", timing.limiting().piece},
+        {"fmax_from", timing.whole_board_missing.empty()
+                          ? "every piece and the whole board as one design"
+                          : "the pieces alone: " + timing.whole_board_missing},
+        {"as_written_fmax_mhz", timing.slowest().path.fmax_mhz()},
+        {"as_written_limited_by", timing.slowest().piece},
+        {"clock_mhz", fit.clock_mhz},
+        {"meets_clock", fit.clock_mhz <= timing.fmax_mhz()},
+        {"pieces", pieces}};
+    // Only while kGridPiecesAwaitPipelining leaves pieces out of the Fmax.
+    if (!awaiting.empty()) json["awaiting_pipelining"] = awaiting;
+    return json;
 }
 
 std::string timing_summary(const DeviceFit& fit) {
@@ -202,6 +223,7 @@ std::string timing_summary(const DeviceFit& fit) {
     std::string text = "Fmax about " + fmax_text + " MHz at speed grade -" + std::to_string(fit.speed_grade.grade) +
                        " (its " + limit.piece + ", " + nanoseconds(limit.path.ns) + ")";
     if (fit.clock_mhz > fit.timing.fmax_mhz()) text += ", below the " + clock_text + " MHz clock";
+    if (!fit.timing.whole_board_missing.empty()) text += "; from the pieces alone: " + fit.timing.whole_board_missing;
     if (&slowest != &limit) text += "; its " + slowest.piece + " as written: " + megahertz(slowest.path.fmax_mhz());
     return text;
 }

@@ -44,17 +44,19 @@ bool has_device_family(const Settings& settings);
 // tiles); only with has_device_family(settings).
 DeviceFit fit_on_device(const Settings& settings, uint64_t capacity);
 
-// The board clock against the estimated Fmax of the fit: a clock beyond it
-// is refused in one line naming where the clock came from, the estimate and
-// the piece that limits it; with run.ignore_timing that line is returned as
-// a warning instead and the run goes on. Nothing without a device family.
-// Throws InputError (also for a speed grade the timing table lacks).
+// The board clock against the estimated Fmax of the fit (every piece and the
+// whole board as one design): a clock beyond it is refused in one line naming
+// where the clock came from, the estimate and the piece or path that limits
+// it; with run.ignore_timing that line is returned instead (the run's
+// warning, for its summary, report and sweep row) and the run goes on.
+// Nothing without a device family. Throws InputError (also for a speed grade
+// the timing table lacks).
 std::optional<std::string> check_clock(const SettingValues& values, uint64_t capacity);
 
 // The fit's timing for the run report (config.resources.timing) and for the
-// fit line cdvp run prints ("Fmax about 98.5 MHz at speed grade -4 (its float32
-// comparison lane at compare latency 2, 10.15 ns); its pair FIFO in block RAM
-// as written: 57.0 MHz").
+// fit line cdvp run prints ("Fmax about 71.4 MHz at speed grade -4 (its whole
+// board as one design (...), 14.01 ns)"; on a board with no whole-board row
+// "...; from the pieces alone: no whole-board timing of ...").
 nlohmann::json timing_json(const DeviceFit& fit);
 std::string timing_summary(const DeviceFit& fit);
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "models/resources/table_fields.h"
+#include "models/resources/whole_board_timing.h"
 
 namespace cdvp {
 
@@ -36,22 +37,31 @@ std::string grade_text(uint32_t speed_grade) { return "speed grade -" + std::to_
 
 }  // namespace
 
+PathDelay path_delay_of(const std::vector<std::string>& fields, std::size_t first, const std::string& where) {
+    PathDelay path;
+    path.ns = path_ns(fields.at(first), where);
+    path.luts = static_cast<uint32_t>(table_count(fields.at(first + 1), where, "luts"));
+    path.carry_cells = static_cast<uint32_t>(table_count(fields.at(first + 2), where, "carry_cells"));
+    path.wide_muxes = static_cast<uint32_t>(table_count(fields.at(first + 3), where, "wide_muxes"));
+    path.from = endpoint(fields.at(first + 4), where, "from");
+    path.to = endpoint(fields.at(first + 5), where, "to");
+    return path;
+}
+
+uint32_t speed_grade_field(const std::string& text, const std::string& where) {
+    const auto grade = static_cast<uint32_t>(table_count(text, where, "speed_grade"));
+    if (grade == 0) throw std::invalid_argument(where + ": speed_grade: expected a grade, got '" + text + "'");
+    return grade;
+}
+
 TimingTable TimingTable::parse(const std::string& csv, const std::string& origin) {
     TimingTable table;
     read_table(csv, origin, kTimingTableHeader, [&](const std::vector<std::string>& f, const std::string& where) {
         Row row;
         static_cast<TableRowKey&>(row) = table_row_key(f, where);
         row.latency = static_cast<uint32_t>(table_count(f[4], where, "latency"));
-        row.speed_grade = static_cast<uint32_t>(table_count(f[5], where, "speed_grade"));
-        if (row.speed_grade == 0) {
-            throw std::invalid_argument(where + ": speed_grade: expected a grade, got '" + f[5] + "'");
-        }
-        row.path.ns = path_ns(f[6], where);
-        row.path.luts = static_cast<uint32_t>(table_count(f[7], where, "luts"));
-        row.path.carry_cells = static_cast<uint32_t>(table_count(f[8], where, "carry_cells"));
-        row.path.wide_muxes = static_cast<uint32_t>(table_count(f[9], where, "wide_muxes"));
-        row.path.from = endpoint(f[10], where, "from");
-        row.path.to = endpoint(f[11], where, "to");
+        row.speed_grade = speed_grade_field(f[5], where);
+        row.path = path_delay_of(f, 6, where);
         table.rows_.push_back(row);
     });
     for (std::size_t k = 0; k < table.rows_.size(); ++k) {
@@ -172,24 +182,35 @@ std::vector<uint32_t> TimingTable::speed_grades(const std::string& family) const
 
 namespace {
 
-const PieceTiming& slowest_of(const std::vector<PieceTiming>& pieces, bool held_only) {
-    const PieceTiming* slowest = nullptr;
+const PieceTiming* slowest_of(const std::vector<PieceTiming>& pieces, const PieceTiming* slowest = nullptr) {
     for (const PieceTiming& piece : pieces) {
-        if ((piece.holds_clock || !held_only) && (slowest == nullptr || piece.path.ns > slowest->path.ns)) {
-            slowest = &piece;
-        }
+        if (slowest == nullptr || piece.path.ns > slowest->path.ns) slowest = &piece;
     }
-    if (slowest == nullptr) throw std::logic_error("a board's timing without a piece its clock is held to");
-    return *slowest;
+    return slowest;
+}
+
+// The whole board's piece: its path's ends and depth name it.
+std::string whole_board_piece(const PathDelay& path) {
+    const auto count = [](uint32_t n, const char* what) { return std::to_string(n) + " " + what; };
+    const auto end = [](const std::string& kind) {
+        return kind == "block_ram" ? "block RAM" : kind == "lut_ram" ? "LUT RAM" : "flip-flop";
+    };
+    return "whole board as one design (longest path: " + std::string(end(path.from)) + " to " + end(path.to) +
+           " through " + count(path.luts, "LUTs") + ", " + count(path.carry_cells, "carry cells") + " and " +
+           count(path.wide_muxes, "wide multiplexers") + ")";
 }
 
 }  // namespace
 
-const PieceTiming& BoardTiming::limiting() const { return slowest_of(pieces, true); }
+const PieceTiming& BoardTiming::limiting() const {
+    const PieceTiming* slowest = slowest_of(pieces);
+    if (slowest == nullptr) throw std::logic_error("a board's timing without a piece its clock is held to");
+    return *slowest;
+}
 
-const PieceTiming& BoardTiming::slowest() const { return slowest_of(pieces, false); }
+const PieceTiming& BoardTiming::slowest() const { return *slowest_of(awaiting_pipelining, &limiting()); }
 
-BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
+BoardTiming board_timing(const TimingTable& table, const WholeBoardTable& whole, const TimedBoard& board) {
     const std::string& family = board.family;
     const uint32_t grade = board.speed_grade;
     const std::string lane = board.format + " comparison lane at compare latency " +
@@ -197,21 +218,22 @@ BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
     const std::string fifo = board.fifo_memory == FifoMemory::kBlockRam ? "pair FIFO in block RAM" : "pair FIFO in LUTs";
     BoardTiming timing;
     timing.speed_grade = grade;
+    // The grid board's pieces written to the model's slots, not to a clock,
+    // and so the grid board's whole path, while they are being pipelined.
+    std::vector<PieceTiming>& grid_pieces = kGridPiecesAwaitPipelining ? timing.awaiting_pipelining : timing.pieces;
     timing.pieces.push_back({"lane", lane, table.lane(family, grade, board.format, board.compare_latency)});
     if (board.grid) {
-        // Written to the model's slots, not to a clock (docs/grid_board.md),
-        // so reported, not held to: the cell-function unit's binary32 adder is
-        // one of its four stages (GridConfig::kCellFunctionSlots), the
-        // sequencer's setup divider and bounds adders one step a slot, and the
-        // one-cell filter sits between the lanes' hit registers and the pair
-        // FIFO with no register of its own (it lengthens the FIFO's path).
-        timing.pieces.push_back({"cell_function", board.format + " cell-function unit",
-                                 table.cell_function(family, grade, board.format), false});
+        // The cell-function unit's binary32 adder is one of its four stages
+        // (GridConfig::kCellFunctionSlots), the sequencer's setup divider and
+        // bounds adders one step a slot, and the one-cell filter sits between
+        // the lanes' hit registers and the pair FIFO with no register of its own.
+        grid_pieces.push_back({"cell_function", board.format + " cell-function unit",
+                               table.cell_function(family, grade, board.format)});
         timing.pieces.push_back({"cell_loader", board.format + " cell loader",
                                  table.cell_loader(family, grade, board.format)});
-        timing.pieces.push_back({"sequencer", "binning sequencer", table.grid_sequencer(family, grade), false});
-        timing.pieces.push_back({"one_cell_filter", "one-cell filter in front of the pair FIFO",
-                                 table.home_cell_filter(family, grade, board.m), false});
+        grid_pieces.push_back({"sequencer", "binning sequencer", table.grid_sequencer(family, grade)});
+        grid_pieces.push_back({"one_cell_filter", "one-cell filter in front of the pair FIFO",
+                               table.home_cell_filter(family, grade, board.m)});
     } else if (board.tiled) {
         timing.pieces.push_back({"tile_walker", "tile walker", table.tile_walker(family, grade, board.m)});
     } else {
@@ -221,12 +243,17 @@ BoardTiming board_timing(const TimingTable& table, const TimedBoard& board) {
     // Lanes of compare latency 2 or more give the FIFO their hits' count a
     // cycle ahead; the grid board's pass through the one-cell filter first.
     const bool counted_ahead = !board.grid && board.compare_latency >= 2;
-    const PathDelay collector =
-        table.pair_collector(family, grade, board.m, fifo_memory_name(board.fifo_memory), counted_ahead);
-    // The seed's board holds its clock to the FIFO; the grid board's FIFO is
-    // reported with the one-cell filter that lengthens its path.
-    timing.pieces.push_back({"pair_fifo", fifo, collector, !board.grid});
+    timing.pieces.push_back({"pair_fifo", fifo,
+                             table.pair_collector(family, grade, board.m, fifo_memory_name(board.fifo_memory),
+                                                  counted_ahead)});
     timing.pieces.push_back({"controller", "controller", table.control(family, grade)});
+    const WholeBoardPath whole_path = whole.path(board);
+    if (whole_path.path) {
+        (board.grid ? grid_pieces : timing.pieces)
+            .push_back({"whole_board", whole_board_piece(*whole_path.path), *whole_path.path});
+    } else {
+        timing.whole_board_missing = whole_path.missing;
+    }
     return timing;
 }
 

@@ -6,7 +6,8 @@
 // synthesised with Yosys and its longest register-to-register path found by
 // Yosys's static timing analysis with the family's cell delays at each speed
 // grade (scripts/timing.sh; rows in timing.csv, compiled into cdvp). A board
-// runs no faster than its slowest piece (of those its clock is held to).
+// runs no faster than its slowest piece, nor than the whole board timed as one
+// design (whole_board_timing.h).
 #pragma once
 
 #include <cstdint>
@@ -21,6 +22,8 @@
 
 namespace cdvp {
 
+class WholeBoardTable;
+
 // One piece's longest register-to-register path.
 struct PathDelay {
     double ns = 0;
@@ -32,6 +35,12 @@ struct PathDelay {
     std::string from, to;
     double fmax_mhz() const { return 1e3 / ns; }
 };
+
+// A table row's path columns (path_ns, luts, carry_cells, wide_muxes, from,
+// to) from fields[first] on, and its speed grade column (a grade, not '-').
+// 'where' ("ORIGIN:LINE") names the row in errors. Throw std::invalid_argument.
+PathDelay path_delay_of(const std::vector<std::string>& fields, std::size_t first, const std::string& where);
+uint32_t speed_grade_field(const std::string& text, const std::string& where);
 
 // The timing table: rows keyed by family, piece, format, compare latency and
 // speed grade, at each m for the pieces that grow with it.
@@ -88,28 +97,39 @@ private:
     std::map<std::string, std::vector<uint32_t>, std::less<>> grades_;  // ascending, by family
 };
 
-// A board's pieces with their paths, as the timing table gives them.
+// A piece of a board (or the whole board as one design) with its longest path.
 struct PieceTiming {
     // lane, address_generator or tile_walker, pair_fifo, controller; on the
-    // grid board cell_function, cell_loader, one_cell_filter, sequencer
+    // grid board cell_function, cell_loader, one_cell_filter, sequencer; and
+    // whole_board, the board synthesised as one design
     std::string key;
     std::string piece;  // "float32 comparison lane at compare latency 2", "pair FIFO in block RAM", ...
     PathDelay path;
-    // Whether the board's clock is held to this piece. The grid board's
-    // cell-function unit (its adder one of the model's four stages), one-cell
-    // filter (combinational in front of the pair FIFO, so the FIFO with it)
-    // and binning sequencer (its setup divider and bounds adders one step a
-    // slot) are written to the model's slots, not to a clock: their paths are
-    // reported, not held to (docs/grid_board.md).
-    bool holds_clock = true;
 };
+
+// TEMPORARY, while the grid board's cell-function unit, one-cell filter and
+// binning sequencer are pipelined for the clock (they are written to the
+// model's slots, not to a clock: docs/grid_board.md, "Timing"): their paths,
+// and the grid board's whole-board path that runs through them, are reported
+// but the clock is not held to them. Set it to false once they are
+// pipelined; BoardTiming::awaiting_pipelining is then always empty and goes
+// with this constant.
+constexpr bool kGridPiecesAwaitPipelining = true;
+
 struct BoardTiming {
     uint32_t speed_grade = 0;
+    // Every piece the clock is held to, the whole board among them when its
+    // row is stored.
     std::vector<PieceTiming> pieces;
+    // Reported, not held to (kGridPiecesAwaitPipelining).
+    std::vector<PieceTiming> awaiting_pipelining;
+    // Why the whole board is not among the pieces (no row stored for it):
+    // the Fmax is then the pieces' alone. Empty when it is.
+    std::string whole_board_missing;
     // The slowest piece the clock is held to: it sets the board's Fmax.
     const PieceTiming& limiting() const;
     double fmax_mhz() const { return limiting().path.fmax_mhz(); }
-    // The slowest piece of all, as the RTL is written.
+    // The slowest of all, those awaiting pipelining included.
     const PieceTiming& slowest() const;
 };
 
@@ -123,7 +143,10 @@ struct TimedBoard {
     FifoMemory fifo_memory = FifoMemory::kBlockRam;  // BoardResources::pair_fifo_memory
     bool tiled = false;        // boxes in SSRAM tiles: the tile walker, not the address generator
     bool grid = false;         // the grid board: its sequencer, loader and cell-function units instead
+    uint32_t address_bits = 9; // the box indices' width: the board holds 2^address_bits boxes at most
 };
-BoardTiming board_timing(const TimingTable& table, const TimedBoard& board);
+// The board's pieces from the piece table and the whole board from the
+// whole-board table (whole_board_timing.h), when it has the board's row.
+BoardTiming board_timing(const TimingTable& table, const WholeBoardTable& whole, const TimedBoard& board);
 
 }  // namespace cdvp

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "models/board_spec/board_config.h"
+#include "models/resources/whole_board_timing.h"
 
 namespace cdvp {
 namespace {
@@ -61,6 +62,22 @@ TimingTable grid_timing_table(double loader_ns) {
                       "xc2v,cell_loader,fixed24,-,-,4,7.5,4,20,0,flip_flop,block_ram\n"
                       "xc2v,grid_sequencer,float32,8,-,4,40.0,30,50,4,flip_flop,flip_flop\n";
     return TimingTable::parse(csv, "grid.csv");
+}
+
+// A board's pieces alone: no whole-board row (whole_board_timing_test.cpp has them).
+BoardTiming pieces_timing(const TimingTable& table, const TimedBoard& board) {
+    static const WholeBoardTable none = WholeBoardTable::parse(
+        "family,board,format,m,latency,fifo,address_bits,speed_grade,path_ns,luts,carry_cells,wide_muxes,from,to\n",
+        "none.csv");
+    return board_timing(table, none, board);
+}
+
+// A piece of the timing by its key; null when it has none.
+const PieceTiming* piece_of(const std::vector<PieceTiming>& pieces, const std::string& key) {
+    for (const PieceTiming& piece : pieces) {
+        if (piece.key == key) return &piece;
+    }
+    return nullptr;
 }
 
 std::string timing_parse_error(const std::string& csv) {
@@ -131,77 +148,94 @@ TEST(TimingTable, NamesWhatIsMissing) {
 TEST(BoardTiming, TheSlowestPieceSetsTheFmax) {
     const TimingTable table = small_timing_table();
     TimedBoard board{"xc2v", 4, "float32", 3, 2, FifoMemory::kBlockRam, false};
-    BoardTiming timing = board_timing(table, board);
+    BoardTiming timing = pieces_timing(table, board);
     ASSERT_EQ(timing.pieces.size(), 4u);
     // The pair FIFO (10.5 ns, its hits counted a cycle ahead at compare
     // latency 2) limits, above the lane (9 ns): every piece holds the clock.
-    for (const PieceTiming& piece : timing.pieces) EXPECT_TRUE(piece.holds_clock) << piece.piece;
+    EXPECT_TRUE(timing.awaiting_pipelining.empty());
+    EXPECT_NE(timing.whole_board_missing, "") << "no whole-board row: the pieces alone";
     EXPECT_EQ(timing.limiting().piece, "pair FIFO in block RAM");
     EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 10.5);
     EXPECT_EQ(&timing.slowest(), &timing.limiting());
     board.fifo_memory = FifoMemory::kDistributed;
-    EXPECT_EQ(board_timing(table, board).limiting().piece, "pair FIFO in LUTs");
-    EXPECT_DOUBLE_EQ(board_timing(table, board).limiting().path.ns, 13.5);
+    EXPECT_EQ(pieces_timing(table, board).limiting().piece, "pair FIFO in LUTs");
+    EXPECT_DOUBLE_EQ(pieces_timing(table, board).limiting().path.ns, 13.5);
     // At compare latency 0 the lane takes 12 ns, and the FIFO counts the
     // hits in their cycle (14 ns).
     board.compare_latency = 0;
-    EXPECT_DOUBLE_EQ(board_timing(table, board).limiting().path.ns, 14.0);
+    EXPECT_DOUBLE_EQ(pieces_timing(table, board).limiting().path.ns, 14.0);
     board.fifo_memory = FifoMemory::kBlockRam;
-    EXPECT_DOUBLE_EQ(board_timing(table, board).limiting().path.ns, 12.0);  // the lane, above the FIFO's 11
+    EXPECT_DOUBLE_EQ(pieces_timing(table, board).limiting().path.ns, 12.0);  // the lane, above the FIFO's 11
     board.compare_latency = 2;
     // Boxes in SSRAM tiles: the tile walker instead of the address generator,
     // held to the clock like it.
     board.tiled = true;
-    timing = board_timing(table, board);
+    timing = pieces_timing(table, board);
     EXPECT_EQ(timing.pieces[1].piece, "tile walker");
-    EXPECT_TRUE(timing.pieces[1].holds_clock);
     EXPECT_DOUBLE_EQ(timing.pieces[1].path.ns, 6.5);
     // Where the walker is the slowest (21 ns against the FIFO's 10), it sets
     // the Fmax; untiled, the address generator (20 ns) does.
-    timing = board_timing(grid_timing_table(6.0), board);
+    timing = pieces_timing(grid_timing_table(6.0), board);
     EXPECT_EQ(timing.limiting().piece, "tile walker");
     EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 21.0);
     board.tiled = false;
-    EXPECT_EQ(board_timing(grid_timing_table(6.0), board).limiting().piece, "address generator");
+    EXPECT_EQ(pieces_timing(grid_timing_table(6.0), board).limiting().piece, "address generator");
 }
 
 TEST(BoardTiming, AGridBoardIsHeldToItsCellLoaderNotToTheSeedsAddressPieces) {
     TimedBoard board{"xc2v", 4, "float32", 3, 2, FifoMemory::kBlockRam, false, true};
-    BoardTiming timing = board_timing(grid_timing_table(6.0), board);
-    std::vector<std::string> keys;
-    for (const PieceTiming& piece : timing.pieces) keys.push_back(piece.key + (piece.holds_clock ? "" : " (reported)"));
-    EXPECT_EQ(keys, (std::vector<std::string>{"lane", "cell_function (reported)", "cell_loader", "sequencer (reported)",
-                                              "one_cell_filter (reported)", "pair_fifo (reported)", "controller"}));
-    // The lane (9 ns) limits; the sequencer as written (40 ns) is the slowest of all.
-    EXPECT_EQ(timing.limiting().piece, "float32 comparison lane at compare latency 2");
-    EXPECT_EQ(timing.slowest().piece, "binning sequencer");
-    EXPECT_EQ(timing.pieces[1].piece, "float32 cell-function unit");
-    EXPECT_DOUBLE_EQ(timing.pieces[1].path.ns, 30.0);
+    BoardTiming timing = pieces_timing(grid_timing_table(6.0), board);
+    const auto keys = [](const std::vector<PieceTiming>& pieces) {
+        std::vector<std::string> names;
+        for (const PieceTiming& piece : pieces) names.push_back(piece.key);
+        return names;
+    };
+    // The cell-function unit, binning sequencer and one-cell filter are held
+    // to the clock once they are pipelined; reported beside it until then.
+    const std::vector<std::string> pipelined{"cell_function", "sequencer", "one_cell_filter"};
+    if (kGridPiecesAwaitPipelining) {
+        EXPECT_EQ(keys(timing.pieces), (std::vector<std::string>{"lane", "cell_loader", "pair_fifo", "controller"}));
+        EXPECT_EQ(keys(timing.awaiting_pipelining), pipelined);
+        // The FIFO (11 ns) limits; the sequencer as written (40 ns) is the slowest of all.
+        EXPECT_EQ(timing.limiting().piece, "pair FIFO in block RAM");
+        EXPECT_EQ(timing.slowest().piece, "binning sequencer");
+    } else {
+        EXPECT_EQ(keys(timing.pieces), (std::vector<std::string>{"lane", "cell_function", "cell_loader", "sequencer",
+                                                                 "one_cell_filter", "pair_fifo", "controller"}));
+        EXPECT_TRUE(timing.awaiting_pipelining.empty());
+        EXPECT_EQ(&timing.slowest(), &timing.limiting());
+    }
+    const PieceTiming* unit = piece_of(kGridPiecesAwaitPipelining ? timing.awaiting_pipelining : timing.pieces,
+                                       "cell_function");
+    ASSERT_NE(unit, nullptr);
+    EXPECT_EQ(unit->piece, "float32 cell-function unit");
+    EXPECT_DOUBLE_EQ(unit->path.ns, 30.0);
     // A slower loader (12 ns) limits the grid board; the address generator (20 ns) and tile
     // walker (21 ns), which it has not, would have limited it before it.
-    timing = board_timing(grid_timing_table(12.0), board);
-    EXPECT_EQ(timing.limiting().piece, "float32 cell loader");
-    EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 12.0);
-    // With fixed16 lanes (6 ns) the fixed16 loader limits: fixed16 lies between the
-    // synthesised fixed8 (7 ns) and fixed24 (7.5 ns) and takes the slower.
+    timing = pieces_timing(grid_timing_table(12.0), board);
+    if (kGridPiecesAwaitPipelining) {
+        EXPECT_EQ(timing.limiting().piece, "float32 cell loader");
+        EXPECT_DOUBLE_EQ(timing.fmax_mhz(), 1e3 / 12.0);
+    }
+    // The fixed16 loader: fixed16 lies between the synthesised fixed8 (7 ns)
+    // and fixed24 (7.5 ns) and takes the slower; so does its cell-function unit.
     board.format = "fixed16";
-    timing = board_timing(grid_timing_table(6.0), board);
-    EXPECT_EQ(timing.limiting().piece, "fixed16 cell loader");
-    EXPECT_DOUBLE_EQ(timing.limiting().path.ns, 7.5);
-    EXPECT_DOUBLE_EQ(timing.pieces[1].path.ns, 26.0);
+    timing = pieces_timing(grid_timing_table(6.0), board);
+    ASSERT_NE(piece_of(timing.pieces, "cell_loader"), nullptr);
+    EXPECT_EQ(piece_of(timing.pieces, "cell_loader")->piece, "fixed16 cell loader");
+    EXPECT_DOUBLE_EQ(piece_of(timing.pieces, "cell_loader")->path.ns, 7.5);
+    EXPECT_DOUBLE_EQ(timing.slowest().path.ns, kGridPiecesAwaitPipelining ? 40.0 : timing.limiting().path.ns);
     // The grid board's one-cell filter stands between its lanes and the FIFO,
     // which counts its cycle's hits (11 ns); the seed's board's FIFO has them
     // counted a cycle ahead by lanes of latency 2 (10 ns).
     const auto fifo_ns = [](const BoardTiming& t) {
-        for (const PieceTiming& piece : t.pieces) {
-            if (piece.key == "pair_fifo") return piece.path.ns;
-        }
-        return 0.0;
+        const PieceTiming* fifo = piece_of(t.pieces, "pair_fifo");
+        return fifo == nullptr ? 0.0 : fifo->path.ns;
     };
     EXPECT_DOUBLE_EQ(fifo_ns(timing), 11.0);
     // The seed's board on the same table: its address generator, none of the grid's pieces.
     board.grid = false;
-    timing = board_timing(grid_timing_table(12.0), board);
+    timing = pieces_timing(grid_timing_table(12.0), board);
     EXPECT_DOUBLE_EQ(fifo_ns(timing), 10.0);
     EXPECT_EQ(timing.limiting().piece, "address generator");
     for (const PieceTiming& piece : timing.pieces) {

@@ -1,7 +1,9 @@
 // The board clock against its device's estimated Fmax (platform/device_fit):
-// the speed grade from the device's name, the estimate as the slowest piece
-// the clock is held to, the refusal naming where the clock came from, and
-// run.ignore_timing turning it into a warning.
+// the speed grade from the device's name, the estimate as the slowest of the
+// pieces the clock is held to and the whole board timed as one design (the
+// pieces alone where no whole-board row is stored), the refusal naming where
+// the clock came from and the piece or path, and run.ignore_timing turning it
+// into a warning.
 #include "platform/device_fit.h"
 
 #include <gtest/gtest.h>
@@ -62,15 +64,22 @@ TEST(SpeedGrade, ComesFromTheDeviceNameElseTheFamilysSlowest) {
     EXPECT_FALSE(speed_grade_of(device).named);
 }
 
+double slowest_ns(const std::vector<PieceTiming>& pieces) {
+    double slowest = 0;
+    for (const PieceTiming& piece : pieces) slowest = std::max(slowest, piece.path.ns);
+    return slowest;
+}
+
 TEST(DeviceFitTiming, TheEstimateIsTheSlowestPieceTheClockIsHeldTo) {
     const DeviceFit fit = fit_on_device(preset("adm-xrc-ii").settings(), kBoxes);
     EXPECT_EQ(fit.speed_grade.grade, 4u);
-    ASSERT_EQ(fit.timing.pieces.size(), 4u);
-    double slowest_held = 0;
-    for (const PieceTiming& piece : fit.timing.pieces) {
-        if (piece.holds_clock) slowest_held = std::max(slowest_held, piece.path.ns);
-    }
-    EXPECT_DOUBLE_EQ(fit.timing.fmax_mhz(), 1e3 / slowest_held);
+    // The lane, address generator, pair FIFO and controller, and the whole
+    // board as one design: its row is stored at the preset's default m.
+    ASSERT_EQ(fit.timing.pieces.size(), 5u);
+    EXPECT_EQ(fit.timing.pieces.back().key, "whole_board");
+    EXPECT_EQ(fit.timing.whole_board_missing, "");
+    EXPECT_TRUE(fit.timing.awaiting_pipelining.empty());
+    EXPECT_DOUBLE_EQ(fit.timing.fmax_mhz(), 1e3 / slowest_ns(fit.timing.pieces));
     EXPECT_EQ(fit.timing.pieces[0].piece, "float32 comparison lane at compare latency 2");
     EXPECT_EQ(fit.clock_mhz, 66.0);
     // A faster grade of the same part is faster.
@@ -83,28 +92,22 @@ TEST(DeviceFitTiming, TheEstimateIsTheSlowestPieceTheClockIsHeldTo) {
 
 TEST(DeviceFitTiming, AGridBoardIsHeldToItsCellLoaderAndReportsItsOtherPiecesTheSeedsBoardToNone) {
     const DeviceFit grid = fit_on_device(preset("adm-xrc-ii", {"board.algorithm=grid"}).settings(), kBoxes);
-    std::map<std::string, bool> held;  // key: holds_clock
-    double slowest_held = 0;
-    for (const PieceTiming& piece : grid.timing.pieces) {
-        held[piece.key] = piece.holds_clock;
-        if (piece.holds_clock) slowest_held = std::max(slowest_held, piece.path.ns);
-    }
-    EXPECT_EQ(held, (std::map<std::string, bool>{{"lane", true},
-                                                 {"cell_function", false},
-                                                 {"cell_loader", true},
-                                                 {"controller", true},
-                                                 {"sequencer", false},
-                                                 {"one_cell_filter", false},
-                                                 {"pair_fifo", false}}));
-    EXPECT_DOUBLE_EQ(grid.timing.fmax_mhz(), 1e3 / slowest_held);
+    std::map<std::string, bool> held;  // key: whether the clock is held to it
+    for (const PieceTiming& piece : grid.timing.pieces) held[piece.key] = true;
+    for (const PieceTiming& piece : grid.timing.awaiting_pipelining) held[piece.key] = false;
+    const bool pipelined = !kGridPiecesAwaitPipelining;
+    for (const char* key : {"lane", "cell_loader", "controller", "pair_fifo"}) EXPECT_TRUE(held.at(key)) << key;
+    for (const char* key : {"cell_function", "sequencer", "one_cell_filter"}) EXPECT_EQ(held.at(key), pipelined) << key;
+    EXPECT_DOUBLE_EQ(grid.timing.fmax_mhz(), 1e3 / slowest_ns(grid.timing.pieces));
     const TimingTable& table = TimingTable::stored();
-    EXPECT_GE(slowest_held, table.cell_loader("xc2v", 4, "float32").ns);
-    // The report lists them (config.resources.timing).
+    EXPECT_GE(slowest_ns(grid.timing.pieces), table.cell_loader("xc2v", 4, "float32").ns);
+    // The report lists them all (config.resources.timing), and which wait to be pipelined.
     const nlohmann::json report = timing_json(grid);
-    for (const char* key : {"cell_function", "cell_loader", "sequencer", "one_cell_filter"}) {
+    for (const char* key : {"cell_function", "cell_loader", "sequencer", "one_cell_filter", "pair_fifo"}) {
         EXPECT_TRUE(report["pieces"].contains(key)) << key;
+        EXPECT_FALSE(report["pieces"][key].contains("holds_clock")) << key;
     }
-    EXPECT_FALSE(report["pieces"]["sequencer"]["holds_clock"].get<bool>());
+    EXPECT_EQ(report.contains("awaiting_pipelining"), kGridPiecesAwaitPipelining);
     // The seed's board has none of them.
     const DeviceFit seed = fit_on_device(preset("adm-xrc-ii").settings(), kBoxes);
     for (const PieceTiming& piece : seed.timing.pieces) {
@@ -139,28 +142,67 @@ TEST(ClockCheck, AClockBeyondTheEstimateIsRefusedNamingItsOriginTheEstimateAndTh
 
 TEST(ClockCheck, AGridBoardsRefusalNamesTheGridPieceThatLimitsIt) {
     // On the XC2V6000-4 the float32 cell loader's own logic (10.40 ns) is slower than the lane
-    // (10.15 ns): it sets the grid board's Fmax, and the seed's board, which has no loader, is faster.
+    // (10.15 ns), and the grid board's pair FIFO, which counts its hits in their cycle behind the
+    // one-cell filter, slower again: one of the grid's own pieces sets its Fmax.
     const TimingTable& table = TimingTable::stored();
     const double loader = table.cell_loader("xc2v", 4, "float32").ns;
     ASSERT_GT(loader, table.lane("xc2v", 4, "float32", 2).ns);
-    char expected[96];
-    std::snprintf(expected, sizeof expected, "the board reaches on the XC2V6000-4 (speed grade -4): its float32 cell "
-                  "loader takes %.2f ns a cycle", loader);
+    const DeviceFit grid = fit_on_device(preset("adm-xrc-ii", {"board.algorithm=grid"}).settings(), kBoxes);
+    const PieceTiming& limit = grid.timing.limiting();
+    EXPECT_GE(limit.path.ns, loader);
+    char expected[160];
+    std::snprintf(expected, sizeof expected, "the board reaches on the XC2V6000-4 (speed grade -4): its %s takes %.2f ns a cycle",
+                  limit.piece.c_str(), limit.path.ns);
     const std::string error = refusal(preset("adm-xrc-ii", {"board.algorithm=grid", "board.clock_mhz=500"}));
     EXPECT_NE(error.find(expected), std::string::npos) << error;
-    const DeviceFit grid = fit_on_device(preset("adm-xrc-ii", {"board.algorithm=grid"}).settings(), kBoxes);
-    const DeviceFit seed = fit_on_device(preset("adm-xrc-ii").settings(), kBoxes);
-    EXPECT_DOUBLE_EQ(grid.timing.fmax_mhz(), 1e3 / loader);
-    EXPECT_GT(seed.timing.fmax_mhz(), grid.timing.fmax_mhz());
-    // The preset's 66 MHz is within both.
+    EXPECT_DOUBLE_EQ(grid.timing.fmax_mhz(), 1e3 / limit.path.ns);
+    // The preset's 66 MHz is within it.
     EXPECT_EQ(refusal(preset("adm-xrc-ii", {"board.algorithm=grid"})), "");
+}
+
+// The whole board as one design is slower than any of its pieces on the
+// paper's board (paths between the pieces): a clock between the two is
+// refused naming it, though every piece alone would meet it.
+TEST(ClockCheck, AClockBeyondTheWholeBoardButWithinEveryPieceIsRefusedNamingTheWholeBoard) {
+    const DeviceFit fit = fit_on_device(preset("adm-xrc-ii").settings(), kBoxes);
+    ASSERT_EQ(fit.timing.limiting().key, "whole_board");
+    std::vector<PieceTiming> pieces = fit.timing.pieces;
+    pieces.pop_back();
+    const double pieces_mhz = 1e3 / slowest_ns(pieces);
+    const double between = (fit.timing.fmax_mhz() + pieces_mhz) / 2;
+    ASSERT_GT(between, fit.timing.fmax_mhz());
+    const std::string error =
+        refusal(preset("adm-xrc-ii", {"board.clock_mhz=" + std::to_string(between)}));
+    EXPECT_NE(error.find("(speed grade -4): its whole board as one design (longest path: "), std::string::npos)
+        << error;
+    EXPECT_NE(error.find("; run.ignore_timing=yes runs it anyway"), std::string::npos) << error;
+    const nlohmann::json report = timing_json(fit);
+    EXPECT_EQ(report["fmax_from"], "every piece and the whole board as one design");
+    EXPECT_EQ(report["pieces"]["whole_board"]["path_ns"], fit.timing.limiting().path.ns);
+}
+
+// A board the whole-board table has no row for (boxes in SSRAM tiles, an m
+// past the stored ones) is held to its pieces alone, and its report says so.
+TEST(ClockCheck, WithoutAWholeBoardRowTheFmaxIsThePiecesAndTheReportSaysSo) {
+    const DeviceFit tiled = fit_on_device(preset("adm-xrc-ii", {"board.memory=ssram"}).settings(), kBoxes);
+    ASSERT_EQ(tiled.timing.pieces[1].key, "tile_walker");
+    EXPECT_EQ(tiled.timing.whole_board_missing,
+              "no whole-board timing of the all-pairs board with its boxes in SSRAM tiles");
+    for (const PieceTiming& piece : tiled.timing.pieces) EXPECT_NE(piece.key, "whole_board");
+    EXPECT_DOUBLE_EQ(tiled.timing.fmax_mhz(), 1e3 / slowest_ns(tiled.timing.pieces));
+    const nlohmann::json report = timing_json(tiled);
+    EXPECT_EQ(report["fmax_from"],
+              "the pieces alone: no whole-board timing of the all-pairs board with its boxes in SSRAM tiles");
+    EXPECT_FALSE(report["pieces"].contains("whole_board"));
+    EXPECT_NE(timing_summary(tiled).find("; from the pieces alone: no whole-board timing of "), std::string::npos)
+        << timing_summary(tiled);
 }
 
 TEST(ClockCheck, IgnoreTimingWarnsInsteadAndAnUnknownGradeIsRefused) {
     const std::optional<std::string> warning =
         check_clock(preset("adm-xrc-ii", {"board.clock_mhz=500", "run.ignore_timing=yes"}), kBoxes);
     ASSERT_TRUE(warning.has_value());
-    EXPECT_EQ(warning->rfind("warning: board.clock_mhz: 500.0 MHz is beyond the ", 0), 0u) << *warning;
+    EXPECT_EQ(warning->rfind("board.clock_mhz: 500.0 MHz is beyond the ", 0), 0u) << *warning;
     EXPECT_NE(warning->find("; running it anyway (run.ignore_timing=yes)"), std::string::npos) << *warning;
     EXPECT_EQ(refusal(preset("adm-xrc-ii", {"device.name=XC2V6000-7"})),
               "device.name: speed grade -7 of XC2V6000-7: the xc2v timing has -4, -5 or -6");
