@@ -632,8 +632,9 @@ std::vector<Setting> host_and_run_settings() {
                     "ignore-capacity"),
         switch_flag(choice<bool>("run.ignore_timing", member(&S::run, &RunSettings::ignore_timing),
                            "run a board clock beyond the Fmax estimated for its device (device.* and the "
-                           "synthesis timing table) anyway, with a warning, to explore a faster design",
-                           "no: a clock beyond the estimate is refused naming the piece that limits it "
+                           "synthesis timing tables: every piece and the whole board as one design) anyway, to "
+                           "explore a faster design; the summary, the report and a sweep's row carry the warning",
+                           "no: a clock beyond the estimate is refused naming the piece or path that limits it "
                            "(docs/resources.md)"),
                     "ignore-timing"),
         switch_flag(choice<bool>("run.lockstep", member(&S::run, &RunSettings::lockstep),

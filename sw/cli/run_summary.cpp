@@ -181,6 +181,8 @@ void print_summary(std::ostream& out, const RunDescription& run, const RunTotals
                   run.fidelity == ModelLevel::kAnalytic ? "level" : "engine");
     out << printable(run.source) << " on " << printable(run.board) << " (" << printable(run.bus) << ")" << line;
     if (run.device_fit) print_resources(out, *run.device_fit);
+    // A clock beyond the estimate, run anyway: said where the estimate is.
+    if (!totals.timing_warning().empty()) out << "  warning: " << totals.timing_warning() << '\n';
     if (run.ssram) {
         std::snprintf(line, sizeof line,
                       "  boxes in SSRAM: %u tiles of %u boxes at %u objects, %llu slots waiting for tile loads\n",

@@ -145,7 +145,7 @@ int resolved_settings(int argc, char** argv) {
     // Exactly cdvp run's checks of its settings; the frames are not named here.
     const BoardSetup setup = checked_board_setup(setting_layers_of(layers, vm), std::nullopt);
     const SettingValues& values = setup.values;
-    if (setup.clock_warning) std::cerr << "cdvp settings: " << *setup.clock_warning << "\n";
+    if (setup.clock_warning) std::cerr << "cdvp settings: warning: " << *setup.clock_warning << "\n";
     nlohmann::json all = nlohmann::json::array();
     std::ostringstream text;
     for (const Setting* s : values.effective()) {

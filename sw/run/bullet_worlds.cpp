@@ -285,9 +285,8 @@ RunOutcome run_bullet_worlds(const RunSpec& spec, RunObserver& observer) {
     if (frames == 0) throw InputError(values.where(declared_setting("scene.frames")) + ": expected at least 1 frame to step, got 0");
     const FrameOrigin origin{"", worlds.name};
     RunBudgets budgets(values, setup.platform, budget_shape(spec, setup), origin);
-    if (const auto warning = check_scene_fits(origin, values, scene_layout(scene).proxies, frames, budgets)) {
-        observer.note(*warning);
-    }
+    setup.clock_warning = check_scene_fits(origin, values, scene_layout(scene).proxies, frames, budgets);
+    if (setup.clock_warning) observer.note("warning: " + *setup.clock_warning);
     check_trace_window(setup.trace_window, frames - 1, describe(scene), values.names());
     setup.platform.pair_budget = budgets.pair_budget();
     pin_to_setting_cpu(values);

@@ -152,6 +152,7 @@ nlohmann::json to_json(const ReportSummary& s) {
                            {"extra_readback_ns", s.extra.extra_readback_ns},
                            {"extra_driver_ns", s.extra.extra_driver_ns}};
     if (!s.best_software.empty()) json["best_software"] = s.best_software;
+    if (!s.timing_warning.empty()) json["timing_warning"] = s.timing_warning;
     put_spread(json, "total_ns", s.total_ns);
     put_spread(json, "latency_ns", s.latency_ns);
     put_spread(json, "sim_wall_native_ns", s.sim_wall_native_ns);
@@ -224,6 +225,7 @@ ReportSummary summary_from_json(const nlohmann::json& json, const std::string& s
         s.timing_quality = timing_quality_from_json(json["timing_quality"], source + ": summary: timing_quality");
     }
     if (json.contains("retime_tries")) s.retime_tries = r.get<uint32_t>("retime_tries");
+    if (json.contains("timing_warning")) s.timing_warning = r.get<std::string>("timing_warning");
     if (json.contains("mean_energy_j")) {
         s.mean_energy.static_j = r.get<double>("mean_energy_static_j");
         s.mean_energy.dynamic_j = r.get<double>("mean_energy_dynamic_j");

@@ -69,6 +69,9 @@ struct ReportSummary {
     FrameEnergy mean_energy;
     double mean_energy_per_pair_j = 0.0;
     double host_package_w = 0.0;
+    // The board ran at a clock beyond its estimated Fmax (run.ignore_timing):
+    // the refusal it would otherwise have had, in one line. Empty: none.
+    std::string timing_warning;
 };
 
 nlohmann::json to_json(const ReportSummary& summary);

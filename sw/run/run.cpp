@@ -142,9 +142,8 @@ RunOutcome run_frames_of(const RunSpec& spec, RunObserver& observer, const RunCo
     }
     if (needs_kernel) return RunOutcome{false, 0, {}};  // checked first: the child reads the frames
     std::unique_ptr<FrameSource> source = open_source(spec, setup.values, budgets, context.memo);
-    if (const auto warning = check_scene_fits(origin, setup.values, source->max_objects(), source->frame_count(), budgets)) {
-        observer.note(*warning);
-    }
+    setup.clock_warning = check_scene_fits(origin, setup.values, source->max_objects(), source->frame_count(), budgets);
+    if (setup.clock_warning) observer.note("warning: " + *setup.clock_warning);
     check_inject_frames(setup.platform.faults, source->last_frame(),
                         [&source](uint64_t n) { return source->has_frame(n); }, source->describe(), names);
     check_trace_window(setup.trace_window, source->last_frame(), source->describe(), names);

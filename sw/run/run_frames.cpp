@@ -91,6 +91,7 @@ private:
         describe_device_fit(description_, settings);
         energy_.emplace(settings, description_.device_fit ? description_.device_fit->resources : BoardResources{});
         totals_.set_host_power(energy_->host_w());
+        totals_.set_timing_warning(r_.setup.clock_warning.value_or(""));
         description_.source = r_.source.describe();
         description_.command_line = r_.spec.command_line;
         description_.has_report = r_.files.report != nullptr;

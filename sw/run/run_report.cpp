@@ -292,6 +292,7 @@ ReportSummary RunTotals::summary(const HostTiming& host) const {
     }
     if (const std::optional<std::string> fastest = fastest_baseline(s)) s.best_software = *fastest;
     s.retime_tries = max_tries_;
+    s.timing_warning = timing_warning_;
     s.frames = frames();
     s.warmup_frames = warmup_frames();
     s.frames_in_means = frames_in_means();

@@ -128,6 +128,10 @@ public:
     // The modelled host's package power (host.package_w): the software's
     // energy is it times the baseline's host time.
     void set_host_power(double host_w) { host_w_ = host_w; }
+    // The board's clock beyond its estimated Fmax, run under
+    // run.ignore_timing (check_clock's line); empty: the clock is met.
+    void set_timing_warning(std::string warning) { timing_warning_ = std::move(warning); }
+    const std::string& timing_warning() const { return timing_warning_; }
     const std::string& timing_id() const { return timing_id_; }
     uint32_t retime_tries() const { return max_tries_; }
 
@@ -176,6 +180,7 @@ private:
     uint32_t max_tries_ = 0;
     double host_w_ = 0;
     std::string timing_id_;
+    std::string timing_warning_;
     std::map<std::string, std::vector<std::array<double, 3>>> retimed_;
     std::vector<FrameStats> shown_;
 };
@@ -184,7 +189,7 @@ private:
 // The version of the run report's layout (its top-level "format_version"),
 // which share/cdvp/schema/run-report.schema.json describes: raised when a
 // field is renamed, removed or changes meaning, not when one is added.
-constexpr int kReportFormatVersion = 1;
+constexpr int kReportFormatVersion = 2;
 
 // Writes the report as the run goes: begin() the configuration (with the
 // provenance at the start), frame() each frame, end() the summary (with the

@@ -29,8 +29,9 @@ struct BoardSetup {
     std::string board = "ideal";  // the preset's name
     ModelLevel level = ModelLevel::kFast;  // as the run goes: waveforms pick cycle (model_level)
     HostTiming host;              // from native to modelled-host time
-    // Without frames (cdvp settings): the clock's warning under
-    // run.ignore_timing, from checked_board_setup's check of it.
+    // The clock's warning under run.ignore_timing (check_clock): from
+    // checked_board_setup's check without frames (cdvp settings), else from
+    // the run's at its frames' boxes, for its summary and report.
     std::optional<std::string> clock_warning;
 };
 

@@ -213,6 +213,8 @@ void put_results(const nlohmann::json& report, const Point& point, RowBuilder& o
     out.put("report_frames", std::to_string(frames.size()));
     out.put("frames_in_medians", std::to_string(frames.size() - first));
     if (summary.contains("too_few_frames")) out.put("too_few_frames", value_text(summary["too_few_frames"]));
+    // A point run at a clock beyond its board's estimate (run.ignore_timing).
+    if (summary.contains("timing_warning")) out.put("timing_warning", value_text(summary["timing_warning"]));
     put_frame_medians(frames, first, out, keep);
     put_summary_figures(summary, !frames.empty(), out, keep);
     if (!frames.empty()) put_baselines(summary_from_json(summary, "point " + point.id + "'s report"), out, keep);
@@ -223,7 +225,7 @@ void put_results(const nlohmann::json& report, const Point& point, RowBuilder& o
 // maximum, and each baseline's mean on the modelled host and speedup.
 bool is_compact_result(const std::string& column) {
     static const std::set<std::string> kept{
-        "report_frames", "frames_in_medians", "too_few_frames", "median_objects", "median_pairs",
+        "report_frames", "frames_in_medians", "too_few_frames", "timing_warning", "median_objects", "median_pairs",
         "median_reference_pairs", "median_extra_pairs", "median_sweep_cycles", "median_compute_cycles",
         "median_stall_cycles", "median_overflow_pauses", "median_boxes_sent", "median_upload_bytes",
         "median_readback_bytes", "median_upload_ns", "median_start_ns", "median_compute_ns", "median_irq_ns",

@@ -1,7 +1,8 @@
 // A board clock its device cannot reach, end to end through cdvp run: refused
 // in one line naming where the clock came from, the estimated Fmax and the
-// piece that limits it, with no report left behind; --ignore-timing runs it
-// with a warning; every preset runs at its own clock; the fit line and the
+// piece or path that limits it, with no report left behind; --ignore-timing
+// runs it with a warning on standard error, in the summary, in the report and
+// in every sweep row; every preset runs at its own clock; the fit line and the
 // report carry the estimate.
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "models/common/number_text.h"
 #include "tests/cli/cli_support.h"
 
 namespace cdvp::test {
@@ -62,12 +64,14 @@ TEST_F(CliClock, TheEstimateItselfIsTheBoundary) {
     const Result fits = run(spheres("adm-xrc-ii") + "--quiet --clock-mhz " + below + " --report r.json");
     ASSERT_EQ(fits.status, 0) << fits.err;
     EXPECT_TRUE(timing()["meets_clock"].get<bool>());
+    // Printed to the decimals that tell the clock from the estimate.
     expect_refusal(run(spheres("adm-xrc-ii") + "--quiet --clock-mhz " + above),
-                   "cdvp run: --clock-mhz: " + mhz(fmax * 1.001) + " is beyond the ");
+                   "cdvp run: --clock-mhz: " + distinct_figures(std::stod(above), fmax, 1).first +
+                       " MHz is beyond the " + distinct_figures(std::stod(above), fmax, 1).second + " MHz");
 }
 
-TEST_F(CliClock, IgnoreTimingRunsItWithAWarningAndTheReportSaysSo) {
-    const Result r = run(spheres("adm-xrc-ii") + "--quiet --clock-mhz 500 --ignore-timing --report r.json");
+TEST_F(CliClock, IgnoreTimingRunsItWithAWarningInTheSummaryAndTheReport) {
+    const Result r = run(spheres("adm-xrc-ii") + "--clock-mhz 500 --ignore-timing --report r.json");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err.rfind("cdvp run: warning: --clock-mhz: 500.0 MHz is beyond the ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find("; running it anyway (--ignore-timing)\n"), std::string::npos) << r.err;
@@ -78,6 +82,34 @@ TEST_F(CliClock, IgnoreTimingRunsItWithAWarningAndTheReportSaysSo) {
     // The run itself is the faster board's: its frames take fewer nanoseconds.
     const json report = report_of(dir_ / "r.json");
     EXPECT_EQ(report["config"]["clock_mhz"], 500.0);
+    // The same line in the report's summary and, under the fit line, in the console's.
+    const std::string line = r.err.substr(std::string("cdvp run: warning: ").size(),
+                                          r.err.find('\n') - std::string("cdvp run: warning: ").size());
+    EXPECT_EQ(report["summary"]["timing_warning"], line);
+    EXPECT_NE(r.out.find("\n  warning: " + line + "\n"), std::string::npos) << r.out.substr(0, 1200);
+    // A run whose clock is met has neither.
+    const Result met = run(spheres("adm-xrc-ii") + "--report r.json");
+    ASSERT_EQ(met.status, 0) << met.err;
+    EXPECT_FALSE(report_of(dir_ / "r.json")["summary"].contains("timing_warning"));
+    EXPECT_EQ(met.out.find("  warning: "), std::string::npos) << met.out.substr(0, 1200);
+}
+
+TEST_F(CliClock, IgnoreTimingPassesThroughASweepIntoEveryRowItConcerns) {
+    const Result r = run("sweep --board adm-xrc-ii --scene spheres --objects 200 --frames 1 --quiet --ignore-timing "
+                         "--set board.clock_mhz=66,500 --out res");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string csv = slurp(dir_ / "res" / "sweep.csv");
+    const std::string header = csv.substr(0, csv.find('\n'));
+    ASSERT_NE(header.find("timing_warning"), std::string::npos) << header;
+    // The 66 MHz point meets its clock; the 500 MHz point's row carries the warning.
+    EXPECT_NE(csv.find("500.0 MHz is beyond the "), std::string::npos) << csv.substr(0, 2000);
+    EXPECT_EQ(csv.find("66.0 MHz is beyond the "), std::string::npos);
+    // Without --ignore-timing the 500 MHz point is refused, naming the limit.
+    const Result refused = run("sweep --board adm-xrc-ii --scene spheres --objects 200 --frames 1 --quiet "
+                               "--set board.clock_mhz=66,500 --out res2");
+    const std::string refused_csv = slurp(dir_ / "res2" / "sweep.csv");
+    EXPECT_NE(refused_csv.find("refused"), std::string::npos) << refused_csv.substr(0, 2000);
+    EXPECT_NE(refused_csv.find("--ignore-timing runs it anyway"), std::string::npos) << refused_csv.substr(0, 2000);
 }
 
 TEST_F(CliClock, EveryPresetRunsAtItsOwnClock) {
@@ -96,11 +128,12 @@ TEST_F(CliClock, EveryPresetRunsAtItsOwnClock) {
                              t["limited_by"].get<std::string>() + ", "),
                   std::string::npos)
             << name << ": " << r.out.substr(0, 600);
-        // Each piece with its path, every one held to the clock on the seed's board.
-        for (const auto& [key, piece] : t["pieces"].items()) {
-            EXPECT_GT(piece["path_ns"].get<double>(), 0) << name;
-            EXPECT_TRUE(piece["holds_clock"].get<bool>()) << name << ": " << piece["piece"];
-        }
+        // Each piece with its path, every one held to the clock on the seed's
+        // board, and the whole board as one design among them.
+        for (const auto& [key, piece] : t["pieces"].items()) EXPECT_GT(piece["path_ns"].get<double>(), 0) << name;
+        EXPECT_FALSE(t.contains("awaiting_pipelining")) << name;
+        EXPECT_TRUE(t["pieces"].contains("whole_board")) << name;
+        EXPECT_EQ(t["fmax_from"], "every piece and the whole board as one design") << name;
     }
 }
 

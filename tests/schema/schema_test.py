@@ -77,10 +77,15 @@ def read_json(path):
 
 def check_report(valid, report, what):
     check(valid, report, what)
-    if report["format_version"] != 1:
+    if report["format_version"] != 2:
         fail(f"{what}: format_version {report['format_version']}")
     refused(valid, report, lambda r: r.pop("format_version"), "a report without format_version")
-    refused(valid, report, lambda r: r.update(format_version=2), "a report of format_version 2")
+    refused(valid, report, lambda r: r.update(format_version=1), "a report of format_version 1")
+    if "resources" in report["config"]:
+        timing = lambda r: r["config"]["resources"]["timing"]
+        refused(valid, report, lambda r: timing(r).pop("fmax_from"), "a timing without fmax_from")
+        refused(valid, report, lambda r: timing(r)["pieces"]["lane"].update(path_ns=0), "a piece's path of 0 ns")
+        refused(valid, report, lambda r: r["summary"].update(timing_warning=7), "a timing_warning that is not text")
     refused(valid, report, lambda r: r["summary"].pop("mean_total_ns"), "a report without summary.mean_total_ns")
     refused(valid, report, lambda r: r["frames"][0].pop("pairs"), "a frame without pairs")
     refused(valid, report, lambda r: r["config"].pop("fidelity"), "a report without config.fidelity")

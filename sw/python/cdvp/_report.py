@@ -73,6 +73,9 @@ class Summary:
     baselines: dict       # name -> Baseline
     extra_pairs: int      # against the float32 reference (a fixed-point format's)
     best_software: str = ""  # the baseline with the least mean frame time ("": none timed)
+    # The board ran at a clock beyond its estimated Fmax (ignore_timing=True): the line it would
+    # otherwise have been refused with ("": the clock is met, or no device family is set).
+    timing_warning: str = ""
     mean_energy_j: float = None
     mean_energy_static_j: float = None
     mean_energy_dynamic_j: float = None
@@ -93,7 +96,8 @@ class Summary:
                    total_ns={stat: summary[f"{stat}_total_ns"] for stat in ("mean", "p50", "p99", "max")},
                    mean_sim_wall_native_ns=summary["mean_sim_wall_native_ns"],
                    baselines=baselines, extra_pairs=summary["extra_pairs"],
-                   best_software=summary.get("best_software", ""), **energy)
+                   best_software=summary.get("best_software", ""),
+                   timing_warning=summary.get("timing_warning", ""), **energy)
 
 
 @dataclass

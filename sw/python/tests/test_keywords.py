@@ -78,6 +78,18 @@ def test_typed_values_of_numpy_lists_and_switches_run():
     assert list(report.summary.baselines) == ["sap"]
 
 
+def test_a_clock_beyond_the_estimate_is_refused_unless_ignore_timing_which_the_summary_says():
+    fast = {"board": "adm-xrc-ii", "scene": "spheres", "objects": 40, "frames": 2, "clock_mhz": 500.0}
+    with pytest.raises(cdvp.InputError) as refused:
+        cdvp.run(**fast)
+    assert "500.0 MHz is beyond the " in str(refused.value)
+    assert "ignore_timing=True runs it anyway" in str(refused.value)
+    report = cdvp.run(**fast, ignore_timing=True)
+    assert report.summary.timing_warning.startswith("clock_mhz=: 500.0 MHz is beyond the ")
+    assert report.summary.timing_warning.endswith("; running it anyway (ignore_timing=True)")
+    assert cdvp.run(**{**fast, "clock_mhz": 66.0}).summary.timing_warning == ""
+
+
 def test_best_names_the_fastest_of_its_candidates():
     report = cdvp.run(**{**SMALL, "objects": 200}, fidelity="analytic", baseline="best,sap", threads=1)
     assert set(report.summary.baselines) == {"prune", "hgrid", "sap"}
