@@ -34,6 +34,14 @@ def test_a_point_that_does_not_fit_is_a_refused_row(tmp_path):
         cdvp.sweep({"m": [32]}, tmp_path / "none", **fits_not)
 
 
+def test_ignore_timing_runs_every_point_and_a_row_beyond_its_estimate_says_so(tmp_path):
+    table = cdvp.sweep({"clock_mhz": [66.0, 500.0]}, tmp_path / "fast", ignore_timing=True,
+                       **{**POINT_OPTIONS, "objects": 40})
+    assert list(table["status"]) == ["ok", "ok"]
+    met, beyond = table.sort_values("clock_mhz")["timing_warning"].fillna("")
+    assert met == "" and "500.0 MHz is beyond the " in beyond
+
+
 def test_a_bad_axis_value_is_an_input_error_naming_the_axis(tmp_path):
     with pytest.raises(cdvp.InputError) as refused:
         cdvp.sweep({"m": [0, 4]}, tmp_path, **POINT_OPTIONS)
