@@ -241,11 +241,13 @@ BoardTiming board_timing(const TimingTable& table, const WholeBoardTable& whole,
         timing.pieces.push_back({"address_generator", "address generator", generator});
     }
     // Lanes of compare latency 2 or more give the FIFO their hits' count a
-    // cycle ahead; the grid board's pass through the one-cell filter first.
+    // cycle ahead; the grid board's pass through the one-cell filter first,
+    // which has no register of its own (kGridPiecesAwaitPipelining).
     const bool counted_ahead = !board.grid && board.compare_latency >= 2;
-    timing.pieces.push_back({"pair_fifo", fifo,
-                             table.pair_collector(family, grade, board.m, fifo_memory_name(board.fifo_memory),
-                                                  counted_ahead)});
+    (board.grid ? grid_pieces : timing.pieces)
+        .push_back({"pair_fifo", fifo,
+                    table.pair_collector(family, grade, board.m, fifo_memory_name(board.fifo_memory),
+                                         counted_ahead)});
     timing.pieces.push_back({"controller", "controller", table.control(family, grade)});
     const WholeBoardPath whole_path = whole.path(board);
     if (whole_path.path) {

@@ -109,11 +109,14 @@ struct PieceTiming {
 
 // TEMPORARY, while the grid board's cell-function unit, one-cell filter and
 // binning sequencer are pipelined for the clock (they are written to the
-// model's slots, not to a clock: docs/grid_board.md, "Timing"): their paths,
-// and the grid board's whole-board path that runs through them, are reported
-// but the clock is not held to them. Set it to false once they are
-// pipelined; BoardTiming::awaiting_pipelining is then always empty and goes
-// with this constant.
+// model's slots, not to a clock: docs/grid_board.md, "Timing"): their paths
+// are reported but the clock is not held to them, nor to the grid board's
+// whole-board path, which runs through them, nor to its pair FIFO, which the
+// unregistered one-cell filter makes count its hits in their cycle (on the
+// VU9P it would refuse the presets' 250 and 300 MHz: 246.7 MHz at -1, 296.6
+// at -2, m = 8). Set it to false once they are pipelined;
+// BoardTiming::awaiting_pipelining is then always empty and goes with this
+// constant.
 constexpr bool kGridPiecesAwaitPipelining = true;
 
 struct BoardTiming {
