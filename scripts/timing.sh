@@ -34,9 +34,9 @@
 #                                      (BOARD_FIFO_DISTRIBUTED) and address bits (BOARD_ADDRESS_BITS)
 #   scripts/timing.sh --board-check BOARD FAMILY M [FORMAT]
 #                                      re-derives those rows and compares them with the stored ones
-#   scripts/timing.sh --board-table    every row of the whole-board table, in parallel (GNU parallel,
-#                                      SYNTH_JOBS at a time); CSV on stdout (tens of minutes a row at
-#                                      large m)
+#   scripts/timing.sh --board-table    the whole-board table's rows (all_board_rows), in parallel (GNU
+#                                      parallel, SYNTH_JOBS at a time); CSV on stdout (minutes a row at
+#                                      m = 8, more at large m)
 #
 # Needs yosys (Debian: yosys 0.23) and, for the full table, GNU parallel.
 set -euo pipefail
@@ -404,6 +404,8 @@ board_rows() {
 }
 
 # The whole-board table's syntheses: BOARD FAMILY M FORMAT FIFO_DISTRIBUTED.
+# (The stored table holds the float32 rows at m = 1 and 8 on xc2v and m = 8
+# on xcup so far; this list is the table to come.)
 # float32 and fixed16 at m = 1 and the presets' default m = 8, and at the
 # largest m that fits 500 boxes (cdvp run's fit line): on the paper's
 # XC2V6000 24 in float32, its pair FIFO in LUTs (the boxes take every block
