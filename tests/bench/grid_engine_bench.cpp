@@ -67,10 +67,9 @@ void BM_AllPairsFastEngine(benchmark::State& state) {
     run_engine<cdvp::FastEngine>(state, cdvp::BoardAlgorithm::kAllPairs);
 }
 
-// The binning and the pairs with their slots alone, without the timeline.
-void BM_GridSearchOnly(benchmark::State& state) {
+// The grid search's frames played in turn, one an iteration.
+void play_search(benchmark::State& state, cdvp::GridSearch& search) {
     const auto& scene = frames(static_cast<std::size_t>(state.range(0)));
-    cdvp::GridSearch search(pcie_board(cdvp::BoardAlgorithm::kGrid));
     cdvp::PairList pairs;
     std::vector<uint64_t> slots;
     std::size_t f = 0;
@@ -80,37 +79,24 @@ void BM_GridSearchOnly(benchmark::State& state) {
     }
 }
 
+// The binning and the pairs with their slots alone, without the timeline.
+void BM_GridSearchOnly(benchmark::State& state) {
+    cdvp::GridSearch search(pcie_board(cdvp::BoardAlgorithm::kGrid));
+    play_search(state, search);
+}
+
 // The grid search when its cell entries run out: an entry memory of half
 // an entry a box (a box takes one to eight), so most boxes overflow into the
 // large sweep; the second argument streams every box past every large tile as
 // the board does (1) or searches those pairs (0, what the engine picks above
 // GridSearch::kStreamedLargeBoxes large boxes).
 void BM_GridSearchOverflow(benchmark::State& state) {
-    const auto& scene = frames(static_cast<std::size_t>(state.range(0)));
     cdvp::BoardConfig config = pcie_board(cdvp::BoardAlgorithm::kGrid);
     config.grid.entry_capacity = static_cast<uint64_t>(state.range(0)) / 2;
     cdvp::GridSearch search(config);
     if (state.range(1) != 0) search.set_searched_above(~0u);
-    cdvp::PairList pairs;
-    std::vector<uint64_t> slots;
-    std::size_t f = 0;
-    for (auto _ : state) {
-        const BenchFrame& frame = scene[f++ % kFrames];
-        benchmark::DoNotOptimize(search.run(static_cast<uint32_t>(frame.boxes.size()), frame.view(), pairs, slots));
-    }
+    play_search(state, search);
     state.counters["large"] = search.stats().large_boxes;
-}
-// The all-pairs board's search alone at the same N, for the comparison.
-void BM_AllPairsSearchOnly(benchmark::State& state) {
-    const auto& scene = frames(static_cast<std::size_t>(state.range(0)));
-    cdvp::PairFinder finder;
-    cdvp::PairList pairs;
-    std::size_t f = 0;
-    for (auto _ : state) {
-        const BenchFrame& frame = scene[f++ % kFrames];
-        finder.find(static_cast<uint32_t>(frame.boxes.size()), frame.view(), pairs);
-        benchmark::DoNotOptimize(pairs.data());
-    }
 }
 
 BENCHMARK(BM_GridFastEngine)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
@@ -120,7 +106,6 @@ BENCHMARK(BM_GridSearchOverflow)
     ->Args({10000, 1})->Args({30000, 1})
     ->Args({10000, 0})->Args({30000, 0})->Args({100000, 0})->Args({300000, 0})
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_AllPairsSearchOnly)->Arg(10000)->Arg(30000)->Arg(100000)->Arg(300000)->Unit(benchmark::kMillisecond);
 
 // The grid board's pairs of the first 10^6-box frame against CGAL on the
 // same float32 boxes (as doubles, exactly): equal as sets, each pair once.
@@ -170,12 +155,8 @@ int main(int argc, char** argv) {
         std::printf("  N=%-8s searched %9.2f ms", n, searched);
         const double streamed = reporter.cpu_ms(std::string("BM_GridSearchOverflow/") + n + "/1");
         if (streamed > 0) std::printf("   streamed %.2f ms (%.1fx)", streamed, streamed / searched);
-        const double all_pairs = reporter.cpu_ms(std::string("BM_AllPairsSearchOnly/") + n);
-        if (all_pairs > 0) std::printf("   all-pairs board's search %.2f ms (%.2fx)", all_pairs, searched / all_pairs);
-        const double all_pairs_engine = reporter.cpu_ms(std::string("BM_AllPairsFastEngine/") + n);
-        if (all_pairs_engine > 0) {
-            std::printf("   its fast engine %.2f ms (%.2fx)", all_pairs_engine, searched / all_pairs_engine);
-        }
+        const double all_pairs = reporter.cpu_ms(std::string("BM_AllPairsFastEngine/") + n);
+        if (all_pairs > 0) std::printf("   all-pairs board's fast engine %.2f ms (%.2fx)", all_pairs, searched / all_pairs);
         std::printf("\n");
     }
     return 0;
