@@ -43,11 +43,12 @@ double remembered_fast_probe_ns(const std::string& cpu_model) {
     }
 }
 
-void remember_fast_probe_ns(const std::string& cpu_model, double ns) {
+namespace {
+
+// Writes `ns` as the machine's speed unless `kept` (the one kept, 0: none) is as fast.
+void keep_unless_slower(const std::string& cpu_model, double ns, double kept) {
     const std::string path = machine_speed_path();
-    if (path.empty() || !probe_time(ns)) return;
-    const double kept = remembered_fast_probe_ns(cpu_model);
-    if (kept > 0 && kept <= ns) return;
+    if (path.empty() || !probe_time(ns) || (kept > 0 && kept <= ns)) return;
     try {
         CreatedDirectories directories;
         directories.create(path.substr(0, path.rfind('/')), "the cache directory");
@@ -59,13 +60,19 @@ void remember_fast_probe_ns(const std::string& cpu_model, double ns) {
     }
 }
 
+}  // namespace
+
+void remember_fast_probe_ns(const std::string& cpu_model, double ns) {
+    keep_unless_slower(cpu_model, ns, remembered_fast_probe_ns(cpu_model));
+}
+
 double probe_reference_ns(double calibrated_ns, const std::vector<double>& probes) {
     if (calibrated_ns > 0) return calibrated_ns;
     const double own = fast_probe_ns(probes);
     if (own <= 0) return 0;
     const std::string cpu = read_machine_info().cpu_model;
     const double kept = remembered_fast_probe_ns(cpu);
-    remember_fast_probe_ns(cpu, own);
+    keep_unless_slower(cpu, own, kept);  // the record read once
     return kept > 0 ? std::min(kept, own) : own;
 }
 
